@@ -1,0 +1,70 @@
+// The parsed form of a RADIANCE scene: plain records, one per primitive or modifier,
+// in input order, each with its SourceLoc. Nothing here knows about rendering;
+// materials, lights and accelerator geometry are built from these records later.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "util/error.h"
+
+namespace rp {
+
+// Every primitive type of the RADIANCE reference manual (ray.html).
+enum class PrimType : uint8_t {
+    // surfaces
+    Source, Sphere, Bubble, Polygon, Cone, Cup, Cylinder, Tube, Ring, Instance, Mesh,
+    // light-emitting materials
+    Light, Illum, Glow, Spotlight,
+    // reflecting/refracting materials
+    Mirror, Prism1, Prism2, Plastic, Metal, Trans, Plastic2, Metal2, Trans2, Mist,
+    Dielectric, Interface, Glass, Plasfunc, Metfunc, Transfunc, BRTDfunc, Plasdata,
+    Metdata, Transdata, BSDF, ABSDF, WGMDfunc, Antimatter,
+    // textures
+    Texfunc, Texdata,
+    // patterns
+    Colorfunc, Brightfunc, Colordata, Brightdata, Colorpict, Colortext, Brighttext,
+    Spectrum, Specfile, Specfunc, Specdata, Specpict,
+    // mixtures
+    Mixfunc, Mixdata, Mixpict, Mixtext,
+    // alias (resolved by the reader: never appears in a Scene)
+    Alias,
+};
+
+enum class PrimCategory : uint8_t { Surface, Material, Texture, Pattern, Mixture, Alias };
+
+// RADIANCE spelling ("polygon", "BRTDfunc", ...).
+std::string_view primTypeName(PrimType t);
+// Looks a RADIANCE type name up; false if unknown.
+bool primTypeFromName(std::string_view name, PrimType& out);
+PrimCategory primCategory(PrimType t);
+inline bool isSurface(PrimType t) { return primCategory(t) == PrimCategory::Surface; }
+inline bool isModifier(PrimType t) { return !isSurface(t); }
+
+constexpr int32_t kVoid = -1;  // modifier index of "void"
+
+struct Primitive {
+    PrimType type = PrimType::Polygon;
+    std::string name;
+    std::string modifierName;       // as written ("void" for none)
+    int32_t modifier = kVoid;       // index into Scene::prims of the resolved modifier
+    std::vector<std::string> sargs; // string arguments
+    std::vector<long> iargs;        // integer arguments
+    std::vector<double> rargs;      // real arguments
+    SourceLoc loc;                  // where it was defined
+};
+
+// A file the scene was read from, for the photon map stale check.
+struct SceneInput {
+    std::string path;
+    int64_t mtime = 0;  // seconds since the epoch; 0 if unknown (stdin, command output)
+};
+
+struct Scene {
+    std::vector<Primitive> prims;    // surfaces and modifiers in input order
+    std::vector<SceneInput> inputs;  // files read, in order
+};
+
+}  // namespace rp

@@ -1,0 +1,61 @@
+// Double-precision 3-vectors for geometry and shading. Single precision lives only
+// inside the accelerator and in stored photon records.
+#pragma once
+
+#include <cmath>
+
+namespace rp {
+
+struct Vec3 {
+    double x = 0, y = 0, z = 0;
+
+    constexpr Vec3() = default;
+    constexpr Vec3(double x_, double y_, double z_) : x(x_), y(y_), z(z_) {}
+
+    constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+    constexpr double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+
+    constexpr Vec3 operator+(const Vec3& o) const { return {x + o.x, y + o.y, z + o.z}; }
+    constexpr Vec3 operator-(const Vec3& o) const { return {x - o.x, y - o.y, z - o.z}; }
+    constexpr Vec3 operator-() const { return {-x, -y, -z}; }
+    constexpr Vec3 operator*(double s) const { return {x * s, y * s, z * s}; }
+    constexpr Vec3 operator/(double s) const { return {x / s, y / s, z / s}; }
+    constexpr Vec3& operator+=(const Vec3& o) { x += o.x; y += o.y; z += o.z; return *this; }
+    constexpr Vec3& operator-=(const Vec3& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
+    constexpr Vec3& operator*=(double s) { x *= s; y *= s; z *= s; return *this; }
+    constexpr bool operator==(const Vec3& o) const = default;
+};
+
+constexpr Vec3 operator*(double s, const Vec3& v) { return v * s; }
+constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+constexpr double lengthSquared(const Vec3& v) { return dot(v, v); }
+inline double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
+// Unit vector; a zero vector stays zero (callers that care check the length first).
+inline Vec3 normalize(const Vec3& v) {
+    double l = length(v);
+    return l > 0 ? v / l : v;
+}
+inline Vec3 vmin(const Vec3& a, const Vec3& b) {
+    return {std::fmin(a.x, b.x), std::fmin(a.y, b.y), std::fmin(a.z, b.z)};
+}
+inline Vec3 vmax(const Vec3& a, const Vec3& b) {
+    return {std::fmax(a.x, b.x), std::fmax(a.y, b.y), std::fmax(a.z, b.z)};
+}
+
+// Axis-aligned box in double precision; empty when min > max.
+struct Bounds3 {
+    Vec3 min{HUGE_VAL, HUGE_VAL, HUGE_VAL};
+    Vec3 max{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+
+    bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
+    void extend(const Vec3& p) { min = vmin(min, p); max = vmax(max, p); }
+    void extend(const Bounds3& b) { min = vmin(min, b.min); max = vmax(max, b.max); }
+    Vec3 extent() const { return max - min; }
+};
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace rp

@@ -1,0 +1,35 @@
+#include "util/warnings.h"
+
+#include <cstdio>
+#include <mutex>
+
+namespace rp {
+
+namespace {
+std::mutex sinkMutex;
+WarningSink& sink() {
+    static WarningSink s = [](const std::string& m) {
+        std::fprintf(stderr, "warning: %s\n", m.c_str());
+    };
+    return s;
+}
+}  // namespace
+
+void setWarningSink(WarningSink s) { sink() = std::move(s); }
+
+void warn(const std::string& message) {
+    std::lock_guard<std::mutex> lock(sinkMutex);
+    sink()(message);
+}
+
+void warn(const SourceLoc& loc, const std::string& message) {
+    std::string where = loc.str();
+    warn(where.empty() ? message : where + ": " + message);
+}
+
+void WarningCounter::report() const {
+    long n = count();
+    if (n > 0) warn(std::to_string(n) + " " + what_);
+}
+
+}  // namespace rp
