@@ -1,0 +1,1 @@
+// module placeholder; replaced by real sources
