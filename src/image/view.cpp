@@ -1,0 +1,361 @@
+// RADIANCE view options and view rays (see view.h). Formulas follow RADIANCE's
+// image.c (setview, viewray) and the -vt section of rpict.1.
+#include "image/view.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "util/error.h"
+
+namespace rp {
+
+namespace {
+
+constexpr double kTiny = 1e-6;  // RADIANCE's FTINY
+
+bool parseNumber(const char* s, double& v) {
+    char* end;
+    v = std::strtod(s, &end);
+    return end != s && *end == '\0' && std::isfinite(v);
+}
+
+// Reads n numbers after the option at argv[0]; throws naming the option.
+void numbers(int argc, const char* const* argv, int n, double* out) {
+    if (argc - 1 < n)
+        throw InputError(std::string(argv[0]) + ": expected " + std::to_string(n) +
+                         (n == 1 ? " number" : " numbers"));
+    for (int i = 0; i < n; ++i)
+        if (!parseNumber(argv[1 + i], out[i]))
+            throw InputError(std::string(argv[0]) + ": bad number '" + argv[1 + i] + "'");
+}
+
+bool validType(char c) {
+    switch (c) {
+        case 'v':
+        case 'l':
+        case 'c':
+        case 'h':
+        case 'a':
+        case 's':
+            return true;
+        default:
+            return false;
+    }
+}
+
+int parseOption(View& v, int argc, const char* const* argv, bool allowFile) {
+    if (argc <= 0) return 0;
+    const std::string opt = argv[0];
+    if (opt.size() < 3 || opt[0] != '-' || opt[1] != 'v') return 0;
+    if (opt[2] == 't') {
+        if (opt.size() != 4 || !validType(opt[3]))
+            throw InputError("-vt: unknown view type '" + opt.substr(3) +
+                             "' (expected one of vlchas)");
+        v.type = static_cast<ViewType>(opt[3]);
+        return 1;
+    }
+    if (opt.size() != 3) return 0;
+    double x[3];
+    auto vec = [&](Vec3& out) {
+        numbers(argc, argv, 3, x);
+        out = {x[0], x[1], x[2]};
+        return 4;
+    };
+    auto one = [&](double& out) {
+        numbers(argc, argv, 1, x);
+        out = x[0];
+        return 2;
+    };
+    switch (opt[2]) {
+        case 'p':
+            return vec(v.point);
+        case 'd':
+            return vec(v.direction);
+        case 'u':
+            return vec(v.up);
+        case 'h':
+            return one(v.horizontal);
+        case 'v':
+            return one(v.vertical);
+        case 'o':
+            return one(v.fore);
+        case 'a':
+            return one(v.aft);
+        case 's':
+            return one(v.shift);
+        case 'l':
+            return one(v.lift);
+        case 'f':
+            if (!allowFile) return 0;
+            if (argc < 2) throw InputError("-vf: expected a file name");
+            readViewFile(v, argv[1]);
+            return 2;
+        default:
+            return 0;
+    }
+}
+
+int applyWords(View& view, const std::string& text, bool allowFile) {
+    std::istringstream ss(text);
+    std::vector<std::string> words;
+    for (std::string w; ss >> w;) words.push_back(w);
+    std::vector<const char*> argv;
+    for (const auto& w : words) argv.push_back(w.c_str());
+    int n = 0;
+    const int argc = static_cast<int>(argv.size());
+    for (int i = 0; i < argc;) {
+        int used = parseOption(view, argc - i, argv.data() + i, allowFile);
+        if (used > 0) {
+            ++n;
+            i += used;
+        } else {
+            ++i;
+        }
+    }
+    return n;
+}
+
+// RADIANCE compat: isview() in image.c: header lines that carry views start with
+// VIEW= or a rendering program's command line.
+bool isViewLine(const std::string& line) {
+    if (line.rfind("VIEW=", 0) == 0) return true;
+    std::string first = line.substr(0, line.find_first_of(" \t"));
+    size_t slash = first.find_last_of('/');
+    if (slash != std::string::npos) first = first.substr(slash + 1);
+    for (const char* prog : {"rpict", "rview", "rvu", "rpiece", "pinterp"})
+        if (first.rfind(prog, 0) == 0) return true;
+    return false;
+}
+
+std::string fmt(const char* f, double a) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, a);
+    return buf;
+}
+
+std::string fmt3(const char* opt, const Vec3& v) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, " %s %.6g %.6g %.6g", opt, v.x, v.y, v.z);
+    return buf;
+}
+
+bool feq(double a, double b) { return std::fabs(a - b) <= kTiny; }
+bool veq(const Vec3& a, const Vec3& b) { return feq(a.x, b.x) && feq(a.y, b.y) && feq(a.z, b.z); }
+
+}  // namespace
+
+int parseViewOption(View& view, int argc, const char* const* argv) {
+    return parseOption(view, argc, argv, true);
+}
+
+int applyViewString(View& view, const std::string& text) { return applyWords(view, text, false); }
+
+std::optional<View> viewFromHeader(const Header& header) {
+    View v;
+    int n = 0;
+    for (const auto& line : header.lines)
+        if (isViewLine(line)) n += applyWords(v, line, false);
+    if (n == 0) return std::nullopt;
+    return v;
+}
+
+void readViewFile(View& view, const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(SourceLoc{path, 0}, "cannot open view file");
+    Header h;
+    View v = view;
+    int n = 0;
+    try {
+        if (tryReadHeader(in, h)) {
+            for (const auto& line : h.lines)
+                if (isViewLine(line)) n += applyWords(v, line, false);
+        } else {
+            in.clear();
+            in.seekg(0);
+            std::string line;
+            for (int lineNo = 1; std::getline(in, line); ++lineNo) {
+                if (line.size() > 4096) break;  // not a text file
+                if (!line.empty() && line[0] == '#') continue;
+                try {
+                    n += applyWords(v, line, false);
+                } catch (const InputError& e) {
+                    throw InputError(SourceLoc{path, lineNo}, e.message());
+                }
+            }
+        }
+    } catch (const InputError& e) {
+        if (!e.loc().file.empty()) throw;
+        throw InputError(SourceLoc{path, 0}, e.message());
+    }
+    if (n == 0) throw InputError(SourceLoc{path, 0}, "no view parameters in file");
+    view = v;
+}
+
+std::string formatView(const View& v) {
+    std::string s = " -vt";
+    s += static_cast<char>(v.type);
+    s += fmt3("-vp", v.point) + fmt3("-vd", v.direction) + fmt3("-vu", v.up);
+    s += fmt(" -vh %.6g", v.horizontal) + fmt(" -vv %.6g", v.vertical);
+    s += fmt(" -vo %.6g", v.fore) + fmt(" -va %.6g", v.aft);
+    s += fmt(" -vs %.6g", v.shift) + fmt(" -vl %.6g", v.lift);
+    return s;
+}
+
+std::string formatViewMinimal(const View& v) {
+    const View d;
+    std::string s;
+    if (v.type != d.type) {
+        s += " -vt";
+        s += static_cast<char>(v.type);
+    }
+    if (!veq(v.point, d.point)) s += fmt3("-vp", v.point);
+    if (!veq(v.direction, d.direction)) s += fmt3("-vd", v.direction);
+    if (!veq(v.up, d.up)) s += fmt3("-vu", v.up);
+    if (!feq(v.horizontal, d.horizontal)) s += fmt(" -vh %.6g", v.horizontal);
+    if (!feq(v.vertical, d.vertical)) s += fmt(" -vv %.6g", v.vertical);
+    if (!feq(v.fore, d.fore)) s += fmt(" -vo %.6g", v.fore);
+    if (!feq(v.aft, d.aft)) s += fmt(" -va %.6g", v.aft);
+    if (!feq(v.shift, d.shift)) s += fmt(" -vs %.6g", v.shift);
+    if (!feq(v.lift, d.lift)) s += fmt(" -vl %.6g", v.lift);
+    return s;
+}
+
+std::string viewHeaderLine(const View& view) { return "VIEW=" + formatView(view); }
+
+ViewRays::ViewRays(const View& v) : view_(v) {
+    const char* illHoriz = "illegal horizontal view size";
+    const char* illVert = "illegal vertical view size";
+    if (v.fore < -kTiny || v.aft < -kTiny || (v.aft > kTiny && v.aft <= v.fore))
+        throw InputError("illegal fore/aft clipping plane");
+    focalDistance_ = length(v.direction);
+    if (focalDistance_ == 0) throw InputError("zero view direction");
+    dir_ = v.direction / focalDistance_;
+    if (length(v.up) == 0) throw InputError("zero view up vector");
+    hvec_ = cross(dir_, normalize(v.up));
+    // RADIANCE only rejects an exactly zero cross product; nearly parallel vectors
+    // give a meaningless image orientation, so we reject those too.
+    if (length(hvec_) <= kTiny) throw InputError("view up parallel to view direction");
+    hvec_ = normalize(hvec_);
+    vvec_ = cross(hvec_, dir_);
+    if (v.horizontal <= kTiny) throw InputError(illHoriz);
+    if (v.vertical <= kTiny) throw InputError(illVert);
+    const double degHalf = kPi / 360.0;  // degrees to radians, halved
+    double hn = 0, vn = 0;
+    switch (v.type) {
+        case ViewType::kParallel:
+            hn = v.horizontal;
+            vn = v.vertical;
+            break;
+        case ViewType::kPerspective:
+            if (v.horizontal >= 180 - kTiny) throw InputError(illHoriz);
+            if (v.vertical >= 180 - kTiny) throw InputError(illVert);
+            hn = 2 * std::tan(v.horizontal * degHalf);
+            vn = 2 * std::tan(v.vertical * degHalf);
+            break;
+        case ViewType::kCylindrical:
+            if (v.horizontal > 360 + kTiny) throw InputError(illHoriz);
+            if (v.vertical >= 180 - kTiny) throw InputError(illVert);
+            hn = v.horizontal * (kPi / 180);
+            vn = 2 * std::tan(v.vertical * degHalf);
+            break;
+        case ViewType::kAngular:
+            if (v.horizontal > 360 + kTiny) throw InputError(illHoriz);
+            if (v.vertical > 360 + kTiny) throw InputError(illVert);
+            hn = v.horizontal * (kPi / 180);
+            vn = v.vertical * (kPi / 180);
+            break;
+        case ViewType::kHemispherical:
+            if (v.horizontal > 180 + kTiny) throw InputError(illHoriz);
+            if (v.vertical > 180 + kTiny) throw InputError(illVert);
+            hn = 2 * std::sin(v.horizontal * degHalf);
+            vn = 2 * std::sin(v.vertical * degHalf);
+            break;
+        case ViewType::kPlanisphere:
+            if (v.horizontal >= 360 - kTiny) throw InputError(illHoriz);
+            if (v.vertical >= 360 - kTiny) throw InputError(illVert);
+            hn = 2 * std::sin(v.horizontal * degHalf) / (1 + std::cos(v.horizontal * degHalf));
+            vn = 2 * std::sin(v.vertical * degHalf) / (1 + std::cos(v.vertical * degHalf));
+            break;
+        default:
+            throw InputError("unknown view type");
+    }
+    // RADIANCE compat (setview): the image-plane vectors carry the plane size except
+    // where viewray works in angles (a, s; and horizontally for c).
+    if (v.type != ViewType::kAngular && v.type != ViewType::kPlanisphere) {
+        if (v.type != ViewType::kCylindrical) hvec_ *= hn;
+        vvec_ *= vn;
+    }
+    hn2_ = hn * hn;
+    vn2_ = vn * vn;
+}
+
+std::optional<ViewRays::Ray> ViewRays::ray(double x, double y) const {
+    const View& v = view_;
+    x += v.shift - 0.5;
+    y += v.lift - 0.5;
+    Ray r;
+    // Distance limit for types whose direction was not normalised from a longer vector.
+    const double aftPlain = v.aft > kTiny ? v.aft - v.fore : 0.0;
+    Vec3 d;
+    switch (v.type) {
+        case ViewType::kParallel:
+            r.origin = v.point + v.fore * dir_ + x * hvec_ + y * vvec_;
+            r.direction = dir_;
+            r.maxDistance = aftPlain;
+            return r;
+        case ViewType::kPerspective:
+        case ViewType::kCylindrical: {
+            if (v.type == ViewType::kPerspective) {
+                d = dir_ + x * hvec_ + y * vvec_;
+            } else {
+                double a = x * v.horizontal * (kPi / 180);
+                d = std::cos(a) * dir_ + std::sin(a) * hvec_ + y * vvec_;
+            }
+            // The fore plane is a plane, not a sphere: offset along the unnormalised
+            // direction, and scale the aft distance the same way.
+            r.origin = v.point + v.fore * d;
+            double len = length(d);
+            r.direction = d / len;
+            r.maxDistance = v.aft > kTiny ? (v.aft - v.fore) * len : 0.0;
+            return r;
+        }
+        case ViewType::kHemispherical: {
+            double z = 1 - x * x * hn2_ - y * y * vn2_;
+            if (z < 0) return std::nullopt;
+            d = std::sqrt(z) * dir_ + x * hvec_ + y * vvec_;
+            break;
+        }
+        case ViewType::kAngular: {
+            x *= v.horizontal / 180;
+            y *= v.vertical / 180;
+            double r2 = x * x + y * y;
+            if (r2 > 1) return std::nullopt;
+            double rad = std::sqrt(r2);
+            double z = std::cos(kPi * rad);
+            double s = rad <= kTiny ? kPi : std::sqrt(1 - z * z) / rad;
+            d = z * dir_ + (x * s) * hvec_ + (y * s) * vvec_;
+            break;
+        }
+        case ViewType::kPlanisphere: {
+            x *= std::sqrt(hn2_);
+            y *= std::sqrt(vn2_);
+            double r2 = x * x + y * y;
+            double z = (1 - r2) / (1 + r2);
+            d = z * dir_ + (x * (1 + z)) * hvec_ + (y * (1 + z)) * vvec_;
+            break;
+        }
+        default:
+            return std::nullopt;
+    }
+    // Fisheye directions are unit length by construction; the fore clip is a sphere.
+    r.origin = v.point + v.fore * d;
+    r.direction = normalize(d);
+    r.maxDistance = aftPlain;
+    return r;
+}
+
+}  // namespace rp

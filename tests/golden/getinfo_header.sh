@@ -1,0 +1,50 @@
+#!/bin/bash
+# Golden test for getinfo: exact RADIANCE output format (file name line, tab-indented
+# header lines, a tab-only line), -d dimensions, standard input, and the error exit for
+# files without a RADIANCE header.
+set -u
+GETINFO="${RP_BIN:?RP_BIN not set}/getinfo"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 1
+fail=0
+check() {  # name expected-file actual-file
+    if ! diff -u "$2" "$3"; then
+        echo "FAIL: $1"
+        fail=1
+    fi
+}
+
+# A small picture: header, resolution line, one flat scanline of 2 pixels.
+printf '#?RADIANCE\nrpict -vf view.vf -x 2 -y 1 scene.oct\nVIEW= -vtv -vp 0 0 0\nEXPOSURE=1.5\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n\200\200\200\201\100\100\100\201' > pic.hdr
+# A photon-map-like header with tabs inside lines, as mkpmap writes them.
+printf '#?RADIANCE\nmkpmap -apg g.pm 1k x.oct\nNumPhotons\t= 1000\nFORMAT=Radiance_Global_kdT_Photon_Map\n\n\001\002\003' > g.pm
+printf 'just some text\n\nmore\n' > plain.txt
+
+printf 'pic.hdr:\n\t#?RADIANCE\n\trpict -vf view.vf -x 2 -y 1 scene.oct\n\tVIEW= -vtv -vp 0 0 0\n\tEXPOSURE=1.5\n\tFORMAT=32-bit_rle_rgbe\n\t\ng.pm:\n\t#?RADIANCE\n\tmkpmap -apg g.pm 1k x.oct\n\tNumPhotons\t= 1000\n\tFORMAT=Radiance_Global_kdT_Photon_Map\n\t\n' > expect_header
+"$GETINFO" pic.hdr g.pm > out_header 2> err_header
+st=$?
+check "header output" expect_header out_header
+[ "$st" -eq 0 ] || { echo "FAIL: exit status $st for good files"; fail=1; }
+[ -s err_header ] && { echo "FAIL: unexpected stderr"; cat err_header; fail=1; }
+
+printf 'pic.hdr: -Y 1 +X 2\n' > expect_dim
+"$GETINFO" -d pic.hdr > out_dim
+check "-d output" expect_dim out_dim
+
+printf '#?RADIANCE\nmkpmap -apg g.pm 1k x.oct\nNumPhotons\t= 1000\nFORMAT=Radiance_Global_kdT_Photon_Map\n\n' > expect_stdin
+"$GETINFO" < g.pm > out_stdin
+check "stdin output" expect_stdin out_stdin
+
+# Not a RADIANCE file and a missing file: one error line each, others still printed,
+# non-zero exit at the end.
+"$GETINFO" plain.txt missing.hdr pic.hdr > out_err 2> err_err
+st=$?
+[ "$st" -ne 0 ] || { echo "FAIL: exit status 0 with a non-RADIANCE file"; fail=1; }
+printf 'getinfo: plain.txt: not a RADIANCE file\ngetinfo: cannot open missing.hdr\n' > expect_err
+check "error messages" expect_err err_err
+head -n 1 out_err > out_err_first
+printf 'pic.hdr:\n' > expect_err_first
+check "later files still printed" expect_err_first out_err_first
+
+exit $fail

@@ -1,0 +1,56 @@
+// ra_png: convert a RADIANCE picture to an 8-bit sRGB PNG for viewing
+// (see src/image/tonemap.h for the exposure and encoding rules).
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#include "image/tonemap.h"
+#include "util/error.h"
+
+namespace {
+void usage() {
+    std::cerr << "usage: ra_png [-e exposure|+/-stops] [-g gamma] input.hdr|- output.png\n"
+                 "  without -e, the log-average brightness is mapped to mid grey (0.18)\n"
+                 "  without -g, the sRGB transfer curve is used\n";
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    rp::DisplayOptions opt;
+    std::string files[2];
+    int nfiles = 0;
+    try {
+        for (int i = 1; i < argc; ++i) {
+            std::string a = argv[i];
+            if ((a == "-e" || a == "-g") && i + 1 < argc) {
+                std::string v = argv[++i];
+                if (a == "-e") {
+                    opt.exposure = rp::parseExposureArg(v);
+                } else {
+                    char* end;
+                    double g = std::strtod(v.c_str(), &end);
+                    if (v.empty() || *end || !(g > 0))
+                        throw rp::InputError("-g: bad gamma '" + v + "'");
+                    opt.gamma = g;
+                }
+            } else if (a.size() > 1 && a[0] == '-') {
+                usage();
+                return 1;
+            } else if (nfiles < 2) {
+                files[nfiles++] = a;
+            } else {
+                usage();
+                return 1;
+            }
+        }
+        if (nfiles != 2) {
+            usage();
+            return 1;
+        }
+        rp::convertPictureToPng(files[0], files[1], opt);
+        return 0;
+    } catch (const rp::InputError& e) {
+        std::cerr << "ra_png: " << e.what() << '\n';
+        return 1;
+    }
+}
