@@ -1,0 +1,84 @@
+// RADIANCE polygon: argument checks, plane, frame and triangulation (see polygon.h).
+#include "geometry/polygon.h"
+
+#include <cmath>
+#include <string>
+
+#include "geometry/ray.h"
+#include "util/warnings.h"
+
+namespace rp {
+
+Vec3 newellNormal(const std::vector<Vec3>& verts) {
+    // Relative to the first vertex: the sum is translation invariant in exact arithmetic
+    // and this keeps full precision for polygons far from the origin.
+    Vec3 n;
+    size_t count = verts.size();
+    for (size_t i = 0; i < count; ++i) {
+        Vec3 a = verts[i] - verts[0];
+        Vec3 b = verts[(i + 1) % count] - verts[0];
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+    }
+    return n;
+}
+
+bool makePolygon(const Primitive& prim, int32_t primIndex, PolygonShape& shape,
+                 std::vector<Vec3>& vertices, std::vector<TriIndices>& triangles) {
+    const std::vector<double>& r = prim.rargs;
+    if (r.size() % 3 != 0 || r.size() < 9)
+        throw InputError(prim.loc, "polygon '" + prim.name +
+                                       "': expected a multiple of 3 real arguments (at least "
+                                       "9), got " + std::to_string(r.size()));
+    std::vector<Vec3> loop(r.size() / 3);
+    for (size_t i = 0; i < loop.size(); ++i) loop[i] = {r[3 * i], r[3 * i + 1], r[3 * i + 2]};
+
+    Vec3 area2 = newellNormal(loop);
+    double len = length(area2);
+    double scale = 0, size = 0;
+    for (const Vec3& v : loop) {
+        scale = std::fmax(scale, maxAbs(v));
+        size = std::fmax(size, maxAbs(v - loop[0]));
+    }
+    // RADIANCE compat: face.c rejects polygons of zero area with a warning.
+    if (!(len > 0) || len <= 1e-12 * size * size) {
+        warn(prim.loc, "polygon '" + prim.name + "': zero area, ignored");
+        return false;
+    }
+    shape.normal = area2 / len;
+    shape.offset = 0;
+    for (const Vec3& v : loop) shape.offset += dot(shape.normal, v);
+    shape.offset /= double(loop.size());
+    // RADIANCE compat: face.c warns about non-planar vertices (tolerance relative to size).
+    for (const Vec3& v : loop)
+        if (std::fabs(dot(shape.normal, v) - shape.offset) > 1e-6 * size) {
+            warn(prim.loc, "polygon '" + prim.name + "': non-planar vertex");
+            break;
+        }
+    shape.origin = loop[0];
+    shape.uAxis = {};
+    for (size_t i = 1; i < loop.size(); ++i) {
+        Vec3 e = loop[i] - loop[0];
+        e -= shape.normal * dot(shape.normal, e);
+        if (lengthSquared(e) > 1e-24 * size * size) {
+            shape.uAxis = normalize(e);
+            break;
+        }
+    }
+    shape.scale = scale;
+    shape.prim = primIndex;
+    shape.modifier = prim.modifier;
+
+    Triangulation tri = triangulatePolygon(loop, shape.normal);
+    if (!tri.clean)
+        warn(prim.loc, "polygon '" + prim.name + "': self-intersecting outline, triangulated "
+                       "approximately");
+    uint32_t base = uint32_t(vertices.size());
+    vertices.insert(vertices.end(), loop.begin(), loop.end());
+    for (const TriIndices& t : tri.triangles)
+        triangles.push_back({base + t[0], base + t[1], base + t[2]});
+    return !tri.triangles.empty();
+}
+
+}  // namespace rp

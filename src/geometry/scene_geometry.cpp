@@ -1,0 +1,141 @@
+// SceneGeometry queries and hit completion (see scene_geometry.h).
+#include "geometry/scene_geometry.h"
+
+#include <cmath>
+
+#include "geometry/accel/embree_accel.h"
+
+namespace rp {
+
+SceneGeometry::SceneGeometry(const Scene& scene)
+    : shapes_(std::make_unique<ShapeSet>(buildShapes(scene))),
+      accel_(std::make_unique<EmbreeAccel>(*shapes_)) {}
+
+SceneGeometry::~SceneGeometry() = default;
+SceneGeometry::SceneGeometry(SceneGeometry&&) noexcept = default;
+SceneGeometry& SceneGeometry::operator=(SceneGeometry&&) noexcept = default;
+
+std::optional<Hit> SceneGeometry::closestHit(const Ray& ray, const ModifierSet* skip) const {
+    AccelHit a;
+    if (!accel_->intersect(ray, skip, a)) return std::nullopt;
+    return completeHit(ray, a);
+}
+
+bool SceneGeometry::occluded(const Vec3& origin, const Vec3& dir, double tmax,
+                             const ModifierSet* skip) const {
+    return accel_->occluded(Ray{origin, dir, tmax}, skip);
+}
+
+namespace {
+
+// Embree's float edge test can accept a hit up to a few float ulps outside the
+// triangle. Near a corner that puts the hit point (and then a spawned origin) on the
+// far side of the neighbouring wall's plane, and the next ray escapes. So the double
+// hit point is moved into the triangle until it is at least `inset` from each edge
+// (in the polygon's plane). Triangulation diagonals are interior, so moving away from
+// them changes nothing; moving off a boundary edge by the spawn offset is within the
+// float accuracy the hit was found with anyway. Triangles too small to hold such a
+// point are left alone.
+void insetIntoTriangle(Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n,
+                       double inset) {
+    const Vec3* v[3] = {&a, &b, &c};
+    Vec3 inward[3];
+    double room[3];  // height of the opposite vertex over each edge
+    for (int i = 0; i < 3; ++i) {
+        inward[i] = normalize(cross(n, *v[(i + 1) % 3] - *v[i]));  // in plane, CCW about n
+        room[i] = dot(*v[(i + 2) % 3] - *v[i], inward[i]);
+        if (!(room[i] > 4 * inset)) return;
+    }
+    // Pushing off one edge can move the point toward another at an acute corner, so
+    // repeat; three rounds settle every triangle whose heights exceed 4 insets.
+    for (int round = 0; round < 3; ++round) {
+        bool moved = false;
+        for (int i = 0; i < 3; ++i) {
+            double dist = dot(p - *v[i], inward[i]);
+            if (dist < inset) {
+                p += inward[i] * (inset - dist);
+                moved = true;
+            }
+        }
+        if (!moved) return;
+    }
+}
+
+}  // namespace
+
+Hit SceneGeometry::completeHit(const Ray& ray, const AccelHit& a) const {
+    Hit h;
+    h.t = a.t;
+    h.point = ray.origin + ray.dir * a.t;
+    double scale = maxAbs(h.point);
+    SurfacePoint sp;
+    uint32_t index = a.index;
+    switch (a.kind) {
+    case ShapeKind::Polygon: {
+        const PolygonShape& p = shapes_->polygons[index];
+        // Float triangles: the offset must clear their rounding (ray.h).
+        h.offset = kFloatOffsetRel * std::fmax(scale, p.scale);
+        const TriIndices& tri = shapes_->triangles[a.triangle];
+        insetIntoTriangle(h.point, shapes_->vertices[tri[0]], shapes_->vertices[tri[1]],
+                          shapes_->vertices[tri[2]], p.normal, h.offset);
+        Vec3 rel = h.point - p.origin;
+        sp.normal = p.normal;
+        sp.u = dot(rel, p.uAxis);
+        sp.v = dot(rel, cross(p.normal, p.uAxis));
+        h.prim = p.prim;
+        h.modifier = p.modifier;
+        break;
+    }
+    case ShapeKind::Sphere: {
+        const SphereShape& s = shapes_->spheres[index];
+        sp = sphereSurface(s, h.point);
+        h.prim = s.prim;
+        h.modifier = s.modifier;
+        h.offset = kDoubleOffsetRel * std::fmax(scale, s.radius);
+        break;
+    }
+    case ShapeKind::Cone: {
+        const ConeShape& c = shapes_->cones[index];
+        sp = coneSurface(c, h.point);
+        h.prim = c.prim;
+        h.modifier = c.modifier;
+        h.offset = kDoubleOffsetRel * std::fmax(scale, c.length + std::fmax(c.r0, c.r1));
+        break;
+    }
+    case ShapeKind::Ring: {
+        const RingShape& r = shapes_->rings[index];
+        sp = ringSurface(r, h.point);
+        h.prim = r.prim;
+        h.modifier = r.modifier;
+        h.offset = kDoubleOffsetRel * std::fmax(scale, r.r1);
+        break;
+    }
+    }
+    h.normal = sp.normal;
+    h.u = sp.u;
+    h.v = sp.v;
+    h.front = dot(ray.dir, h.normal) < 0;
+    return h;
+}
+
+SceneCube sceneCubeFor(const Bounds3& bounds) {
+    SceneCube cube;
+    if (bounds.empty()) return cube;
+    constexpr double kOMargin = 10 * 1e-6;  // oconv.c: OMARGIN = 10*FTINY
+    Vec3 lo = bounds.min - Vec3{kOMargin, kOMargin, kOMargin};
+    Vec3 hi = bounds.max + Vec3{kOMargin, kOMargin, kOMargin};
+    Vec3 ext = hi - lo;
+    cube.size = std::fmax(ext.x, std::fmax(ext.y, ext.z));
+    cube.origin = (hi + lo - Vec3{cube.size, cube.size, cube.size}) * 0.5;
+    return cube;
+}
+
+SceneCube SceneGeometry::sceneCube() const { return sceneCubeFor(shapes_->bounds); }
+
+std::vector<int32_t> SceneGeometry::sourcesInDirection(const Vec3& dir) const {
+    std::vector<int32_t> out;
+    rp::sourcesInDirection(shapes_->sources, dir, out);
+    return out;
+}
+
+}  // namespace rp

@@ -1,0 +1,42 @@
+// Distant sources (see source.h).
+#include "geometry/source.h"
+
+#include <cmath>
+#include <string>
+
+#include "util/warnings.h"
+
+namespace rp {
+
+bool makeSource(const Primitive& prim, int32_t primIndex, DistantSource& src) {
+    const std::string what = "source '" + prim.name + "'";
+    const std::vector<double>& a = prim.rargs;
+    if (a.size() != 4)
+        throw InputError(prim.loc, what + ": expected 4 real arguments, got " +
+                                       std::to_string(a.size()));
+    Vec3 d{a[0], a[1], a[2]};
+    if (!(length(d) > 0)) {
+        warn(prim.loc, what + ": zero direction, ignored");
+        return false;
+    }
+    if (!(a[3] > 0)) {
+        warn(prim.loc, what + ": zero or negative angle, ignored");
+        return false;
+    }
+    double half = std::fmin(a[3], 360.0) * (kPi / 180.0) * 0.5;
+    src.dir = normalize(d);
+    src.cosHalfAngle = std::cos(half);
+    src.solidAngle = 2 * kPi * (1 - src.cosHalfAngle);
+    src.prim = primIndex;
+    src.modifier = prim.modifier;
+    return true;
+}
+
+void sourcesInDirection(const std::vector<DistantSource>& sources, const Vec3& dir,
+                        std::vector<int32_t>& out) {
+    out.clear();
+    for (size_t i = 0; i < sources.size(); ++i)
+        if (dot(sources[i].dir, dir) >= sources[i].cosHalfAngle) out.push_back(int32_t(i));
+}
+
+}  // namespace rp

@@ -1,0 +1,78 @@
+// Sphere and bubble (see sphere.h).
+#include "geometry/sphere.h"
+
+#include <cmath>
+#include <string>
+
+#include "util/warnings.h"
+
+namespace rp {
+
+bool makeSphere(const Primitive& prim, int32_t primIndex, SphereShape& shape) {
+    const std::string kind(primTypeName(prim.type));
+    if (prim.rargs.size() != 4)
+        throw InputError(prim.loc, kind + " '" + prim.name + "': expected 4 real arguments, got " +
+                                       std::to_string(prim.rargs.size()));
+    const std::vector<double>& r = prim.rargs;
+    shape.center = {r[0], r[1], r[2]};
+    shape.radius = r[3];
+    shape.inward = prim.type == PrimType::Bubble;
+    shape.prim = primIndex;
+    shape.modifier = prim.modifier;
+    if (shape.radius < 0) {
+        // RADIANCE compat: a negative radius turns a sphere into a bubble and vice versa.
+        warn(prim.loc, kind + " '" + prim.name + "': negative radius");
+        shape.radius = -shape.radius;
+        shape.inward = !shape.inward;
+    }
+    if (!(shape.radius > 0)) {
+        warn(prim.loc, kind + " '" + prim.name + "': zero radius, ignored");
+        return false;
+    }
+    return true;
+}
+
+bool intersectSphere(const SphereShape& s, const Vec3& o, const Vec3& d, double tmin,
+                     double tmax, double& t) {
+    // Origin relative to the centre, and the discriminant from the distance of closest
+    // approach (r^2 - |l|^2 factored), which stays accurate for rays that start far away
+    // or nearly graze (Haines et al., Ray Tracing Gems ch. 7).
+    Vec3 oc = o - s.center;
+    double a = dot(d, d);
+    double bHalf = dot(oc, d);
+    Vec3 l = oc - d * (bHalf / a);
+    double ll = length(l);
+    double disc = a * (s.radius - ll) * (s.radius + ll);
+    if (!(disc > 0)) return false;
+    double c = dot(oc, oc) - s.radius * s.radius;
+    double q = -(bHalf + std::copysign(std::sqrt(disc), bHalf));
+    double t0 = q / a, t1 = c / q;
+    if (t0 > t1) std::swap(t0, t1);
+    if (t0 > tmin && t0 < tmax) {
+        t = t0;
+        return true;
+    }
+    if (t1 > tmin && t1 < tmax) {
+        t = t1;
+        return true;
+    }
+    return false;
+}
+
+SurfacePoint sphereSurface(const SphereShape& s, const Vec3& p) {
+    Vec3 n = (p - s.center) / s.radius;
+    n = normalize(n);
+    SurfacePoint sp;
+    sp.normal = s.inward ? -n : n;
+    double phi = std::atan2(n.y, n.x) / (2 * kPi);
+    sp.u = phi < 0 ? phi + 1 : phi;
+    sp.v = std::acos(std::fmax(-1.0, std::fmin(1.0, n.z))) / kPi;
+    return sp;
+}
+
+Bounds3 sphereBounds(const SphereShape& s) {
+    Vec3 r{s.radius, s.radius, s.radius};
+    return Bounds3{s.center - r, s.center + r};
+}
+
+}  // namespace rp
