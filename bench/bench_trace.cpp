@@ -1,6 +1,9 @@
-// Ray throughput of SceneGeometry on a generated scene of about 1 M triangles.
+// Ray throughput of SceneGeometry on generated scenes of about 1 M triangles.
 //
-// Scene: 100,000 small random 12-sided polygons (radius 0.05..0.15 m, random position
+// "room" scene (the headline figure): a closed 20 x 20 x 5 m room (6 polygons) holding
+// 1,000 tessellated spheres of 1,024 triangles each (16 x 32 quads as polygons, radius
+// 0.15..0.45 m) on a jittered grid: 1,024,006 triangles, like furniture-heavy interiors.
+// "soup" scene (a stress case): 100,000 small random 12-sided polygons (radius 0.05..0.15 m, random position
 // and orientation) in a 20 m box; half are regular (convex: fanned into 10 triangles),
 // half are 6-pointed stars (concave: ear-clipped into 10 triangles): 1,000,000 triangles.
 // (A 50 m box of 0.25..0.75 m polygons gave the same rays/s within noise.)
@@ -13,6 +16,7 @@
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -36,6 +40,46 @@ Vec3 randomDir(std::mt19937_64& rng) {
         double l = lengthSquared(d);
         if (l > 1e-6 && l <= 1) return d / std::sqrt(l);
     }
+}
+
+void addQuad(Scene& s, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    Primitive p;
+    p.type = PrimType::Polygon;
+    p.name = "q" + std::to_string(s.prims.size());
+    p.modifierName = "void";
+    for (const Vec3& v : {a, b, c, d}) p.rargs.insert(p.rargs.end(), {v.x, v.y, v.z});
+    s.prims.push_back(std::move(p));
+}
+
+constexpr double kRoomX = 20, kRoomY = 20, kRoomZ = 5;
+
+Scene makeRoomScene() {
+    Scene s;
+    const Vec3 o{0, 0, 0}, X{kRoomX, 0, 0}, Y{0, kRoomY, 0}, Z{0, 0, kRoomZ};
+    addQuad(s, o, Y, X + Y, X);              // floor, facing up
+    addQuad(s, Z, Z + X, Z + X + Y, Z + Y);  // ceiling
+    addQuad(s, o, X, X + Z, Z);              // walls
+    addQuad(s, Y, Y + Z, X + Y + Z, X + Y);
+    addQuad(s, o, Z, Y + Z, Y);
+    addQuad(s, X, X + Y, X + Y + Z, X + Z);
+    std::mt19937_64 rng(4242);
+    std::uniform_real_distribution<double> jitter(-0.3, 0.3), rad(0.15, 0.45);
+    constexpr int kNu = 32, kNv = 16;
+    for (int gx = 0; gx < 40; ++gx)
+        for (int gy = 0; gy < 25; ++gy) {
+            Vec3 c{0.5 * (gx + 0.5) + jitter(rng) * 0.2, 0.8 * (gy + 0.5) + jitter(rng),
+                   1.0 + 3.0 * std::fabs(jitter(rng))};
+            double r = std::min(rad(rng), 0.24);
+            auto at = [&](int iu, int iv) {
+                double ph = 2 * kPi * iu / kNu, th = kPi * iv / kNv;
+                return c + Vec3{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph),
+                                std::cos(th)} * r;
+            };
+            for (int iv = 0; iv < kNv; ++iv)
+                for (int iu = 0; iu < kNu; ++iu)
+                    addQuad(s, at(iu, iv), at(iu, iv + 1), at(iu + 1, iv + 1), at(iu + 1, iv));
+        }
+    return s;
 }
 
 Scene makeScene() {
@@ -70,18 +114,29 @@ struct Fixture {
     std::vector<Ray> rays;
 };
 
-Fixture& fixture() {
-    static Fixture f = [] {
-        Fixture x;
-        Scene s = makeScene();
-        x.geometry = std::make_unique<SceneGeometry>(s);
-        std::mt19937_64 rng(777);
-        std::uniform_real_distribution<double> pos(0, kBox);
-        x.rays.resize(kBatch);
-        for (Ray& r : x.rays) r = {{pos(rng), pos(rng), pos(rng)}, randomDir(rng)};
-        return x;
-    }();
-    return f;
+Fixture makeFixture(const Scene& s, const Vec3& lo, const Vec3& hi) {
+    Fixture x;
+    x.geometry = std::make_unique<SceneGeometry>(s);
+    std::mt19937_64 rng(777);
+    std::uniform_real_distribution<double> u(0, 1);
+    x.rays.resize(kBatch);
+    for (Ray& r : x.rays) {
+        Vec3 o{lo.x + u(rng) * (hi.x - lo.x), lo.y + u(rng) * (hi.y - lo.y),
+               lo.z + u(rng) * (hi.z - lo.z)};
+        r = {o, randomDir(rng)};
+    }
+    return x;
+}
+
+// range(1): 0 = room scene, 1 = soup scene.
+Fixture& fixture(int which) {
+    if (which == 0) {
+        static Fixture room = makeFixture(makeRoomScene(), {0.01, 0.01, 0.01},
+                                          {kRoomX - 0.01, kRoomY - 0.01, kRoomZ - 0.01});
+        return room;
+    }
+    static Fixture soup = makeFixture(makeScene(), {0, 0, 0}, {kBox, kBox, kBox});
+    return soup;
 }
 
 void BM_Build(benchmark::State& state) {
@@ -94,7 +149,7 @@ void BM_Build(benchmark::State& state) {
 }
 
 void BM_ClosestHit(benchmark::State& state) {
-    Fixture& f = fixture();
+    Fixture& f = fixture(int(state.range(1)));
     bool parallel = state.range(0) != 0;
     std::vector<double> t(kBatch);
     for (auto _ : state) {
@@ -117,7 +172,7 @@ void BM_ClosestHit(benchmark::State& state) {
 }
 
 void BM_Occluded(benchmark::State& state) {
-    Fixture& f = fixture();
+    Fixture& f = fixture(int(state.range(1)));
     bool parallel = state.range(0) != 0;
     std::vector<char> occ(kBatch);
     for (auto _ : state) {
@@ -139,7 +194,10 @@ void BM_Occluded(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_Build)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
-BENCHMARK(BM_ClosestHit)->ArgName("threads_all")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Occluded)->ArgName("threads_all")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+// Args: {threads_all, scene} with scene 0 = room, 1 = soup.
+BENCHMARK(BM_ClosestHit)->ArgNames({"threads_all", "soup"})->ArgsProduct({{0, 1}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Occluded)->ArgNames({"threads_all", "soup"})->ArgsProduct({{0, 1}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();
