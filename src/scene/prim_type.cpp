@@ -38,6 +38,7 @@ constexpr std::array kTypes{
     TypeInfo{PrimType::Plastic2, "plastic2", C::Material},
     TypeInfo{PrimType::Metal2, "metal2", C::Material},
     TypeInfo{PrimType::Trans2, "trans2", C::Material},
+    TypeInfo{PrimType::Ashik2, "ashik2", C::Material},
     TypeInfo{PrimType::Mist, "mist", C::Material},
     TypeInfo{PrimType::Dielectric, "dielectric", C::Material},
     TypeInfo{PrimType::Interface, "interface", C::Material},

@@ -19,7 +19,7 @@ enum class PrimType : uint8_t {
     // light-emitting materials
     Light, Illum, Glow, Spotlight,
     // reflecting/refracting materials
-    Mirror, Prism1, Prism2, Plastic, Metal, Trans, Plastic2, Metal2, Trans2, Mist,
+    Mirror, Prism1, Prism2, Plastic, Metal, Trans, Plastic2, Metal2, Trans2, Ashik2, Mist,
     Dielectric, Interface, Glass, Plasfunc, Metfunc, Transfunc, BRTDfunc, Plasdata,
     Metdata, Transdata, BSDF, ABSDF, WGMDfunc, Antimatter,
     // textures

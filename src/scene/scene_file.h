@@ -1,0 +1,43 @@
+// The frozen scene file that our oconv writes (header FORMAT=radphoton_scene, then a
+// versioned binary payload of all records), and the little we read of RADIANCE's own
+// octrees (FORMAT=Radiance_octree): the scene file names a non-frozen octree lists.
+// Deciding which kind a file is, and loading it, is loadScene() in scene_load.h.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/primitive.h"
+#include "util/header.h"
+
+namespace rp {
+
+constexpr const char* kSceneFileFormat = "radphoton_scene";
+constexpr const char* kRadianceOctreeFormat = "Radiance_octree";
+constexpr uint32_t kSceneFileVersion = 1;
+
+// The binary payload alone (what follows the header).
+std::string encodeScene(const Scene& scene);
+// Decodes a payload; magic, version, every count and index are validated, so a
+// truncated or corrupted file is an InputError naming `what`, never a crash.
+Scene decodeScene(std::string_view payload, const std::string& what);
+
+// Header (the given lines, then FORMAT=radphoton_scene) followed by the payload.
+std::string sceneFileBytes(const Scene& scene, const std::vector<std::string>& headerLines);
+// Writes sceneFileBytes to `path` through a temporary file in the same folder and a
+// rename, so a failed write never leaves a half-written scene file behind.
+void saveSceneFile(const std::string& path, const Scene& scene,
+                   const std::vector<std::string>& headerLines);
+
+// Splits a file's bytes into its RADIANCE header and the rest. False if the bytes do
+// not start with a "#?RADIANCE" header.
+bool splitHeader(std::string_view bytes, Header& header, std::string_view& rest);
+
+// The scene file names stored in a RADIANCE octree after its header (readoct.c: a
+// 2-byte magic giving the object size, four boundary strings, then NUL-terminated
+// names ending with an empty one). Empty for a frozen octree (oconv -f, or input from
+// standard input), whose objects are stored in binary instead.
+std::vector<std::string> radianceOctreeFiles(std::string_view binary, const std::string& what);
+
+}  // namespace rp

@@ -1,0 +1,29 @@
+// One entry point for tools: load a scene from any mix of .rad text files, standard
+// input ("-"), "!command"s, our frozen scene files and RADIANCE octrees, telling them
+// apart by header, not by extension. Also the work behind the oconv tool.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/primitive.h"
+#include "scene/reader.h"
+
+namespace rp {
+
+// Reads the inputs in order into one Scene. Scene::inputs lists every file read with its
+// mtime: for a frozen scene file, the inputs recorded in it and then the file itself;
+// for a RADIANCE octree, the scene files it names and then the octree.
+Scene loadScene(const std::vector<std::string>& paths, const LoadOptions& options = {});
+
+struct OconvRequest {
+    std::vector<std::string> files;  // scene descriptions, "-" or "!command"
+    std::string addTo;               // -i: existing scene file or octree to add to
+    std::string commandLine;         // goes into the header, as RADIANCE's printargs
+};
+
+// What oconv writes: the header (an -i input's header lines first, as RADIANCE's oconv
+// copies them) and the frozen scene.
+std::string oconvOutput(const OconvRequest& request, const LoadOptions& options = {});
+
+}  // namespace rp
