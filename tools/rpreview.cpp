@@ -1,0 +1,78 @@
+// rpreview: quick eye-light preview of a scene's geometry, written as a RADIANCE
+// picture; prints scene statistics and ray throughput to stderr.
+//   rpreview [view options] [-x res] [-y res] [-o out.hdr] scene.rad|scene.oct ...
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "geometry/scene_geometry.h"
+#include "render/preview.h"
+#include "scene/scene_load.h"
+#include "util/error.h"
+#include "util/header.h"
+
+namespace {
+
+int positiveInt(const char* s, const char* opt) {
+    char* end;
+    long v = std::strtol(s, &end, 10);
+    if (*end || v <= 0 || v > 100000)
+        throw rp::InputError(std::string("bad value for ") + opt + ": '" + s + "'");
+    return int(v);
+}
+
+int run(int argc, char** argv) {
+    rp::PreviewOptions opt;
+    std::string out;
+    std::vector<std::string> files;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        if (int n = rp::parseViewOption(opt.view, argc - i, argv + i)) {
+            i += n - 1;
+        } else if ((a == "-x" || a == "-y" || a == "-o") && i + 1 < argc) {
+            if (a == "-x") opt.xres = positiveInt(argv[++i], "-x");
+            else if (a == "-y") opt.yres = positiveInt(argv[++i], "-y");
+            else out = argv[++i];
+        } else if (a.size() > 1 && a[0] == '-') {
+            throw rp::InputError("unknown option '" + a + "'");
+        } else {
+            files.push_back(a);
+        }
+    }
+    if (files.empty()) throw rp::InputError("usage: rpreview [view options] [-x res] [-y res] [-o out.hdr] scene ...");
+    rp::Scene scene = rp::loadScene(files);
+    rp::SceneGeometry geometry(scene);
+    std::map<std::string, int> counts;
+    for (const auto& p : scene.prims) counts[std::string(rp::primTypeName(p.type))]++;
+    std::fprintf(stderr, "rpreview: %zu primitives (", scene.prims.size());
+    bool first = true;
+    for (auto& [t, n] : counts) std::fprintf(stderr, "%s%d %s", first ? "" : ", ", n, t.c_str()), first = false;
+    std::fprintf(stderr, "), %zu triangles, %zu distant sources\n", geometry.triangleCount(),
+                 geometry.sources().size());
+    rp::PreviewStats stats;
+    rp::Picture pic = rp::renderPreview(scene, geometry, opt, &stats);
+    pic.header.lines.insert(pic.header.lines.begin(), rp::commandLine(argc, argv));
+    std::fprintf(stderr, "rpreview: %dx%d, %ld rays, %.1f%% hit, %.2f M rays/s\n", pic.width,
+                 pic.height, stats.rays, 100.0 * stats.hits / std::max(1L, stats.rays),
+                 stats.rays / std::max(1e-9, stats.seconds) * 1e-6);
+    if (out.empty())
+        rp::writePicture(std::cout, pic);
+    else
+        rp::writePicture(out, pic);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const rp::InputError& e) {
+        std::fprintf(stderr, "rpreview: %s\n", e.what());
+        return 1;
+    }
+}
