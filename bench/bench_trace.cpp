@@ -3,6 +3,8 @@
 // "room" scene (the headline figure): a closed 20 x 20 x 5 m room (6 polygons) holding
 // 1,000 tessellated spheres of 1,024 triangles each (16 x 32 quads as polygons, radius
 // 0.15..0.45 m) on a jittered grid: 1,024,006 triangles, like furniture-heavy interiors.
+// "cornell": ../shared/validation/cornell/scene.rad (26 triangles, 1 sphere), rays from
+// random points inside the box.
 // "soup" scene (a stress case): 100,000 small random 12-sided polygons (radius 0.05..0.15 m, random position
 // and orientation) in a 20 m box; half are regular (convex: fanned into 10 triangles),
 // half are 6-pointed stars (concave: ear-clipped into 10 triangles): 1,000,000 triangles.
@@ -23,6 +25,7 @@
 #include <vector>
 
 #include "geometry/scene_geometry.h"
+#include "scene/scene_load.h"
 
 namespace {
 
@@ -128,8 +131,14 @@ Fixture makeFixture(const Scene& s, const Vec3& lo, const Vec3& hi) {
     return x;
 }
 
-// range(1): 0 = room scene, 1 = soup scene.
+// range(1): 0 = room scene, 1 = soup scene, 2 = ../shared/validation/cornell.
 Fixture& fixture(int which) {
+    if (which == 2) {
+        static Fixture cornell = makeFixture(
+            loadScene({RP_SHARED_DIR "/validation/cornell/scene.rad"}), {0.01, 0.01, 0.01},
+            {5.49, 5.49, 5.49});
+        return cornell;
+    }
     if (which == 0) {
         static Fixture room = makeFixture(makeRoomScene(), {0.01, 0.01, 0.01},
                                           {kRoomX - 0.01, kRoomY - 0.01, kRoomZ - 0.01});
@@ -194,10 +203,10 @@ void BM_Occluded(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_Build)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
-// Args: {threads_all, scene} with scene 0 = room, 1 = soup.
-BENCHMARK(BM_ClosestHit)->ArgNames({"threads_all", "soup"})->ArgsProduct({{0, 1}, {0, 1}})
+// Args: {threads_all, scene} with scene 0 = room, 1 = soup, 2 = cornell.
+BENCHMARK(BM_ClosestHit)->ArgNames({"threads_all", "scene"})->ArgsProduct({{0, 1}, {0, 1, 2}})
     ->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Occluded)->ArgNames({"threads_all", "soup"})->ArgsProduct({{0, 1}, {0, 1}})
+BENCHMARK(BM_Occluded)->ArgNames({"threads_all", "scene"})->ArgsProduct({{0, 1}, {0, 1, 2}})
     ->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();
