@@ -1,0 +1,58 @@
+// Random number streams. Each stream is a value keyed by (seed, domain, index) so that
+// results never depend on which thread draws them: photon i's emission stream is the
+// same with -n 1 and -n 16. RADIANCE's lesson (pmaprand.h: one stream per sampling
+// domain) is kept; its process-seeded erand48 state is not.
+#pragma once
+
+#include <cstdint>
+
+namespace rp {
+
+// Sampling domains: separate streams so that e.g. changing the scattering code does not
+// change emission positions.
+enum class RngDomain : uint32_t {
+    Emission = 1, Scattering = 2, Roulette = 3, Ambient = 4, Pixel = 5, Sampling = 6, Test = 99
+};
+
+// SplitMix64 finaliser (Steele, Lea & Flood 2014): a bijective 64-bit mixer.
+constexpr uint64_t mix64(uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+// xoshiro256+ (Blackman & Vigna 2018): fast, 2^256 period, good in the high bits we use
+// for doubles. Hand-written rather than <random> because std engines are either slow
+// (mt19937: 2.5 kB state per stream) or weak (minstd), and we create one per work item.
+class Rng {
+public:
+    Rng(uint64_t seed, RngDomain domain, uint64_t index) {
+        uint64_t z = mix64(seed + 0x9e3779b97f4a7c15ULL) ^ mix64(uint64_t(domain) << 32 ^ index);
+        for (auto& s : s_) {
+            z += 0x9e3779b97f4a7c15ULL;
+            s = mix64(z);
+        }
+    }
+
+    uint64_t next() {
+        const uint64_t result = s_[0] + s_[3];
+        const uint64_t t = s_[1] << 17;
+        s_[2] ^= s_[0];
+        s_[3] ^= s_[1];
+        s_[1] ^= s_[2];
+        s_[0] ^= s_[3];
+        s_[2] ^= t;
+        s_[3] = (s_[3] << 45) | (s_[3] >> 19);
+        return result;
+    }
+
+    // Uniform in [0, 1) with 53 random bits.
+    double uniform() { return double(next() >> 11) * 0x1.0p-53; }
+    // Uniform integer in [0, n) (n > 0), Lemire's multiply-shift (bias < n / 2^64).
+    uint64_t below(uint64_t n) { return uint64_t((unsigned __int128)next() * n >> 64); }
+
+private:
+    uint64_t s_[4];
+};
+
+}  // namespace rp
