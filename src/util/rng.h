@@ -49,7 +49,10 @@ public:
     // Uniform in [0, 1) with 53 random bits.
     double uniform() { return double(next() >> 11) * 0x1.0p-53; }
     // Uniform integer in [0, n) (n > 0), Lemire's multiply-shift (bias < n / 2^64).
-    uint64_t below(uint64_t n) { return uint64_t((unsigned __int128)next() * n >> 64); }
+    uint64_t below(uint64_t n) {
+        __extension__ using U128 = unsigned __int128;  // GCC/Clang; -Wpedantic-clean
+        return uint64_t(U128(next()) * n >> 64);
+    }
 
 private:
     uint64_t s_[4];
