@@ -1,0 +1,32 @@
+// The .cal library functions that are built in rather than defined in rayinit.cal:
+// calc's math library (sqrt ... rand, erf, erfc) and the renderer's additions (noise3,
+// noise3a/b/c with aliases noise3x/y/z, fnoise3, hermite). if, select and arg are
+// special forms handled by the compiler, not listed here.
+#pragma once
+
+#include <span>
+#include <string_view>
+
+namespace rp::calc {
+
+struct Builtin {
+    std::string_view name;
+    int minArgs;
+    int maxArgs;
+    double (*f1)(double) = nullptr;                 // one-argument math function, or
+    double (*fn)(const double* args, int n) = nullptr;  // general form
+};
+
+std::span<const Builtin> builtins();
+// nullptr when `name` is not a builtin.
+const Builtin* findBuiltin(std::string_view name);
+
+// Pseudo-random value in [0,1) that depends only on x (calc's rand(x)).
+double randOf(double x);
+
+// Gradient noise in about [-1,1] with its analytic gradient; `grad` may be null.
+double noise3(double x, double y, double z, double grad[3]);
+// Sum of noise3 octaves with halving amplitude, normalised to about [-1,1].
+double fnoise3(double x, double y, double z);
+
+}  // namespace rp::calc

@@ -1,0 +1,116 @@
+// Builder (loading .cal text), Program lookups and the per-thread Evaluator. The
+// compiler itself is in compile.cpp.
+#include "calc/program.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "calc/builtins.h"
+#include "calc/names.h"
+#include "calc/parser.h"
+#include "calc/search_path.h"
+
+namespace rp::calc {
+
+Builder::Builder(std::vector<std::string> searchPath) : searchPath_(std::move(searchPath)) {}
+
+void Builder::setContext(std::string_view context) { context_ = contextString(context); }
+
+void Builder::loadFile(const std::string& name) {
+    auto path = findFile(name, searchPath_);
+    if (!path) {
+        std::string dirs;
+        for (const auto& d : searchPath_) dirs += (dirs.empty() ? "" : ":") + d;
+        throw InputError(SourceLoc{name, 0},
+                         "cannot find function file (searched " +
+                             (dirs.empty() ? std::string("nothing") : dirs) + ")");
+    }
+    std::ifstream in(*path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    if (!in && !in.eof()) throw InputError(SourceLoc{*path, 0}, "cannot read function file");
+    loadString(ss.str(), *path);
+}
+
+void Builder::loadString(std::string_view text, const std::string& source, int firstLine) {
+    auto defs = parseDefinitions(text, source, context_, firstLine);
+    defs_.insert(defs_.end(), defs.begin(), defs.end());
+}
+
+int Builder::addExpression(std::string_view text, const SourceLoc& loc) {
+    exprs_.push_back(PendingExpr{parseExpression(text, loc), context_, loc});
+    return static_cast<int>(exprs_.size()) - 1;
+}
+
+std::optional<Entry> Program::variable(std::string_view name, std::string_view context) const {
+    std::string ctx = contextString(context);
+    for (int level = 0;; ++level) {
+        auto q = qualifiedName(name, ctx, level);
+        if (!q) break;
+        if (auto it = varIndex_.find(*q); it != varIndex_.end()) {
+            const VarInfo& v = *vars_[it->second];
+            // Constants and plain aliases need no cache slot.
+            if (v.body && (v.body->fn == evConst || v.body->fn == evRay ||
+                           v.body->fn == evModArg))
+                return Entry{v.body};
+            return Entry{varEntries_[it->second]};
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<Function> Program::function(std::string_view name, std::string_view context) const {
+    std::string ctx = contextString(context);
+    for (int level = 0;; ++level) {
+        auto q = qualifiedName(name, ctx, level);
+        if (!q) break;
+        if (auto it = functionIndex_.find(*q); it != functionIndex_.end())
+            return Function{static_cast<double>(it->second), functions_[it->second]->nparams};
+    }
+    auto bs = builtins();
+    for (std::size_t i = 0; i < bs.size(); ++i)
+        if (bs[i].name == name) return Function{builtinFunctionId(static_cast<int>(i)), bs[i].minArgs};
+    return std::nullopt;
+}
+
+Evaluator::Evaluator(std::shared_ptr<const Program> program) : program_(std::move(program)) {
+    RP_CHECK(program_ != nullptr);
+    values_.assign(program_->vars_.size() + 1, 0.0);
+    stamps_.assign(program_->vars_.size() + 1, 0);
+    argStack_.assign(1 << 15, 0.0);
+    state_.ray = &defaultRay_;
+    state_.varValue = values_.data();
+    state_.varStamp = stamps_.data();
+    state_.argStack = argStack_.data();
+    state_.argCapacity = static_cast<int>(argStack_.size());
+    state_.functions = program_->functionTable_.data();
+}
+
+void Evaluator::setRay(const RayContext& ray) {
+    state_.ray = &ray;
+    ++state_.clock;
+}
+
+void Evaluator::begin() {
+    state_.argTop = 0;
+    state_.depth = 0;
+    state_.frame = nullptr;
+    state_.frameSize = 0;
+}
+
+double Evaluator::eval(Entry e) {
+    RP_CHECK(e.node != nullptr);
+    begin();
+    char here;
+    state_.stackStart = &here;
+    return calc::eval(e.node, state_);
+}
+
+double Evaluator::call(const Function& f, std::span<const double> args) {
+    begin();
+    char here;
+    state_.stackStart = &here;
+    return callById(f.id, args.data(), static_cast<int>(args.size()), state_, nullptr);
+}
+
+}  // namespace rp::calc

@@ -1,0 +1,143 @@
+// Public interface of the .cal language: a Builder collects definitions from files
+// (found along RAYPATH) and inline text, build() compiles them once into an immutable,
+// shareable Program, and each thread evaluates it through its own small Evaluator.
+//
+//   calc::Builder b(calc::defaultSearchPath(libDir));
+//   b.loadFile("rayinit.cal");
+//   b.loadFile("skybright.cal");
+//   auto prog = b.build();
+//   auto skybr = prog->variable("skybr");          // resolved once
+//   calc::Evaluator ev(prog);                       // one per thread
+//   ev.setRay(ray);                                 // per ray: clears cached variables
+//   double v = ev.eval(*skybr);
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "calc/ast.h"
+#include "calc/eval.h"
+#include "calc/ray_context.h"
+
+namespace rp::calc {
+
+class Program;
+
+// Something to evaluate: a variable (cached per ray) or a compiled expression.
+struct Entry {
+    const Node* node = nullptr;
+};
+
+// A function to call with arguments: user-defined (index >= 0) or builtin.
+struct Function {
+    double id = 0;    // see builtinFunctionId
+    int nparams = 0;  // declared parameters (builtins: minimum)
+};
+
+class Builder {
+public:
+    // `searchPath`: directories for loadFile (see search_path.h).
+    explicit Builder(std::vector<std::string> searchPath = {});
+
+    // Context for subsequent loads (names.h): "" is global, "sky" becomes "`sky".
+    void setContext(std::string_view context);
+    const std::string& context() const { return context_; }
+
+    // Loads a .cal file found along the search path. Later definitions of a name
+    // replace earlier ones. Throws InputError (missing file, syntax error with file:line).
+    void loadFile(const std::string& name);
+    // Loads inline definitions (rtrace -e). `source` names them in errors ("" = command
+    // line).
+    void loadString(std::string_view text, const std::string& source = "", int firstLine = 1);
+    // Registers a bare expression (a modifier's coordinate argument) to be compiled in
+    // the current context; returns its id for Program::expression().
+    int addExpression(std::string_view text, const SourceLoc& loc);
+
+    // Compiles everything loaded so far. May be called again after loading more.
+    std::shared_ptr<const Program> build() const;
+
+    const std::vector<std::string>& searchPath() const { return searchPath_; }
+
+private:
+    struct PendingExpr {
+        std::shared_ptr<const Expr> expr;
+        std::string context;
+        SourceLoc loc;
+    };
+    std::vector<std::string> searchPath_;
+    std::string context_;
+    std::vector<std::shared_ptr<const Definition>> defs_;
+    std::vector<PendingExpr> exprs_;
+    friend class Linker;
+};
+
+// Immutable after build(); safe to share between threads.
+class Program {
+public:
+    Program(const Program&) = delete;
+    Program& operator=(const Program&) = delete;
+
+    // Looks `name` up as code in `context` would see it (names.h search rules).
+    std::optional<Entry> variable(std::string_view name, std::string_view context = "") const;
+    std::optional<Function> function(std::string_view name, std::string_view context = "") const;
+    Entry expression(int id) const { return Entry{expressions_.at(id)}; }
+
+    // References that could not be resolved and other problems found while compiling,
+    // as "file:line: message". Each is also raised as an InputError if evaluated.
+    const std::vector<std::string>& problems() const { return problems_; }
+
+    int variableSlots() const { return static_cast<int>(vars_.size()); }
+
+private:
+    Program() = default;
+    friend class Linker;
+    friend class Evaluator;
+
+    std::deque<Node> nodes_;
+    std::deque<std::vector<const Node*>> kidLists_;
+    std::deque<NodeInfo> infos_;
+    std::vector<std::unique_ptr<VarInfo>> vars_;
+    std::vector<const Node*> varEntries_;  // evVar node per variable
+    std::vector<std::unique_ptr<FunctionInfo>> functions_;
+    std::vector<const FunctionInfo*> functionTable_;
+    std::map<std::string, int, std::less<>> varIndex_;
+    std::map<std::string, int, std::less<>> functionIndex_;
+    std::vector<const Node*> expressions_;
+    std::vector<std::string> problems_;
+};
+
+// Per-thread evaluation state: the variable cache and the call stack. Cheap to create;
+// not thread-safe itself, one per thread.
+class Evaluator {
+public:
+    explicit Evaluator(std::shared_ptr<const Program> program);
+
+    // Starts a new evaluation for `ray` (kept by reference until the next setRay):
+    // variables cached for the previous ray are forgotten.
+    void setRay(const RayContext& ray);
+
+    double eval(Entry e);
+    double call(const Function& f, std::span<const double> args);
+
+    // Divisions by zero and library calls with non-finite results so far (each gave 0).
+    long mathErrors() const { return state_.mathErrors; }
+
+private:
+    void begin();
+
+    std::shared_ptr<const Program> program_;
+    RayContext defaultRay_;
+    std::vector<double> values_;
+    std::vector<std::uint64_t> stamps_;
+    std::vector<double> argStack_;
+    EvalState state_;
+};
+
+}  // namespace rp::calc

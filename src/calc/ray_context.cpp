@@ -1,0 +1,31 @@
+// Name table of the predefined ray variables (see ray_context.h).
+#include "calc/ray_context.h"
+
+#include <array>
+#include <cstddef>
+
+namespace rp::calc {
+namespace {
+
+#define RP_RAYVAR(name, member, k) \
+    RayVariable { name, offsetof(RayContext, member) + (k) * sizeof(double) }
+
+const std::array kRayVariables = {
+    RP_RAYVAR("Dx", D, 0),    RP_RAYVAR("Dy", D, 1),    RP_RAYVAR("Dz", D, 2),
+    RP_RAYVAR("Nx", N, 0),    RP_RAYVAR("Ny", N, 1),    RP_RAYVAR("Nz", N, 2),
+    RP_RAYVAR("Px", P, 0),    RP_RAYVAR("Py", P, 1),    RP_RAYVAR("Pz", P, 2),
+    RP_RAYVAR("Lu", Lu, 0),   RP_RAYVAR("Lv", Lv, 0),   RP_RAYVAR("T", T, 0),
+    RP_RAYVAR("Ts", Ts, 0),   RP_RAYVAR("Rdot", Rdot, 0), RP_RAYVAR("S", S, 0),
+    RP_RAYVAR("Tx", Tvec, 0), RP_RAYVAR("Ty", Tvec, 1), RP_RAYVAR("Tz", Tvec, 2),
+    RP_RAYVAR("Ix", I, 0),    RP_RAYVAR("Iy", I, 1),    RP_RAYVAR("Iz", I, 2),
+    RP_RAYVAR("Jx", J, 0),    RP_RAYVAR("Jy", J, 1),    RP_RAYVAR("Jz", J, 2),
+    RP_RAYVAR("Kx", K, 0),    RP_RAYVAR("Ky", K, 1),    RP_RAYVAR("Kz", K, 2),
+};
+
+#undef RP_RAYVAR
+
+}  // namespace
+
+std::span<const RayVariable> rayVariables() { return kRayVariables; }
+
+}  // namespace rp::calc

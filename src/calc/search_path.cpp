@@ -1,0 +1,45 @@
+// RAYPATH handling (see search_path.h).
+#include "calc/search_path.h"
+
+#include <cstdlib>
+#include <fstream>
+
+namespace rp::calc {
+
+std::vector<std::string> splitSearchPath(std::string_view raypath) {
+    std::vector<std::string> dirs;
+    std::size_t start = 0;
+    while (start <= raypath.size()) {
+        std::size_t end = raypath.find(':', start);
+        if (end == std::string_view::npos) end = raypath.size();
+        if (end > start) dirs.emplace_back(raypath.substr(start, end - start));
+        start = end + 1;
+    }
+    return dirs;
+}
+
+std::vector<std::string> defaultSearchPath(const std::string& projectLibDir) {
+    if (const char* env = std::getenv("RAYPATH"); env && *env) return splitSearchPath(env);
+    std::vector<std::string> dirs{"."};
+    if (!projectLibDir.empty()) dirs.push_back(projectLibDir);
+    return dirs;
+}
+
+static bool readable(const std::string& path) {
+    std::ifstream f(path);
+    return f.good();
+}
+
+std::optional<std::string> findFile(const std::string& name, std::span<const std::string> dirs) {
+    if (name.empty()) return std::nullopt;
+    if (name.front() == '/' || name.starts_with("./") || name.starts_with("../"))
+        return readable(name) ? std::optional<std::string>(name) : std::nullopt;
+    for (const std::string& dir : dirs) {
+        std::string path = dir.empty() || dir == "." ? name : dir + "/" + name;
+        if (dir.ends_with('/')) path = dir + name;
+        if (readable(path)) return path;
+    }
+    return std::nullopt;
+}
+
+}  // namespace rp::calc

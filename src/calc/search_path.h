@@ -1,0 +1,26 @@
+// Where .cal and data files are found: RADIANCE's RAYPATH, a colon-separated list of
+// directories searched in order. Without RAYPATH the default is "." then the directory
+// the caller names (tools pass the project's lib/ folder, e.g. from their own
+// RP_SOURCE_DIR or install prefix; the library has no compiled-in path).
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rp::calc {
+
+// Splits "a:b::c" into {"a", "b", "c"} (empty entries dropped).
+std::vector<std::string> splitSearchPath(std::string_view raypath);
+
+// RAYPATH from the environment when set and not empty, else {".", projectLibDir}
+// (projectLibDir omitted when empty).
+std::vector<std::string> defaultSearchPath(const std::string& projectLibDir);
+
+// RADIANCE getpath(): names that are absolute or start with "./" or "../" are used as
+// given; others are tried in each directory in turn. Nothing if no readable file exists.
+std::optional<std::string> findFile(const std::string& name, std::span<const std::string> dirs);
+
+}  // namespace rp::calc
