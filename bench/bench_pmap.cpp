@@ -1,0 +1,156 @@
+// Photon map speed: kd-tree build of 1 M photons (1 thread and all threads), k-NN lookups
+// per second for k = 50 and 500 at random surface points of a room-like box, file save and
+// load, and bytes per photon in memory and on disk.
+#include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <random>
+
+#include "pmap/density.h"
+#include "pmap/photon_map.h"
+
+namespace {
+
+using namespace rp;
+using namespace rp::pmap;
+
+constexpr size_t kMillion = 1000000;
+
+// A point on one of the six inner faces of a 6 x 4 x 3 m room, chosen in proportion to
+// area, with the inward normal.
+struct SurfacePoint {
+    Vec3 pos, normal;
+};
+SurfacePoint roomPoint(std::mt19937_64& rng) {
+    const double sx = 6, sy = 4, sz = 3;
+    const double areas[3] = {sx * sy, sx * sz, sy * sz};  // floor/ceiling, y walls, x walls
+    std::uniform_real_distribution<double> u(0, 1);
+    double a = u(rng) * 2 * (areas[0] + areas[1] + areas[2]);
+    const bool high = u(rng) < 0.5;
+    double s = u(rng), t = u(rng);
+    if (a < 2 * areas[0]) return {Vec3(s * sx, t * sy, high ? sz : 0), Vec3(0, 0, high ? -1 : 1)};
+    if (a < 2 * (areas[0] + areas[1]))
+        return {Vec3(s * sx, high ? sy : 0, t * sz), Vec3(0, high ? -1 : 1, 0)};
+    return {Vec3(high ? sx : 0, s * sy, t * sz), Vec3(high ? -1 : 1, 0, 0)};
+}
+
+std::vector<Photon> roomPhotons(size_t n, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.5, 1.5);
+    std::vector<Photon> v;
+    v.reserve(n);
+    for (size_t i = 0; i < n; ++i) {
+        SurfacePoint p = roomPoint(rng);
+        v.push_back(makePhoton(p.pos, p.normal, {u(rng) * 1e-6, u(rng) * 1e-6, u(rng) * 1e-6}));
+    }
+    return v;
+}
+
+const PhotonMap& roomMap() {
+    static const PhotonMap map(PhotonMapType::Global, roomPhotons(kMillion, 1));
+    return map;
+}
+
+void BM_BuildKdTree1M(benchmark::State& state) {
+    const int threads = static_cast<int>(state.range(0));
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                              static_cast<size_t>(threads));
+    const auto photons = roomPhotons(kMillion, 2);
+    for (auto _ : state) {
+        auto tree = buildKdTree(photons, threads > 1);
+        benchmark::DoNotOptimize(tree.data());
+    }
+    state.counters["threads"] = threads;
+    state.counters["photons/s"] =
+        benchmark::Counter(double(kMillion) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_BuildKdTree1M)
+    ->Arg(1)
+    ->Arg(static_cast<int>(tbb::info::default_concurrency()))
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// Stats + tree, as mkpmap does after photon distribution (all threads).
+void BM_BuildPhotonMap1M(benchmark::State& state) {
+    const auto photons = roomPhotons(kMillion, 2);
+    for (auto _ : state) {
+        PhotonMap map(PhotonMapType::Global, photons);
+        benchmark::DoNotOptimize(map.photons().data());
+    }
+}
+BENCHMARK(BM_BuildPhotonMap1M)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// One density-estimate lookup per iteration (k+1 nearest, adaptive radius, normal filter)
+// at random points on the room's surfaces; each benchmark thread has its own PhotonLookup.
+void BM_Lookup1M(benchmark::State& state) {
+    const PhotonMap& map = roomMap();
+    const int k = static_cast<int>(state.range(0));
+    PhotonLookup lookup(map, LookupParams{k, 0, 0.5});
+    std::mt19937_64 rng(100 + state.thread_index());
+    std::vector<SurfacePoint> queries;
+    for (int i = 0; i < 4096; ++i) queries.push_back(roomPoint(rng));
+    size_t i = 0, found = 0;
+    for (auto _ : state) {
+        const SurfacePoint& q = queries[i++ & 4095];
+        found += lookup.findPhotons(q.pos, &q.normal).size();
+    }
+    state.counters["lookups/s"] =
+        benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["found"] = double(found) / double(state.iterations());
+    state.counters["short"] = double(lookup.shortLookups());
+}
+BENCHMARK(BM_Lookup1M)->Arg(50)->Arg(500)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Lookup1M)->Arg(50)->Arg(500)->Unit(benchmark::kMicrosecond)->Threads(2)->UseRealTime();
+
+// Full density estimate (lookup + flux sum) for comparison with the bare lookup.
+void BM_SurfaceDensity1M(benchmark::State& state) {
+    const PhotonMap& map = roomMap();
+    PhotonLookup lookup(map, LookupParams{static_cast<int>(state.range(0)), 0, 0.5});
+    std::mt19937_64 rng(7);
+    std::vector<SurfacePoint> queries;
+    for (int i = 0; i < 4096; ++i) queries.push_back(roomPoint(rng));
+    size_t i = 0;
+    for (auto _ : state) {
+        const SurfacePoint& q = queries[i++ & 4095];
+        benchmark::DoNotOptimize(lookup.surfaceDensity(q.pos, q.normal));
+    }
+    state.counters["lookups/s"] =
+        benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_SurfaceDensity1M)->Arg(50)->Arg(500)->Unit(benchmark::kMicrosecond);
+
+std::string tempMapPath() {
+    return (std::filesystem::temp_directory_path() /
+            ("bench_pmap_" + std::to_string(::getpid()) + ".pm"))
+        .string();
+}
+
+void BM_SaveLoad1M(benchmark::State& state) {
+    const PhotonMap& map = roomMap();
+    const std::string path = tempMapPath();
+    const bool load = state.range(0) != 0;
+    if (load) map.save(path, "bench_pmap", true);
+    for (auto _ : state) {
+        if (load) {
+            PhotonMap m = PhotonMap::load(path);
+            benchmark::DoNotOptimize(m.photons().data());
+        } else {
+            map.save(path, "bench_pmap", true);
+        }
+    }
+    const double fileBytes = double(std::filesystem::file_size(path));
+    std::filesystem::remove(path);
+    state.SetLabel(load ? "load" : "save");
+    state.counters["bytes/photon on disk"] = fileBytes / double(map.size());
+    state.counters["bytes/photon in memory"] = double(sizeof(Photon));
+    state.counters["MB/s"] =
+        benchmark::Counter(fileBytes * state.iterations() / 1e6, benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_SaveLoad1M)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,97 @@
+// Density estimates and the adaptive maximum search radius (see density.h).
+#include "pmap/density.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rp::pmap {
+
+namespace {
+// RADIANCE compat: pmapdata.c PMAP_MAXDIST_COEFF, _INC, _DEC, _CNT, PMAP_SHORT_LOOKUP_THRESH.
+constexpr double kMaxDistCoeff = 100;
+constexpr double kMaxDistInc = 4;
+constexpr double kMaxDistDec = 0.9;
+constexpr int kMaxDistCount = 1000;
+constexpr size_t kShortLookupThreshold = 1;
+}  // namespace
+
+PhotonLookup::PhotonLookup(const PhotonMap& map, const LookupParams& params)
+    : map_(&map),
+      bandwidth_(static_cast<int>(
+          std::min<uint64_t>(std::max(params.bandwidth, 1), std::max<uint64_t>(map.size(), 1)))),
+      fixedRadius_(params.maxSearchRadius > 0),
+      gatherTolerance_(params.gatherTolerance) {
+    const size_t queueLen = static_cast<size_t>(bandwidth_) + 1;
+    hits_.resize(queueLen);
+    if (fixedRadius_) {
+        maxDist2Limit_ = params.maxSearchRadius * params.maxSearchRadius;
+    } else if (!map.empty()) {
+        // RADIANCE computes this in float (PhotonMap.maxDist2Limit); so do we.
+        maxDist2Limit_ = static_cast<float>(kMaxDistCoeff * static_cast<double>(queueLen) *
+                                            map.stats().cogDist2 / static_cast<double>(map.size()));
+    }
+    // A degenerate map (one point, CoGdist 0) would otherwise never find anything.
+    if (!(maxDist2Limit_ > 0)) maxDist2Limit_ = HUGE_VAL;
+    maxDist2_ = maxDist2Limit_;
+}
+
+std::span<const PhotonHit> PhotonLookup::findPhotons(const Vec3& pos, const Vec3* normal) {
+    const size_t queueLen = hits_.size();
+    lastSearchDist2_ = static_cast<float>(maxDist2_);
+    found_ = findNearestPhotons(map_->photons(), pos, normal, lastSearchDist2_, hits_);
+    ++lookups_;
+    if (found_ == queueLen) lastSearchDist2_ = hits_[0].dist2;
+
+    if (static_cast<double>(found_) < static_cast<double>(queueLen) * gatherTolerance_) {
+        // Short lookup. One photon or none is taken to mean there really are no photons
+        // nearby, so growing the radius would not help (RADIANCE's threshold).
+        if (found_ > kShortLookupThreshold) {
+            ++shortLookups_;
+            if (!fixedRadius_ && maxDist2_ < maxDist2Limit_) maxDist2_ *= kMaxDistInc;
+        }
+        goodRun_ = 0;
+    } else if (!fixedRadius_) {
+        goodRun_ = (goodRun_ + 1) % kMaxDistCount;
+        if (goodRun_ == 0) maxDist2_ *= kMaxDistDec;
+    }
+    return {hits_.data(), found_};
+}
+
+std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& normal) {
+    std::array<double, 3> irrad = {0, 0, 0};
+    if (map_->empty()) return irrad;
+    auto hits = findPhotons(pos, &normal);
+    if (hits.size() < 2) return irrad;  // need at least 2 photons
+
+    // hits is a max-heap: hits[0] is the furthest; the second furthest is a child of it.
+    // RADIANCE compat: d1 is pmap->maxDist2 after the search, i.e. the furthest photon when
+    // the queue filled up and the search limit otherwise. (RADIANCE reads node[2] even when
+    // only 2 photons were found; we look only at children that exist.)
+    const double d1 = lastSearchDist2_;
+    double d2 = hits[1].dist2;
+    if (hits.size() > 2) d2 = std::max(d2, static_cast<double>(hits[2].dist2));
+    const double r2 = 0.25 * (d1 + d2 + 2 * std::sqrt(d1 * d2));
+
+    // Skip the extra (furthest) photon; uniform kernel.
+    const auto photons = map_->photons();
+    for (size_t i = 1; i < hits.size(); ++i) {
+        const auto f = photons[hits[i].index].fluxRgb();
+        for (int c = 0; c < 3; ++c) irrad[c] += f[c];
+    }
+    // Divide by the search area pi r^2 and by pi, RADIANCE's ambient normalisation.
+    const double scale = 1.0 / (kPi * kPi * r2);
+    for (double& v : irrad) v *= scale;
+    return irrad;
+}
+
+std::array<double, 3> PhotonLookup::precompDensity(const Vec3& pos, const Vec3& normal) const {
+    std::array<double, 3> irrad = {0, 0, 0};
+    if (map_->empty()) return irrad;
+    // RADIANCE compat: find1Photon searches within the squared radius CoGdist.
+    const int64_t idx = findNearestPhoton(map_->photons(), pos, &normal, map_->stats().cogDist2);
+    if (idx < 0) return irrad;
+    const auto f = map_->photons()[static_cast<size_t>(idx)].fluxRgb();
+    return {f[0], f[1], f[2]};
+}
+
+}  // namespace rp::pmap

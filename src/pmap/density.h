@@ -1,0 +1,84 @@
+// Photon density estimates as RADIANCE computes them (pmutil.c photonDensity,
+// photonPreCompDensity) and the automatic maximum search radius of findPhotons
+// (pmapdata.c; manual section 3.2.3). Bias compensation (-ap file min max) is not here yet.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "pmap/kdtree.h"
+#include "pmap/photon_map.h"
+#include "util/vec.h"
+
+namespace rp::pmap {
+
+struct LookupParams {
+    int bandwidth = 40;  // photons per density estimate (-ap file bwidth; RADIANCE default 40)
+    double maxSearchRadius = 0;    // -am: fixed maximum search radius (not squared); 0 = automatic
+    double gatherTolerance = 0.5;  // short lookup: found < tolerance x queue length (contrib: 1)
+};
+
+// Per-thread lookup state for one photon map: the result buffer (k+1 entries, allocated once)
+// and the adaptive search radius, which RADIANCE keeps in the shared PhotonMap. Keeping it
+// per thread makes every thread's results independent of the others. Not thread-safe: give
+// each thread its own PhotonLookup (e.g. tbb::enumerable_thread_specific).
+class PhotonLookup {
+public:
+    // The map must outlive this object. Bandwidths above the photon count are clamped to it
+    // (RADIANCE compat: loadPmaps "adjusting density estimate bandwidth").
+    PhotonLookup(const PhotonMap& map, const LookupParams& params);
+
+    // RADIANCE's findPhotons: up to bandwidth+1 nearest photons to `pos` (normal filter if
+    // `normal` is non-null; null for volume photons) within the current maximum radius,
+    // then the adaptive update:
+    //  - initial and limiting squared radius = 100 x (bandwidth+1) x CoGdist / numPhotons,
+    //    or maxSearchRadius^2 when fixed (then never adapted);
+    //  - short lookup (1 < found < gatherTolerance x (bandwidth+1)): squared radius x4 if
+    //    below the limit (RADIANCE compat: it may then overshoot the limit by up to x4, as in
+    //    pmapdata.c; the redo of PMAP_LOOKUP_REDO is not done) and the run of good lookups
+    //    restarts; every 1000 consecutive good lookups: squared radius x0.9.
+    // Returns the hits as a max-heap (element 0 is the furthest); valid until the next call.
+    std::span<const PhotonHit> findPhotons(const Vec3& pos, const Vec3* normal);
+
+    // RADIANCE's photonDensity (surface maps without bias compensation). Returns
+    //   sum(flux of the k nearest) / (pi * pi r^2)
+    // per RGB channel, i.e. irradiance E / pi, the value RADIANCE's ambient calculation
+    // uses (multiply by pi for irradiance in W/m^2). k+1 photons are gathered; the furthest
+    // is left out of the sum and r^2 = ((r_furthest + r_second)/2)^2 evaluated as
+    // 0.25 (d1 + d2 + 2 sqrt(d1 d2)) with d1 = squared distance of the furthest (or the
+    // search limit when fewer than k+1 were found, as RADIANCE's maxDist2) and d2 the
+    // largest of the others. Fewer than 2 photons give 0.
+    std::array<double, 3> surfaceDensity(const Vec3& pos, const Vec3& normal);
+
+    // RADIANCE's photonPreCompDensity: the flux of the single nearest photon with a similar
+    // normal within squared radius CoGdist (precomputed maps store irradiance / pi there);
+    // 0 if none.
+    std::array<double, 3> precompDensity(const Vec3& pos, const Vec3& normal) const;
+
+    // Current squared maximum search radius (RADIANCE's maxDist0) and its limit.
+    double maxDist2() const { return maxDist2_; }
+    double maxDist2Limit() const { return maxDist2Limit_; }
+    int bandwidth() const { return bandwidth_; }
+    // Counters for the end-of-run warning: tools add shortLookups() of every thread to a
+    // WarningCounter ("short photon lookups") and report it once.
+    uint64_t lookups() const { return lookups_; }
+    uint64_t shortLookups() const { return shortLookups_; }
+
+private:
+    const PhotonMap* map_;
+    int bandwidth_;
+    bool fixedRadius_;
+    double gatherTolerance_;
+    double maxDist2_ = 0;
+    double maxDist2Limit_ = 0;
+    float lastSearchDist2_ = 0;  // RADIANCE's pmap->maxDist2 after the search
+    int goodRun_ = 0;
+    uint64_t lookups_ = 0;
+    uint64_t shortLookups_ = 0;
+    std::vector<PhotonHit> hits_;
+    size_t found_ = 0;
+};
+
+}  // namespace rp::pmap

@@ -1,0 +1,241 @@
+// kd-tree build (median partition into heap order, TBB tasks over subtrees), validation,
+// and the k-nearest / single-nearest photon searches.
+#include "pmap/kdtree.h"
+
+#include <fmt/format.h>
+#include <tbb/task_group.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+#include "util/error.h"
+
+namespace rp::pmap {
+
+namespace {
+
+// Subtrees smaller than this are built serially (task overhead would dominate).
+constexpr size_t kParallelGrain = size_t{1} << 14;
+
+// Size of the left subtree of a left-balanced complete tree with n nodes: all levels full
+// except the last, which fills left to right (RADIANCE compat: kdT_MedianPartition's m).
+size_t leftSubtreeSize(size_t n) {
+    size_t full = size_t{1} << (std::bit_width(n) - 1);  // largest power of 2 <= n
+    size_t half = full >> 1;                             // last-level slots under the left child
+    size_t lastLevel = n - (full - 1);                   // nodes on the (partial) last level
+    return (half ? half - 1 : 0) + std::min(lastLevel, half);
+}
+
+// RADIANCE compat (kdT_Build): axis of largest extent of the cell, ties going to the later
+// axis exactly as `d0 > d1 ? d0 > d2 ? 0 : 2 : d1 > d2 ? 1 : 2`.
+int splitAxis(const float lo[3], const float hi[3]) {
+    const float d0 = hi[0] - lo[0], d1 = hi[1] - lo[1], d2 = hi[2] - lo[2];
+    return d0 > d1 ? (d0 > d2 ? 0 : 2) : (d1 > d2 ? 1 : 2);
+}
+
+// Builds the subtree rooted at heap node `root` (1-based) from src[0..n) into out. The cell
+// bounds lo/hi are narrowed at each split, as RADIANCE does, rather than recomputed from
+// the photons, so the split axes are the ones RADIANCE would choose for the same medians.
+void buildSubtree(Photon* src, size_t n, const float lo[3], const float hi[3], size_t root,
+                  Photon* out, bool parallel) {
+    if (n == 0) return;
+    const int axis = splitAxis(lo, hi);
+    const size_t nLeft = leftSubtreeSize(n);
+    if (n > 1)
+        std::nth_element(src, src + nLeft, src + n, [axis](const Photon& a, const Photon& b) {
+            return a.pos[axis] < b.pos[axis];
+        });
+    Photon median = src[nLeft];
+    median.setDiscr(axis);
+    out[root - 1] = median;
+
+    // Children cells: the split plane bounds the left cell above and the right one below.
+    const float split = median.pos[axis];
+    float leftHi[3] = {hi[0], hi[1], hi[2]}, rightLo[3] = {lo[0], lo[1], lo[2]};
+    leftHi[axis] = split;
+    rightLo[axis] = split;
+    Photon* rightSrc = src + nLeft + 1;
+    const size_t nRight = n - nLeft - 1;
+
+    if (parallel && n > kParallelGrain) {
+        tbb::task_group group;
+        group.run([&] { buildSubtree(src, nLeft, lo, leftHi, 2 * root, out, true); });
+        buildSubtree(rightSrc, nRight, rightLo, hi, 2 * root + 1, out, true);
+        group.wait();
+    } else {
+        // Recursion depth is the tree height (<= 33 for kMaxTreePhotons).
+        buildSubtree(src, nLeft, lo, leftHi, 2 * root, out, false);
+        buildSubtree(rightSrc, nRight, rightLo, hi, 2 * root + 1, out, false);
+    }
+}
+
+// Query normal scaled for comparison with the int8 photon normals.
+struct QueryNormal {
+    float n[3];
+    bool accepts(const Photon& p) const {
+        return n[0] * p.norm[0] + n[1] * p.norm[1] + n[2] * p.norm[2] > kNormalTolerance;
+    }
+};
+
+struct Pending {
+    uint32_t node;  // 1-based heap index of a subtree still to visit
+    float plane2;   // squared distance from the query to the plane that separated it
+};
+// Deep enough for any tree of kMaxTreePhotons (at most one pending subtree per level).
+constexpr int kStackSize = 64;
+
+// Iterative search with an explicit stack of far subtrees. Each photon is tested on the way
+// down (pre-order) where RADIANCE's recursion tests it after both subtrees; the photons
+// found are the same (the k nearest within the radius; among equal distances either may be
+// kept) and pre-order with a prefetch of the near grandchildren measured ~1.5x faster.
+template <bool kFilter>
+size_t knnSearch(const Photon* tree, size_t n, const float q[3], const QueryNormal& qn,
+                 float maxDist2, PhotonHit* heap, size_t k) {
+    size_t found = 0;
+    Pending stack[kStackSize];
+    int top = 0;
+    size_t node = 1;
+    while (true) {
+        // Descend towards the query, remembering far subtrees that might still matter.
+        while (node <= n) {
+            const Photon& p = tree[node - 1];
+            const int axis = p.discr();
+            const float d = q[axis] - p.pos[axis];
+            const size_t nearChild = 2 * node + (d >= 0 ? 1 : 0);
+            const size_t farChild = 2 * node + (d >= 0 ? 0 : 1);
+            // The near child's two children are adjacent: fetch them while we work here.
+            if (2 * nearChild <= n) __builtin_prefetch(tree + 2 * nearChild - 1);
+            if (farChild <= n && d * d < maxDist2)
+                stack[top++] = {static_cast<uint32_t>(farChild), d * d};
+
+            const float dx = q[0] - p.pos[0], dy = q[1] - p.pos[1], dz = q[2] - p.pos[2];
+            const float d2 = dx * dx + dy * dy + dz * dz;
+            if (d2 < maxDist2 && (!kFilter || qn.accepts(p))) {
+                const uint32_t idx = static_cast<uint32_t>(node - 1);
+                if (found < k) {
+                    // Sift up (1-based heap positions, max at the top).
+                    size_t i = ++found;
+                    while (i > 1 && heap[(i >> 1) - 1].dist2 <= d2) {
+                        heap[i - 1] = heap[(i >> 1) - 1];
+                        i >>= 1;
+                    }
+                    heap[i - 1] = {d2, idx};
+                    if (found == k) maxDist2 = heap[0].dist2;
+                } else {
+                    // Replace the furthest and sift down.
+                    size_t i = 1;
+                    while (i <= (k >> 1)) {
+                        size_t j = i << 1;
+                        if (j < k && heap[j - 1].dist2 < heap[j].dist2) ++j;
+                        if (d2 >= heap[j - 1].dist2) break;
+                        heap[i - 1] = heap[j - 1];
+                        i = j;
+                    }
+                    heap[i - 1] = {d2, idx};
+                    maxDist2 = heap[0].dist2;
+                }
+            }
+            node = nearChild;
+        }
+        // Resume at the most recent far subtree still within the (shrunken) radius.
+        do {
+            if (top == 0) return found;
+            --top;
+        } while (stack[top].plane2 >= maxDist2);
+        node = stack[top].node;
+    }
+}
+
+}  // namespace
+
+std::vector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel) {
+    const size_t n = photons.size();
+    if (n > kMaxTreePhotons)
+        throw InputError(
+            fmt::format("too many photons for one map ({}; at most {})", n, kMaxTreePhotons));
+    std::vector<Photon> out(n);
+    if (n == 0) return out;
+    float lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::numeric_limits<float>::infinity();
+        hi[a] = -std::numeric_limits<float>::infinity();
+    }
+    for (const Photon& p : photons)
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], p.pos[a]);
+            hi[a] = std::max(hi[a], p.pos[a]);
+        }
+    buildSubtree(photons.data(), n, lo, hi, 1, out.data(), parallel);
+    return out;
+}
+
+std::string checkKdTree(std::span<const Photon> tree) {
+    const size_t n = tree.size();
+    if (n == 0) return {};
+    struct Cell {
+        size_t node;
+        float lo[3], hi[3];
+    };
+    std::vector<Cell> stack;
+    Cell rootCell{1, {}, {}};
+    for (int a = 0; a < 3; ++a) {
+        rootCell.lo[a] = -std::numeric_limits<float>::infinity();
+        rootCell.hi[a] = std::numeric_limits<float>::infinity();
+    }
+    stack.push_back(rootCell);
+    while (!stack.empty()) {
+        Cell c = stack.back();
+        stack.pop_back();
+        const Photon& p = tree[c.node - 1];
+        if (p.discr() > 2) return fmt::format("photon {} has split axis 3", c.node - 1);
+        for (int a = 0; a < 3; ++a) {
+            if (!std::isfinite(p.pos[a]))
+                return fmt::format("photon {} has a non-finite position", c.node - 1);
+            if (!(p.pos[a] >= c.lo[a] && p.pos[a] <= c.hi[a]))
+                return fmt::format("photon {} lies on the wrong side of an ancestor's split",
+                                   c.node - 1);
+        }
+        const int axis = p.discr();
+        if (2 * c.node <= n) {
+            Cell left = c;
+            left.node = 2 * c.node;
+            left.hi[axis] = p.pos[axis];
+            stack.push_back(left);
+        }
+        if (2 * c.node + 1 <= n) {
+            Cell right = c;
+            right.node = 2 * c.node + 1;
+            right.lo[axis] = p.pos[axis];
+            stack.push_back(right);
+        }
+    }
+    return {};
+}
+
+size_t findNearestPhotons(std::span<const Photon> tree, const Vec3& pos, const Vec3* normal,
+                          float maxDist2, std::span<PhotonHit> out) {
+    if (out.empty() || tree.empty()) return 0;
+    // RADIANCE compat: the query point and normal are compared in single precision.
+    const float q[3] = {static_cast<float>(pos.x), static_cast<float>(pos.y),
+                        static_cast<float>(pos.z)};
+    if (normal) {
+        QueryNormal qn{{static_cast<float>(normal->x), static_cast<float>(normal->y),
+                        static_cast<float>(normal->z)}};
+        return knnSearch<true>(tree.data(), tree.size(), q, qn, maxDist2, out.data(), out.size());
+    }
+    return knnSearch<false>(tree.data(), tree.size(), q, QueryNormal{}, maxDist2, out.data(),
+                            out.size());
+}
+
+int64_t findNearestPhoton(std::span<const Photon> tree, const Vec3& pos, const Vec3* normal,
+                          float maxDist2, float* dist2Out) {
+    PhotonHit hit{};
+    if (findNearestPhotons(tree, pos, normal, maxDist2, std::span<PhotonHit>(&hit, 1)) == 0)
+        return -1;
+    if (dist2Out) *dist2Out = hit.dist2;
+    return hit.index;
+}
+
+}  // namespace rp::pmap

@@ -1,0 +1,60 @@
+// In-core balanced kd-tree over photons in RADIANCE's order (pmapkdt.c): an implicit
+// 1-based heap (children of node i at 2i and 2i+1), left-balanced, median split on the
+// axis of largest cell extent, split axis in each photon's flag byte. Memory order is file
+// order, so a loaded map needs no rebuild and a saved one is a valid RADIANCE kd-tree.
+// We keep our own tree rather than nanoflann for this file order and for 24 bytes/photon
+// (no separate index or node arrays). Density estimates live in density.h.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "pmap/photon.h"
+#include "util/vec.h"
+
+namespace rp::pmap {
+
+// One result of a nearest-photon query: index into the tree array and squared distance.
+struct PhotonHit {
+    float dist2;
+    uint32_t index;
+};
+
+// Normal filter: a photon is skipped when dot(n_query, norm_int8) <= kNormalTolerance.
+// RADIANCE compat (pmapkdt.c, PMAP_NORM_TOL 0.02): RADIANCE draws the threshold as
+// 0.02 * 127 * frandom() per photon test. We use its mean, 0.01 * 127, so that lookups are
+// deterministic and independent of thread scheduling; photons nearly perpendicular to the
+// query normal (cos < 0.01) are rejected, as RADIANCE does on average.
+constexpr float kNormalTolerance = 0.01f * 127.0f;
+
+// Largest map the tree indexes (32-bit photon indices, like RADIANCE's OOC data index).
+constexpr uint64_t kMaxTreePhotons = 0xfffffffful;
+
+// Returns the photons reordered into RADIANCE's kd-tree order with split axes set in the
+// flag bytes (other flag bits, positions, normals, flux and primary are kept). With
+// `parallel`, subtrees above a size threshold are built as TBB tasks; the result does not
+// depend on the number of threads. Requires size() <= kMaxTreePhotons.
+std::vector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel = true);
+
+// Checks that `tree` is a valid kd-tree in heap order: split axes 0..2, finite positions,
+// every photon in the left subtree of node i has pos[axis] <= node i's, every photon in the
+// right subtree >=. Returns "" if valid, else a short description of the first violation.
+std::string checkKdTree(std::span<const Photon> tree);
+
+// Finds up to out.size() nearest photons to `pos` with squared distance < maxDist2,
+// skipping photons facing away from `normal` (no filter when normal is null, as for volume
+// photons). As RADIANCE, once `out` is full the search radius shrinks to the furthest
+// photon kept. Returns the number found; out[0..n) is a max-heap on dist2, so out[0] is the
+// furthest photon found. No allocation.
+size_t findNearestPhotons(std::span<const Photon> tree, const Vec3& pos, const Vec3* normal,
+                          float maxDist2, std::span<PhotonHit> out);
+
+// Single nearest photon with squared distance < maxDist2 and passing the normal filter
+// (RADIANCE's find1Photon, used by precomputed maps). Returns its index or -1 if none.
+int64_t findNearestPhoton(std::span<const Photon> tree, const Vec3& pos, const Vec3* normal,
+                          float maxDist2, float* dist2Out = nullptr);
+
+}  // namespace rp::pmap

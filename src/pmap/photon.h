@@ -1,0 +1,82 @@
+// The photon record and photon map kinds, laid out as RADIANCE's `Photon` (pmapdata.h) so
+// that what we hold in memory is byte for byte what a RADIANCE "3.1k" map file stores.
+// Search structures live in kdtree.h, the map with its statistics and files in photon_map.h.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "util/vec.h"
+
+namespace rp::pmap {
+
+// RADIANCE's photon map types, in RADIANCE's order (pmaptype.h), which the option letters
+// -apg, -app, -apc, -apv, -apd, -apC of mkpmap select.
+enum class PhotonMapType : uint8_t { Global, PreComp, Caustic, Volume, Direct, Contrib };
+constexpr int kNumPhotonMapTypes = 6;
+
+// "Global", "PreComp", "Caustic", "Volume", "Direct", "Contrib" (RADIANCE's pmapName).
+const char* photonMapTypeName(PhotonMapType type);
+// Inverse of photonMapTypeName (exact, case-sensitive); nullopt for anything else.
+std::optional<PhotonMapType> photonMapTypeFromName(std::string_view name);
+
+// RADIANCE's packed flux: three 8-bit mantissas and a shared exponent biased by 128 (COLR).
+using Colr = std::array<uint8_t, 4>;
+
+// RADIANCE compat: setcolr() in color.c (truncating mantissas, exponent byte e+128;
+// max component <= 1e-32 -> all zero; negative components -> 0). Beyond RADIANCE, NaN
+// counts as 0 and values too large for the exponent byte saturate to 255s.
+Colr fluxToColr(double r, double g, double b);
+// RADIANCE compat: colr_color(): (mantissa + 0.5) * 2^(exp - 136); exponent 0 is black.
+std::array<float, 3> colrToFlux(const Colr& c);
+
+// One stored photon: 24 bytes, the layout of RADIANCE's default build (RGBE flux, kd-tree).
+// The flag byte uses GCC's bitfield order for RADIANCE's `discr:2, caustic:1, proc:5`:
+// bits 0-1 split axis of the kd-tree node, bit 2 caustic, bits 3-7 RADIANCE's forking
+// subprocess index (we never set it, but keep whatever a file holds so round trips are
+// lossless).
+struct Photon {
+    float pos[3] = {0, 0, 0};
+    int8_t norm[3] = {0, 0, 0};  // surface normal x 127 (incident direction for volume photons)
+    uint8_t flags = 0;
+    Colr flux = {0, 0, 0, 0};
+    uint32_t primary = 0;  // index into the map's primaries (contrib maps); 0 otherwise
+
+    static constexpr uint8_t kDiscrMask = 0x03;
+    static constexpr uint8_t kCausticBit = 0x04;
+    static constexpr int kProcShift = 3;
+
+    int discr() const { return flags & kDiscrMask; }
+    void setDiscr(int axis) { flags = static_cast<uint8_t>((flags & ~kDiscrMask) | (axis & 3)); }
+    bool caustic() const { return (flags & kCausticBit) != 0; }
+    void setCaustic(bool c) {
+        flags = static_cast<uint8_t>(c ? (flags | kCausticBit) : (flags & ~kCausticBit));
+    }
+    int proc() const { return flags >> kProcShift; }
+
+    Vec3 position() const { return {pos[0], pos[1], pos[2]}; }
+    // Decoded flux in watts, as RADIANCE's getPhotonFlux.
+    std::array<float, 3> fluxRgb() const { return colrToFlux(flux); }
+    void setFlux(double r, double g, double b) { flux = fluxToColr(r, g, b); }
+    // RADIANCE compat: newPhoton() stores 127.0 * n[i] truncated toward zero.
+    void setNormal(const Vec3& n);
+
+    bool operator==(const Photon& o) const = default;
+};
+static_assert(sizeof(Photon) == 24, "photon record must stay at RADIANCE's 24 bytes");
+
+// Convenience for emitters and tests: a photon at `p` with normal `n` (unit), flux `rgb`.
+Photon makePhoton(const Vec3& p, const Vec3& n, const std::array<double, 3>& rgb,
+                  bool caustic = false, uint32_t primary = 0);
+
+// A primary ray of a contribution photon map (RADIANCE's default build: source index
+// only; the P/D file variants with position and direction are not supported yet).
+struct PhotonPrimary {
+    int16_t srcIdx = -1;
+    bool operator==(const PhotonPrimary& o) const = default;
+};
+
+}  // namespace rp::pmap

@@ -1,0 +1,95 @@
+// A photon map: its type, photons in kd-tree order, the statistics RADIANCE keeps in the
+// file header (photon count, average flux, bounding box, centre of gravity, mean squared
+// distance to it), primaries for contribution maps, and RADIANCE "3.1k" file read/write.
+// Density estimates and the adaptive search radius live in density.h.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <iosfwd>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "pmap/kdtree.h"
+#include "pmap/photon.h"
+#include "util/header.h"
+
+namespace rp::pmap {
+
+// RADIANCE's file format version for in-core kd-tree maps with RGBE flux and plain
+// primaries (pmapio.h PMAP_FILEVER); the only one we read and write so far.
+constexpr const char* kPhotonMapFileVersion = "3.1k";
+
+// "Radiance_<Type>_kdT_Photon_Map", the FORMAT= value RADIANCE writes for a kd-tree map.
+std::string photonMapFormat(PhotonMapType type);
+
+// Header statistics, with RADIANCE's precisions (PhotonMap in pmapdata.h): flux, bounding
+// box and CoGdist are floats, the centre of gravity a double. We keep the CoG rounded to
+// what the portable float encoding can hold, so that every field survives a file round trip
+// bit for bit.
+struct PhotonMapStats {
+    uint64_t numPhotons = 0;
+    std::array<float, 3> avgFlux = {0, 0, 0};  // mean photon flux [W], RGB
+    std::array<float, 3> bboxMin = {0, 0, 0};
+    std::array<float, 3> bboxMax = {0, 0, 0};
+    std::array<double, 3> cog = {0, 0, 0};  // centre of gravity (mean photon position)
+    // Mean SQUARED distance of photons to the CoG. RADIANCE calls it CoGdist and prints it
+    // as "MaxDist^2" in the header; it sets the automatic maximum search radius.
+    float cogDist2 = 0;
+
+    bool operator==(const PhotonMapStats& o) const = default;
+};
+
+class PhotonMap {
+public:
+    PhotonMap() = default;
+
+    // Builds a map from photons in any order: computes the statistics as RADIANCE's
+    // buildPhotonMap (double sums) and reorders the photons into a kd-tree (in parallel when
+    // `parallel`). Primaries are for contribution maps only; photon.primary indexes them.
+    PhotonMap(PhotonMapType type, std::vector<Photon> photons,
+              std::vector<PhotonPrimary> primaries = {}, bool parallel = true);
+
+    PhotonMapType type() const { return type_; }
+    size_t size() const { return photons_.size(); }
+    bool empty() const { return photons_.empty(); }
+    // Photons in kd-tree (= file) order.
+    std::span<const Photon> photons() const { return photons_; }
+    const PhotonMapStats& stats() const { return stats_; }
+    const std::vector<PhotonPrimary>& primaries() const { return primaries_; }
+
+    // ---- Files (photon_map_io.cpp) ----
+
+    // The info header lines RADIANCE 5.4 writes (after "#?RADIANCE", before the blank
+    // line): the command line (skipped if empty), NumPhotons, AvgFlux, Bbox, CoG,
+    // MaxDist^2, "<n> primary rays" (contrib maps with primaries), FORMAT, VERSION.
+    Header fileHeader(const std::string& commandLine) const;
+
+    // Writes the complete file (info header + portable binary part) to `out`.
+    void write(std::ostream& out, const std::string& commandLine) const;
+
+    // Saves to `path` via a temporary file in the same folder, renamed when complete.
+    // Throws InputError if the map is empty, if `path` exists and !overwrite (mkpmap -fo),
+    // or on any write error (the temporary file is removed).
+    void save(const std::string& path, const std::string& commandLine, bool overwrite) const;
+
+    // Reads a map from `in`, naming `what` (the file name) in errors. Validates header
+    // FORMAT and VERSION, the binary version, that the photon count matches the number of
+    // bytes that follow, split axes, kd-tree order and primary indices. Every problem is an
+    // InputError; no allocation is made before the size has been checked.
+    static PhotonMap read(std::istream& in, const std::string& what);
+    static PhotonMap load(const std::string& path);
+
+private:
+    PhotonMapType type_ = PhotonMapType::Global;
+    std::vector<Photon> photons_;
+    std::vector<PhotonPrimary> primaries_;
+    PhotonMapStats stats_;
+};
+
+// Statistics of `photons` as RADIANCE's buildPhotonMap computes them: average of the
+// decoded flux, bounding box, centre of gravity, mean squared distance to it.
+PhotonMapStats computeStats(std::span<const Photon> photons);
+
+}  // namespace rp::pmap

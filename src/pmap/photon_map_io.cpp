@@ -1,0 +1,302 @@
+// RADIANCE photon map files, format "3.1k" (pmapio.c savePhotonMap/loadPhotonMap and
+// pmapkdt.c kdT_SavePhotons/kdT_LoadPhotons): info header, then in portable encoding
+//   version string (NUL-terminated), numPhotons (8 B), avg flux (3 flt), bbox interleaved
+//   min0,max0,min1,max1,min2,max2 (6 flt), CoG (3 flt), CoGdist (1 flt), numPrimary (4 B),
+//   primaries (srcIdx 2 B each), photons in kd-tree order, 27 B each:
+//   pos 3 flt | norm 3 x 1 B | RGBE 4 x 1 B | primary 4 B | flags 1 B.
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <istream>
+#include <ostream>
+#include <random>
+
+#include "pmap/photon_map.h"
+#include "pmap/portable_io.h"
+#include "util/error.h"
+
+namespace rp::pmap {
+
+namespace {
+
+constexpr size_t kPhotonRecordSize = 3 * kPortableFloatSize + 3 + 4 + 4 + 1;  // 27
+constexpr size_t kPrimaryRecordSize = 2;
+// Bytes after the version string up to and including numPrimary.
+constexpr size_t kFixedBinarySize = 8 + (3 + 6 + 3 + 1) * kPortableFloatSize + 4;  // 77
+constexpr size_t kMaxVersionLength = 32;
+constexpr size_t kChunkPhotons = size_t{1} << 16;  // photons encoded/decoded per chunk
+
+std::string cFormat(const char* format, auto... args) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, format, args...);
+    return buf;
+}
+
+void encodePhoton(std::string& out, const Photon& p) {
+    for (int a = 0; a < 3; ++a) putFlt(out, p.pos[a]);
+    for (int a = 0; a < 3; ++a) putInt(out, p.norm[a], 1);
+    for (int a = 0; a < 4; ++a) putInt(out, p.flux[a], 1);
+    putInt(out, p.primary, 4);
+    putInt(out, p.flags, 1);
+}
+
+Photon decodePhoton(const unsigned char* b) {
+    Photon p;
+    // RADIANCE compat: getflt's double is assigned to the float position (round to nearest).
+    for (int a = 0; a < 3; ++a) p.pos[a] = static_cast<float>(getFlt(b + a * kPortableFloatSize));
+    b += 3 * kPortableFloatSize;
+    for (int a = 0; a < 3; ++a) p.norm[a] = static_cast<int8_t>(b[a]);
+    for (int a = 0; a < 4; ++a) p.flux[a] = b[3 + a];
+    p.primary = static_cast<uint32_t>(getInt(b + 7, 4));
+    p.flags = b[11];
+    return p;
+}
+
+// Explains why a version string other than "3.1k" cannot be read.
+std::string versionProblem(const std::string& v) {
+    if (v.rfind("3.1o", 0) == 0)
+        return "out-of-core photon maps not supported yet (VERSION=" + v + ")";
+    if (v.rfind("3.1k", 0) == 0 && v.find_first_not_of("fPD", 4) == std::string::npos)
+        return "photon map file version " + v +
+               " not supported yet (only 3.1k: RGBE flux, primaries without the float-flux 'f', "
+               "primary-position 'P' or primary-direction 'D' variants)";
+    return "incompatible photon map file version '" + v + "' (expected " + kPhotonMapFileVersion +
+           ")";
+}
+
+// Identifies the map type from the FORMAT line; throws for anything but a kd-tree map.
+PhotonMapType typeFromFormat(const std::string& format, const SourceLoc& loc) {
+    const std::string prefix = "Radiance_", suffix = "_Photon_Map";
+    if (format.empty()) throw InputError(loc, "not a photon map (no FORMAT line in header)");
+    if (format.size() < prefix.size() + suffix.size() || format.rfind(prefix, 0) != 0 ||
+        format.compare(format.size() - suffix.size(), suffix.size(), suffix) != 0)
+        throw InputError(loc, "not a photon map (FORMAT=" + format + ")");
+    std::string middle =
+        format.substr(prefix.size(), format.size() - prefix.size() - suffix.size());
+    auto endsWith = [&](const char* s) {
+        const size_t n = std::strlen(s);
+        return middle.size() > n && middle.compare(middle.size() - n, n, s) == 0;
+    };
+    if (endsWith("_OOC"))
+        throw InputError(loc, "out-of-core photon maps not supported yet (FORMAT=" + format + ")");
+    if (!endsWith("_kdT"))
+        throw InputError(loc, "unsupported photon map format " + format + " (expected Radiance_" +
+                                  "<type>_kdT_Photon_Map, RADIANCE 5.4 and later)");
+    const std::string name = middle.substr(0, middle.size() - 4);
+    auto type = photonMapTypeFromName(name);
+    if (!type)
+        throw InputError(loc, "unknown photon map type '" + name + "' (FORMAT=" + format + ")");
+    return *type;
+}
+
+bool readBytes(std::istream& in, void* dst, size_t n) {
+    in.read(static_cast<char*>(dst), static_cast<std::streamsize>(n));
+    return static_cast<size_t>(in.gcount()) == n;
+}
+
+}  // namespace
+
+Header PhotonMap::fileHeader(const std::string& commandLine) const {
+    Header h;
+    std::string cmd = commandLine;
+    for (char& c : cmd)
+        if (c == '\n' || c == '\r') c = ' ';  // a newline would end the header early
+    if (!cmd.empty()) h.lines.push_back(cmd);
+    const PhotonMapStats& s = stats_;
+    // RADIANCE compat: the exact fprintf formats of savePhotonMap (floats promoted to double).
+    h.lines.push_back(cFormat("NumPhotons\t= %llu", static_cast<unsigned long long>(s.numPhotons)));
+    h.lines.push_back(cFormat("AvgFlux\t\t= [%.2e, %.2e, %.2e]", double(s.avgFlux[0]),
+                              double(s.avgFlux[1]), double(s.avgFlux[2])));
+    h.lines.push_back(cFormat("Bbox\t\t= [%.3f, %.3f, %.3f] [%.3f, %.3f, %.3f]",
+                              double(s.bboxMin[0]), double(s.bboxMin[1]), double(s.bboxMin[2]),
+                              double(s.bboxMax[0]), double(s.bboxMax[1]), double(s.bboxMax[2])));
+    h.lines.push_back(cFormat("CoG\t\t= [%.3f, %.3f, %.3f]", s.cog[0], s.cog[1], s.cog[2]));
+    // RADIANCE compat: labelled MaxDist^2 but the value is CoGdist.
+    h.lines.push_back(cFormat("MaxDist^2\t= %.3f", double(s.cogDist2)));
+    if (!primaries_.empty())
+        h.lines.push_back(cFormat("%u primary rays", static_cast<unsigned>(primaries_.size())));
+    h.lines.push_back("FORMAT=" + photonMapFormat(type_));
+    h.lines.push_back(std::string("VERSION=") + kPhotonMapFileVersion);
+    return h;
+}
+
+void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
+    writeHeader(out, fileHeader(commandLine));
+    const PhotonMapStats& s = stats_;
+    std::string b;
+    putStr(b, kPhotonMapFileVersion);
+    putInt(b, static_cast<int64_t>(photons_.size()), 8);
+    for (int a = 0; a < 3; ++a) putFlt(b, s.avgFlux[a]);
+    for (int a = 0; a < 3; ++a) {
+        putFlt(b, s.bboxMin[a]);
+        putFlt(b, s.bboxMax[a]);
+    }
+    for (int a = 0; a < 3; ++a) putFlt(b, s.cog[a]);
+    putFlt(b, s.cogDist2);
+    putInt(b, static_cast<int64_t>(primaries_.size()), 4);
+    for (const PhotonPrimary& p : primaries_) putInt(b, p.srcIdx, 2);
+    out.write(b.data(), static_cast<std::streamsize>(b.size()));
+    b.reserve(kChunkPhotons * kPhotonRecordSize);
+    for (size_t i = 0; i < photons_.size(); i += kChunkPhotons) {
+        b.clear();
+        const size_t end = std::min(photons_.size(), i + kChunkPhotons);
+        for (size_t j = i; j < end; ++j) encodePhoton(b, photons_[j]);
+        out.write(b.data(), static_cast<std::streamsize>(b.size()));
+    }
+}
+
+void PhotonMap::save(const std::string& path, const std::string& commandLine,
+                     bool overwrite) const {
+    namespace fs = std::filesystem;
+    const SourceLoc loc{path, 0};
+    if (photons_.empty()) throw InputError(loc, "refusing to save an empty photon map");
+    std::error_code ec;
+    if (!overwrite && fs::exists(path, ec))
+        throw InputError(loc, "photon map file exists; use -fo to overwrite it");
+
+    // Temporary file beside the target so the final rename stays on one file system.
+    const fs::path target(path);
+    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    std::random_device rd;
+    std::string tmp;
+    int fd = -1;
+    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+        tmp = (dir / fmt::format(".{}.{:08x}.tmp", target.filename().string(), rd())).string();
+        fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0666);  // umask applies
+        if (fd < 0 && errno != EEXIST)
+            throw InputError(
+                loc, fmt::format("can't create temporary file {}: {}", tmp, std::strerror(errno)));
+    }
+    if (fd < 0) throw InputError(loc, "can't create a temporary file beside it");
+    ::close(fd);
+
+    struct RemoveOnFailure {
+        std::string file;
+        bool armed = true;
+        ~RemoveOnFailure() {
+            if (armed) std::remove(file.c_str());
+        }
+    } guard{tmp};
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) throw InputError(loc, "can't write temporary file " + tmp);
+        write(out, commandLine);
+        out.flush();
+        if (!out) throw InputError(loc, "error writing photon map (disk full?)");
+    }
+    if (!overwrite && fs::exists(path, ec))
+        throw InputError(loc, "photon map file exists; use -fo to overwrite it");
+    if (std::rename(tmp.c_str(), path.c_str()) != 0)
+        throw InputError(loc, fmt::format("can't rename {} to it: {}", tmp, std::strerror(errno)));
+    guard.armed = false;
+}
+
+PhotonMap PhotonMap::read(std::istream& in, const std::string& what) {
+    const SourceLoc loc{what, 0};
+    const Header h = readHeader(in, what);
+    PhotonMap map;
+    map.type_ = typeFromFormat(h.format(), loc);
+    const std::string headerVersion = h.value("VERSION");
+    // RADIANCE itself only checks the binary version below; the header line lets us give
+    // the clearer message before reading binary data.
+    if (!headerVersion.empty() && headerVersion != kPhotonMapFileVersion)
+        throw InputError(loc, versionProblem(headerVersion));
+
+    // Size of the binary part, to check the photon count before allocating anything.
+    const std::streampos start = in.tellg();
+    in.seekg(0, std::ios::end);
+    const std::streampos end = in.tellg();
+    in.seekg(start);
+    if (start < 0 || end < start || !in) throw InputError(loc, "can't determine file size");
+    uint64_t remaining = static_cast<uint64_t>(end - start);
+
+    std::string version;
+    for (char c; version.size() <= kMaxVersionLength && in.get(c) && c != '\0';) version += c;
+    if (!in || version.size() > kMaxVersionLength)
+        throw InputError(loc, "truncated or corrupt photon map (no binary version string)");
+    remaining -= version.size() + 1;
+    if (version != kPhotonMapFileVersion) throw InputError(loc, versionProblem(version));
+
+    unsigned char fixed[kFixedBinarySize];
+    if (remaining < kFixedBinarySize || !readBytes(in, fixed, kFixedBinarySize))
+        throw InputError(loc, "truncated photon map (binary header incomplete)");
+    remaining -= kFixedBinarySize;
+    ByteReader r(fixed, kFixedBinarySize);
+    const int64_t numPhotons = r.getInt(8);
+    PhotonMapStats& s = map.stats_;
+    for (int a = 0; a < 3; ++a) s.avgFlux[a] = static_cast<float>(r.getFlt());
+    for (int a = 0; a < 3; ++a) {
+        s.bboxMin[a] = static_cast<float>(r.getFlt());
+        s.bboxMax[a] = static_cast<float>(r.getFlt());
+    }
+    for (int a = 0; a < 3; ++a) s.cog[a] = r.getFlt();
+    s.cogDist2 = static_cast<float>(r.getFlt());
+    // numPrimary is RADIANCE's uint32 PhotonPrimaryIdx; getint sign-extends, we do not.
+    const uint64_t numPrimary = static_cast<uint32_t>(r.getInt(4));
+    RP_CHECK(r.ok());
+    if (numPhotons < 0)
+        throw InputError(loc, fmt::format("corrupt photon map (photon count {})", numPhotons));
+    s.numPhotons = static_cast<uint64_t>(numPhotons);
+
+    const uint64_t primaryBytes = numPrimary * kPrimaryRecordSize;
+    const bool sizeOk = primaryBytes <= remaining &&
+                        s.numPhotons == (remaining - primaryBytes) / kPhotonRecordSize &&
+                        (remaining - primaryBytes) % kPhotonRecordSize == 0;
+    if (!sizeOk)
+        throw InputError(
+            loc,
+            fmt::format("photon map size mismatch: {} photons and {} primaries "
+                        "need {} bytes of data but the file holds {} "
+                        "(truncated or corrupt file?)",
+                        s.numPhotons, numPrimary,
+                        s.numPhotons <= remaining
+                            ? fmt::format("{}", primaryBytes + s.numPhotons * kPhotonRecordSize)
+                            : std::string("more"),
+                        remaining));
+    if (s.numPhotons > kMaxTreePhotons)
+        throw InputError(loc, fmt::format("too many photons ({})", s.numPhotons));
+    if (numPrimary && map.type_ != PhotonMapType::Contrib)
+        throw InputError(loc, "primary rays in a photon map that is not a contribution map");
+
+    std::vector<unsigned char> buf(std::max<size_t>(primaryBytes, 1));
+    if (!readBytes(in, buf.data(), primaryBytes))
+        throw InputError(loc, "truncated photon map (primary rays incomplete)");
+    map.primaries_.resize(numPrimary);
+    for (size_t i = 0; i < numPrimary; ++i)
+        map.primaries_[i].srcIdx = static_cast<int16_t>(getInt(&buf[i * kPrimaryRecordSize], 2));
+
+    map.photons_.resize(s.numPhotons);
+    buf.resize(kChunkPhotons * kPhotonRecordSize);
+    for (size_t i = 0; i < s.numPhotons; i += kChunkPhotons) {
+        const size_t n = std::min<size_t>(kChunkPhotons, s.numPhotons - i);
+        if (!readBytes(in, buf.data(), n * kPhotonRecordSize))
+            throw InputError(loc, fmt::format("truncated photon map (read error at photon {})", i));
+        for (size_t j = 0; j < n; ++j)
+            map.photons_[i + j] = decodePhoton(&buf[j * kPhotonRecordSize]);
+    }
+
+    if (std::string problem = checkKdTree(map.photons_); !problem.empty())
+        throw InputError(loc, "photons are not a valid kd-tree (" + problem + "); corrupt file?");
+    if (numPrimary)
+        for (const Photon& p : map.photons_)
+            if (p.primary >= numPrimary)
+                throw InputError(loc, fmt::format("photon refers to primary ray {} of {}",
+                                                  p.primary, numPrimary));
+    return map;
+}
+
+PhotonMap PhotonMap::load(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw InputError(SourceLoc{path, 0},
+                         fmt::format("can't open photon map file: {}", std::strerror(errno)));
+    return read(in, path);
+}
+
+}  // namespace rp::pmap

@@ -1,0 +1,96 @@
+// RADIANCE portable binary encodings (see portable_io.h for the contracts).
+#include "pmap/portable_io.h"
+
+#include <cmath>
+
+namespace rp::pmap {
+
+namespace {
+constexpr double kMantissaScale = 0x7fffffff;
+}
+
+void putInt(std::string& out, int64_t value, int size) {
+    const uint64_t u = static_cast<uint64_t>(value);
+    while (size--) out.push_back(static_cast<char>((u >> (size * 8)) & 0xff));
+}
+
+void putFlt(std::string& out, double value) {
+    int64_t m = 0;
+    int e = 0;
+    if (std::isnan(value)) {
+        m = 0;
+        e = 0;
+    } else if (std::isinf(value)) {
+        m = value > 0 ? 0x7fffffff : -0x7fffffff;
+        e = 127;
+    } else {
+        // The C conversion (long)(double) truncates toward zero; static_cast does the same.
+        m = static_cast<int64_t>(std::frexp(value, &e) * kMantissaScale);
+        if (e > 127) {
+            m = m > 0 ? 0x7fffffff : -0x7fffffff;
+            e = 127;
+        } else if (e < -128) {
+            m = 0;
+            e = 0;
+        }
+    }
+    putInt(out, m, 4);
+    putInt(out, e, 1);
+}
+
+void putStr(std::string& out, std::string_view s) {
+    out.append(s.data(), s.size());
+    out.push_back('\0');
+}
+
+int64_t getInt(const unsigned char* in, int size) {
+    uint64_t u = 0;
+    for (int i = 0; i < size; ++i) u = (u << 8) | in[i];
+    const int bits = size * 8;
+    if (bits < 64 && (u >> (bits - 1)) & 1) u |= ~uint64_t{0} << bits;  // sign extend
+    return static_cast<int64_t>(u);
+}
+
+double getFlt(const unsigned char* in) {
+    const int64_t m = getInt(in, 4);
+    if (m == 0) return 0.0;
+    const int e = static_cast<int>(getInt(in + 4, 1));
+    const double d = (static_cast<double>(m) + (m > 0 ? 0.5 : -0.5)) / kMantissaScale;
+    return std::ldexp(d, e);
+}
+
+bool ByteReader::take(size_t n) {
+    if (!ok_ || remaining() < n) {
+        ok_ = false;
+        p_ = end_;
+        return false;
+    }
+    return true;
+}
+
+int64_t ByteReader::getInt(int size) {
+    if (!take(size)) return 0;
+    int64_t v = pmap::getInt(p_, size);
+    p_ += size;
+    return v;
+}
+
+double ByteReader::getFlt() {
+    if (!take(kPortableFloatSize)) return 0;
+    double v = pmap::getFlt(p_);
+    p_ += kPortableFloatSize;
+    return v;
+}
+
+std::string ByteReader::getStr(size_t maxLen) {
+    std::string s;
+    for (size_t i = 0; ok_ && p_ < end_ && i < maxLen; ++i) {
+        unsigned char c = *p_++;
+        if (c == 0) return s;
+        s.push_back(static_cast<char>(c));
+    }
+    ok_ = false;
+    return s;
+}
+
+}  // namespace rp::pmap
