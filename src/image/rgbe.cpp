@@ -8,7 +8,6 @@ namespace rp {
 
 namespace {
 
-constexpr int kColrExcess = 128;  // COLXS in color.h
 constexpr int kMinRun = 4;        // MINRUN in color.c: shorter runs stay literal
 constexpr int kMaxRun = 127;      // a run count byte is 128 + length
 
@@ -48,28 +47,6 @@ std::string decodeOld(std::streambuf& in, Colr* scan, int start, int len) {
 }
 
 }  // namespace
-
-Colr toColr(double r, double g, double b) {
-    if (std::isnan(r)) r = 0;
-    if (std::isnan(g)) g = 0;
-    if (std::isnan(b)) b = 0;
-    double d = std::max(r, std::max(g, b));
-    if (d <= 1e-32) return {0, 0, 0, 0};
-    int e = 0;
-    double scale = std::frexp(d, &e) * 256.0 / d;
-    if (!std::isfinite(d) || e + kColrExcess > 255) return {255, 255, 255, 255};
-    auto mant = [scale](double v) -> uint8_t {
-        return v > 0 ? static_cast<uint8_t>(static_cast<int>(v * scale)) : 0;
-    };
-    return {mant(r), mant(g), mant(b), static_cast<uint8_t>(e + kColrExcess)};
-}
-
-Pixel toPixel(const Colr& c) {
-    if (c[3] == 0) return {0, 0, 0};
-    double f = std::ldexp(1.0, static_cast<int>(c[3]) - (kColrExcess + 8));
-    return {static_cast<float>((c[0] + 0.5) * f), static_cast<float>((c[1] + 0.5) * f),
-            static_cast<float>((c[2] + 0.5) * f)};
-}
 
 void encodeScanline(const Colr* scan, int len, std::string& out) {
     if (len < kMinRleLength || len > kMaxRleLength) {

@@ -8,25 +8,16 @@
 #include <streambuf>
 #include <string>
 
+#include "util/colr.h"
+
 namespace rp {
 
 // A float pixel: red, green, blue (or X, Y, Z in an XYZE picture), as RADIANCE's COLOR.
 using Pixel = std::array<float, 3>;
 
-// A packed pixel: three 8-bit mantissas and a shared exponent biased by 128 (COLR).
-using Colr = std::array<uint8_t, 4>;
-
-// RADIANCE compat: setcolr() in color.c. The largest component d is split with frexp
-// (d = m * 2^e, m in [0.5,1)); each component is scaled by m*256/d and truncated, so the
-// largest mantissa is in [128,255]; the exponent byte is e+128. Components <= 1e-32 in the
-// maximum give (0,0,0,0); negative components become 0. Beyond RADIANCE, NaN counts as 0
-// and values too large for the exponent byte saturate to (255,255,255,255).
-Colr toColr(double r, double g, double b);
+// Packed pixels (Colr) and their float conversion are util/colr.h's, shared with photons.
 inline Colr toColr(const Pixel& p) { return toColr(p[0], p[1], p[2]); }
-
-// RADIANCE compat: colr_color() in color.c: (mantissa + 0.5) * 2^(exp - 136), i.e. the
-// centre of the truncation interval; exponent byte 0 means black.
-Pixel toPixel(const Colr& c);
+inline Pixel toPixel(const Colr& c) { return colrToRgb(c); }
 
 // Scanline lengths RADIANCE run-length encodes (MINELEN..MAXELEN in color.c); shorter or
 // longer scanlines are written flat.

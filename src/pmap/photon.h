@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "util/colr.h"
 #include "util/vec.h"
 
 namespace rp::pmap {
@@ -23,15 +24,7 @@ const char* photonMapTypeName(PhotonMapType type);
 // Inverse of photonMapTypeName (exact, case-sensitive); nullopt for anything else.
 std::optional<PhotonMapType> photonMapTypeFromName(std::string_view name);
 
-// RADIANCE's packed flux: three 8-bit mantissas and a shared exponent biased by 128 (COLR).
-using Colr = std::array<uint8_t, 4>;
-
-// RADIANCE compat: setcolr() in color.c (truncating mantissas, exponent byte e+128;
-// max component <= 1e-32 -> all zero; negative components -> 0). Beyond RADIANCE, NaN
-// counts as 0 and values too large for the exponent byte saturate to 255s.
-Colr fluxToColr(double r, double g, double b);
-// RADIANCE compat: colr_color(): (mantissa + 0.5) * 2^(exp - 136); exponent 0 is black.
-std::array<float, 3> colrToFlux(const Colr& c);
+// Flux is stored as RADIANCE's packed RGBE (util/colr.h: toColr / colrToRgb).
 
 // One stored photon: 24 bytes, the layout of RADIANCE's default build (RGBE flux, kd-tree).
 // The flag byte uses GCC's bitfield order for RADIANCE's `discr:2, caustic:1, proc:5`:
@@ -59,8 +52,8 @@ struct Photon {
 
     Vec3 position() const { return {pos[0], pos[1], pos[2]}; }
     // Decoded flux in watts, as RADIANCE's getPhotonFlux.
-    std::array<float, 3> fluxRgb() const { return colrToFlux(flux); }
-    void setFlux(double r, double g, double b) { flux = fluxToColr(r, g, b); }
+    std::array<float, 3> fluxRgb() const { return colrToRgb(flux); }
+    void setFlux(double r, double g, double b) { flux = toColr(r, g, b); }
     // RADIANCE compat: newPhoton() stores 127.0 * n[i] truncated toward zero.
     void setNormal(const Vec3& n);
 
