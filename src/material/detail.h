@@ -1,0 +1,109 @@
+// Internal to material/: shared constants, direction helpers (frames, reflection,
+// cosine-weighted and Ward half-vector sampling), the Russian-roulette chooser, and the
+// per-family entry points that material.cpp dispatches to. Not for use outside material/.
+#pragma once
+
+#include <cmath>
+
+#include "material/material.h"
+
+namespace rp::material::detail {
+
+constexpr double kFtiny = 1e-6;      // RADIANCE FTINY (double RREAL)
+constexpr int kMaxIter = 10;         // RADIANCE MAXITER: specular sample attempts
+constexpr double kFresThresh = 0.017999;  // normal.c FRESTHRESH
+
+// RADIANCE's Fresnel estimate for smooth plastic/metal (normal.c FRESNE, release 6).
+// RADIANCE compat: pmapmat.c still has the older constant 0.00287989916 and applies it
+// from rspec > FTINY; we use normal.c's in both directions so they agree.
+inline double fresnelEstimate(double cosi) { return std::exp(-5.85 * cosi) - 0.00202943064; }
+
+// Orthonormal u, v perpendicular to unit n (any rotation about n is fine for isotropic use).
+inline void perpendicularFrame(const Vec3& n, Vec3& u, Vec3& v) {
+    Vec3 a = std::fabs(n.x) < 0.6 ? Vec3{1, 0, 0} : (std::fabs(n.y) < 0.6 ? Vec3{0, 1, 0}
+                                                                          : Vec3{0, 0, 1});
+    u = normalize(cross(a, n));
+    v = cross(n, u);
+}
+
+// Mirror reflection of travel direction d about unit n facing the ray (dot(d, n) < 0).
+inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - n * (2 * dot(d, n)); }
+
+// Cosine-weighted direction about unit n (pmapmat.c diffPhotonScatter).
+inline Vec3 sampleCosine(const Vec3& n, Rng& rng) {
+    Vec3 u, v;
+    perpendicularFrame(n, u, v);
+    double cos2 = rng.uniform(), c = std::sqrt(cos2), s = std::sqrt(1 - cos2);
+    double phi = 2 * kPi * rng.uniform();
+    return normalize(u * (std::cos(phi) * s) + v * (std::sin(phi) * s) + n * c);
+}
+
+// Ward half-vector sampling (Ward 1992 sec. 4; Walter 2005 note), as RADIANCE's
+// gaussamp/agaussamp/isoSpecPhotonScatter: the half vector h = n + d (cos p u + sin p v)
+// with d^2 = -ln(xi) / (cos^2 p / au^2 + sin^2 p / av^2), the outgoing ray is the
+// reflection about h. Up to kMaxIter tries for a direction above the geometric surface.
+bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const Vec3& v,
+                          double au, double av, const Vec3& geomN, Rng& rng, Vec3& out);
+// Transmitted Gaussian lobe around `through` (RADIANCE's approximation: no half vector).
+bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, double au,
+                            double av, const Vec3& geomN, Rng& rng, Vec3& out);
+
+inline SpecularRay makeRay(const Vec3& dir, const Color& w, ScatterKind k, bool sampled = false,
+                           const MediumChange& m = {}) {
+    SpecularRay r;
+    r.dir = dir;
+    r.weight = w;
+    r.kind = k;
+    r.sampled = sampled;
+    r.medium = m;
+    return r;
+}
+
+// One scattering component for the roulette.
+struct Component {
+    ScatterKind kind;
+    Color coef;
+};
+// Picks a component with probability avg(coef) (or absorbs); returns its index or -1 and
+// sets `factor` to coef / probability.
+int roulette(const Component* c, int n, Rng& rng, Color& factor);
+
+// Extinction coefficient from a transmission per unit length (dielectric.c mylog).
+inline double extinctionOf(double t) {
+    if (t < 1e-40) return 100;
+    if (t >= 1) return 0;
+    return -std::log(t);
+}
+
+// Per-family entry points.
+Color evaluateNormal(const NormalParams&, const SurfacePoint&, const Vec3&, double);
+BackwardResult shadeNormal(const NormalParams&, const SurfacePoint&, const ShadeOptions&, Rng&);
+PhotonScatter scatterNormal(const NormalParams&, const SurfacePoint&, Rng&);
+
+Color evaluateAniso(const AnisoParams&, const SurfacePoint&, const Vec3&, double);
+BackwardResult shadeAniso(const AnisoParams&, const SurfacePoint&, const ShadeOptions&, Rng&);
+PhotonScatter scatterAniso(const AnisoParams&, const SurfacePoint&, Rng&);
+
+BackwardResult shadeMirror(const MirrorParams&, const SurfacePoint&, const ShadeOptions&);
+PhotonScatter scatterMirror(const MirrorParams&, const SurfacePoint&, Rng&);
+
+// Glass pane reflectance and transmittance for cos(incidence) `pdot` (glass.c).
+void glassCoefficients(const GlassParams&, double pdot, const Color& pattern, Color& refl,
+                       Color& trans);
+BackwardResult shadeGlass(const GlassParams&, const SurfacePoint&, const ShadeOptions&);
+PhotonScatter scatterGlass(const GlassParams&, const SurfacePoint&, Rng&);
+
+BackwardResult shadeDielectric(const DielectricParams&, const SurfacePoint&);
+PhotonScatter scatterDielectric(const DielectricParams&, const SurfacePoint&, Rng&);
+
+Color evaluateFunc(const FuncParams&, const SurfacePoint&, const Vec3&);
+BackwardResult shadeFunc(const FuncParams&, const SurfacePoint&, const ShadeOptions&);
+PhotonScatter scatterFunc(const FuncParams&, const SurfacePoint&, Rng&);
+
+Color evaluateBrtd(const BrtdParams&, const SurfacePoint&, const Vec3&);
+BackwardResult shadeBrtd(const BrtdParams&, const SurfacePoint&);
+PhotonScatter scatterBrtd(const BrtdParams&, const SurfacePoint&, Rng&);
+
+BackwardResult shadeLight(const LightParams&, const SurfacePoint&);
+
+}  // namespace rp::material::detail

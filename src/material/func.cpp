@@ -1,0 +1,123 @@
+// The function/data-driven families with their plain parameters: plasfunc, metfunc,
+// transfunc, plasdata, metdata, transdata (m_brdf.c m_brdf2; pmapmat.c brdf2PhotonScatter)
+// and BRTDfunc (m_brdf.c m_brdf; pmapmat.c brdfPhotonScatter). Evaluating their .cal
+// functions and data files is calc/'s job and not wired in yet: only the diffuse parts
+// (and BRTDfunc's constant or caller-given ideal specular colours) are computed here.
+#include <cmath>
+
+#include "material/detail.h"
+
+namespace rp::material::detail {
+
+namespace {
+bool perturbed(const SurfacePoint& sp) { return lengthSquared(sp.normal - sp.geomNormal) > 1e-12; }
+
+Color lambert(const Vec3& n, const Vec3& l, const Color& rdiff, const Color& tdiff) {
+    double ldot = dot(n, l);
+    if (ldot > kFtiny) return rdiff * (ldot / kPi);
+    if (ldot < -kFtiny) return tdiff * (-ldot / kPi);
+    return {};
+}
+}  // namespace
+
+// --- plasfunc & co ---------------------------------------------------------------------
+
+Color evaluateFunc(const FuncParams& m, const SurfacePoint& sp, const Vec3& l) {
+    // TODO(calc): add the specular reflection/transmission function's value.
+    return lambert(sp.normal, l, m.diffuseReflectance * sp.pattern,
+                   m.diffuseTransmittance * sp.pattern);
+}
+
+BackwardResult shadeFunc(const FuncParams& m, const SurfacePoint& sp, const ShadeOptions& opt) {
+    BackwardResult r;
+    if (!sp.front && !opt.backVisible) {
+        r.transparent = true;
+        return r;
+    }
+    // ray.html plasfunc: only direct light is considered for the specular part, so no
+    // specular rays are spawned; the diffuse part takes indirect light as usual.
+    if (m.rdiff > kFtiny) r.ambientReflect = m.diffuseReflectance * sp.pattern;
+    if (m.tdiff > kFtiny) r.ambientTransmit = m.diffuseTransmittance * sp.pattern;
+    return r;
+}
+
+PhotonScatter scatterFunc(const FuncParams& m, const SurfacePoint& sp, Rng& rng) {
+    // Photon-map manual 3.1: these "currently only scatter photons diffusely"; the
+    // specular fraction is absorbed (pmapmat.c brdf2PhotonScatter).
+    PhotonScatter s;
+    Component c[2] = {{ScatterKind::DiffuseReflection, m.diffuseReflectance * sp.pattern},
+                      {ScatterKind::DiffuseTransmission, m.diffuseTransmittance * sp.pattern}};
+    s.store = c[0].coef.average() > kFtiny || c[1].coef.average() > kFtiny;
+    int i = roulette(c, 2, rng, s.fluxFactor);
+    if (i < 0) return s;
+    s.kind = c[i].kind;
+    s.dir = sampleCosine(i == 0 ? sp.normal : -sp.normal, rng);
+    return s;
+}
+
+// --- BRTDfunc ------------------------------------------------------------------------------
+
+namespace {
+struct BrtdHit {
+    Color rdiff, tdiff, rspec, tspec;
+};
+BrtdHit setupBrtd(const BrtdParams& m, const SurfacePoint& sp) {
+    // ray.html: the normal is not flipped for BRTDfunc; front and back have their own
+    // diffuse reflectance. The pattern modifies the diffuse values only.
+    BrtdHit h;
+    h.rdiff = (sp.front ? m.frontDiffuse : m.backDiffuse) * sp.pattern;
+    h.tdiff = m.diffuseTransmittance * sp.pattern;
+    h.rspec = sp.brtdSpecularReflection ? *sp.brtdSpecularReflection
+                                        : m.specularReflection.value_or(Color{});
+    h.tspec = sp.brtdSpecularTransmission ? *sp.brtdSpecularTransmission
+                                          : m.specularTransmission.value_or(Color{});
+    return h;
+}
+Vec3 brtdTransmitDir(const SurfacePoint& sp) {
+    if (!perturbed(sp)) return sp.dir;
+    Vec3 t = normalize(sp.dir - (sp.normal - sp.geomNormal));
+    return lengthSquared(t) > 0 ? t : sp.dir;
+}
+}  // namespace
+
+Color evaluateBrtd(const BrtdParams& m, const SurfacePoint& sp, const Vec3& l) {
+    // TODO(calc): add the directional-diffuse functions rbrtd gbrtd bbrtd.
+    BrtdHit h = setupBrtd(m, sp);
+    return lambert(sp.normal, l, h.rdiff, h.tdiff);
+}
+
+BackwardResult shadeBrtd(const BrtdParams& m, const SurfacePoint& sp) {
+    BackwardResult r;
+    BrtdHit h = setupBrtd(m, sp);
+    if (h.tspec.max() > kFtiny)
+        r.add(makeRay(brtdTransmitDir(sp), h.tspec, ScatterKind::SpecularTransmission));
+    if (h.rspec.max() > kFtiny)
+        r.add(makeRay(normalize(reflect(sp.dir, sp.normal)), h.rspec,
+               ScatterKind::SpecularReflection));
+    r.ambientReflect = h.rdiff;
+    r.ambientTransmit = h.tdiff;
+    return r;
+}
+
+PhotonScatter scatterBrtd(const BrtdParams& m, const SurfacePoint& sp, Rng& rng) {
+    // Photon-map manual 3.1: caustics only via ideal specular reflection/transmission.
+    PhotonScatter s;
+    BrtdHit h = setupBrtd(m, sp);
+    Component c[4] = {{ScatterKind::DiffuseReflection, h.rdiff},
+                      {ScatterKind::DiffuseTransmission, h.tdiff},
+                      {ScatterKind::SpecularReflection, h.rspec},
+                      {ScatterKind::SpecularTransmission, h.tspec}};
+    s.store = h.rdiff.average() > kFtiny || h.tdiff.average() > kFtiny;
+    int i = roulette(c, 4, rng, s.fluxFactor);
+    if (i < 0) return s;
+    s.kind = c[i].kind;
+    switch (i) {
+    case 0: s.dir = sampleCosine(sp.normal, rng); break;
+    case 1: s.dir = sampleCosine(-sp.normal, rng); break;
+    case 2: s.dir = normalize(reflect(sp.dir, sp.normal)); break;
+    default: s.dir = brtdTransmitDir(sp); break;
+    }
+    return s;
+}
+
+}  // namespace rp::material::detail

@@ -1,0 +1,190 @@
+// Dispatch of the public API over the MaterialParams variant, plus the shared sampling
+// helpers of detail.h (Ward half-vector sampling, Russian roulette). Families that are
+// too small for a file of their own (lights, antimatter) are handled inline here.
+#include <cmath>
+
+#include "material/detail.h"
+
+namespace rp::material {
+
+namespace detail {
+
+bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const Vec3& v,
+                          double au, double av, const Vec3& geomN, Rng& rng, Vec3& out) {
+    for (int iter = 0; iter < kMaxIter; ++iter) {
+        double phi = 2 * kPi * rng.uniform();
+        double cosp = std::cos(phi) * au, sinp = std::sin(phi) * av;
+        double len = std::sqrt(cosp * cosp + sinp * sinp);
+        cosp /= len;
+        sinp /= len;
+        double xi = rng.uniform();
+        double d = xi <= kFtiny ? 1.0
+                                : std::sqrt(-std::log(xi) / (cosp * cosp / (au * au) +
+                                                             sinp * sinp / (av * av)));
+        Vec3 h = n + (u * cosp + v * sinp) * d;  // |h|^2 = 1 + d^2
+        Vec3 r = dir + h * (-2 * dot(h, dir) / (1 + d * d));
+        if (dot(r, geomN) > kFtiny) {
+            out = normalize(r);
+            return true;
+        }
+    }
+    return false;
+}
+
+bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, double au,
+                            double av, const Vec3& geomN, Rng& rng, Vec3& out) {
+    for (int iter = 0; iter < kMaxIter; ++iter) {
+        double phi = 2 * kPi * rng.uniform();
+        double cosp = std::cos(phi) * au, sinp = std::sin(phi) * av;
+        double len = std::sqrt(cosp * cosp + sinp * sinp);
+        cosp /= len;
+        sinp /= len;
+        double xi = rng.uniform();
+        double d = xi <= kFtiny ? 1.0
+                                : std::sqrt(-std::log(xi) / (cosp * cosp / (au * au) +
+                                                             sinp * sinp / (av * av)));
+        Vec3 t = through + (u * cosp + v * sinp) * d;
+        if (dot(t, geomN) < -kFtiny) {
+            out = normalize(t);
+            return true;
+        }
+    }
+    return false;
+}
+
+int roulette(const Component* c, int n, Rng& rng, Color& factor) {
+    double total = 0;
+    for (int i = 0; i < n; ++i) total += std::max(c[i].coef.average(), 0.0);
+    // Probabilities avg(C_i) as pmapmat.c; normalised only if they exceed 1 in sum
+    // (non-physical input), so that the expectation stays exact either way.
+    double scale = total > 1 ? total : 1;
+    double xi = rng.uniform() * scale;
+    for (int i = 0; i < n; ++i) {
+        double p = std::max(c[i].coef.average(), 0.0);
+        if (p <= 0) continue;
+        if (xi < p) {
+            factor = c[i].coef / (p / scale);
+            return i;
+        }
+        xi -= p;
+    }
+    return -1;
+}
+
+BackwardResult shadeLight(const LightParams& m, const SurfacePoint& sp) {
+    BackwardResult r;
+    if (m.kind == LightParams::Kind::Illum) {
+        // ray.html illum: seen directly it is its alternate material, or invisible.
+        if (m.alternate && *m.alternate != "void")
+            r.useAlternate = true;
+        else
+            r.transparent = true;
+        return r;
+    }
+    Color L = m.radiance * sp.pattern;
+    if (m.kind == LightParams::Kind::Spotlight) {
+        // srcsupp.c spotout: outside the cone when 2 pi (1 - cos theta) > solid angle,
+        // theta between the aim and the emitted direction (-sp.dir).
+        if (m.spotSolidAngle < 2 * kPi * (1 + dot(m.spotAim, sp.dir))) L = Color{};
+    }
+    r.emitted = L;
+    return r;
+}
+
+}  // namespace detail
+
+using namespace detail;
+
+namespace {
+template <class... Fs>
+struct Overloaded : Fs... {
+    using Fs::operator()...;
+};
+template <class... Fs>
+Overloaded(Fs...) -> Overloaded<Fs...>;
+}  // namespace
+
+Color evaluate(const MaterialParams& m, const SurfacePoint& sp, const Vec3& toLight,
+               double sourceOmega) {
+    return std::visit(
+        Overloaded{
+            [&](const NormalParams& p) { return evaluateNormal(p, sp, toLight, sourceOmega); },
+            [&](const AnisoParams& p) { return evaluateAniso(p, sp, toLight, sourceOmega); },
+            [&](const FuncParams& p) { return evaluateFunc(p, sp, toLight); },
+            [&](const BrtdParams& p) { return evaluateBrtd(p, sp, toLight); },
+            // Purely specular, emitting or invisible: nothing for a direct-light sample.
+            [&](const auto&) { return Color{}; },
+        },
+        m);
+}
+
+BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
+                             const ShadeOptions& opt, Rng& rng) {
+    return std::visit(
+        Overloaded{
+            [&](const NormalParams& p) { return shadeNormal(p, sp, opt, rng); },
+            [&](const AnisoParams& p) { return shadeAniso(p, sp, opt, rng); },
+            [&](const MirrorParams& p) { return shadeMirror(p, sp, opt); },
+            [&](const GlassParams& p) { return shadeGlass(p, sp, opt); },
+            [&](const DielectricParams& p) { return shadeDielectric(p, sp); },
+            [&](const LightParams& p) { return shadeLight(p, sp); },
+            [&](const AntimatterParams&) {
+                BackwardResult r;  // clip sets are the ray tracer's business
+                r.transparent = true;
+                return r;
+            },
+            [&](const FuncParams& p) { return shadeFunc(p, sp, opt); },
+            [&](const BrtdParams& p) { return shadeBrtd(p, sp); },
+        },
+        m);
+}
+
+PhotonScatter scatterPhoton(const MaterialParams& m, const SurfacePoint& sp, Rng& rng) {
+    return std::visit(
+        Overloaded{
+            [&](const NormalParams& p) { return scatterNormal(p, sp, rng); },
+            [&](const AnisoParams& p) { return scatterAniso(p, sp, rng); },
+            [&](const MirrorParams& p) { return scatterMirror(p, sp, rng); },
+            [&](const GlassParams& p) { return scatterGlass(p, sp, rng); },
+            [&](const DielectricParams& p) { return scatterDielectric(p, sp, rng); },
+            // pmapmat.c lightPhotonScatter: light, illum, glow and spotlight absorb
+            // photons ("Light sources doan' reflect"); nothing is stored on them.
+            [&](const LightParams&) { return PhotonScatter{}; },
+            [&](const AntimatterParams&) {
+                PhotonScatter s;  // PMAP_XFER: same direction and flux, caustic flag kept
+                s.kind = ScatterKind::PassThrough;
+                s.dir = sp.dir;
+                s.fluxFactor = Color{1, 1, 1};
+                return s;
+            },
+            [&](const FuncParams& p) { return scatterFunc(p, sp, rng); },
+            [&](const BrtdParams& p) { return scatterBrtd(p, sp, rng); },
+        },
+        m);
+}
+
+bool storesPhotons(const MaterialParams& m) {
+    return std::visit(
+        Overloaded{
+            [](const NormalParams& p) {
+                return p.diffuseReflectance.average() > kFtiny ||
+                       p.diffuseTransmittance.average() > kFtiny;
+            },
+            [](const AnisoParams& p) {
+                return p.diffuseReflectance.average() > kFtiny ||
+                       p.diffuseTransmittance.average() > kFtiny;
+            },
+            [](const FuncParams& p) {
+                return p.diffuseReflectance.average() > kFtiny ||
+                       p.diffuseTransmittance.average() > kFtiny;
+            },
+            [](const BrtdParams& p) {
+                return p.frontDiffuse.average() > kFtiny || p.backDiffuse.average() > kFtiny ||
+                       p.diffuseTransmittance.average() > kFtiny;
+            },
+            [](const auto&) { return false; },
+        },
+        m);
+}
+
+}  // namespace rp::material
