@@ -1,1 +1,0 @@
-// module placeholder; replaced by real sources
