@@ -1,0 +1,329 @@
+// Emission plan: partitions, exact flux, partition CDF and photon emission (emitter.h).
+#include "light/emitter.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rp::light {
+
+namespace {
+
+// How a group of partitions draws directions.
+enum class Mode : uint8_t {
+    Hemisphere,  // Lambertian local emitter: cosine-weighted about the local normal
+    FlatCone,    // flat spotlight: cos-weighted within the cone (exact sampler)
+    CurvedCone,  // curved spotlight: joint rejection over (point, direction) in the group
+    CubeCone,    // distant source from a cube face: cos-weighted within the source disk
+    Table,       // modified source or port: -dp direction table
+};
+
+struct Group {
+    int32_t source = -1;
+    int32_t port = -1, portPrim = -1;
+    bool flipNormal = false;  // emit about minus the surface normal (forward ports)
+    Mode mode = Mode::Hemisphere;
+    Cone cone;                // spotlight cone or distant source disk
+    Color radiance;
+    bool distant = false;
+    double maxDistance = 0;
+    size_t first = 0, end = 0;  // partition range
+};
+
+}  // namespace
+
+struct EmissionPlan::Impl {
+    const ShapeSet* shapes = nullptr;
+    SceneCube cube;
+    std::vector<LightSource> sources;
+    std::vector<Group> groups;
+    std::vector<Partition> parts;
+    std::vector<uint32_t> partGroup;
+    std::vector<int32_t> partTable;
+    std::vector<double> cdf;  // cumulative mean flux
+    std::vector<DirectionTable> tables;
+    Color total;
+    std::vector<Color> sourceFlux;
+    std::vector<size_t> sourceCount;
+
+    void add(const Partition& p, uint32_t group, const Color& flux, int32_t table) {
+        if (!(flux.average() > 0)) return;
+        parts.push_back(p);
+        partGroup.push_back(group);
+        partTable.push_back(table);
+        cdf.push_back((cdf.empty() ? 0.0 : cdf.back()) + flux.average());
+        total += flux;
+        sourceFlux[size_t(groups[group].source)] += flux;
+    }
+    size_t pick(double u, size_t first, size_t end) const {
+        double lo = first ? cdf[first - 1] : 0.0;
+        double target = lo + u * (cdf[end - 1] - lo);
+        auto it = std::upper_bound(cdf.begin() + long(first), cdf.begin() + long(end), target);
+        return std::min(size_t(it - cdf.begin()), end - 1);
+    }
+};
+
+namespace {
+
+// Integral over the axis angle of the projected solid angle of `cone` over a cone-family
+// surface (the normal depends only on that angle), divided by 2 pi: the mean per unit
+// area. 1024 midpoints: far finer than any -ds, so the result does not depend on it.
+double meanConeSurfaceProjection(const ConeShape& c, const Cone& cone) {
+    constexpr int kSteps = 1024;
+    double sum = 0;
+    for (int i = 0; i < kSteps; ++i) {
+        double phi = 2 * kPi * (i + 0.5) / kSteps;
+        Vec3 rho = c.e1 * std::cos(phi) + c.e2 * std::sin(phi);
+        Vec3 n = normalize(rho - c.axis * c.slope);
+        sum += projectedSolidAngle(cone, c.inward ? -n : n);
+    }
+    return sum / kSteps;
+}
+
+}  // namespace
+
+EmissionPlan::EmissionPlan(const SceneGeometry& geometry, std::vector<LightSource> sources,
+                           const EmissionOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+    Impl& m = *impl_;
+    m.shapes = &geometry.shapes();
+    m.cube = geometry.sceneCube();
+    m.sources = std::move(sources);
+    m.sourceFlux.assign(m.sources.size(), Color{});
+    m.sourceCount.assign(m.sources.size(), 0);
+    const ShapeSet& shapes = *m.shapes;
+    const double ds = options.partitionSize;
+    if (!(ds > 0)) throw InputError("-ds: partition size must be positive");
+    const double edge = ds * m.cube.size;
+
+    for (size_t si = 0; si < m.sources.size(); ++si) {
+        const LightSource& src = m.sources[si];
+        EmissionModifier mod;
+        if (src.modified()) {
+            if (options.modifierFor) mod = options.modifierFor(src);
+            if (!mod.eval)
+                throw notSupportedYet(src.loc, "pattern-modified light source '" + src.name +
+                                                   "' (emission modifier)");
+        }
+        const Color& L = src.params.radiance;
+        // Radiance x modifier x cos for one aperture direction w about normal n at p.
+        auto value = [&](const Vec3& w, const Vec3& p, const Vec3& n, bool distant) {
+            double c = dot(w, n);
+            if (!(c > 0)) return Color{};
+            Color v = L * c;
+            if (mod.eval) v *= mod.eval({distant ? w : -w, p, n, c, int32_t(si)});
+            return v;
+        };
+        Group g;
+        g.source = int32_t(si);
+        g.radiance = L;
+        g.distant = src.distant();
+        g.maxDistance = src.maxDistance;
+
+        if (!src.distant()) {
+            std::vector<Partition> parts = partitionShape(shapes, src.shape, src.shapeIndex, edge);
+            for (const Partition& p : parts) m.sourceCount[si] += p.cells;
+            bool flat = src.shape == EmitterShape::Polygon || src.shape == EmitterShape::Ring;
+            bool spot = src.spotlight();
+            if (spot) g.cone = {src.params.spotAim, std::cos(src.params.spotAngleDeg * kPi / 360)};
+            g.first = m.parts.size();
+            uint32_t gi = uint32_t(m.groups.size());
+            m.groups.push_back(g);
+            if (src.modified()) {
+                m.groups[gi].mode = Mode::Table;
+                int32_t shared = -1;
+                for (const Partition& p : parts) {
+                    EmissionPoint e = partitionCentre(shapes, m.cube, p);
+                    int32_t t = shared;
+                    if (t < 0) {
+                        Cone ap = spot ? g.cone : Cone{e.normal, 0};
+                        m.tables.emplace_back(ap, options.samplesPerSr, [&](const Vec3& w) {
+                            return value(w, e.point, e.normal, false);
+                        });
+                        t = int32_t(m.tables.size() - 1);
+                        if (flat && mod.directionalOnly) shared = t;
+                    }
+                    m.add(p, gi, m.tables[size_t(t)].integral() * p.area, t);
+                }
+            } else if (!spot) {
+                m.groups[gi].mode = Mode::Hemisphere;
+                for (const Partition& p : parts) m.add(p, gi, L * (kPi * p.area), -1);
+            } else if (flat) {
+                m.groups[gi].mode = Mode::FlatCone;
+                Vec3 n = partitionCentre(shapes, m.cube, parts.front()).normal;
+                double proj = projectedSolidAngle(g.cone, n);
+                for (const Partition& p : parts) m.add(p, gi, L * (proj * p.area), -1);
+            } else {
+                // Exact total, spread over partitions by area: the joint rejection in
+                // emitPhoton needs partitions chosen by area within the group.
+                m.groups[gi].mode = Mode::CurvedCone;
+                double meanProj;
+                if (src.shape == EmitterShape::Sphere)  // projected area pi r^2 any way
+                    meanProj = 0.25 * g.cone.solidAngle();
+                else
+                    meanProj = meanConeSurfaceProjection(shapes.cones[size_t(src.shapeIndex)], g.cone);
+                for (const Partition& p : parts) m.add(p, gi, L * (meanProj * p.area), -1);
+            }
+            m.groups[gi].end = m.parts.size();
+            continue;
+        }
+
+        const DistantSource& ds0 = shapes.sources[size_t(src.shapeIndex)];
+        g.cone = {ds0.dir, ds0.cosHalfAngle};
+        if (options.ports.empty()) {
+            // Scene cube faces: the flux entering a face from the source disk is
+            // L * A * integral over the disk of max(0, w . n_out); every ray entering the
+            // cube crosses exactly one face, so the faces together deliver exactly the
+            // flux the source sends through the cube.
+            std::vector<Partition> faces = partitionCube(ds);
+            for (const Partition& p : faces) m.sourceCount[si] += p.cells;
+            g.first = m.parts.size();
+            uint32_t gi = uint32_t(m.groups.size());
+            g.mode = src.modified() ? Mode::Table : Mode::CubeCone;
+            m.groups.push_back(g);
+            for (Partition p : faces) {
+                p.area = m.cube.size * m.cube.size;
+                EmissionPoint e = partitionCentre(shapes, m.cube, p);
+                if (src.modified()) {
+                    m.tables.emplace_back(g.cone, options.samplesPerSr, [&](const Vec3& w) {
+                        return value(w, e.point, e.normal, true);
+                    });
+                    int32_t t = int32_t(m.tables.size() - 1);
+                    m.add(p, gi, m.tables[size_t(t)].integral() * p.area, t);
+                } else {
+                    m.add(p, gi, L * (projectedSolidAngle(g.cone, e.normal) * p.area), -1);
+                }
+            }
+            m.groups[gi].end = m.parts.size();
+            continue;
+        }
+
+        for (size_t pi = 0; pi < options.ports.size(); ++pi) {
+            const PhotonPort& port = options.ports[pi];
+            std::vector<Partition> parts = partitionShape(shapes, port.shape, port.shapeIndex, edge);
+            bool flat = port.shape == EmitterShape::Polygon || port.shape == EmitterShape::Ring;
+            // Port normals point inside: photons enter along them when emitted about the
+            // outward (flipped) normal.
+            std::vector<bool> sides;
+            if (port.direction != PortDirection::Backward) sides.push_back(true);
+            if (port.direction != PortDirection::Forward) sides.push_back(false);
+            for (bool flip : sides) {
+                for (const Partition& p : parts) m.sourceCount[si] += p.cells;
+                Group pg = g;
+                pg.port = int32_t(pi);
+                pg.portPrim = port.prim;
+                pg.flipNormal = flip;
+                pg.mode = Mode::Table;
+                pg.first = m.parts.size();
+                uint32_t gi = uint32_t(m.groups.size());
+                m.groups.push_back(pg);
+                int32_t base = -1;
+                for (const Partition& p : parts) {
+                    EmissionPoint e = partitionCentre(shapes, m.cube, p);
+                    Vec3 n = flip ? -e.normal : e.normal;
+                    Vec3 from = e.point + n * e.offset;
+                    auto visible = [&](const Vec3& w) {
+                        return !geometry.occluded(from, w, HUGE_VAL);
+                    };
+                    if (base < 0 && flat && (!mod.eval || mod.directionalOnly)) {
+                        m.tables.emplace_back(g.cone, options.samplesPerSr, [&](const Vec3& w) {
+                            return value(w, e.point, n, true);
+                        });
+                        base = int32_t(m.tables.size() - 1);
+                    }
+                    int32_t t = base;
+                    if (base >= 0) {
+                        bool changed = false;
+                        DirectionTable seen = m.tables[size_t(base)].filtered(visible, changed);
+                        if (changed) {
+                            m.tables.push_back(std::move(seen));
+                            t = int32_t(m.tables.size() - 1);
+                        }
+                    } else {
+                        m.tables.emplace_back(g.cone, options.samplesPerSr, [&](const Vec3& w) {
+                            return visible(w) ? value(w, e.point, n, true) : Color{};
+                        });
+                        t = int32_t(m.tables.size() - 1);
+                    }
+                    m.add(p, gi, m.tables[size_t(t)].integral() * p.area, t);
+                }
+                m.groups[gi].end = m.parts.size();
+            }
+        }
+    }
+    if (!(m.total.average() > 0)) throw InputError("zero flux from light sources");
+}
+
+EmissionPlan::~EmissionPlan() = default;
+EmissionPlan::EmissionPlan(EmissionPlan&&) noexcept = default;
+EmissionPlan& EmissionPlan::operator=(EmissionPlan&&) noexcept = default;
+
+const std::vector<LightSource>& EmissionPlan::sources() const { return impl_->sources; }
+Color EmissionPlan::totalFlux() const { return impl_->total; }
+double EmissionPlan::totalFluxW() const { return impl_->total.average(); }
+Color EmissionPlan::sourceFlux(size_t s) const { return impl_->sourceFlux.at(s); }
+size_t EmissionPlan::partitionCount(size_t s) const { return impl_->sourceCount.at(s); }
+size_t EmissionPlan::partitionCount() const {
+    size_t n = 0;
+    for (size_t c : impl_->sourceCount) n += c;
+    return n;
+}
+
+EmittedPhoton EmissionPlan::emitPhoton(Rng& rng) const {
+    const Impl& m = *impl_;
+    size_t idx = m.pick(rng.uniform(), 0, m.parts.size());
+    const Group& g = m.groups[m.partGroup[idx]];
+    EmissionPoint e = samplePartition(*m.shapes, m.cube, m.parts[idx], rng);
+    Vec3 dir;
+    Color colour = g.radiance;
+    switch (g.mode) {
+    case Mode::Hemisphere:
+        dir = sampleProjectedCone(Cone{e.normal, 0}, e.normal, rng);
+        break;
+    case Mode::FlatCone:
+        dir = sampleProjectedCone(g.cone, e.normal, rng);
+        break;
+    case Mode::CurvedCone:
+        // Point uniform by area over the whole group, direction uniform in the cone,
+        // accepted with probability max(0, w.n): exactly L cos dA dw within the cone.
+        for (int tries = 0;; ++tries) {
+            dir = sampleUniformCone(g.cone, rng);
+            if (rng.uniform() < dot(dir, e.normal) || tries > 1000000) break;
+            idx = m.pick(rng.uniform(), g.first, g.end);
+            e = samplePartition(*m.shapes, m.cube, m.parts[idx], rng);
+        }
+        break;
+    case Mode::CubeCone:
+        dir = -sampleProjectedCone(g.cone, e.normal, rng);
+        break;
+    case Mode::Table: {
+        Vec3 n = g.flipNormal ? -e.normal : e.normal;
+        const DirectionTable& t = m.tables[size_t(m.partTable[idx])];
+        DirectionTable::Sample s = t.sample(rng, [&](const Vec3& w) { return dot(w, n) > 0; });
+        dir = g.distant ? -s.dir : s.dir;
+        colour = s.value;
+        break;
+    }
+    }
+    EmittedPhoton ph;
+    ph.source = g.source;
+    ph.weight = colour * (m.total.average() / colour.average());
+    Hit h;
+    h.point = e.point;
+    h.normal = e.normal;
+    h.offset = e.offset;
+    if (g.port >= 0) {
+        // Start just behind the port, back along the ray (as pmapsrc.c does), so that
+        // the photon crosses the port at the sampled point and is scattered by it.
+        double cosN = std::fmax(std::fabs(dot(dir, e.normal)), 1e-3);
+        ph.ray = Ray{e.point - dir * (e.offset / cosN), dir, HUGE_VAL};
+        ph.port = g.port;
+        ph.portPrim = g.portPrim;
+    } else if (g.distant) {
+        ph.ray = Ray{e.point, dir, HUGE_VAL};
+    } else {
+        ph.ray = spawnRay(h, dir, g.maxDistance > 0 ? g.maxDistance : HUGE_VAL);
+    }
+    return ph;
+}
+
+}  // namespace rp::light

@@ -1,0 +1,93 @@
+// Photon emission: the EmissionPlan (every source's partitions, their exact flux and a
+// CDF over them, built once) and emitPhoton, which turns a random stream into one
+// photon ray with equal flux. Finding sources is light_sources.h, partitioning
+// partition.h; tracing the photon through the scene belongs to pmap/.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "geometry/ray.h"
+#include "geometry/scene_geometry.h"
+#include "light/aperture.h"
+#include "light/light_sources.h"
+#include "light/partition.h"
+
+namespace rp::light {
+
+// The ray variables of a light source's modifier during emission (photon-map manual
+// 3.1.2): D points towards the photon origin (= minus the photon direction; for a
+// distant source, towards the source), N is the surface normal at the origin (the face
+// or port normal for distant sources), P the origin, Rdot = N . photon direction.
+struct EmissionQuery {
+    Vec3 rayDir;   // D
+    Vec3 point;    // P
+    Vec3 normal;   // N
+    double rdot;   // Rdot
+    int32_t source;
+};
+
+// RGB multiplier of a modified source's radiance (its pattern chain, e.g. skyfunc).
+struct EmissionModifier {
+    std::function<Color(const EmissionQuery&)> eval;
+    // True if eval ignores P (and N): flat sources then share one direction table.
+    bool directionalOnly = false;
+};
+
+struct EmissionOptions {
+    double partitionSize = 0.01;  // -ds: partition edge / scene cube size
+    double samplesPerSr = 1000;   // -dp: direction table samples per steradian
+    std::vector<PhotonPort> ports;  // -apo (findPhotonPorts); distant sources emit here
+    // Called once per modified source (LightSource::modified()). A modified source with
+    // no modifier (null function or empty eval) throws notSupportedYet.
+    std::function<EmissionModifier(const LightSource&)> modifierFor;
+};
+
+// One emitted photon. `weight` is the RGB flux it carries if it were the only photon:
+// its mean over RGB equals EmissionPlan::totalFluxW() for every photon (facts §7: equal
+// flux, RGB normalised to mean 1), so divide by the number emitted.
+struct EmittedPhoton {
+    Ray ray;           // unit dir; origin off the surface (spawnRay); tmax = glow radius
+    Color weight;
+    int32_t source = -1;  // index into EmissionPlan::sources()
+    int32_t port = -1;    // index into EmissionOptions::ports, -1 if not from a port
+    // From a port: the origin lies just behind the port surface so that the photon's
+    // first hit is the port itself (scattered by it, e.g. glass); a photon whose first
+    // hit is not `portPrim` must be terminated (pmap.c's port rejection).
+    int32_t portPrim = -1;
+};
+
+class EmissionPlan {
+public:
+    // Throws InputError if the total flux is zero ("zero flux from light sources"),
+    // notSupportedYet for a modified source without a modifier.
+    EmissionPlan(const SceneGeometry& geometry, std::vector<LightSource> sources,
+                 const EmissionOptions& options = {});
+    ~EmissionPlan();
+    EmissionPlan(EmissionPlan&&) noexcept;
+    EmissionPlan& operator=(EmissionPlan&&) noexcept;
+
+    // Thread-safe: photon i is a function of its Rng stream only.
+    EmittedPhoton emitPhoton(Rng& rng) const;
+    EmittedPhoton emitPhoton(uint64_t seed, uint64_t photonIndex) const {
+        Rng rng(seed, RngDomain::Emission, photonIndex);
+        return emitPhoton(rng);
+    }
+
+    const std::vector<LightSource>& sources() const;
+    Color totalFlux() const;        // W per channel
+    double totalFluxW() const;      // mean over RGB (RADIANCE's colorAvg)
+    Color sourceFlux(size_t source) const;
+    // RADIANCE's partition count (cube faces count (1/ds)^2 cells each).
+    size_t partitionCount() const;
+    size_t partitionCount(size_t source) const;
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rp::light
