@@ -121,7 +121,7 @@ TEST(CalcSky, SkybrightOtherSkyTypes) {
 
 TEST(CalcSky, PerezMatchesFormula) {
     auto p = loadSky("perezlum.cal");
-    auto skybr = *p->variable("skybr", "sky");
+    auto skybr = *p->variable("skybright", "sky");  // the name gendaylit writes
     Evaluator ev(p);
     // gendaylit-style arguments: diffnorm, ground, a..e, sun direction.
     std::vector<double> a = {0.012, 1.5, -1.1, -0.4, 8.0, -2.5, 0.4, 0.2, -0.6, 0.7746};

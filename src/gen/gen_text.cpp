@@ -1,0 +1,79 @@
+// Text helpers for the generators: printf-style formatting, header line, number parsing.
+#include "gen/gen_text.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+
+#include "util/error.h"
+
+namespace rp::gen {
+
+std::string cformat(const char* fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    va_list ap2;
+    va_copy(ap2, ap);
+    int n = std::vsnprintf(nullptr, 0, fmt, ap);
+    va_end(ap);
+    std::string out(n > 0 ? static_cast<size_t>(n) : 0, '\0');
+    if (n > 0) std::vsnprintf(out.data(), out.size() + 1, fmt, ap2);
+    va_end(ap2);
+    return out;
+}
+
+Vec3 newellNormal(const std::vector<Vec3>& loop) {
+    Vec3 n;
+    for (size_t i = 0; i < loop.size(); ++i) {
+        const Vec3& a = loop[i];
+        const Vec3& b = loop[(i + 1) % loop.size()];
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+    }
+    return n;
+}
+
+std::string commandHeader(const std::vector<std::string>& args) {
+    std::string out = "#";
+    for (const std::string& a : args) {
+        out += ' ';
+        out += a;
+    }
+    out += '\n';
+    return out;
+}
+
+std::string vertexLine(const Vec3& p) {
+    return cformat("\t%18.12g\t%18.12g\t%18.12g\n", p.x, p.y, p.z);
+}
+
+double parseReal(const std::string& word, const std::string& what) {
+    const char* s = word.c_str();
+    char* end = nullptr;
+    errno = 0;
+    double v = std::strtod(s, &end);
+    if (word.empty() || end == s || *end != '\0' || !std::isfinite(v))
+        throw InputError("bad " + what + " '" + word + "': expected a number");
+    return v;
+}
+
+int parseInt(const std::string& word, const std::string& what) {
+    const char* s = word.c_str();
+    char* end = nullptr;
+    errno = 0;
+    long v = std::strtol(s, &end, 10);
+    if (word.empty() || end == s || *end != '\0' || errno == ERANGE || v < -1000000000L ||
+        v > 1000000000L)
+        throw InputError("bad " + what + " '" + word + "': expected an integer");
+    return static_cast<int>(v);
+}
+
+const std::string& optionValue(const std::vector<std::string>& args, size_t& i) {
+    if (i + 1 >= args.size()) throw InputError("option " + args[i] + " needs a value");
+    return args[++i];
+}
+
+}  // namespace rp::gen

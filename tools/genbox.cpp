@@ -1,0 +1,24 @@
+// genbox: a RADIANCE box description (see src/gen/genbox.h).
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "gen/genbox.h"
+#include "util/error.h"
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv, argv + argc);
+    args[0] = "genbox";  // RADIANCE prints argv[0]; a fixed name keeps output path-independent
+    std::vector<std::string> warnings;
+    std::string out;
+    try {
+        out = rp::gen::genbox(args);
+    } catch (const rp::InputError& e) {
+        std::cerr << "genbox: " << e.what() << '\n';
+        return 1;
+    }
+    for (const std::string& w : warnings) std::cerr << "genbox: " << w << '\n';
+    std::cout << out;
+    std::cout.flush();
+    return std::cout ? 0 : 1;
+}

@@ -1,0 +1,24 @@
+// gendaylit: a RADIANCE Perez all-weather sky description (see src/gen/gendaylit.h).
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "gen/gendaylit.h"
+#include "util/error.h"
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv, argv + argc);
+    args[0] = "gendaylit";  // RADIANCE prints argv[0]; a fixed name keeps output path-independent
+    std::vector<std::string> warnings;
+    std::string out;
+    try {
+        out = rp::gen::gendaylit(args, &warnings);
+    } catch (const rp::InputError& e) {
+        std::cerr << "gendaylit: " << e.what() << '\n';
+        return 1;
+    }
+    for (const std::string& w : warnings) std::cerr << "gendaylit: " << w << '\n';
+    std::cout << out;
+    std::cout.flush();
+    return std::cout ? 0 : 1;
+}

@@ -1,0 +1,24 @@
+// genprism: a RADIANCE extruded polygon description (see src/gen/genprism.h).
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "gen/genprism.h"
+#include "util/error.h"
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv, argv + argc);
+    args[0] = "genprism";  // RADIANCE prints argv[0]; a fixed name keeps output path-independent
+    std::vector<std::string> warnings;
+    std::string out;
+    try {
+        out = rp::gen::genprism(args, std::cin);
+    } catch (const rp::InputError& e) {
+        std::cerr << "genprism: " << e.what() << '\n';
+        return 1;
+    }
+    for (const std::string& w : warnings) std::cerr << "genprism: " << w << '\n';
+    std::cout << out;
+    std::cout.flush();
+    return std::cout ? 0 : 1;
+}

@@ -1,0 +1,24 @@
+// gensky: a RADIANCE CIE sky description (see src/gen/gensky.h).
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "gen/gensky.h"
+#include "util/error.h"
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv, argv + argc);
+    args[0] = "gensky";  // RADIANCE prints argv[0]; a fixed name keeps output path-independent
+    std::vector<std::string> warnings;
+    std::string out;
+    try {
+        out = rp::gen::gensky(args, &warnings);
+    } catch (const rp::InputError& e) {
+        std::cerr << "gensky: " << e.what() << '\n';
+        return 1;
+    }
+    for (const std::string& w : warnings) std::cerr << "gensky: " << w << '\n';
+    std::cout << out;
+    std::cout.flush();
+    return std::cout ? 0 : 1;
+}
