@@ -7,6 +7,7 @@
 #include <cstring>
 #include <string>
 
+#include "gen/builtin_commands.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
 #include "util/header.h"
@@ -47,7 +48,7 @@ int main(int argc, char** argv) {
     for (; i < argc; ++i) request.files.push_back(argv[i]);
     if (request.files.empty() && request.addTo.empty()) usage("no scene files given");
     try {
-        std::string bytes = rp::oconvOutput(request);
+        std::string bytes = rp::oconvOutput(request, rp::gen::builtinLoadOptions());
         if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size() ||
             std::fflush(stdout) != 0) {
             std::fprintf(stderr, "oconv: write error on standard output\n");

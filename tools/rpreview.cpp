@@ -11,6 +11,7 @@
 
 #include "geometry/scene_geometry.h"
 #include "render/preview.h"
+#include "gen/builtin_commands.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
 #include "util/header.h"
@@ -44,7 +45,7 @@ int run(int argc, char** argv) {
         }
     }
     if (files.empty()) throw rp::InputError("usage: rpreview [view options] [-x res] [-y res] [-o out.hdr] scene ...");
-    rp::Scene scene = rp::loadScene(files);
+    rp::Scene scene = rp::loadScene(files, rp::gen::builtinLoadOptions());
     rp::SceneGeometry geometry(scene);
     std::map<std::string, int> counts;
     for (const auto& p : scene.prims) counts[std::string(rp::primTypeName(p.type))]++;

@@ -1,0 +1,145 @@
+#include "gen/builtin_commands.h"
+
+#include <cstdlib>
+#include <functional>
+#include <sstream>
+
+#include "gen/gendaylit.h"
+#include "gen/genbox.h"
+#include "gen/genprism.h"
+#include "gen/gensky.h"
+#include "gen/xform_scene.h"
+#include "util/warnings.h"
+
+namespace rp::gen {
+
+namespace {
+
+// A generator: arguments (args[0] = its name) and standard input -> scene text.
+using Generator = std::function<std::string(const std::vector<std::string>& args,
+                                            const std::string& input, const SourceLoc& loc)>;
+
+void reportWarnings(const std::string& program, const std::vector<std::string>& warnings,
+                    const SourceLoc& loc) {
+    for (const std::string& w : warnings) warn(loc, program + ": " + w);
+}
+
+const Generator* findGenerator(const std::string& name) {
+    static const std::vector<std::pair<std::string, Generator>> table = {
+        {"genbox", [](const auto& args, const auto&, const auto&) { return genbox(args); }},
+        {"genprism",
+         [](const auto& args, const auto& input, const auto&) {
+             std::istringstream in(input);
+             return genprism(args, in);
+         }},
+        {"gensky",
+         [](const auto& args, const auto&, const auto& loc) {
+             std::vector<std::string> warnings;
+             std::string out = gensky(args, &warnings);
+             reportWarnings("gensky", warnings, loc);
+             return out;
+         }},
+        {"gendaylit",
+         [](const auto& args, const auto&, const auto& loc) {
+             std::vector<std::string> warnings;
+             std::string out = gendaylit(args, &warnings);
+             reportWarnings("gendaylit", warnings, loc);
+             return out;
+         }},
+        {"xform",
+         [](const auto& args, const auto& input, const auto&) {
+             std::istringstream in(input);
+             return xformScene(parseXformArgs(args), in);
+         }},
+    };
+    for (const auto& [n, g] : table)
+        if (n == name) return &g;
+    return nullptr;
+}
+
+bool shellRequested() {
+    const char* v = std::getenv(kShellCommandsEnv);
+    return v && *v && std::string_view(v) != "0";
+}
+
+}  // namespace
+
+std::optional<std::vector<std::vector<std::string>>> splitPipeline(std::string_view command) {
+    std::vector<std::vector<std::string>> stages(1);
+    std::string word;
+    bool inWord = false;
+    auto endWord = [&] {
+        if (inWord) stages.back().push_back(word);
+        word.clear();
+        inWord = false;
+    };
+    for (size_t i = 0; i < command.size(); ++i) {
+        char c = command[i];
+        if (c == ' ' || c == '\t' || c == '\n') {
+            endWord();
+        } else if (c == '|') {
+            endWord();
+            if (stages.back().empty()) return std::nullopt;  // "||" or a leading '|'
+            stages.emplace_back();
+        } else if (c == '\'') {
+            size_t end = command.find('\'', i + 1);
+            if (end == std::string_view::npos) return std::nullopt;
+            word.append(command.substr(i + 1, end - i - 1));
+            inWord = true;
+            i = end;
+        } else if (c == '"') {
+            inWord = true;
+            for (++i; i < command.size() && command[i] != '"'; ++i) {
+                char d = command[i];
+                if (d == '$' || d == '`') return std::nullopt;
+                if (d == '\\' && i + 1 < command.size() &&
+                    std::string_view("\"\\$`\n").find(command[i + 1]) != std::string_view::npos)
+                    d = command[++i];
+                word.push_back(d);
+            }
+            if (i >= command.size()) return std::nullopt;
+        } else if (c == '\\') {
+            if (i + 1 >= command.size()) return std::nullopt;
+            word.push_back(command[++i]);
+            inWord = true;
+        } else if (std::string_view(";&<>()$`*?[]{}~#").find(c) != std::string_view::npos) {
+            return std::nullopt;  // needs the shell
+        } else {
+            word.push_back(c);
+            inWord = true;
+        }
+    }
+    endWord();
+    if (stages.back().empty()) return std::nullopt;
+    return stages;
+}
+
+std::optional<std::string> runBuiltinCommand(const std::string& command, const SourceLoc& loc) {
+    if (shellRequested()) return std::nullopt;
+    auto stages = splitPipeline(command);
+    if (!stages) return std::nullopt;
+    std::vector<const Generator*> generators;
+    for (const auto& stage : *stages) {
+        const Generator* g = findGenerator(stage.front());
+        if (!g) return std::nullopt;
+        generators.push_back(g);
+    }
+    std::string text;
+    for (size_t i = 0; i < stages->size(); ++i) {
+        const auto& args = (*stages)[i];
+        try {
+            text = (*generators[i])(args, text, loc);
+        } catch (const InputError& e) {
+            throw InputError(loc, args.front() + ": " + e.message());
+        }
+    }
+    return text;
+}
+
+LoadOptions builtinLoadOptions() {
+    LoadOptions options;
+    options.commandHook = runBuiltinCommand;
+    return options;
+}
+
+}  // namespace rp::gen

@@ -1,0 +1,37 @@
+// Runs the generator commands that scene files embed (`!genbox ...`, `!xform ...`,
+// `!gensky ... | xform ...`) with radphoton's own generators, in-process, so scenes load
+// on machines without RADIANCE. Anything else (other programs, redirections, variables)
+// is left to /bin/sh by the scene reader.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/reader.h"
+#include "util/error.h"
+
+namespace rp::gen {
+
+// Environment switch: when RADPHOTON_SHELL_COMMANDS is set to anything but "" or "0",
+// every command goes to the shell, so a user's own PATH (e.g. RADIANCE's generators)
+// wins.
+constexpr const char* kShellCommandsEnv = "RADPHOTON_SHELL_COMMANDS";
+
+// Splits a command line as /bin/sh would for the simple forms scene files use: words,
+// '...' and "..." quoting, backslash escapes, and '|' between commands. nullopt when the
+// line needs a real shell (redirection, ';', '&', variables, command substitution,
+// globbing, comments, subshells).
+std::optional<std::vector<std::vector<std::string>>> splitPipeline(std::string_view command);
+
+// For LoadOptions::commandHook: the output of `command` if every stage of its pipeline
+// is one of our generators (genbox, genprism, gensky, gendaylit, genrev, gensurf,
+// genworm, xform), else nullopt. Generator errors are InputErrors at `loc`
+// ("genbox: ..."), generator warnings are reported at `loc`.
+std::optional<std::string> runBuiltinCommand(const std::string& command, const SourceLoc& loc);
+
+// LoadOptions with runBuiltinCommand installed: what every tool passes to loadScene.
+LoadOptions builtinLoadOptions();
+
+}  // namespace rp::gen
