@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <fstream>
 
 #include "scene/reader.h"
 
@@ -45,6 +46,20 @@ TEST(BuiltinCommands, GenboxThroughXformInAScene) {
     EXPECT_EQ(minX, 10);
     EXPECT_EQ(maxX, 11);
     EXPECT_EQ(maxY, 2);
+}
+
+TEST(BuiltinCommands, XformOfAFileRunsInProcess) {
+    unsetenv(kShellCommandsEnv);
+    std::string path = testing::TempDir() + "builtin_xform.rad";
+    {
+        std::ofstream f(path);
+        f << "m sphere s 0 0 4 0 0 0 1\n";
+    }
+    Scene s = parseScene("void plastic m 0 0 5 .5 .5 .5 0 0\n!xform -n k -t 0 0 3 " + path + "\n",
+                         "top.rad", builtinLoadOptions());
+    ASSERT_EQ(s.prims.size(), 2u);
+    EXPECT_EQ(s.prims[1].name, "k.s");
+    EXPECT_DOUBLE_EQ(s.prims[1].rargs[2], 3);
 }
 
 TEST(BuiltinCommands, GeneratorErrorsNameTheCommandLine) {

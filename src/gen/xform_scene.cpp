@@ -325,21 +325,4 @@ std::string xformText(const XformOptions& opts, std::string_view text) {
     return xformScene(opts, in);
 }
 
-std::optional<std::string> runXformCommand(const std::string& command, const SourceLoc& loc) {
-    std::vector<std::string> words;
-    std::istringstream split(command);
-    for (std::string w; split >> w;) words.push_back(w);
-    if (words.empty() || words[0] != kProgram) return std::nullopt;
-    if (command.find_first_of("|&;<>()$`'\"\\*?[]{}~\n") != std::string::npos) return std::nullopt;
-    try {
-        XformOptions opts = parseXformArgs(words);
-        for (const XformRun& r : opts.runs)
-            if (r.xfEnd == r.argv.size()) return std::nullopt;  // reads standard input
-        std::istringstream none;
-        return xformScene(opts, none);
-    } catch (const InputError& e) {
-        throw InputError(e.loc().file.empty() ? loc : e.loc(), "xform: " + e.message());
-    }
-}
-
 }  // namespace rp

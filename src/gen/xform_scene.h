@@ -78,9 +78,5 @@ std::vector<std::string> transformArgs(const Transform& xf);
 // ("bad sphere 'ball': expected 4 real arguments, got 3").
 void checkXformArgs(const Primitive& p);
 
-// For LoadOptions::commandHook: runs a command of the form "xform args files" in-process
-// (no shell) and returns its output; nullopt for any other command, or one that needs
-// the shell (pipes, redirections, quotes, variables) or standard input.
-std::optional<std::string> runXformCommand(const std::string& command, const SourceLoc& loc);
 
 }  // namespace rp

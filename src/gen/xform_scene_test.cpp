@@ -367,30 +367,5 @@ TEST(Xform, CornellMirrorBox) {
     EXPECT_EQ(compact, refBox);
 }
 
-TEST(Xform, RunXformCommandHook) {
-    std::string path = testing::TempDir() + "xform_hook.rad";
-    {
-        std::ofstream f(path);
-        f << "m sphere s 0 0 4 0 0 0 1\n";
-    }
-    std::optional<std::string> out = runXformCommand("xform -n k -t 0 0 2 " + path, {});
-    ASSERT_TRUE(out.has_value());
-    Scene s = readBack(*out);
-    ASSERT_EQ(s.prims.size(), 2u);
-    EXPECT_EQ(s.prims[1].name, "k.s");
-    EXPECT_DOUBLE_EQ(s.prims[1].rargs[2], 2);
-    // Plugged into the scene reader, a scene's "!xform" line runs without a shell.
-    LoadOptions lo;
-    lo.commandHook = runXformCommand;
-    Scene viaReader = parseScene(
-        "void plastic m 0 0 5 .5 .5 .5 0 0\n!xform -t 0 0 3 " + path + "\n", "top.rad", lo);
-    ASSERT_EQ(viaReader.prims.size(), 2u);
-    EXPECT_DOUBLE_EQ(viaReader.prims[1].rargs[2], 3);
-
-    EXPECT_FALSE(runXformCommand("genbox m b 1 1 1", {}).has_value());
-    EXPECT_FALSE(runXformCommand("xform -t 1 0 0", {}).has_value());  // standard input
-    EXPECT_FALSE(runXformCommand("genbox m b 1 1 1 | xform -t 1 0 0", {}).has_value());
-}
-
 }  // namespace
 }  // namespace rp
