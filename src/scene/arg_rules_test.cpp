@@ -142,4 +142,20 @@ TEST(Xform, BadArgumentsAreInputErrors) {
 }
 
 }  // namespace
+TEST(Transform, InverseUndoesASimilarity) {
+    Transform t = parseTransform({"-s", "2.5", "-rx", "30", "-mz", "-rz", "-75", "-t", "1", "-2", "3"},
+                                 0, SourceLoc{"t.rad", 1});
+    Transform inv = t.inverse();
+    auto p = inv.point(t.point({0.3, -4, 7}));
+    EXPECT_NEAR(p[0], 0.3, 1e-12);
+    EXPECT_NEAR(p[1], -4, 1e-12);
+    EXPECT_NEAR(p[2], 7, 1e-12);
+    auto d = inv.direction(t.direction({1, 2, 3}));
+    EXPECT_NEAR(d[0], 1, 1e-12);
+    EXPECT_NEAR(d[1], 2, 1e-12);
+    EXPECT_NEAR(d[2], 3, 1e-12);
+    EXPECT_NEAR(inv.scale, 0.4, 1e-15);
+    EXPECT_TRUE((t * inv).isIdentity() || std::fabs((t * inv).m[0][0] - 1) < 1e-12);
+}
+
 }  // namespace rp

@@ -137,4 +137,16 @@ Transform parseTransform(const std::vector<std::string>& args, size_t first, con
     return result;
 }
 
+Transform Transform::inverse() const {
+    Transform inv;
+    double s2 = scale * scale;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) inv.m[r][c] = m[c][r] / s2;
+    for (int r = 0; r < 3; ++r)
+        inv.m[r][3] = -(inv.m[r][0] * m[0][3] + inv.m[r][1] * m[1][3] + inv.m[r][2] * m[2][3]);
+    inv.m[3] = {0, 0, 0, 1};
+    inv.scale = 1.0 / scale;
+    return inv;
+}
+
 }  // namespace rp

@@ -33,6 +33,9 @@ struct Transform {
 
     std::array<double, 3> point(const std::array<double, 3>& p) const;
     std::array<double, 3> direction(const std::array<double, 3>& v) const;
+    // The inverse (world to object space). RADIANCE transforms are similarities (rotation,
+    // mirror, uniform scale, translation), so the linear part inverts as L^T / scale^2.
+    Transform inverse() const;
     // True if the transform mirrors (negative determinant): surface orientation flips.
     bool mirrors() const;
     bool isIdentity() const;
