@@ -2,10 +2,13 @@
 // (context search, then ray variables and builtins), folds constant subexpressions and
 // constant-function calls, and turns what cannot be resolved into error nodes that raise
 // an InputError with the reference's file:line when (and only when) evaluated, as
-// RADIANCE reports undefined names at evaluation time.
+// RADIANCE reports undefined names at evaluation time. Folding runs the VM on a scratch
+// block; at the end every variable, function and expression gets its code (codegen.h).
 #include <cmath>
 
 #include "calc/builtins.h"
+#include "calc/codegen.h"
+#include "calc/inlining.h"
 #include "calc/names.h"
 #include "calc/program.h"
 
@@ -24,7 +27,11 @@ public:
             Scope scope{&e.context, nullptr, nullptr, e.loc.file};
             p_->expressions_.push_back(compile(*e.expr, scope));
         }
-        for (Node& n : p_->nodes_) classifyLeaf(n);
+        // Code for everything: every variable, function and expression gets a block.
+        CodeImage& img = p_->image_;
+        for (const auto& v : p_->vars_) img.varBlock[v->slot] = gen_.emitBlock(v->body, v->slot);
+        generateFunctions();
+        for (const Node* e : p_->expressions_) p_->expressionBlocks_.push_back(gen_.emitBlock(e));
         return std::shared_ptr<const Program>(std::move(p_));
     }
 
@@ -51,6 +58,7 @@ private:
             if (d.isFunction) {
                 auto f = std::make_unique<FunctionInfo>();
                 f->name = d.name;
+                f->index = static_cast<int>(funcDefs_.size());
                 f->nparams = static_cast<int>(d.params.size());
                 f->constant = d.constant;
                 f->paramCalled = d.paramCalled;
@@ -76,15 +84,11 @@ private:
         }
         varState_.assign(varDefs_.size(), State::Todo);
         funcState_.assign(funcDefs_.size(), State::Todo);
-        foldStack_.assign(4096, 0.0);
-        foldValues_.assign(varDefs_.size() + 1, 0.0);
-        foldStamps_.assign(varDefs_.size() + 1, 0);
-        fold_.ray = &foldRay_;
-        fold_.varValue = foldValues_.data();
-        fold_.varStamp = foldStamps_.data();
-        fold_.argStack = foldStack_.data();
-        fold_.argCapacity = static_cast<int>(foldStack_.size());
-        fold_.functions = p_->functionTable_.data();
+        CodeImage& img = p_->image_;
+        img.nvars = static_cast<int>(varDefs_.size());
+        img.varBlock.assign(varDefs_.size(), -1);
+        img.funcBlock.assign(funcDefs_.size(), -1);
+        img.functions = p_->functionTable_;
     }
 
     // A parameter passed on to another function's function-valued parameter is itself
@@ -167,9 +171,9 @@ private:
         return -1;
     }
 
-    Node* newNode(EvalFn fn) {
+    Node* newNode(const NodeKind& kind) {
         Node& n = p_->nodes_.emplace_back();
-        n.fn = fn;
+        n.fn = &kind;
         return &n;
     }
     const NodeInfo* newInfo(const SourceLoc& loc, std::string text) {
@@ -180,10 +184,10 @@ private:
         n->num = v;
         return n;
     }
-    static bool isConst(const Node* n) { return n->fn == evConst; }
+    static bool isConst(const Node* n) { return n->fn == &evConst; }
     // Context-free leaves that a variable reference may use directly instead of caching.
     static bool isLeaf(const Node* n) {
-        return n->fn == evConst || n->fn == evRay || n->fn == evModArg;
+        return n->fn == &evConst || n->fn == &evRay || n->fn == &evModArg;
     }
     const Node* error(const Scope& s, int line, const std::string& msg) {
         SourceLoc loc{s.file, line};
@@ -192,20 +196,37 @@ private:
         n->info = newInfo(loc, msg);
         return n;
     }
+    // Functions whose bodies are complete and have no code yet get their blocks.
+    void generateFunctions() {
+        CodeImage& img = p_->image_;
+        for (std::size_t i = 0; i < funcDefs_.size(); ++i)
+            if (img.funcBlock[i] < 0 && funcState_[i] == State::Done)
+                img.funcBlock[i] = gen_.emitBlock(p_->functions_[i]->body);
+    }
+    // Evaluates a constant subexpression now with a scratch block that is dropped again.
     const Node* fold(const Node* n) {
-        fold_.argTop = 0;
-        fold_.depth = 0;
-        fold_.frame = nullptr;
-        fold_.frameSize = 0;
-        char here;
-        fold_.stackStart = &here;
-        return constant((*n)(fold_));
+        generateFunctions();
+        CodeImage& img = p_->image_;
+        const std::size_t codeSize = img.code.size(), blockCount = img.blocks.size();
+        int block = gen_.emitBlock(n);
+        double v;
+        try {
+            fold_.attach(img);
+            v = fold_.run(block);
+        } catch (...) {
+            img.code.resize(codeSize);
+            img.blocks.resize(blockCount);
+            throw;
+        }
+        img.code.resize(codeSize);
+        img.blocks.resize(blockCount);
+        return constant(v);
     }
     const Node* const* kidList(std::vector<const Node*> kids) {
         return p_->kidLists_.emplace_back(std::move(kids)).data();
     }
 
-    const Node* binary(EvalFn fn, const Node* a, const Node* b) {
+    const Node* binary(const NodeKind& fn, const Node* a, const Node* b) {
         Node* n = newNode(fn);
         n->a = a;
         n->b = b;
@@ -216,21 +237,21 @@ private:
     // one operand fetch less, same arithmetic and result.
     static const Node* withConstant(Node* n) {
         const Node *a = n->a, *b = n->b;
-        if (n->fn == evAdd || n->fn == evMul) {
+        if (n->fn == &evAdd || n->fn == &evMul) {
             if (isConst(a)) std::swap(a, b);  // + and * commute exactly in IEEE arithmetic
             if (isConst(b)) {
-                n->fn = n->fn == evAdd ? evAddC : evMulC;
+                n->fn = n->fn == &evAdd ? &evAddC : &evMulC;
                 n->num = b->num;
                 n->a = a;
                 n->b = nullptr;
             }
-        } else if (n->fn == evSub) {
+        } else if (n->fn == &evSub) {
             if (isConst(b)) {
-                n->fn = evSubC;
+                n->fn = &evSubC;
                 n->num = b->num;
                 n->b = nullptr;
             } else if (isConst(a)) {
-                n->fn = evCSub;
+                n->fn = &evCSub;
                 n->num = a->num;
                 n->a = b;
                 n->b = nullptr;
@@ -309,46 +330,13 @@ private:
         return p_->varEntries_[i];
     }
 
-    // Small functions (Acos, bound, max ...) are expanded at the call site when that
-    // cannot change the result: each parameter is used at most once, or its argument is
-    // a leaf that is as cheap to re-read as a parameter slot. Arguments thereby become
-    // lazily evaluated, as in RADIANCE.
-    static constexpr int kInlineMaxNodes = 48;
-
-    static bool isCheapArg(const Node* n) {
-        return n->fn == evConst || n->fn == evRay || n->fn == evModArg || n->fn == evParam ||
-               n->fn == evVar;
-    }
-    // Counts nodes and parameter uses; false if the body cannot be inlined.
-    static bool scanBody(const Node* n, std::vector<int>& uses, int& count) {
-        if (++count > kInlineMaxNodes) return false;
-        if (n->fn == evParamDyn || n->fn == evCallParamFn || n->fn == evError) return false;
-        if (n->fn == evParam) {
-            if (n->index < 1 || n->index > static_cast<int>(uses.size())) return false;
-            ++uses[n->index - 1];
-            return true;
-        }
-        for (const Node* k : {n->a, n->b, n->c})
-            if (k && !scanBody(k, uses, count)) return false;
-        for (int i = 0; i < n->nkids; ++i)
-            if (n->kids[i] != n->a && !scanBody(n->kids[i], uses, count)) return false;
-        return true;
-    }
-    bool inlinable(const FunctionInfo& f, const Node* call) const {
-        std::vector<int> uses(call->nkids, 0);
-        int count = 0;
-        if (!f.body || !scanBody(f.body, uses, count)) return false;
-        for (int i = 0; i < call->nkids; ++i)
-            if (uses[i] > 1 && !isCheapArg(call->kids[i])) return false;
-        return true;
-    }
     const Node* inlineCall(const FunctionInfo& f, const Node* call) {
         return cloneWith(f.body, call->kids);
     }
     const Node* cloneWith(const Node* n, const Node* const* args) {
-        if (n->fn == evParam) return args[n->index - 1];
-        if (n->fn == evConst || n->fn == evRay || n->fn == evModArg || n->fn == evVar) return n;
-        Node* c = newNode(n->fn);
+        if (n->fn == &evParam) return args[n->index - 1];
+        if (n->fn == &evConst || n->fn == &evRay || n->fn == &evModArg || n->fn == &evVar) return n;
+        Node* c = newNode(*n->fn);
         *c = *n;
         if (n->nkids > 0) {
             std::vector<const Node*> kids;
@@ -360,11 +348,11 @@ private:
         if (n->b) c->b = cloneWith(n->b, args);
         if (n->c) c->c = cloneWith(n->c, args);
         // Fold what became constant.
-        if (c->fn == evIf && isConst(c->a)) return c->a->num > 0 ? c->b : c->c;
-        bool foldable = c->fn == evNeg || c->fn == evAdd || c->fn == evSub || c->fn == evMul ||
-                        c->fn == evDiv || c->fn == evPow || c->fn == evPowInt ||
-                        c->fn == evMath1 || c->fn == evBuiltinN || c->fn == evAddC ||
-                        c->fn == evSubC || c->fn == evCSub || c->fn == evMulC;
+        if (c->fn == &evIf && isConst(c->a)) return c->a->num > 0 ? c->b : c->c;
+        bool foldable = c->fn == &evNeg || c->fn == &evAdd || c->fn == &evSub || c->fn == &evMul ||
+                        c->fn == &evDiv || c->fn == &evPow || c->fn == &evPowInt ||
+                        c->fn == &evMath1 || c->fn == &evBuiltinN || c->fn == &evAddC ||
+                        c->fn == &evSubC || c->fn == &evCSub || c->fn == &evMulC;
         if (foldable) {
             bool allConst = true;
             for (const Node* k : {c->a, c->b})
@@ -373,7 +361,7 @@ private:
                 if (!isConst(c->kids[i])) allConst = false;
             if (allConst) return fold(c);
         }
-        if (c->fn == evAdd || c->fn == evSub || c->fn == evMul) return withConstant(c);
+        if (c->fn == &evAdd || c->fn == &evSub || c->fn == &evMul) return withConstant(c);
         return c;
     }
 
@@ -433,7 +421,7 @@ private:
                 n->info = site;
                 // RADIANCE compat: a ':' function called with constant arguments is folded.
                 if (allConst && f->constant && st == State::Done && f->pure) return fold(n);
-                if (st == State::Done && f != s.fn && inlinable(*f, n)) return inlineCall(*f, n);
+                if (st == State::Done && f != s.fn && canInline(*f, n)) return inlineCall(*f, n);
                 return n;
             }
             case RefKind::If: {
@@ -504,10 +492,8 @@ private:
     std::unique_ptr<Program> p_;
     std::vector<const Definition*> varDefs_, funcDefs_;
     std::vector<State> varState_, funcState_;
-    RayContext foldRay_;
-    std::vector<double> foldStack_, foldValues_;
-    std::vector<std::uint64_t> foldStamps_;
-    EvalState fold_;
+    CodeGen gen_{p_->image_};
+    Machine fold_;
 };
 
 std::shared_ptr<const Program> Builder::build() const { return Linker(*this).run(); }

@@ -49,11 +49,8 @@ std::optional<Entry> Program::variable(std::string_view name, std::string_view c
         if (!q) break;
         if (auto it = varIndex_.find(*q); it != varIndex_.end()) {
             const VarInfo& v = *vars_[it->second];
-            // Constants and plain aliases need no cache slot.
-            if (v.body && (v.body->fn == evConst || v.body->fn == evRay ||
-                           v.body->fn == evModArg))
-                return Entry{v.body};
-            return Entry{varEntries_[it->second]};
+            if (v.body && v.body->fn == &evConst) return Entry{v.body};  // no cache slot
+            return Entry{varEntries_[it->second], image_.varBlock[v.slot], v.slot};
         }
     }
     return std::nullopt;
@@ -75,42 +72,21 @@ std::optional<Function> Program::function(std::string_view name, std::string_vie
 
 Evaluator::Evaluator(std::shared_ptr<const Program> program) : program_(std::move(program)) {
     RP_CHECK(program_ != nullptr);
-    values_.assign(program_->vars_.size() + 1, 0.0);
-    stamps_.assign(program_->vars_.size() + 1, 0);
-    argStack_.assign(1 << 15, 0.0);
-    state_.ray = &defaultRay_;
-    state_.varValue = values_.data();
-    state_.varStamp = stamps_.data();
-    state_.argStack = argStack_.data();
-    state_.argCapacity = static_cast<int>(argStack_.size());
-    state_.functions = program_->functionTable_.data();
+    machine_.attach(program_->image_);
 }
 
-void Evaluator::setRay(const RayContext& ray) {
-    state_.ray = &ray;
-    ++state_.clock;
-}
-
-void Evaluator::begin() {
-    state_.argTop = 0;
-    state_.depth = 0;
-    state_.frame = nullptr;
-    state_.frameSize = 0;
-}
+void Evaluator::setRay(const RayContext& ray) { machine_.setRay(ray); }
 
 double Evaluator::eval(Entry e) {
     RP_CHECK(e.node != nullptr);
-    begin();
-    char here;
-    state_.stackStart = &here;
-    return calc::eval(e.node, state_);
+    if (e.block < 0) return e.node->num;
+    double v;
+    if (e.slot >= 0 && machine_.cached(e.slot, v)) return v;
+    return machine_.run(e.block);
 }
 
 double Evaluator::call(const Function& f, std::span<const double> args) {
-    begin();
-    char here;
-    state_.stackStart = &here;
-    return callById(f.id, args.data(), static_cast<int>(args.size()), state_, nullptr);
+    return machine_.call(f.id, args.data(), static_cast<int>(args.size()));
 }
 
 }  // namespace rp::calc

@@ -23,8 +23,9 @@
 #include <vector>
 
 #include "calc/ast.h"
-#include "calc/eval.h"
+#include "calc/ir.h"
 #include "calc/ray_context.h"
+#include "calc/vm.h"
 
 namespace rp::calc {
 
@@ -33,6 +34,8 @@ class Program;
 // Something to evaluate: a variable (cached per ray) or a compiled expression.
 struct Entry {
     const Node* node = nullptr;
+    int block = -1;  // its code (none for constants)
+    int slot = -1;   // cache slot of a variable
 };
 
 // A function to call with arguments: user-defined (index >= 0) or builtin.
@@ -87,7 +90,9 @@ public:
     // Looks `name` up as code in `context` would see it (names.h search rules).
     std::optional<Entry> variable(std::string_view name, std::string_view context = "") const;
     std::optional<Function> function(std::string_view name, std::string_view context = "") const;
-    Entry expression(int id) const { return Entry{expressions_.at(id)}; }
+    Entry expression(int id) const {
+        return Entry{expressions_.at(id), expressionBlocks_.at(id)};
+    }
 
     // References that could not be resolved and other problems found while compiling,
     // as "file:line: message". Each is also raised as an InputError if evaluated.
@@ -110,6 +115,8 @@ private:
     std::map<std::string, int, std::less<>> varIndex_;
     std::map<std::string, int, std::less<>> functionIndex_;
     std::vector<const Node*> expressions_;
+    std::vector<int> expressionBlocks_;
+    CodeImage image_;
     std::vector<std::string> problems_;
 };
 
@@ -127,17 +134,11 @@ public:
     double call(const Function& f, std::span<const double> args);
 
     // Divisions by zero and library calls with non-finite results so far (each gave 0).
-    long mathErrors() const { return state_.mathErrors; }
+    long mathErrors() const { return machine_.mathErrors; }
 
 private:
-    void begin();
-
     std::shared_ptr<const Program> program_;
-    RayContext defaultRay_;
-    std::vector<double> values_;
-    std::vector<std::uint64_t> stamps_;
-    std::vector<double> argStack_;
-    EvalState state_;
+    Machine machine_;
 };
 
 }  // namespace rp::calc
