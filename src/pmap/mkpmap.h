@@ -1,0 +1,35 @@
+// mkpmap's work as a library call: check the request, load the scene, find sources and
+// ports, distribute photons (distribute.h), build each photon map and save it with the
+// command line in its header. Option parsing is mkpmap_options.h; the tool's main only
+// maps errors to exit codes.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+
+#include "pmap/mkpmap_options.h"
+#include "pmap/photon.h"
+
+namespace rp::pmap {
+
+struct MkpmapReport {
+    std::array<uint64_t, kNumPhotonMapTypes> stored{};  // photons per saved map
+    uint64_t emitted = 0;
+    uint64_t prepassEmitted = 0;
+    int prepasses = 0;
+    long runaways = 0;
+    double traceSeconds = 0;  // prepass + main pass
+    double buildSeconds = 0;  // kd-trees of all maps
+    double saveSeconds = 0;
+};
+
+// Throws InputError (one line, no program prefix) for: an existing output file without
+// -fo (checked before anything is traced), two maps written to one file, map types not
+// supported yet (-apv, -app, -apC), scene errors, no light sources, bad ports/sensors,
+// and distribution failure (manual 4.2). Progress (-t) and the summary go to `diag`.
+MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
+                       std::ostream& diag);
+
+}  // namespace rp::pmap

@@ -1,0 +1,192 @@
+// mkpmap command-line parsing (RADIANCE mkpmap.c main, mkpmap.1). Option semantics are
+// RADIANCE's; messages are ours, one line each.
+#include "pmap/mkpmap_options.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+
+#include "util/error.h"
+
+namespace rp::pmap {
+
+std::optional<uint64_t> parsePhotonCount(const std::string& s) {
+    if (s.empty()) return std::nullopt;
+    char* end = nullptr;
+    errno = 0;
+    double v = std::strtod(s.c_str(), &end);
+    if (end == s.c_str() || errno != 0) return std::nullopt;
+    std::string rest(end);
+    if (rest == "k" || rest == "K") v *= 1e3;
+    else if (rest == "m" || rest == "M") v *= 1e6;
+    else if (!rest.empty()) return std::nullopt;
+    if (!(v >= 1) || v > 1e15) return std::nullopt;
+    return uint64_t(std::llround(v));
+}
+
+namespace {
+
+class ArgReader {
+public:
+    ArgReader(int argc, const char* const* argv) : argc_(argc), argv_(argv) {}
+    bool done() const { return i_ >= argc_; }
+    bool last() const { return i_ == argc_ - 1; }
+    std::string peek() const { return argv_[i_]; }
+    std::string next() { return argv_[i_++]; }
+
+    // The value after option `opt`.
+    std::string value(const std::string& opt) {
+        if (i_ >= argc_) throw InputError("missing value for option '" + opt + "'");
+        return argv_[i_++];
+    }
+    double real(const std::string& opt) {
+        std::string v = value(opt);
+        char* end = nullptr;
+        double d = std::strtod(v.c_str(), &end);
+        if (end == v.c_str() || *end != '\0' || !std::isfinite(d))
+            throw InputError("bad value '" + v + "' for option '" + opt + "'");
+        return d;
+    }
+    long integer(const std::string& opt) {
+        std::string v = value(opt);
+        char* end = nullptr;
+        errno = 0;
+        long n = std::strtol(v.c_str(), &end, 10);
+        if (end == v.c_str() || *end != '\0' || errno != 0)
+            throw InputError("bad value '" + v + "' for option '" + opt + "'");
+        return n;
+    }
+
+private:
+    int argc_;
+    const char* const* argv_;
+    int i_ = 1;
+};
+
+// RADIANCE check_bool: no suffix toggles; + y t 1 on; - n f 0 off.
+bool boolSuffix(const std::string& opt, size_t len, bool current) {
+    if (opt.size() == len) return !current;
+    if (opt.size() == len + 1) {
+        switch (opt[len]) {
+        case '+': case 'y': case 'Y': case 't': case 'T': case '1': return true;
+        case '-': case 'n': case 'N': case 'f': case 'F': case '0': return false;
+        default: break;
+        }
+    }
+    throw InputError("unknown option '" + opt + "'");
+}
+
+// Whitespace-separated words of a modifier list file (RADIANCE wordfile).
+std::vector<std::string> readWordFile(const std::string& path, const std::string& what) {
+    std::ifstream in(path);
+    if (!in) throw InputError("cannot open " + what + " file " + path);
+    return {std::istream_iterator<std::string>(in), std::istream_iterator<std::string>()};
+}
+
+void append(std::vector<std::string>& to, const std::vector<std::string>& words) {
+    to.insert(to.end(), words.begin(), words.end());
+}
+
+}  // namespace
+
+MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
+    MkpmapOptions o;
+    ArgReader a(argc, argv);
+    auto mapOpt = [&](const std::string& opt, PhotonMapType type, bool bwidth) {
+        MapRequest r;
+        r.file = a.value(opt);
+        std::string n = a.value(opt);
+        auto count = parsePhotonCount(n);
+        if (!count) throw InputError("bad photon count '" + n + "' for option '" + opt + "'");
+        r.target = *count;
+        if (bwidth) {
+            long b = a.integer(opt);
+            if (b <= 0) throw InputError("bandwidth for option '" + opt + "' must be > 0");
+            r.bandwidth = int(b);
+        }
+        o.maps[size_t(type)] = r;
+    };
+    auto positive = [](double v, const char* msg) {
+        if (!(v > 0)) throw InputError(msg);
+        return v;
+    };
+
+    while (!a.done()) {
+        std::string opt = a.peek();
+        if (opt.size() < 2 || opt[0] != '-') break;  // scene files from here on
+        a.next();
+        if (opt == "-apg") mapOpt(opt, PhotonMapType::Global, false);
+        else if (opt == "-apc") mapOpt(opt, PhotonMapType::Caustic, false);
+        else if (opt == "-apv") mapOpt(opt, PhotonMapType::Volume, false);
+        else if (opt == "-apd") mapOpt(opt, PhotonMapType::Direct, false);
+        else if (opt == "-apC") mapOpt(opt, PhotonMapType::Contrib, false);
+        else if (opt == "-app") mapOpt(opt, PhotonMapType::PreComp, true);
+        else if (opt == "-apD")
+            o.preDistrib = positive(a.real(opt), "predistribution factor must be > 0");
+        else if (opt == "-apM") {
+            o.maxPrepass = int(a.integer(opt));
+            if (o.maxPrepass <= 0) throw InputError("max predistribution passes must be > 0");
+        } else if (opt == "-apP") {
+            o.precompFraction = a.real(opt);
+            if (!(o.precompFraction > 0 && o.precompFraction <= 1))
+                throw InputError("global photon precomputation factor must be in range ]0, 1]");
+        } else if (opt == "-apr") o.seed = a.integer(opt);
+        else if (opt == "-api") {
+            RegionOfInterest r;
+            for (int k = 0; k < 3; ++k) r.min[k] = a.real(opt);
+            for (int k = 0; k < 3; ++k) r.max[k] = a.real(opt);
+            for (int k = 0; k < 3; ++k)
+                if (r.min[k] >= r.max[k])
+                    throw InputError("invalid region of interest (swapped min/max?)");
+            o.rois.push_back(r);
+        } else if (opt == "-apm" || opt == "-lr") {
+            o.maxBounce = a.integer(opt);
+            if (o.maxBounce <= 0) throw InputError("max photon bounces must be > 0");
+        } else if (opt == "-ld")
+            o.maxDistance = positive(a.real(opt), "max photon distance must be > 0");
+        else if (opt == "-apo") o.portSpecs.push_back(a.value(opt));
+        else if (opt == "-apO") append(o.portSpecs, readWordFile(a.value(opt), "photon port"));
+        else if (opt == "-aps") o.sensors.push_back(a.value(opt));
+        else if (opt == "-apS")
+            append(o.sensors, readWordFile(a.value(opt), "antimatter sensor"));
+        else if (opt == "-ai") o.include.push_back(a.value(opt));
+        else if (opt == "-aI" || opt == "-al")
+            append(o.include, readWordFile(a.value(opt), "ambient include"));
+        else if (opt == "-ae") o.exclude.push_back(a.value(opt));
+        else if (opt == "-aE") append(o.exclude, readWordFile(a.value(opt), "ambient exclude"));
+        else if (opt.rfind("-bv", 0) == 0) o.backVisible = boolSuffix(opt, 3, o.backVisible);
+        else if (opt.rfind("-fo", 0) == 0) o.overwrite = boolSuffix(opt, 3, o.overwrite);
+        else if (opt == "-dp") o.pdfSamples = positive(a.real(opt), "PDF samples must be > 0");
+        else if (opt == "-ds")
+            o.partitionSize = positive(a.real(opt), "source partition size ratio must be > 0");
+        else if (opt == "-e") o.diagnosticsFile = a.value(opt);
+        else if (opt == "-ma" || opt == "-me") {
+            Color c;
+            for (int k = 0; k < 3; ++k) c[k] = a.real(opt);
+            (opt == "-ma" ? o.mediumAlbedo : o.mediumExtinction) = c;
+        } else if (opt == "-mg") o.mediumEccentricity = a.real(opt);
+        else if (opt == "-n") {
+            long n = a.integer(opt);
+            if (n <= 0) throw InputError("number of processes must be > 0");
+            o.nproc = int(n);
+        } else if (opt == "-t") {
+            long t = a.integer(opt);
+            if (t < 0) throw InputError("report interval must be >= 0");
+            o.reportSeconds = int(t);
+        } else
+            throw InputError("unknown option '" + opt + "'");
+    }
+    while (!a.done()) o.sceneFiles.push_back(a.next());
+
+    if (!o.include.empty() && !o.exclude.empty())
+        throw InputError("ambient include (-ai/-aI) and exclude (-ae/-aE) are mutually exclusive");
+    bool any = false;
+    for (const auto& m : o.maps) any = any || m.has_value();
+    if (!any) throw InputError("no photon maps specified");
+    if (o.sceneFiles.empty()) throw InputError("missing octree argument");
+    return o;
+}
+
+}  // namespace rp::pmap

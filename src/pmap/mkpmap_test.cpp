@@ -1,0 +1,173 @@
+// mkpmap's command line and run: option parsing, one test per kind of bad input, files
+// written with RADIANCE's header, and bit-identical files for -n 1 and -n 2.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "pmap/mkpmap.h"
+#include "pmap/mkpmap_options.h"
+#include "pmap/photon_map.h"
+#include "util/error.h"
+
+namespace rp::pmap {
+namespace {
+
+MkpmapOptions parse(std::vector<std::string> args) {
+    args.insert(args.begin(), "mkpmap");
+    std::vector<const char*> argv;
+    for (const auto& a : args) argv.push_back(a.c_str());
+    return parseMkpmapArgs(int(argv.size()), argv.data());
+}
+
+std::string parseError(std::vector<std::string> args) {
+    try {
+        parse(std::move(args));
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(MkpmapOptions, ParsesRadianceCommandLine) {
+    MkpmapOptions o = parse({"-apg", "g.pm", "500k", "-apc", "c.pm", "1m", "-apd", "d.pm", "2.5K",
+                             "-apD", "0.5", "-apM", "6", "-apr", "3", "-api", "0", "0", "0", "1", "2",
+                             "3", "-lr", "100", "-ld", "7.5", "-apo", "win+", "-aps", "sens",
+                             "-ae", "x", "-bv-", "-dp", "500", "-ds", ".02", "-fo+", "-n", "2",
+                             "-t", "10", "a.rad", "b.rad"});
+    EXPECT_EQ(o.maps[size_t(PhotonMapType::Global)]->target, 500000u);
+    EXPECT_EQ(o.maps[size_t(PhotonMapType::Global)]->file, "g.pm");
+    EXPECT_EQ(o.maps[size_t(PhotonMapType::Caustic)]->target, 1000000u);
+    EXPECT_EQ(o.maps[size_t(PhotonMapType::Direct)]->target, 2500u);
+    EXPECT_FALSE(o.wants(PhotonMapType::Volume));
+    EXPECT_DOUBLE_EQ(o.preDistrib, 0.5);
+    EXPECT_EQ(o.maxPrepass, 6);
+    EXPECT_EQ(o.seed, 3);
+    ASSERT_EQ(o.rois.size(), 1u);
+    EXPECT_EQ(o.rois[0].max.z, 3);
+    EXPECT_EQ(o.maxBounce, 100);
+    EXPECT_DOUBLE_EQ(o.maxDistance, 7.5);
+    EXPECT_EQ(o.portSpecs, std::vector<std::string>{"win+"});
+    EXPECT_EQ(o.sensors, std::vector<std::string>{"sens"});
+    EXPECT_EQ(o.exclude, std::vector<std::string>{"x"});
+    EXPECT_FALSE(o.backVisible);
+    EXPECT_TRUE(o.overwrite);
+    EXPECT_DOUBLE_EQ(o.partitionSize, 0.02);
+    EXPECT_EQ(o.nproc, 2);
+    EXPECT_EQ(o.reportSeconds, 10);
+    EXPECT_EQ(o.sceneFiles, (std::vector<std::string>{"a.rad", "b.rad"}));
+}
+
+TEST(MkpmapOptions, Defaults) {
+    MkpmapOptions o = parse({"-apg", "g.pm", "1000", "x.oct"});
+    EXPECT_DOUBLE_EQ(o.preDistrib, 0.25);
+    EXPECT_EQ(o.maxPrepass, 4);
+    EXPECT_DOUBLE_EQ(o.partitionSize, 0.01);
+    EXPECT_TRUE(o.backVisible);  // RADIANCE mkpmap.c: backvis = 1
+    EXPECT_FALSE(o.overwrite);
+    EXPECT_EQ(o.nproc, 1);
+    EXPECT_EQ(parse({"-bv", "-apg", "g", "1", "x"}).backVisible, false);  // bare flag toggles
+    EXPECT_EQ(parse({"-apm", "9", "-apg", "g", "1", "x"}).maxBounce, 9);
+}
+
+TEST(MkpmapOptions, PhotonCounts) {
+    EXPECT_EQ(parsePhotonCount("500k"), 500000u);
+    EXPECT_EQ(parsePhotonCount("1M"), 1000000u);
+    EXPECT_EQ(parsePhotonCount("20000"), 20000u);
+    EXPECT_FALSE(parsePhotonCount("0"));
+    EXPECT_FALSE(parsePhotonCount("12x"));
+    EXPECT_FALSE(parsePhotonCount("-5"));
+}
+
+TEST(MkpmapOptions, Errors) {
+    EXPECT_EQ(parseError({"-apx", "g", "1", "x"}), "unknown option '-apx'");
+    EXPECT_EQ(parseError({"-apg", "g"}), "missing value for option '-apg'");
+    EXPECT_EQ(parseError({"-apg", "g", "lots", "x"}), "bad photon count 'lots' for option '-apg'");
+    EXPECT_EQ(parseError({"-n", "2", "x.oct"}), "no photon maps specified");
+    EXPECT_EQ(parseError({"-apg", "g", "1k"}), "missing octree argument");
+    EXPECT_NE(parseError({"-ai", "a", "-ae", "b", "-apg", "g", "1", "x"}).find("mutually exclusive"),
+              std::string::npos);
+    EXPECT_NE(parseError({"-api", "1", "0", "0", "0", "1", "1", "-apg", "g", "1", "x"})
+                  .find("invalid region of interest"),
+              std::string::npos);
+    EXPECT_EQ(parseError({"-ds", "abc", "-apg", "g", "1", "x"}), "bad value 'abc' for option '-ds'");
+    EXPECT_NE(parseError({"-apO", "/nonexistent/ports", "-apg", "g", "1", "x"}).find("cannot open"),
+              std::string::npos);
+}
+
+class MkpmapRun : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = std::filesystem::temp_directory_path() /
+               ("mkpmap_test_" + std::to_string(::getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    std::string runError(std::vector<std::string> args) {
+        std::ostringstream diag;
+        try {
+            runMkpmap(parse(std::move(args)), "mkpmap test", diag);
+        } catch (const InputError& e) {
+            return e.what();
+        }
+        return "(no error)";
+    }
+    std::filesystem::path dir_;
+};
+
+std::string cornell() { return std::string(RP_SOURCE_DIR) + "/examples/cornell/scene.rad"; }
+
+std::string slurp(const std::string& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST_F(MkpmapRun, SameFilesForOneAndTwoThreads) {
+    std::ostringstream diag;
+    for (const char* n : {"1", "2"})
+        runMkpmap(parse({"-apg", path(std::string("g") + n + ".pm"), "20k", "-apc",
+                         path(std::string("c") + n + ".pm"), "20k", "-apr", "5", "-n", n, cornell()}),
+                  "mkpmap -apg g.pm 20k -apc c.pm 20k", diag);
+    EXPECT_EQ(slurp(path("g1.pm")), slurp(path("g2.pm")));
+    EXPECT_EQ(slurp(path("c1.pm")), slurp(path("c2.pm")));
+    PhotonMap g = PhotonMap::load(path("g1.pm"));
+    EXPECT_EQ(g.type(), PhotonMapType::Global);
+    EXPECT_NEAR(double(g.size()), 20000, 1000);
+    Header h = g.fileHeader("x");
+    EXPECT_EQ(h.format(), "Radiance_Global_kdT_Photon_Map");
+    EXPECT_EQ(PhotonMap::load(path("c2.pm")).type(), PhotonMapType::Caustic);
+}
+
+TEST_F(MkpmapRun, RefusesExistingFileBeforeTracing) {
+    std::ofstream(path("g.pm")) << "keep me";
+    EXPECT_EQ(runError({"-apg", path("g.pm"), "1k", cornell()}),
+              "photon map file " + path("g.pm") + " exists, not overwritten");
+    EXPECT_EQ(slurp(path("g.pm")), "keep me");
+    // Checked before the scene is read: even a missing scene reports the file first.
+    EXPECT_EQ(runError({"-apg", path("g.pm"), "1k", "/nonexistent.rad"}),
+              "photon map file " + path("g.pm") + " exists, not overwritten");
+    EXPECT_EQ(runError({"-fo", "-apg", path("g.pm"), "1k", cornell()}), "(no error)");
+    EXPECT_NE(slurp(path("g.pm")), "keep me");
+}
+
+TEST_F(MkpmapRun, ErrorsOnePerKind) {
+    EXPECT_EQ(runError({"-apv", path("v.pm"), "1k", cornell()}),
+              "not supported yet: volume photon maps (mist)");
+    EXPECT_NE(runError({"-apg", path("a.pm"), "1k", "-apc", path("a.pm"), "1k", cornell()})
+                  .find("more than once"),
+              std::string::npos);
+    EXPECT_NE(runError({"-apg", path("g.pm"), "1k", "-aps", "white", cornell()}).find("not antimatter"),
+              std::string::npos);
+    std::ofstream(path("dark.rad")) << "void plastic p 0 0 5 .5 .5 .5 0 0\n"
+                                       "p sphere s 0 0 4 0 0 0 1\n";
+    EXPECT_EQ(runError({"-apg", path("g.pm"), "1k", path("dark.rad")}), "no light sources found");
+    EXPECT_NE(runError({"-apg", path("g.pm"), "1k", "-apo", "nosuchport", cornell()}),
+              "(no error)");
+    EXPECT_FALSE(std::filesystem::exists(path("g.pm")));
+}
+
+}  // namespace
+}  // namespace rp::pmap

@@ -1,0 +1,273 @@
+// Photon tracing for mkpmap (RADIANCE pmap.c tracePhoton, pmapmat.c photonScatter and
+// addPhotons), as a loop over path segments instead of RADIANCE's recursion.
+#include "pmap/trace.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+#include "light/light_sources.h"
+#include "util/error.h"
+#include "util/warnings.h"
+
+namespace rp::pmap {
+
+namespace {
+
+using material::ScatterKind;
+
+// Modifiers clipped by the antimatter volumes a photon is inside (RADIANCE's clipset).
+// Fixed capacity: nested antimatter deeper than this is vanishingly rare, and RADIANCE's
+// MAXSET bound is an error too; overflowing entries are ignored.
+struct ClipSet {
+    static constexpr int kCapacity = 16;
+    int32_t mods[kCapacity];
+    int n = 0;
+    bool contains(int32_t m) const {
+        for (int i = 0; i < n; ++i)
+            if (mods[i] == m) return true;
+        return false;
+    }
+    void add(int32_t m) {
+        if (!contains(m) && n < kCapacity) mods[n++] = m;
+    }
+    void remove(int32_t m) {
+        for (int i = 0; i < n; ++i)
+            if (mods[i] == m) {
+                mods[i] = mods[--n];
+                return;
+            }
+    }
+};
+
+bool opaqueBackAbsorbs(const material::MaterialParams& m) {
+    // pmapmat.c normalPhotonScatter / anisoPhotonScatter: the back of an opaque
+    // material absorbs unless -bv; trans* is lit from both sides.
+    if (auto* p = std::get_if<material::NormalParams>(&m))
+        return p->kind != material::NormalParams::Kind::Trans;
+    if (auto* p = std::get_if<material::AnisoParams>(&m))
+        return p->kind != material::AnisoParams::Kind::Trans2;
+    if (auto* p = std::get_if<material::FuncParams>(&m))
+        return p->type != PrimType::Transfunc && p->type != PrimType::Transdata;
+    return false;
+}
+
+int8_t packNormal(double v) { return static_cast<int8_t>(127.0 * v); }
+
+}  // namespace
+
+PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
+                           const light::EmissionPlan& plan, TraceSettings settings)
+    : scene_(scene), geometry_(geometry), plan_(plan), settings_(std::move(settings)) {
+    const auto& prims = scene.prims;
+    modifiers_.resize(prims.size());
+    std::unordered_set<std::string> include(settings_.include.begin(), settings_.include.end());
+    std::unordered_set<std::string> exclude(settings_.exclude.begin(), settings_.exclude.end());
+    std::unordered_set<std::string> sensors(settings_.sensors.begin(), settings_.sensors.end());
+
+    // Sensors: every modifier of that name must be antimatter (pmapmat.c getPhotonSensors).
+    bool sensorFound = false;
+    for (const Primitive& p : prims) {
+        if (!isModifier(p.type) || !sensors.count(p.name)) continue;
+        if (p.type != PrimType::Antimatter)
+            throw InputError(p.loc, "photon sensor modifier " + p.name + " is not antimatter");
+        sensorFound = true;
+    }
+    if (!sensors.empty() && !sensorFound) throw InputError("no photon sensors found");
+
+    bool warnedPattern = false;
+    for (size_t i = 0; i < prims.size(); ++i) {
+        const Primitive& surf = prims[i];
+        if (!isSurface(surf.type) || surf.modifier == kVoid) continue;
+        ModifierInfo& info = modifiers_[size_t(surf.modifier)];
+        if (info.resolved) continue;
+        info.resolved = true;
+        const Primitive& mod = prims[size_t(surf.modifier)];
+        info.storeAllowed = include.empty() ? !exclude.count(mod.name) : include.count(mod.name) > 0;
+        // Walk past patterns and textures to the material (RADIANCE findmaterial).
+        int32_t m = surf.modifier;
+        for (size_t guard = 0; m != kVoid && guard < prims.size(); ++guard) {
+            const Primitive& p = prims[size_t(m)];
+            PrimCategory c = primCategory(p.type);
+            if (c == PrimCategory::Material) break;
+            if (c == PrimCategory::Mixture)
+                throw notSupportedYet(p.loc, "mixture '" + p.name + "' in photon maps");
+            if (!warnedPattern) {
+                warn(p.loc, "pattern/texture '" + p.name +
+                                "' is ignored by photon scattering (not supported yet)");
+                warnedPattern = true;
+            }
+            m = p.modifier;
+        }
+        info.material = m;
+        if (m == kVoid) continue;  // void: photons pass (tracePhoton's OVOID transfer)
+        const Primitive& mat = prims[size_t(m)];
+        info.params = material::makeMaterial(mat);
+        info.isLight = std::holds_alternative<material::LightParams>(info.params);
+        info.antimatter = mat.type == PrimType::Antimatter;
+        info.sensor = info.antimatter && sensors.count(mat.name) > 0;
+        info.backAbsorbs = opaqueBackAbsorbs(info.params);
+        if (info.antimatter) {
+            // RADIANCE lastmod: the last definition of the name before the antimatter.
+            for (const std::string& name : mat.sargs) {
+                if (name == "void") continue;
+                for (int32_t k = m - 1; k >= 0; --k)
+                    if (isModifier(prims[size_t(k)].type) && prims[size_t(k)].name == name) {
+                        info.clips.push_back(k);
+                        break;
+                    }
+            }
+        }
+    }
+    for (const light::LightSource& s : plan_.sources())
+        sourceMaxDistance_.push_back(s.maxDistance);
+}
+
+void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool indirect,
+                           bool caustic, const std::array<double, kNumPhotonMapTypes>& prob,
+                           Rng& storeRng, PhotonBins& out) const {
+    if (!settings_.rois.empty()) {
+        bool inside = false;
+        for (const RegionOfInterest& r : settings_.rois) inside = inside || r.contains(hit.point);
+        if (!inside) return;
+    }
+    Vec3 n = front ? hit.normal : -hit.normal;  // facing the incoming photon
+    RawPhoton rp;
+    rp.pos[0] = float(hit.point.x);
+    rp.pos[1] = float(hit.point.y);
+    rp.pos[2] = float(hit.point.z);
+    rp.norm[0] = packNormal(n.x);
+    rp.norm[1] = packNormal(n.y);
+    rp.norm[2] = packNormal(n.z);
+    rp.flux[0] = float(flux.r);
+    rp.flux[1] = float(flux.g);
+    rp.flux[2] = float(flux.b);
+    auto put = [&](PhotonMapType t, bool causticFlag) {
+        size_t k = size_t(t);
+        if (!settings_.maps[k]) return;
+        double u = storeRng.uniform();  // one draw per eligible deposit: deterministic
+        if (u >= prob[k]) return;
+        rp.caustic = causticFlag ? 1 : 0;
+        rp.u = float(u);
+        out.maps[k].push_back(rp);
+    };
+    // pmapmat.c addPhotons: direct at the first hit, global (and caustic after specular
+    // paths) afterwards.
+    if (!indirect) {
+        put(PhotonMapType::Direct, false);
+        return;
+    }
+    put(PhotonMapType::Global, caustic);
+    if (caustic) put(PhotonMapType::Caustic, true);
+}
+
+void PhotonTracer::trace(uint64_t seed, uint64_t index,
+                         const std::array<double, kNumPhotonMapTypes>& prob,
+                         PhotonBins& out) const {
+    light::EmittedPhoton e = plan_.emitPhoton(seed, index);
+    Rng rng(seed, RngDomain::Scattering, index);
+    Rng storeRng(seed, RngDomain::Sampling, index);
+
+    // Path length limit: -ld and a local glow's radius (pmapsrc.c: the photon's rmax).
+    double pathLimit = settings_.maxDistance > 0 ? settings_.maxDistance : HUGE_VAL;
+    if (e.source >= 0 && sourceMaxDistance_[size_t(e.source)] > 0)
+        pathLimit = std::fmin(pathLimit, sourceMaxDistance_[size_t(e.source)]);
+
+    Ray ray = e.ray;
+    Color flux = e.weight;
+    Color extinction;  // per unit length inside a dielectric medium
+    const bool fromPort = e.port >= 0;
+    long scatters = 0;
+    long passes = 0;
+    bool allSpecular = true;
+    bool lastSpecular = false;
+    bool firstSegment = true;
+    double travelled = 0;
+    ClipSet clip;
+    auto causticNow = [&] {
+        return scatters > 0 && (settings_.causticLastScatter ? lastSpecular : allSpecular);
+    };
+
+    for (;;) {
+        if (scatters > settings_.maxBounce || passes > 4 * settings_.maxBounce + 1000) {
+            ++out.runaways;  // manual 4.3: terminated, warned once at the end
+            return;
+        }
+        ray.tmax = pathLimit - travelled;
+        if (!(ray.tmax > 0)) return;
+        std::optional<Hit> hit = geometry_.closestHit(ray);
+        if (!hit) return;
+        travelled += hit->t;
+
+        if (firstSegment && fromPort) {
+            firstSegment = false;
+            // pmap.c port rejection: a photon emitted from a port's partition that misses
+            // the port geometry is terminated (the partition overestimates its area).
+            if (hit->prim != e.portPrim) {
+                int32_t pm = scene_.prims[size_t(e.portPrim)].modifier;
+                int32_t hm = hit->modifier;
+                int32_t portMat = pm == kVoid ? kVoid : modifiers_[size_t(pm)].material;
+                int32_t hitMat = hm == kVoid ? kVoid : modifiers_[size_t(hm)].material;
+                if (portMat != hitMat) return;
+            }
+        }
+        firstSegment = false;
+
+        if (!extinction.isBlack()) {
+            // Absorption along the segment by roulette on its mean, keeping the photon's
+            // flux near its emitted value as RADIANCE's colorNorm does.
+            Color att{std::exp(-extinction.r * hit->t), std::exp(-extinction.g * hit->t),
+                      std::exp(-extinction.b * hit->t)};
+            double a = att.average();
+            if (rng.uniform() >= a) return;
+            flux *= att / a;
+        }
+
+        const int32_t modIndex = hit->modifier;
+        const ModifierInfo* mi = modIndex == kVoid ? nullptr : &modifiers_[size_t(modIndex)];
+        if (!mi || mi->material == kVoid || clip.contains(modIndex)) {
+            // Void modifier or clipped by antimatter: transfer unchanged (PMAP_XFER).
+            ray = spawnRay(*hit, ray.dir);
+            ++passes;
+            continue;
+        }
+        if (mi->antimatter) {
+            // pmapmat.c clipPhotonScatter: a sensor stores photons entering it (front
+            // side) and passes them on unscattered, like any antimatter.
+            if (hit->front && mi->sensor && mi->storeAllowed)
+                deposit(*hit, true, flux, scatters > 0 || fromPort, causticNow(),
+                        prob, storeRng, out);
+            for (int32_t c : mi->clips) hit->front ? clip.add(c) : clip.remove(c);
+            ray = spawnRay(*hit, ray.dir);
+            ++passes;
+            continue;
+        }
+        if (mi->isLight) return;  // "Light sources doan' reflect"; nothing stored
+        if (!hit->front && !settings_.backVisible && mi->backAbsorbs) return;
+
+        material::SurfacePoint sp = material::makeSurfacePoint(
+            ray.dir, hit->front ? hit->normal : -hit->normal, hit->front);
+        material::PhotonScatter s = material::scatterPhoton(mi->params, sp, rng);
+        if (s.store && mi->storeAllowed)
+            deposit(*hit, hit->front, flux, scatters > 0 || fromPort,
+                    causticNow(), prob, storeRng, out);
+        if (s.kind == ScatterKind::Absorbed) return;
+        if (s.kind == ScatterKind::PassThrough) {
+            ray = spawnRay(*hit, ray.dir);
+            ++passes;
+            continue;
+        }
+        flux *= s.fluxFactor;
+        ++scatters;
+        allSpecular = allSpecular && material::isSpecular(s.kind);
+        lastSpecular = material::isSpecular(s.kind);
+        switch (s.medium.kind) {
+        case material::MediumChange::Kind::Unchanged: break;
+        case material::MediumChange::Kind::Global: extinction = Color{}; break;
+        case material::MediumChange::Kind::Given: extinction = s.medium.extinction; break;
+        }
+        ray = spawnRay(*hit, s.dir);
+    }
+}
+
+}  // namespace rp::pmap

@@ -1,0 +1,99 @@
+// The photon tracer of mkpmap's forward pass: follows one emitted photon through the
+// scene (iterative loop, RADIANCE pmap.c tracePhoton + pmapmat.c) and deposits it by
+// the storage rules of each map type (manual 3, 3.2.4-3.2.5). Emission is light/
+// emitter.h; how many photons to trace and flux normalisation are distribute.h.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geometry/scene_geometry.h"
+#include "light/emitter.h"
+#include "material/material.h"
+#include "pmap/mkpmap_options.h"
+#include "pmap/photon.h"
+#include "scene/primitive.h"
+
+namespace rp::pmap {
+
+// A deposited photon before flux normalisation (32 bytes): `flux` is the emitted
+// weight times the path's scatter factors, i.e. still to be divided by the number of
+// photons emitted and the map's storage probability. `u` is the photon's storage draw,
+// kept so that prepass photons can be thinned after the fact (distribute.h).
+struct RawPhoton {
+    float pos[3];
+    int8_t norm[3];
+    uint8_t caustic;
+    float flux[3];
+    float u;
+};
+static_assert(sizeof(RawPhoton) == 32);
+
+struct TraceSettings {
+    // Which map types collect photons. Global is also fed for PreComp and Contrib.
+    std::array<bool, kNumPhotonMapTypes> maps{};
+    bool backVisible = true;  // -bv
+    long maxBounce = 5000;    // -lr / -apm
+    double maxDistance = 0;   // -ld, 0 = unlimited
+    std::vector<RegionOfInterest> rois;  // -api
+    std::vector<std::string> sensors;    // -aps / -apS modifier names
+    std::vector<std::string> include;    // -ai: store only on these modifiers
+    std::vector<std::string> exclude;    // -ae: never store on these modifiers
+    // Caustic rule. false (ours): every scatter since emission specular (L S+ D).
+    // true: RADIANCE's PMAP_CAUSTICRAY, the last scatter specular (also D S+ D paths),
+    // which needs several times fewer emitted photons for the same caustic target.
+    bool causticLastScatter = false;
+};
+
+// Photons deposited by a range of traced photons, one list per map type.
+struct PhotonBins {
+    std::array<std::vector<RawPhoton>, kNumPhotonMapTypes> maps;
+    long runaways = 0;  // paths cut at the bounce limit
+};
+
+class PhotonTracer {
+public:
+    // Resolves materials, sensors and include/exclude sets once. Throws InputError for
+    // a sensor modifier that is not antimatter, sensors that match nothing, material
+    // argument errors, and notSupportedYet for mixtures on surfaces.
+    PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
+                 const light::EmissionPlan& plan, TraceSettings settings);
+
+    // Emits photon `index` of the run keyed by `seed` and traces it. A deposit for map
+    // type t is kept when its storage draw u < storeProbability[t]. Thread-safe.
+    void trace(uint64_t seed, uint64_t index,
+               const std::array<double, kNumPhotonMapTypes>& storeProbability,
+               PhotonBins& out) const;
+
+    const TraceSettings& settings() const { return settings_; }
+    const light::EmissionPlan& plan() const { return plan_; }
+
+private:
+    // What the tracer needs to know about a surface's modifier, computed once.
+    struct ModifierInfo {
+        bool resolved = false;
+        int32_t material = kVoid;  // the material record after patterns/textures
+        material::MaterialParams params;
+        bool isLight = false;
+        bool antimatter = false;
+        bool sensor = false;
+        bool storeAllowed = true;   // include/exclude sets
+        bool backAbsorbs = false;   // opaque material: back face black unless -bv
+        std::vector<int32_t> clips;  // antimatter: modifiers clipped inside it
+    };
+
+    void deposit(const Hit& hit, bool front, const Color& flux, bool indirect,
+                 bool caustic, const std::array<double, kNumPhotonMapTypes>& prob,
+                 Rng& storeRng, PhotonBins& out) const;
+
+    const Scene& scene_;
+    const SceneGeometry& geometry_;
+    const light::EmissionPlan& plan_;
+    TraceSettings settings_;
+    std::vector<ModifierInfo> modifiers_;  // indexed by modifier (prim) index
+    std::vector<double> sourceMaxDistance_;  // per emission source: glow radius or 0
+};
+
+}  // namespace rp::pmap

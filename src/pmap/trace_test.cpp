@@ -1,0 +1,202 @@
+// Photon transport and storage rules: furnace flux, sensors, ROIs, ports,
+// include/exclude, caustic paths. Fixed seeds; tolerances stated per test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "pmap/trace_test_util.h"
+
+namespace rp::pmap {
+namespace {
+
+using testing::boxRoom;
+using testing::distribute;
+using testing::makeRun;
+using testing::mapsFor;
+using testing::sceneFromFile;
+using testing::sceneFromText;
+
+const std::vector<Photon>& mapOf(const DistributionResult& r, PhotonMapType t) {
+    return r.photons[size_t(t)];
+}
+
+double sumRed(const std::vector<Photon>& ps) {
+    double s = 0;
+    for (const Photon& p : ps) s += p.fluxRgb()[0];
+    return s;
+}
+
+// Furnace (../shared/validation/furnace/README.md): grey bubble rho = 0.5 around a light
+// sphere, Phi = 9.8696 W per channel. Global photons are stored from the second hit on,
+// so the stored incident flux is Phi * sum_{k>=1} rho^k (1-a)^(k-1) = Phi rho / (1 - rho(1-a))
+// where a = (r/R)^2 = 0.0025 is the share of diffusely reflected photons that hit the
+// light sphere (absorbed, not stored): 0.99750 Phi = 9.8449 W. 40k photons: the relative
+// standard error of the sum is ~1/sqrt(20k emitted) * 1.2 ~ 0.9 %; tolerance 3 %.
+TEST(TraceFurnace, StoredGlobalFluxMatchesAnalytic) {
+    auto run = makeRun(sceneFromFile(std::string(RP_SHARED_DIR) + "/validation/furnace/scene.rad"),
+                       mapsFor(true, false, false));
+    EXPECT_NEAR(run->plan->totalFlux().r, 9.8696, 0.01);
+    DistributionResult r = distribute(*run, 40000, 0, 0);
+    const auto& g = mapOf(r, PhotonMapType::Global);
+    EXPECT_NEAR(double(g.size()), 40000, 0.05 * 40000);
+    EXPECT_NEAR(sumRed(g), 9.8449, 0.03 * 9.8449);
+    for (const Photon& p : g) ASSERT_FALSE(p.caustic());
+}
+
+// A direct map holds first hits only: the whole emitted flux lands on the wall once.
+TEST(TraceFurnace, DirectMapHoldsEmittedFlux) {
+    auto run = makeRun(sceneFromFile(std::string(RP_SHARED_DIR) + "/validation/furnace/scene.rad"),
+                       mapsFor(false, false, true));
+    DistributionResult r = distribute(*run, 0, 0, 20000);
+    EXPECT_NEAR(sumRed(mapOf(r, PhotonMapType::Direct)), 9.8696, 0.02 * 9.8696);
+}
+
+// -api: photons only inside the box; the distribution still meets the target.
+TEST(TraceStorage, RegionOfInterestKeepsPhotonsInside) {
+    TraceSettings ts = mapsFor(true, false, false);
+    ts.rois.push_back({{-1, -1, -1}, {2, 5, 5}});
+    auto run = makeRun(sceneFromText(boxRoom()), ts);
+    DistributionResult r = distribute(*run, 20000, 0, 0);
+    const auto& g = mapOf(r, PhotonMapType::Global);
+    EXPECT_NEAR(double(g.size()), 20000, 0.05 * 20000);
+    for (const Photon& p : g) ASSERT_LE(p.pos[0], 2.0f);
+    // Without the ROI about half the photons lie at x > 2.
+    auto all = makeRun(sceneFromText(boxRoom()), mapsFor(true, false, false));
+    DistributionResult ra = distribute(*all, 20000, 0, 0);
+    size_t right = 0;
+    for (const Photon& p : mapOf(ra, PhotonMapType::Global)) right += p.pos[0] > 2.0f;
+    EXPECT_GT(right, 8000u);
+}
+
+TEST(TraceStorage, IncludeSetStoresOnlyThere) {
+    TraceSettings ts = mapsFor(true, false, false);
+    ts.include = {"floormat"};
+    auto run = makeRun(sceneFromText(boxRoom()), ts);
+    DistributionResult r = distribute(*run, 10000, 0, 0);
+    ASSERT_FALSE(mapOf(r, PhotonMapType::Global).empty());
+    for (const Photon& p : mapOf(r, PhotonMapType::Global)) {
+        ASSERT_LT(p.pos[2], 1e-3f);
+        ASSERT_EQ(p.norm[2], 127);  // the floor, facing up
+    }
+}
+
+TEST(TraceStorage, ExcludeSetStoresEverywhereElse) {
+    TraceSettings ts = mapsFor(true, false, false);
+    ts.exclude = {"floormat"};
+    auto run = makeRun(sceneFromText(boxRoom()), ts);
+    DistributionResult r = distribute(*run, 10000, 0, 0);
+    EXPECT_NEAR(double(mapOf(r, PhotonMapType::Global).size()), 10000, 500);
+    for (const Photon& p : mapOf(r, PhotonMapType::Global))
+        ASSERT_FALSE(p.pos[2] < 1e-3f && p.norm[2] > 100) << "photon on the floor";
+}
+
+// -aps: an antimatter plane at z = 1 facing up. It receives photons entering its front
+// (travelling down) only, and lets them pass: the floor below still gets direct light.
+std::string sensorPlane(bool up) {
+    return std::string("void antimatter sensor_mat 1 void 0 0\n") +
+           (up ? "sensor_mat polygon sensor 0 0 12 0.01 0.01 1 3.99 0.01 1 3.99 3.99 1 0.01 3.99 1\n"
+               : "sensor_mat polygon sensor 0 0 12 0.01 0.01 1 0.01 3.99 1 3.99 3.99 1 3.99 0.01 1\n");
+}
+
+TEST(TraceStorage, SensorStoresFrontSideOnlyAndPassesPhotons) {
+    for (bool up : {true, false}) {
+        TraceSettings ts = mapsFor(true, false, true);
+        ts.sensors = {"sensor_mat"};
+        auto run = makeRun(sceneFromText(boxRoom(sensorPlane(up))), ts);
+        DistributionResult r = distribute(*run, 20000, 0, 20000);
+        size_t onSensor = 0, floorDirect = 0, sensorDirect = 0;
+        for (PhotonMapType t : {PhotonMapType::Global, PhotonMapType::Direct})
+            for (const Photon& p : mapOf(r, t)) {
+                const bool inside = p.pos[0] > 0.05f && p.pos[0] < 3.95f && p.pos[1] > 0.05f &&
+                                    p.pos[1] < 3.95f;  // not on a wall
+                if (inside && std::fabs(p.pos[2] - 1.0f) < 1e-3f) {
+                    ++onSensor;
+                    // Stored normal faces the incoming photon: the sensor's front.
+                    ASSERT_EQ(p.norm[2] > 0, up);
+                    sensorDirect += t == PhotonMapType::Direct;
+                }
+                if (t == PhotonMapType::Direct && inside && p.pos[2] < 1e-3f) ++floorDirect;
+            }
+        EXPECT_GT(onSensor, 1000u) << up;
+        // Facing up, the lamp's photons cross it first (direct); facing down it only sees
+        // photons coming back up from the floor (global).
+        EXPECT_EQ(sensorDirect > 0, up);
+        EXPECT_GT(floorDirect, 1000u) << "photons must pass through the sensor";
+    }
+}
+
+TEST(TraceStorage, SensorMustBeAntimatter) {
+    TraceSettings ts = mapsFor(true, false, false);
+    ts.sensors = {"wallmat"};
+    EXPECT_THROW(makeRun(sceneFromText(boxRoom()), ts), InputError);
+    ts.sensors = {"nosuchmod"};
+    EXPECT_THROW(makeRun(sceneFromText(boxRoom()), ts), InputError);
+}
+
+// Ports (-apo): a floor under an invisible antimatter port lit by a vertical sun. The
+// only hit of each photon is its first, on the floor, and it is stored in the global map
+// (RADIANCE stores port photons at their first hit). Stored flux = sun irradiance x port
+// area = 1000 W/sr/m2 x 2 pi (1 - cos 0.25 deg) sr x 16 m2 = 0.9568 W; tolerance 3 %.
+TEST(TraceStorage, PortPhotonsAreStoredAtFirstHit) {
+    const char* text = R"(
+void plastic floormat 0 0 5 0.5 0.5 0.5 0 0
+void light solar 0 0 3 1000 1000 1000
+solar source sun 0 0 4 0 0 1 0.5
+floormat polygon floor 0 0 12  0 0 0  4 0 0  4 4 0  0 4 0
+void antimatter portmat 1 void 0 0
+portmat polygon port 0 0 12  0 0 4  0 4 4  4 4 4  4 0 4
+)";
+    auto run = makeRun(sceneFromText(text), mapsFor(true, false, false), {"portmat"});
+    DistributionResult r = distribute(*run, 10000, 0, 0);
+    const auto& g = mapOf(r, PhotonMapType::Global);
+    EXPECT_NEAR(double(g.size()), 10000, 500);
+    for (const Photon& p : g) {
+        ASSERT_LT(p.pos[2], 1e-3f);
+        ASSERT_GT(p.norm[2], 120);
+    }
+    const double expected = 1000 * 2 * kPi * (1 - std::cos(0.25 * kPi / 180)) * 16;
+    EXPECT_NEAR(sumRed(g), expected, 0.03 * expected);
+}
+
+// Caustics need L S+ D paths: a purely diffuse room cannot hold any (manual 4.2).
+TEST(TraceStorage, CausticMapFailsWithoutSpecularSurfaces) {
+    auto run = makeRun(sceneFromText(boxRoom()), mapsFor(false, true, false));
+    DistributionSettings ds;
+    ds.targets[size_t(PhotonMapType::Caustic)] = 2000;
+    ds.maxPrepass = 2;
+    try {
+        distributePhotons(*run->tracer, ds);
+        FAIL() << "expected the 4.2 failure";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("too many prepasses"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("Caustic"), std::string::npos) << e.what();
+    }
+}
+
+// Cornell: caustic photons are flagged and concentrate under the glass sphere (centre
+// (3.9, 2.0), radius 0.8, on the floor). Its footprint disk is 2 m2 of the 30 m2 floor;
+// require at least 5 times the floor-average caustic density there.
+TEST(TraceStorage, CornellCausticsUnderTheGlassSphere) {
+    auto run = makeRun(sceneFromFile(std::string(RP_SOURCE_DIR) + "/examples/cornell/scene.rad"),
+                       mapsFor(true, true, false));
+    DistributionResult r = distribute(*run, 10000, 20000, 0, 2);
+    const auto& c = mapOf(r, PhotonMapType::Caustic);
+    size_t floor = 0, under = 0;
+    for (const Photon& p : c) {
+        ASSERT_TRUE(p.caustic());
+        if (p.pos[2] > 1e-3f) continue;
+        ++floor;
+        double dx = p.pos[0] - 3.9, dy = p.pos[1] - 2.0;
+        under += dx * dx + dy * dy < 0.8 * 0.8;
+    }
+    const double diskArea = kPi * 0.64, floorArea = 5.5 * 5.5;
+    EXPECT_GT(double(under) / diskArea, 5 * double(floor) / floorArea);
+    // Global photons after specular-only paths carry the caustic flag as well.
+    size_t flagged = 0;
+    for (const Photon& p : mapOf(r, PhotonMapType::Global)) flagged += p.caustic();
+    EXPECT_GT(flagged, 0u);
+    EXPECT_LT(flagged, mapOf(r, PhotonMapType::Global).size() / 2);
+}
+
+}  // namespace
+}  // namespace rp::pmap
