@@ -2,6 +2,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "gen/builtin_commands.h"
 #include "pmap/mkpmap.h"
 #include "pmap/mkpmap_options.h"
 #include "util/error.h"
@@ -25,7 +26,8 @@ int main(int argc, char** argv) {
             *diag << "*** " << rp::commandLine(argc, argv) << '\n';
         }
         rp::setWarningSink([diag](const std::string& m) { *diag << "mkpmap: warning: " << m << '\n'; });
-        rp::pmap::runMkpmap(opt, rp::commandLine(argc, argv), *diag);
+        rp::pmap::runMkpmap(opt, rp::commandLine(argc, argv), *diag,
+                            rp::gen::builtinLoadOptions());
         return 0;
     } catch (const rp::InputError& e) {
         *diag << "mkpmap: " << e.what() << '\n';

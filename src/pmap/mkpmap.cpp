@@ -13,11 +13,15 @@
 #include "geometry/scene_geometry.h"
 #include "light/emitter.h"
 #include "light/light_sources.h"
+#include "light/pattern_emission.h"
+#include "calc/search_path.h"
+#include "material/pattern.h"
 #include "pmap/distribute.h"
 #include "pmap/photon_map.h"
 #include "pmap/trace.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
+#include "util/paths.h"
 #include "util/warnings.h"
 
 namespace rp::pmap {
@@ -52,11 +56,11 @@ void checkRequest(const MkpmapOptions& o) {
 }  // namespace
 
 MkpmapReport runMkpmap(const MkpmapOptions& o, const std::string& commandLine,
-                       std::ostream& diag) {
+                       std::ostream& diag, const LoadOptions& load) {
     checkRequest(o);
     MkpmapReport report;
 
-    Scene scene = loadScene(o.sceneFiles);
+    Scene scene = loadScene(o.sceneFiles, load);
     SceneGeometry geometry(scene);
     std::vector<light::LightSource> sources = light::findLightSources(scene, geometry);
     if (sources.empty()) throw InputError("no light sources found");
@@ -69,8 +73,9 @@ MkpmapReport runMkpmap(const MkpmapOptions& o, const std::string& commandLine,
         for (const std::string& s : o.portSpecs) specs.push_back(light::parsePortSpec(s));
         eo.ports = light::findPhotonPorts(scene, geometry, specs);
     }
-    // Pattern-modified sources (sky functions) need calc/ wiring: the plan reports them
-    // as not supported yet.
+    // Pattern-modified sources (e.g. gensky's skyfunc) emit through their pattern chain.
+    material::PatternSet patterns(scene, calc::defaultSearchPath(projectLibDir()));
+    eo.modifierFor = light::patternModifiers(patterns);
     light::EmissionPlan plan(geometry, std::move(sources), eo);
 
     TraceSettings ts;

@@ -11,6 +11,7 @@
 
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon.h"
+#include "scene/reader.h"
 
 namespace rp::pmap {
 
@@ -29,7 +30,9 @@ struct MkpmapReport {
 // -fo (checked before anything is traced), two maps written to one file, map types not
 // supported yet (-apv, -app, -apC), scene errors, no light sources, bad ports/sensors,
 // and distribution failure (manual 4.2). Progress (-t) and the summary go to `diag`.
+// `load` carries the scene reader's command hook (tools pass the built-in generators).
 MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
-                       std::ostream& diag);
+                       std::ostream& diag,
+                       const LoadOptions& load = {});
 
 }  // namespace rp::pmap
