@@ -179,13 +179,18 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     const bool fromPort = e.port >= 0;
     long scatters = 0;
     long passes = 0;
-    bool allSpecular = true;
+    // RADIANCE compat (pmap.h PMAP_CAUSTICRAY): a photon is caustic when its last scatter
+    // was specular, so D S+ D paths count too, not only L S+ D. The renderer adds the
+    // caustic map at primary rays and its final gather does not follow specular
+    // transport, so this is what keeps the two maps from missing or double counting
+    // light reflected by mirrors and glass after a diffuse bounce (cornell: RADIANCE's
+    // caustic map is tinted by the walls). It also needs ~3x fewer emitted photons.
     bool lastSpecular = false;
     bool firstSegment = true;
     double travelled = 0;
     ClipSet clip;
     auto causticNow = [&] {
-        return scatters > 0 && (settings_.causticLastScatter ? lastSpecular : allSpecular);
+        return scatters > 0 && lastSpecular;
     };
 
     for (;;) {
@@ -259,7 +264,6 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         }
         flux *= s.fluxFactor;
         ++scatters;
-        allSpecular = allSpecular && material::isSpecular(s.kind);
         lastSpecular = material::isSpecular(s.kind);
         switch (s.medium.kind) {
         case material::MediumChange::Kind::Unchanged: break;

@@ -41,10 +41,6 @@ struct TraceSettings {
     std::vector<std::string> sensors;    // -aps / -apS modifier names
     std::vector<std::string> include;    // -ai: store only on these modifiers
     std::vector<std::string> exclude;    // -ae: never store on these modifiers
-    // Caustic rule. false (ours): every scatter since emission specular (L S+ D).
-    // true: RADIANCE's PMAP_CAUSTICRAY, the last scatter specular (also D S+ D paths),
-    // which needs several times fewer emitted photons for the same caustic target.
-    bool causticLastScatter = false;
 };
 
 // Photons deposited by a range of traced photons, one list per map type.

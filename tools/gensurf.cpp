@@ -1,0 +1,26 @@
+// gensurf: a RADIANCE gensurf(1) description (see src/gen/gensurf.h). -f files are found along
+// RAYPATH (default ".").
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "calc/search_path.h"
+#include "gen/gensurf.h"
+#include "util/error.h"
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv, argv + argc);
+    args[0] = "gensurf";  // RADIANCE prints argv[0]; a fixed name keeps output path-independent
+    std::vector<std::string> warnings;
+    std::string out;
+    try {
+        out = rp::gen::gensurf(args, rp::calc::defaultSearchPath(""), std::cin, warnings);
+    } catch (const rp::InputError& e) {
+        std::cerr << "gensurf: " << e.what() << '\n';
+        return 1;
+    }
+    for (const std::string& w : warnings) std::cerr << "gensurf: " << w << '\n';
+    std::cout << out;
+    std::cout.flush();
+    return std::cout ? 0 : 1;
+}
