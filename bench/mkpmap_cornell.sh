@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# mkpmap on ../shared/validation/cornell with the README's targets (global 500k +
+# caustic 1m), -n 1 and -n 2: emitted and stored photons/s, kd-tree build time, bytes
+# per photon on disk, peak memory. RADIANCE 5.4a took 9.2 s (-n 1) and 6.2 s (-n 2) on
+# a machine of the same kind (README). Usage: bench/mkpmap_cornell.sh [build/tools]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bin=${1:-$root/build/tools}
+scene=$root/../shared/validation/cornell/scene.rad
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+for n in 1 2; do
+    /usr/bin/time -f "%e s wall, %M kB peak" -o "$tmp/time" \
+        "$bin/mkpmap" -fo -apg "$tmp/g.pm" 500k -apc "$tmp/c.pm" 1m -apr 1 -n $n "$scene" \
+        > "$tmp/log" 2>&1
+    emitted=$(awk '/photons emitted/ {print $1}' "$tmp/log")
+    dist=$(sed -n 's/.*prepass)*, \([0-9.]*\) s distribution.*/\1/p' "$tmp/log")
+    tree=$(sed -n 's/.* \([0-9.]*\) s kd-tree.*/\1/p' "$tmp/log")
+    ng=$("$bin/getinfo" "$tmp/g.pm" | awk -F'= ' '/NumPhotons/ {print $2}')
+    nc=$("$bin/getinfo" "$tmp/c.pm" | awk -F'= ' '/NumPhotons/ {print $2}')
+    bytes=$(( $(stat -c %s "$tmp/g.pm") + $(stat -c %s "$tmp/c.pm") ))
+    awk -v n=$n -v e="$emitted" -v d="$dist" -v t="$tree" -v g="$ng" -v c="$nc" -v b="$bytes" \
+        -v tm="$(cat "$tmp/time")" 'BEGIN {
+        printf "-n %d: %d emitted, %d global + %d caustic stored; distribution %.2f s = %.2f M emitted/s, %.0f k stored/s; kd-trees %.2f s; %.1f bytes/photon on disk; %s\n",
+            n, e, g, c, d, e / d / 1e6, (g + c) / d / 1e3, t, b / (g + c), tm }'
+done
