@@ -10,6 +10,7 @@
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon_map.h"
 #include "util/error.h"
+#include "util/temp_dir_for_tests.h"
 
 namespace rp::pmap {
 namespace {
@@ -98,14 +99,7 @@ TEST(MkpmapOptions, Errors) {
 
 class MkpmapRun : public ::testing::Test {
 protected:
-    void SetUp() override {
-        dir_ = std::filesystem::temp_directory_path() /
-               ("mkpmap_test_" + std::to_string(::getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        std::filesystem::create_directories(dir_);
-    }
-    void TearDown() override { std::filesystem::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    std::string path(const std::string& name) const { return dir_.file(name); }
     std::string runError(std::vector<std::string> args) {
         std::ostringstream diag;
         try {
@@ -115,7 +109,7 @@ protected:
         }
         return "(no error)";
     }
-    std::filesystem::path dir_;
+    TempDir dir_{"mkpmap_test"};
 };
 
 std::string cornell() { return std::string(RP_SOURCE_DIR) + "/examples/cornell/scene.rad"; }
