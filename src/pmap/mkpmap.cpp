@@ -16,8 +16,10 @@
 #include "light/pattern_emission.h"
 #include "calc/search_path.h"
 #include "material/pattern.h"
+#include "pmap/contrib.h"
 #include "pmap/distribute.h"
 #include "pmap/photon_map.h"
+#include "pmap/precomp.h"
 #include "pmap/trace.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
@@ -37,10 +39,6 @@ double secondsSince(Clock::time_point t0) {
 void checkRequest(const MkpmapOptions& o) {
     if (o.wants(PhotonMapType::Volume))
         throw notSupportedYet({}, "volume photon maps (mist)");
-    if (o.wants(PhotonMapType::PreComp))
-        throw notSupportedYet({}, "precomputed global photon maps (-app)");
-    if (o.wants(PhotonMapType::Contrib))
-        throw notSupportedYet({}, "contribution photon maps (-apC)");
     // RADIANCE mkpmap.c: refuse existing outputs before any work is done.
     std::set<std::string> files;
     for (const auto& m : o.maps) {
@@ -53,10 +51,25 @@ void checkRequest(const MkpmapOptions& o) {
     }
 }
 
+// Manual 4.5: a contribution map needs its own distribution, so -apC ignores the
+// other maps on the command line (with a warning, as RADIANCE).
+MkpmapOptions withoutIgnoredMaps(const MkpmapOptions& in) {
+    MkpmapOptions o = in;
+    if (!o.wants(PhotonMapType::Contrib)) return o;
+    for (size_t t = 0; t < o.maps.size(); ++t) {
+        if (!o.maps[t] || PhotonMapType(t) == PhotonMapType::Contrib) continue;
+        warn(std::string("ignoring ") + photonMapTypeName(PhotonMapType(t)) +
+             " photon map " + o.maps[t]->file + " with contribution photon map (-apC)");
+        o.maps[t].reset();
+    }
+    return o;
+}
+
 }  // namespace
 
-MkpmapReport runMkpmap(const MkpmapOptions& o, const std::string& commandLine,
+MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
                        std::ostream& diag, const LoadOptions& load) {
+    MkpmapOptions o = withoutIgnoredMaps(options);
     checkRequest(o);
     MkpmapReport report;
 
@@ -87,20 +100,36 @@ MkpmapReport runMkpmap(const MkpmapOptions& o, const std::string& commandLine,
     ts.sensors = o.sensors;
     ts.include = o.include;
     ts.exclude = o.exclude;
-    PhotonTracer tracer(scene, geometry, plan, ts);
-
-    DistributionSettings ds;
-    for (size_t t = 0; t < o.maps.size(); ++t)
-        if (o.maps[t]) ds.targets[t] = o.maps[t]->target;
-    ds.preDistrib = o.preDistrib;
-    ds.maxPrepass = o.maxPrepass;
-    ds.seed = uint64_t(o.seed);
-    ds.threads = o.nproc;
-    ds.reportSeconds = o.reportSeconds;
-    ds.progress = &diag;
-
     auto t0 = Clock::now();
-    DistributionResult dist = distributePhotons(tracer, ds);
+    DistributionResult dist;
+    std::vector<PhotonPrimary> primaries;  // contribution map only
+    if (o.wants(PhotonMapType::Contrib)) {
+        ContribSettings cs;
+        cs.target = o.maps[size_t(PhotonMapType::Contrib)]->target;
+        cs.preDistrib = o.preDistrib;
+        cs.maxPrepass = o.maxPrepass;
+        cs.seed = uint64_t(o.seed);
+        cs.threads = o.nproc;
+        cs.reportSeconds = o.reportSeconds;
+        cs.progress = &diag;
+        ContribResult cr = distributeContrib(scene, geometry, plan, eo, ts, cs);
+        dist.photons[size_t(PhotonMapType::Contrib)] = std::move(cr.photons);
+        primaries = std::move(cr.primaries);
+        dist.emitted = cr.totalEmitted;
+        dist.runaways = cr.runaways;
+    } else {
+        PhotonTracer tracer(scene, geometry, plan, ts);
+        DistributionSettings ds;
+        for (size_t t = 0; t < o.maps.size(); ++t)
+            if (o.maps[t]) ds.targets[t] = o.maps[t]->target;
+        ds.preDistrib = o.preDistrib;
+        ds.maxPrepass = o.maxPrepass;
+        ds.seed = uint64_t(o.seed);
+        ds.threads = o.nproc;
+        ds.reportSeconds = o.reportSeconds;
+        ds.progress = &diag;
+        dist = distributePhotons(tracer, ds);
+    }
     report.traceSeconds = secondsSince(t0);
     report.emitted = dist.emitted;
     report.prepassEmitted = dist.prepassEmitted;
@@ -114,9 +143,28 @@ MkpmapReport runMkpmap(const MkpmapOptions& o, const std::string& commandLine,
     for (size_t t = 0; t < o.maps.size(); ++t) {
         if (!o.maps[t]) continue;
         auto tb = Clock::now();
+        std::vector<Photon> photons = std::move(dist.photons[t]);
+        if (PhotonMapType(t) == PhotonMapType::PreComp) {
+            PrecompSettings ps;
+            ps.fraction = o.precompFraction;
+            ps.bandwidth = o.maps[t]->bandwidth;
+            ps.seed = uint64_t(o.seed);
+            ps.threads = o.nproc;
+            ps.reportSeconds = o.reportSeconds;
+            ps.progress = &diag;
+            const size_t globalCount = photons.size();
+            photons = precomputeGlobal(std::move(photons), ps);
+            if (photons.empty())
+                throw InputError("no precomputed global photons (-apP " +
+                                 std::to_string(o.precompFraction) + " of " +
+                                 std::to_string(globalCount) + " global photons)");
+        }
         PhotonMap map;
         arena.execute([&] {
-            map = PhotonMap(PhotonMapType(t), std::move(dist.photons[t]), {}, o.nproc > 1);
+            map = PhotonMap(PhotonMapType(t), std::move(photons),
+                            PhotonMapType(t) == PhotonMapType::Contrib ? std::move(primaries)
+                                                                       : std::vector<PhotonPrimary>{},
+                            o.nproc > 1);
         });
         report.buildSeconds += secondsSince(tb);
         auto tsave = Clock::now();
@@ -128,10 +176,14 @@ MkpmapReport runMkpmap(const MkpmapOptions& o, const std::string& commandLine,
     char line[160];
     for (size_t t = 0; t < o.maps.size(); ++t) {
         if (!o.maps[t]) continue;
-        std::snprintf(line, sizeof line, "%llu %s photons stored in %s (target %llu)\n",
+        char frac[48] = "";
+        if (PhotonMapType(t) == PhotonMapType::PreComp)
+            std::snprintf(frac, sizeof frac, " x -apP %g", o.precompFraction);
+        std::snprintf(line, sizeof line, "%llu %s photons stored in %s (target %llu%s)\n",
                       (unsigned long long)report.stored[t],
                       photonMapTypeName(PhotonMapType(t)), o.maps[t]->file.c_str(),
-                      (unsigned long long)o.maps[t]->target);
+                      (unsigned long long)o.maps[t]->target,
+                      frac);
         diag << line;
     }
     std::snprintf(line, sizeof line,

@@ -158,6 +158,7 @@ void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool i
         return;
     }
     put(PhotonMapType::Global, caustic);
+    put(PhotonMapType::PreComp, caustic);  // -app: global photons, precomputed later
     if (caustic) put(PhotonMapType::Caustic, true);
 }
 

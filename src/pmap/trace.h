@@ -32,7 +32,8 @@ struct RawPhoton {
 static_assert(sizeof(RawPhoton) == 32);
 
 struct TraceSettings {
-    // Which map types collect photons. Global is also fed for PreComp and Contrib.
+    // Which map types collect photons. PreComp collects global photons (precomp.h);
+    // contribution maps are distributed by contrib.h through the Global slot.
     std::array<bool, kNumPhotonMapTypes> maps{};
     bool backVisible = true;  // -bv
     long maxBounce = 5000;    // -lr / -apm

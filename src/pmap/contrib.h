@@ -1,0 +1,53 @@
+// Contribution photon maps (mkpmap -apC file n; photon-map manual 4.5 and 8, RADIANCE
+// pmapcontrib.c distribPhotonContrib): every light source emits until it has stored
+// about n / nsources photons, whatever its flux, and its photons carry that source's
+// flux divided by the number it emitted, so energy balance holds per source. Every
+// emitted photon whose path stores at least one photon gets a primary (PhotonPrimary:
+// the emitting source's index; RADIANCE's default build, file version 3.1k, has no
+// primary position or direction), and all photons stored along that path index it.
+// Photons are stored where global photons are (indirect hits; pmapmat.c addPhotons).
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <vector>
+
+#include "geometry/scene_geometry.h"
+#include "light/emitter.h"
+#include "pmap/photon.h"
+#include "pmap/trace.h"
+#include "scene/primitive.h"
+
+namespace rp::pmap {
+
+struct ContribSettings {
+    uint64_t target = 0;       // -apC nphotons, over all sources
+    double preDistrib = 0.25;  // -apD: prepass size as a fraction of a source's share
+    int maxPrepass = 4;        // -apM: doublings of an empty prepass before giving up
+    uint64_t seed = 0;         // -apr
+    int threads = 1;           // -n
+    int reportSeconds = 0;     // -t (manual 4.4 line, stored photons under "global")
+    std::ostream* progress = nullptr;
+};
+
+struct ContribResult {
+    std::vector<Photon> photons;  // normalised flux, primary = index into primaries
+    std::vector<PhotonPrimary> primaries;
+    std::vector<uint64_t> emitted;  // per source (index into plan.sources())
+    std::vector<uint64_t> stored;   // per source
+    uint64_t totalEmitted = 0;
+    long runaways = 0;
+};
+
+// Distributes photons source by source. `plan` supplies the sources (srcIdx is the index
+// into plan.sources()) and `emission` the options a single-source plan is built with;
+// `trace` is used as is except that only the global map is collected. Sources with zero
+// flux, and sources that store nothing after -apM prepasses, are skipped with a warning
+// (as RADIANCE). Throws InputError if nothing is stored at all or there are more sources
+// than a 16-bit source index holds. The result does not depend on `threads`.
+ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometry,
+                                const light::EmissionPlan& plan,
+                                const light::EmissionOptions& emission, TraceSettings trace,
+                                const ContribSettings& settings);
+
+}  // namespace rp::pmap
