@@ -24,18 +24,6 @@ std::string cformat(const char* fmt, ...) {
     return out;
 }
 
-Vec3 newellNormal(const std::vector<Vec3>& loop) {
-    Vec3 n;
-    for (size_t i = 0; i < loop.size(); ++i) {
-        const Vec3& a = loop[i];
-        const Vec3& b = loop[(i + 1) % loop.size()];
-        n.x += (a.y - b.y) * (a.z + b.z);
-        n.y += (a.z - b.z) * (a.x + b.x);
-        n.z += (a.x - b.x) * (a.y + b.y);
-    }
-    return n;
-}
-
 std::string commandHeader(const std::vector<std::string>& args) {
     std::string out = "#";
     for (const std::string& a : args) {

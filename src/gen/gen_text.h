@@ -23,8 +23,6 @@ struct GenSurface {
     double radius = 0;
 };
 
-// Newell's method: the (unnormalised) area-weighted normal of a polygon's vertex loop.
-Vec3 newellNormal(const std::vector<Vec3>& loop);
 
 // printf into a std::string (C locale formatting, as RADIANCE's printf).
 std::string cformat(const char* fmt, ...) __attribute__((format(printf, 1, 2)));

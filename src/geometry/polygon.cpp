@@ -9,21 +9,6 @@
 
 namespace rp {
 
-Vec3 newellNormal(const std::vector<Vec3>& verts) {
-    // Relative to the first vertex: the sum is translation invariant in exact arithmetic
-    // and this keeps full precision for polygons far from the origin.
-    Vec3 n;
-    size_t count = verts.size();
-    for (size_t i = 0; i < count; ++i) {
-        Vec3 a = verts[i] - verts[0];
-        Vec3 b = verts[(i + 1) % count] - verts[0];
-        n.x += (a.y - b.y) * (a.z + b.z);
-        n.y += (a.z - b.z) * (a.x + b.x);
-        n.z += (a.x - b.x) * (a.y + b.y);
-    }
-    return n;
-}
-
 bool makePolygon(const Primitive& prim, int32_t primIndex, PolygonShape& shape,
                  std::vector<Vec3>& vertices, std::vector<TriIndices>& triangles) {
     const std::vector<double>& r = prim.rargs;

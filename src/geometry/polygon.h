@@ -23,10 +23,6 @@ struct PolygonShape {
     int32_t modifier;
 };
 
-// Newell's method: the area-weighted normal of a (possibly non-planar, concave) loop,
-// length = twice the projected area. Exact for planar loops of any shape.
-Vec3 newellNormal(const std::vector<Vec3>& verts);
-
 // Builds polygon `primIndex` (its rargs are x y z triples). Appends its vertices to
 // `vertices` and its triangles (global vertex indices) to `triangles`. Returns false and
 // warns (with the primitive's loc) for zero area; throws InputError for a bad argument

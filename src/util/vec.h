@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <vector>
 
 namespace rp {
 
@@ -57,5 +58,21 @@ struct Bounds3 {
 };
 
 constexpr double kPi = 3.14159265358979323846;
+
+// Newell's method: the area-weighted normal of a (possibly non-planar, concave) vertex
+// loop, right-hand rule; its length is twice the projected area. Summed relative to the
+// first vertex, which keeps full precision for polygons far from the origin.
+inline Vec3 newellNormal(const std::vector<Vec3>& loop) {
+    Vec3 n;
+    const size_t count = loop.size();
+    for (size_t i = 0; i < count; ++i) {
+        Vec3 a = loop[i] - loop[0];
+        Vec3 b = loop[(i + 1) % count] - loop[0];
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+    }
+    return n;
+}
 
 }  // namespace rp
