@@ -1,5 +1,8 @@
 // ra_png: convert a RADIANCE picture to an 8-bit sRGB PNG for viewing
 // (see src/image/tonemap.h for the exposure and encoding rules).
+//   ra_png [-e exposure|+/-stops] [-g gamma] input.hdr|- output.png
+// Without -e the log-average brightness is mapped to mid grey (0.18); without -g the
+// sRGB transfer curve is used.
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -8,11 +11,8 @@
 #include "util/error.h"
 
 namespace {
-void usage() {
-    std::cerr << "usage: ra_png [-e exposure|+/-stops] [-g gamma] input.hdr|- output.png\n"
-                 "  without -e, the log-average brightness is mapped to mid grey (0.18)\n"
-                 "  without -g, the sRGB transfer curve is used\n";
-}
+constexpr const char* kUsage =
+    "usage: ra_png [-e exposure|+/-stops] [-g gamma] input.hdr|- output.png";
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -34,19 +34,14 @@ int main(int argc, char** argv) {
                     opt.gamma = g;
                 }
             } else if (a.size() > 1 && a[0] == '-') {
-                usage();
-                return 1;
+                throw rp::InputError("unknown option '" + a + "' (" + kUsage + ")");
             } else if (nfiles < 2) {
                 files[nfiles++] = a;
             } else {
-                usage();
-                return 1;
+                throw rp::InputError(kUsage);
             }
         }
-        if (nfiles != 2) {
-            usage();
-            return 1;
-        }
+        if (nfiles != 2) throw rp::InputError(kUsage);
         rp::convertPictureToPng(files[0], files[1], opt);
         return 0;
     } catch (const rp::InputError& e) {

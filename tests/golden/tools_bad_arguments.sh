@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Every tool answers an unknown option, and a missing input file, with one line on
+# stderr naming itself, a non-zero exit, and nothing on stdout.
+set -euo pipefail
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fail=0
+check() {  # description, command...
+    local what=$1; shift
+    local rc=0
+    "$@" > "$tmp/out" 2> "$tmp/err" < /dev/null || rc=$?
+    local tool; tool=$(basename "$1")
+    if [ "$rc" -eq 0 ] || [ -s "$tmp/out" ] || [ "$(wc -l < "$tmp/err")" -ne 1 ] ||
+       ! grep -q "^$tool: " "$tmp/err"; then
+        echo "FAIL $what: rc=$rc, stderr: $(cat "$tmp/err")"
+        fail=1
+    fi
+}
+for t in genbox gendaylit genprism genrev gensky gensurf genworm mkpmap oconv pmapdump ra_png \
+         rpreview xform; do
+    check "$t unknown option" "$RP_BIN/$t" -zzz
+done
+check "getinfo missing file" "$RP_BIN/getinfo" "$tmp/none.hdr"
+check "oconv missing file" "$RP_BIN/oconv" "$tmp/none.rad"
+check "rpreview missing file" "$RP_BIN/rpreview" "$tmp/none.rad"
+check "mkpmap missing scene" "$RP_BIN/mkpmap" -apg "$tmp/g.pm" 1k "$tmp/none.rad"
+check "pmapdump missing map" "$RP_BIN/pmapdump" "$tmp/none.pm"
+check "ra_png missing picture" "$RP_BIN/ra_png" "$tmp/none.hdr" "$tmp/out.png"
+check "xform missing file" "$RP_BIN/xform" -t 1 0 0 "$tmp/none.rad"
+exit $fail
