@@ -9,18 +9,28 @@ namespace rp::material {
 
 namespace detail {
 
+namespace {
+// One Ward-Gaussian facet slope (Walter 2005, as RADIANCE's normal.c/aniso.c sample it):
+// the in-plane azimuth (cosp, sinp) and tangent length d of the perturbed normal.
+void sampleWardSlope(double au, double av, Rng& rng, double& cosp, double& sinp, double& d) {
+    double phi = 2 * kPi * rng.uniform();
+    cosp = std::cos(phi) * au;
+    sinp = std::sin(phi) * av;
+    double len = std::sqrt(cosp * cosp + sinp * sinp);
+    cosp /= len;
+    sinp /= len;
+    double xi = rng.uniform();
+    d = xi <= kFtiny ? 1.0
+                     : std::sqrt(-std::log(xi) /
+                                 (cosp * cosp / (au * au) + sinp * sinp / (av * av)));
+}
+}  // namespace
+
 bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const Vec3& v,
                           double au, double av, const Vec3& geomN, Rng& rng, Vec3& out) {
     for (int iter = 0; iter < kMaxIter; ++iter) {
-        double phi = 2 * kPi * rng.uniform();
-        double cosp = std::cos(phi) * au, sinp = std::sin(phi) * av;
-        double len = std::sqrt(cosp * cosp + sinp * sinp);
-        cosp /= len;
-        sinp /= len;
-        double xi = rng.uniform();
-        double d = xi <= kFtiny ? 1.0
-                                : std::sqrt(-std::log(xi) / (cosp * cosp / (au * au) +
-                                                             sinp * sinp / (av * av)));
+        double cosp, sinp, d;
+        sampleWardSlope(au, av, rng, cosp, sinp, d);
         Vec3 h = n + (u * cosp + v * sinp) * d;  // |h|^2 = 1 + d^2
         Vec3 r = dir + h * (-2 * dot(h, dir) / (1 + d * d));
         if (dot(r, geomN) > kFtiny) {
@@ -34,15 +44,8 @@ bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const V
 bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, double au,
                             double av, const Vec3& geomN, Rng& rng, Vec3& out) {
     for (int iter = 0; iter < kMaxIter; ++iter) {
-        double phi = 2 * kPi * rng.uniform();
-        double cosp = std::cos(phi) * au, sinp = std::sin(phi) * av;
-        double len = std::sqrt(cosp * cosp + sinp * sinp);
-        cosp /= len;
-        sinp /= len;
-        double xi = rng.uniform();
-        double d = xi <= kFtiny ? 1.0
-                                : std::sqrt(-std::log(xi) / (cosp * cosp / (au * au) +
-                                                             sinp * sinp / (av * av)));
+        double cosp, sinp, d;
+        sampleWardSlope(au, av, rng, cosp, sinp, d);
         Vec3 t = through + (u * cosp + v * sinp) * d;
         if (dot(t, geomN) < -kFtiny) {
             out = normalize(t);

@@ -53,6 +53,17 @@ void split(P& m, double rspec, double T, double Ts) {
     m.rdiff = 1 - m.trans - rspec;
 }
 
+// The colours both Ward families derive once from the splits: metals tint their
+// specular reflection, plastics and trans keep it white.
+template <class Params>
+void deriveWardColours(Params& m, bool metal) {
+    split(m, m.specularity, m.transmissivity, m.transSpecular);
+    m.specularColor = metal ? m.color * m.rspec : Color::grey(m.rspec);
+    m.diffuseReflectance = m.color * m.rdiff;
+    m.diffuseTransmittance = m.color * m.tdiff;
+    m.specularTransmittance = m.color * m.tspec;
+}
+
 NormalParams makeNormal(const Primitive& p) {
     NormalParams m;
     m.kind = p.type == PrimType::Metal   ? NormalParams::Kind::Metal
@@ -68,12 +79,7 @@ NormalParams makeNormal(const Primitive& p) {
         m.transmissivity = p.rargs[5];
         m.transSpecular = p.rargs[6];
     }
-    split(m, m.specularity, m.transmissivity, m.transSpecular);
-    m.specularColor = m.kind == NormalParams::Kind::Metal ? m.color * m.rspec
-                                                          : Color::grey(m.rspec);
-    m.diffuseReflectance = m.color * m.rdiff;
-    m.diffuseTransmittance = m.color * m.tdiff;
-    m.specularTransmittance = m.color * m.tspec;
+    deriveWardColours(m, m.kind == NormalParams::Kind::Metal);
     return m;
 }
 
@@ -95,12 +101,7 @@ AnisoParams makeAniso(const Primitive& p) {
         m.transmissivity = p.rargs[6];
         m.transSpecular = p.rargs[7];
     }
-    split(m, m.specularity, m.transmissivity, m.transSpecular);
-    m.specularColor = m.kind == AnisoParams::Kind::Metal2 ? m.color * m.rspec
-                                                          : Color::grey(m.rspec);
-    m.diffuseReflectance = m.color * m.rdiff;
-    m.diffuseTransmittance = m.color * m.tdiff;
-    m.specularTransmittance = m.color * m.tspec;
+    deriveWardColours(m, m.kind == AnisoParams::Kind::Metal2);
     return m;
 }
 
