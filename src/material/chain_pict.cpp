@@ -1,0 +1,98 @@
+#include "material/chain_pict.h"
+
+#include <cmath>
+
+#include "image/picture.h"
+#include "util/error.h"
+
+namespace rp::material {
+
+namespace {
+
+// One axis of RADIANCE's datavalue: the lower node index and the fractional position x
+// (in node units, may lie outside [i, i+1] when extrapolating).
+struct AxisPos {
+    int i = 0;
+    double x = 0;
+};
+
+AxisPos axisPos(double coord, double size, int count) {
+    AxisPos a;
+    a.x = coord / size * double(count - 1);
+    double fi = std::floor(a.x);
+    // RADIANCE truncates towards zero ((int)x); both give 0 for small negatives, and
+    // the clamp below makes them agree everywhere else.
+    a.i = fi < 0 ? 0 : (fi > count - 2 ? count - 2 : int(fi));
+    if (a.x < 0) a.i = 0;
+    return a;
+}
+
+// Linear in [i, i+1], linear for one more division outside, then harmonic taper.
+double blend(double y0, double y1, const AxisPos& a) {
+    int i = a.i;
+    double x = a.x;
+    if (x > i + 2) return (2 * y1 - y0) / (x - (i - 1));
+    if (x < i - 1) return (2 * y0 - y1) / (i - x);
+    return y0 * ((i + 1) - x) + y1 * (x - i);
+}
+
+}  // namespace
+
+PictTable PictTable::fromPixels(int width, int height, const std::vector<Color>& topFirst,
+                                double pixelAspect) {
+    RP_CHECK(width > 0 && height > 0 && topFirst.size() == size_t(width) * height);
+    PictTable t;
+    t.width_ = width;
+    t.height_ = height;
+    // ray.html, Colorpict: the smaller dimension spans 1, the other the ratio (pixel
+    // aspect = pixel height / width stretches v).
+    if (width <= height * pixelAspect) {
+        t.uSize_ = 1;
+        t.vSize_ = pixelAspect * height / width;
+    } else {
+        t.vSize_ = 1;
+        t.uSize_ = double(width) / height / pixelAspect;
+    }
+    t.bottomFirst_.resize(topFirst.size());
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            t.bottomFirst_[size_t(height - 1 - y) * width + x] = topFirst[size_t(y) * width + x];
+    return t;
+}
+
+PictTable PictTable::load(const std::string& path) {
+    Picture pic = readPicture(path);
+    std::vector<Color> px(pic.pixels.size());
+    for (size_t i = 0; i < px.size(); ++i)
+        px[i] = Color(pic.pixels[i][0], pic.pixels[i][1], pic.pixels[i][2]);
+    double aspect = pic.pixelAspect();
+    if (!(aspect > 1e-6)) throw InputError(path + ": bad PIXASPECT in picture");
+    return fromPixels(pic.width, pic.height, px, aspect);
+}
+
+Color PictTable::value(double u, double v) const {
+    auto at = [&](int x, int y) -> const Color& { return bottomFirst_[size_t(y) * width_ + x]; };
+    // A single row or column has nothing to interpolate along that axis.
+    if (width_ == 1 && height_ == 1) return at(0, 0);
+    if (height_ == 1) {
+        AxisPos a = axisPos(u, uSize_, width_);
+        const Color &c0 = at(a.i, 0), &c1 = at(a.i + 1, 0);
+        return {blend(c0.r, c1.r, a), blend(c0.g, c1.g, a), blend(c0.b, c1.b, a)};
+    }
+    AxisPos av = axisPos(v, vSize_, height_);
+    if (width_ == 1) {
+        const Color &c0 = at(0, av.i), &c1 = at(0, av.i + 1);
+        return {blend(c0.r, c1.r, av), blend(c0.g, c1.g, av), blend(c0.b, c1.b, av)};
+    }
+    // RADIANCE interpolates along the rows first (the last dimension, u), then along v.
+    AxisPos au = axisPos(u, uSize_, width_);
+    Color out;
+    for (int c = 0; c < 3; ++c) {
+        double lo = blend(at(au.i, av.i)[c], at(au.i + 1, av.i)[c], au);
+        double hi = blend(at(au.i, av.i + 1)[c], at(au.i + 1, av.i + 1)[c], au);
+        out[c] = blend(lo, hi, av);
+    }
+    return out;
+}
+
+}  // namespace rp::material

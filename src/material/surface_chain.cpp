@@ -1,0 +1,349 @@
+// SurfaceChains: compiles every pattern, texture and mixture record of a scene once
+// (function files into one calc Program, data files, pictures and fonts read), and the
+// static questions about a chain (checkChain, isPlain). Evaluation is in
+// surface_chain_eval.cpp.
+#include "material/surface_chain.h"
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "calc/search_path.h"
+#include "material/surface_chain_impl.h"
+
+namespace rp::material {
+
+namespace {
+
+std::string what(const Primitive& p) {
+    return std::string(primTypeName(p.type)) + " '" + p.name + "'";
+}
+
+[[noreturn]] void fail(const Primitive& p, const std::string& msg) {
+    throw InputError(p.loc, what(p) + ": " + msg);
+}
+
+ChainKind kindOf(PrimType t) {
+    switch (primCategory(t)) {
+        case PrimCategory::Surface: return ChainKind::NotModifier;
+        case PrimCategory::Material: return ChainKind::Material;
+        case PrimCategory::Alias: return ChainKind::Unsupported;
+        default: break;
+    }
+    switch (t) {
+        case PrimType::Colorfunc: case PrimType::Brightfunc: return ChainKind::Func;
+        case PrimType::Colordata: case PrimType::Brightdata: return ChainKind::Data;
+        case PrimType::Colorpict: return ChainKind::Pict;
+        case PrimType::Colortext: case PrimType::Brighttext: return ChainKind::Text;
+        case PrimType::Texfunc: return ChainKind::TexFunc;
+        case PrimType::Texdata: return ChainKind::TexData;
+        case PrimType::Mixfunc: return ChainKind::MixFunc;
+        case PrimType::Mixdata: return ChainKind::MixData;
+        case PrimType::Mixpict: return ChainKind::MixPict;
+        case PrimType::Mixtext: return ChainKind::MixText;
+        default: return ChainKind::Unsupported;  // spectrum, specfile, specfunc, ...
+    }
+}
+
+// Loads files and tables once per name; everything found along the search path.
+class Loader {
+public:
+    explicit Loader(std::vector<std::string> path) : builder(path), path_(std::move(path)) {
+        builder.loadFile("rayinit.cal");
+    }
+
+    std::string find(const Primitive& p, const std::string& name, const char* kind) {
+        auto found = calc::findFile(name, path_);
+        if (!found) fail(p, std::string("cannot find ") + kind + " '" + name + "'");
+        return *found;
+    }
+
+    // RADIANCE compat: function files share one context, each loaded once in order of
+    // first use after rayinit.cal (as PatternSet does).
+    void loadFunctionFile(const Primitive& p, const std::string& file) {
+        if (file == "." || loadedFiles_.count(file)) return;
+        try {
+            builder.loadFile(file);
+        } catch (const InputError& e) {
+            if (e.loc().line > 0) throw;  // a syntax error names its own file:line
+            fail(p, e.what());
+        }
+        loadedFiles_[file] = true;
+    }
+
+    std::shared_ptr<const calc::DataFile> data(const Primitive& p, const std::string& name) {
+        auto it = data_.find(name);
+        if (it != data_.end()) return it->second;
+        std::string path = find(p, name, "data file");
+        std::shared_ptr<const calc::DataFile> d;
+        try {
+            d = std::make_shared<const calc::DataFile>(calc::DataFile::load(path));
+        } catch (const InputError& e) {
+            if (e.loc().line > 0) throw;
+            fail(p, e.what());
+        }
+        return data_[name] = d;
+    }
+
+    std::shared_ptr<const PictTable> pict(const Primitive& p, const std::string& name) {
+        auto it = picts_.find(name);
+        if (it != picts_.end()) return it->second;
+        std::string path = find(p, name, "picture file");
+        std::shared_ptr<const PictTable> t;
+        try {
+            t = std::make_shared<const PictTable>(PictTable::load(path));
+        } catch (const InputError& e) {
+            fail(p, e.what());
+        }
+        return picts_[name] = t;
+    }
+
+    std::shared_ptr<const Font> font(const Primitive& p, const std::string& name) {
+        auto it = fonts_.find(name);
+        if (it != fonts_.end()) return it->second;
+        std::string path = find(p, name, "font file");
+        std::shared_ptr<const Font> f = Font::load(path);
+        return fonts_[name] = f;
+    }
+
+    std::vector<std::string> textLines(const Primitive& p, const std::string& name) {
+        std::ifstream in(find(p, name, "text file"));
+        std::vector<std::string> lines;
+        for (std::string line; std::getline(in, line);) {
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            lines.push_back(line);
+        }
+        return lines;
+    }
+
+    calc::Builder builder;
+
+private:
+    std::vector<std::string> path_;
+    std::map<std::string, bool> loadedFiles_;
+    std::map<std::string, std::shared_ptr<const calc::DataFile>> data_;
+    std::map<std::string, std::shared_ptr<const PictTable>> picts_;
+    std::map<std::string, std::shared_ptr<const Font>> fonts_;
+};
+
+// RADIANCE compat (modobject.c lastmod): a mixture's foreground and background are the
+// latest modifiers of those names defined before the mixture itself.
+int32_t lookupModifier(const Scene& s, int32_t before, const std::string& name) {
+    if (name == "void") return kVoid;
+    for (int32_t i = before; i-- > 0;)
+        if (isModifier(s.prims[i].type) && s.prims[i].name == name) return i;
+    fail(s.prims[before], "undefined modifier '" + name + "'");
+}
+
+// Function file at `fileAt`, then `nexpr` expressions at `exprAt`, then the transform.
+void compileFunctions(Loader& ld, const Primitive& p, ChainRecord& r, size_t fileAt,
+                      size_t exprAt, size_t nexpr, size_t xfAt) {
+    if (p.sargs.size() < xfAt) fail(p, "expected at least " + std::to_string(xfAt) +
+                                           " string arguments, got " +
+                                           std::to_string(p.sargs.size()));
+    ld.loadFunctionFile(p, p.sargs[fileAt]);
+    for (size_t k = 0; k < nexpr; ++k)
+        r.exprIds.push_back(ld.builder.addExpression(p.sargs[exprAt + k], p.loc));
+    r.forward = parseTransform(p.sargs, xfAt, p.loc);
+    r.toObject = r.forward.inverse();
+    r.hasTransform = !r.forward.isIdentity();
+}
+
+// Data records: `ndata` tables from `dataAt`, function file, then one coordinate
+// expression per dimension of the tables, then the transform.
+void compileData(Loader& ld, const Primitive& p, ChainRecord& r, size_t dataAt, size_t ndata,
+                 size_t fileAt) {
+    for (size_t k = 0; k < ndata; ++k) {
+        r.data[k] = ld.data(p, p.sargs.at(dataAt + k));
+        if (r.data[k]->dimensions() != r.data[0]->dimensions())
+            fail(p, "dimension error: data files '" + p.sargs[dataAt] + "' and '" +
+                        p.sargs[dataAt + k] + "' differ in dimensions");
+    }
+    size_t nd = size_t(r.data[0]->dimensions());
+    size_t coordsAt = fileAt + 1;
+    if (p.sargs.size() < coordsAt + nd || (p.sargs.size() > coordsAt + nd &&
+                                           !isTransformOption(p.sargs[coordsAt + nd])))
+        fail(p, "dimension error: data file '" + p.sargs[dataAt] + "' has " +
+                    std::to_string(nd) + " dimension(s), the record gives " +
+                    std::to_string(p.sargs.size() > coordsAt ? p.sargs.size() - coordsAt : 0) +
+                    " coordinate(s) and transform argument(s)");
+    compileFunctions(ld, p, r, fileAt, coordsAt, nd, coordsAt + nd);
+}
+
+void compileText(Loader& ld, const Primitive& p, ChainRecord& r, size_t fontAt,
+                 size_t spacingAt) {
+    size_t textAt = fontAt + 1;
+    if (p.sargs.size() <= textAt) fail(p, "missing text file or text");
+    std::vector<std::string> lines;
+    if (p.sargs.size() > textAt + 1) {  // "fontfile . words ...": one line of text
+        std::string line;
+        for (size_t k = textAt + 1; k < p.sargs.size(); ++k) line += (line.empty() ? "" : " ") + p.sargs[k];
+        lines.push_back(line);
+    } else {
+        lines = ld.textLines(p, p.sargs[textAt]);
+    }
+    auto font = ld.font(p, p.sargs[fontAt]);
+    const auto& a = p.rargs;
+    if (a.size() < spacingAt) fail(p, "expected at least " + std::to_string(spacingAt) + " real arguments");
+    bool hasSpacing = a.size() > spacingAt;
+    try {
+        r.text = std::make_shared<const TextBlock>(font, std::move(lines), Vec3(a[0], a[1], a[2]),
+                                                   Vec3(a[3], a[4], a[5]), Vec3(a[6], a[7], a[8]),
+                                                   hasSpacing, hasSpacing ? a[spacingAt] : 0.0);
+    } catch (const InputError& e) {
+        fail(p, e.what());
+    }
+}
+
+void compileRecord(Loader& ld, const Scene& s, int32_t index, ChainRecord& r) {
+    const Primitive& p = s.prims[index];
+    const auto& sa = p.sargs;
+    switch (p.type) {
+        case PrimType::Colorfunc: r.colour = true; compileFunctions(ld, p, r, 3, 0, 3, 4); break;
+        case PrimType::Brightfunc: compileFunctions(ld, p, r, 1, 0, 1, 2); break;
+        case PrimType::Texfunc: compileFunctions(ld, p, r, 3, 0, 3, 4); break;
+        case PrimType::Colordata:
+            r.colour = true;
+            r.funcNames = {sa.at(0), sa.at(1), sa.at(2)};
+            compileData(ld, p, r, 3, 3, 6);
+            break;
+        case PrimType::Brightdata:
+            r.funcNames = {sa.at(0)};
+            compileData(ld, p, r, 1, 1, 2);
+            break;
+        case PrimType::Texdata:
+            r.funcNames = {sa.at(0), sa.at(1), sa.at(2)};
+            compileData(ld, p, r, 3, 3, 6);
+            break;
+        case PrimType::Colorpict:
+            r.colour = true;
+            r.funcNames = {sa.at(0), sa.at(1), sa.at(2)};
+            r.pict = ld.pict(p, sa.at(3));
+            compileFunctions(ld, p, r, 4, 5, 2, 7);
+            break;
+        case PrimType::Colortext:
+            r.colour = true;
+            compileText(ld, p, r, 0, 15);
+            r.textFore = {p.rargs[9], p.rargs[10], p.rargs[11]};
+            r.textBack = {p.rargs[12], p.rargs[13], p.rargs[14]};
+            break;
+        case PrimType::Brighttext:
+            compileText(ld, p, r, 0, 11);
+            r.textFore = Color::grey(p.rargs[9]);
+            r.textBack = Color::grey(p.rargs[10]);
+            break;
+        case PrimType::Mixfunc:
+            r.foreMod = lookupModifier(s, index, sa.at(0));
+            r.backMod = lookupModifier(s, index, sa.at(1));
+            compileFunctions(ld, p, r, 3, 2, 1, 4);
+            break;
+        case PrimType::Mixdata:
+            r.foreMod = lookupModifier(s, index, sa.at(0));
+            r.backMod = lookupModifier(s, index, sa.at(1));
+            r.funcNames = {sa.at(2)};
+            compileData(ld, p, r, 3, 1, 4);
+            break;
+        case PrimType::Mixpict:
+            r.foreMod = lookupModifier(s, index, sa.at(0));
+            r.backMod = lookupModifier(s, index, sa.at(1));
+            r.funcNames = {sa.at(2)};
+            r.pict = ld.pict(p, sa.at(3));
+            compileFunctions(ld, p, r, 4, 5, 2, 7);
+            break;
+        case PrimType::Mixtext:
+            r.foreMod = lookupModifier(s, index, sa.at(0));
+            r.backMod = lookupModifier(s, index, sa.at(1));
+            compileText(ld, p, r, 2, 9);
+            break;
+        default: break;
+    }
+}
+
+// How many values each named function of a record is called with (ray.html).
+bool callsWithThree(PrimType t, const calc::Function& f) {
+    switch (t) {
+        case PrimType::Texdata: case PrimType::Mixpict: return true;
+        case PrimType::Colordata: case PrimType::Colorpict: return f.nparams >= 3;
+        default: return false;  // brightdata, mixdata
+    }
+}
+
+}  // namespace
+
+SurfaceChains::SurfaceChains(const Scene& scene, std::vector<std::string> searchPath)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->scene = &scene;
+    size_t n = scene.prims.size();
+    impl_->records.resize(n);
+    impl_->plainMaterial.assign(n, -2);
+    Loader ld(std::move(searchPath));
+    for (size_t i = 0; i < n; ++i) {
+        ChainRecord& r = impl_->records[i];
+        r.kind = kindOf(scene.prims[i].type);
+        compileRecord(ld, scene, int32_t(i), r);
+    }
+    impl_->program = ld.builder.build();
+    const calc::Program& prog = *impl_->program;
+    for (size_t i = 0; i < n; ++i) {
+        ChainRecord& r = impl_->records[i];
+        const Primitive& p = scene.prims[i];
+        for (int id : r.exprIds) r.exprs.push_back(prog.expression(id));
+        for (const std::string& name : r.funcNames) {
+            auto f = prog.function(name);
+            if (!f) fail(p, "undefined function '" + name + "'");
+            r.funcs.push_back({*f, callsWithThree(p.type, *f)});
+        }
+        if (r.kind == ChainKind::Material && p.modifier == kVoid) impl_->plainMaterial[i] = int32_t(i);
+    }
+}
+
+SurfaceChains::~SurfaceChains() = default;
+
+const Scene& SurfaceChains::scene() const { return *impl_->scene; }
+
+namespace {
+
+void checkFrom(const Scene& s, const std::vector<ChainRecord>& records, int32_t mod,
+               bool inTexture, int depth) {
+    for (int32_t m = mod; m != kVoid; m = s.prims[m].modifier) {
+        const Primitive& p = s.prims[m];
+        const ChainRecord& r = records[m];
+        // Modifiers refer to earlier records only, so chains cannot loop; the bound is
+        // against pathological nesting.
+        if (depth > 200) fail(p, "modifier chain too deep");
+        switch (r.kind) {
+            case ChainKind::NotModifier: fail(p, "a surface cannot modify another primitive");
+            case ChainKind::Unsupported: throw notSupportedYet(p.loc, what(p) + " in a modifier chain");
+            case ChainKind::Material:
+                // RADIANCE compat (raytrace.c raytexture): a material's own chain may hold
+                // only patterns, textures and mixtures of them.
+                if (inTexture) fail(p, "conflicting material in a modifier chain");
+                checkFrom(s, records, p.modifier, true, depth + 1);
+                return;
+            default:
+                if (isMixtureKind(r.kind)) {
+                    checkFrom(s, records, r.foreMod, inTexture, depth + 1);
+                    checkFrom(s, records, r.backMod, inTexture, depth + 1);
+                }
+                break;
+        }
+    }
+}
+
+}  // namespace
+
+void SurfaceChains::checkChain(int32_t modifier) const {
+    checkFrom(*impl_->scene, impl_->records, modifier, false, 0);
+}
+
+bool SurfaceChains::isPlain(int32_t modifier) const {
+    return modifier == kVoid || impl_->plainMaterial[modifier] >= 0;
+}
+
+int32_t SurfaceChains::plainMaterial(int32_t modifier) const {
+    if (modifier == kVoid) return kVoid;
+    int32_t m = impl_->plainMaterial[modifier];
+    return m >= 0 ? m : kVoid;
+}
+
+}  // namespace rp::material

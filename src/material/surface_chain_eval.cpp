@@ -1,0 +1,276 @@
+// SurfaceChainEvaluator: walks a surface's modifier chain at a hit point in RADIANCE's
+// order (raytrace.c rayshade, raytexture, raymixture) and returns the material layers
+// with their pattern colours and normal perturbations.
+#include <algorithm>
+#include <cmath>
+
+#include "material/surface_chain.h"
+#include "material/surface_chain_impl.h"
+
+namespace rp::material {
+
+namespace {
+
+constexpr double kFtiny = 1e-6;  // RADIANCE FTINY: mixture sides below this are skipped
+constexpr int kBufferLayers = 64;
+constexpr int kMaxDepth = 200;
+
+Vec3 toVec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+std::array<double, 3> toArr(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+// What the chain has done so far to the ray (RADIANCE r->pcol, r->pert).
+struct WalkState {
+    Color pcol{1, 1, 1};
+    Vec3 pert;
+};
+
+}  // namespace
+
+struct SurfaceChainEvaluator::Impl {
+    const SurfaceChains::Impl& chains;
+    calc::Evaluator eval;
+    calc::RayContext ctx;
+    const PatternPoint* at = nullptr;
+    Rng* rng = nullptr;
+    std::array<ShadingLayer, kBufferLayers> buf{};
+    int count = 0;
+
+    explicit Impl(const SurfaceChains::Impl& c) : chains(c), eval(c.program) {}
+
+    const Primitive& prim(int32_t m) const { return chains.scene->prims[m]; }
+
+    // The ray variables as the record's function space sees them (ray.html, "Function
+    // Files"): P, D, N through the inverse of its transform.
+    void setRay(const ChainRecord& r, const Primitive& p) {
+        const Transform& t = r.toObject;
+        ctx = calc::RayContext{};
+        ctx.P = toVec(t.point(toArr(at->point)));
+        ctx.D = toVec(t.direction(toArr(at->dir)));
+        ctx.N = toVec(t.direction(toArr(at->normal)));
+        ctx.T = at->distance * t.scale;
+        ctx.Rdot = at->rdot;
+        ctx.S = r.forward.scale;
+        ctx.Tvec = toVec(t.point({0, 0, 0}));
+        ctx.I = toVec(t.direction({1, 0, 0}));
+        ctx.J = toVec(t.direction({0, 1, 0}));
+        ctx.K = toVec(t.direction({0, 0, 1}));
+        ctx.args = p.rargs;
+        eval.setRay(ctx);
+    }
+
+    double expr(const ChainRecord& r, int k) { return eval.eval(r.exprs[size_t(k)]); }
+
+    double call1(const NamedFunction& f, double v) {
+        return eval.call(f.fn, std::span<const double>(&v, 1));
+    }
+    double call3(const NamedFunction& f, const double* v) {
+        return eval.call(f.fn, std::span<const double>(v, 3));
+    }
+
+    // Interpolated table values at the record's coordinates (one per table).
+    std::array<double, 3> dataValues(const ChainRecord& r) {
+        std::array<double, calc::DataFile::kMaxDimensions> pt{};
+        size_t nd = r.exprs.size();
+        for (size_t k = 0; k < nd && k < pt.size(); ++k) pt[k] = eval.eval(r.exprs[k]);
+        std::array<double, 3> v{};
+        for (int k = 0; k < 3; ++k)
+            if (r.data[k]) v[k] = r.data[k]->value(std::span<const double>(pt.data(), nd));
+        return v;
+    }
+
+    // colordata / colorpict: each channel's function gets its own value, or all three.
+    Color channelFunctions(const ChainRecord& r, const std::array<double, 3>& v) {
+        Color c;
+        for (int k = 0; k < 3; ++k)
+            c[k] = r.funcs[k].threeArgs ? call3(r.funcs[k], v.data()) : call1(r.funcs[k], v[k]);
+        return c;
+    }
+
+    std::array<double, 3> pictValues(const ChainRecord& r) {
+        double u = expr(r, 0), v = expr(r, 1);
+        Color c = r.pict->value(u, v);
+        return {c.r, c.g, c.b};
+    }
+
+    bool inText(const ChainRecord& r) {
+        // Text records have no transform arguments: the text lies in world space.
+        return r.text->inText(at->point);
+    }
+
+    void addPerturbation(const ChainRecord& r, WalkState& st, Vec3 disp) {
+        // RADIANCE compat (t_func.c): the perturbation is computed in function space and
+        // carried to world space by the forward transform, scale included.
+        if (r.hasTransform) disp = toVec(r.forward.direction(toArr(disp)));
+        st.pert += disp;
+    }
+
+    void push(int32_t material, double weight, const WalkState& st) {
+        if (count >= kBufferLayers) {
+            // Only reachable with mixtures nested far deeper than anyone writes: keep
+            // the heavier of the last layer and this one (biased, but bounded memory).
+            ShadingLayer& last = buf[count - 1];
+            if (last.weight >= weight) return;
+            last = ShadingLayer{material, weight, st.pcol, st.pert};
+            return;
+        }
+        buf[count++] = ShadingLayer{material, weight, st.pcol, st.pert};
+    }
+
+    bool shade(int32_t mod, WalkState& st, double weight, bool inTexture, int depth);
+    bool mix(int32_t m, int32_t fore, int32_t back, double coef, WalkState& st, double weight,
+             bool inTexture, int depth);
+};
+
+// RADIANCE raymixture: both sides shaded with their share; a side that reaches no
+// material is transparent if the other reaches one; if neither does, the pattern colours
+// and perturbations blend and the walk goes on.
+bool SurfaceChainEvaluator::Impl::mix(int32_t m, int32_t fore, int32_t back, double coef,
+                                      WalkState& st, double weight, bool inTexture, int depth) {
+    if (!(coef > 0)) coef = 0;  // NaN too
+    if (coef > 1) coef = 1;
+    WalkState fs = st, bs = st;
+    int start = count;
+    bool foreMat = false, backMat = false;
+    bool doFore = coef > kFtiny, doBack = coef < 1 - kFtiny;
+    if (doFore) {
+        foreMat = shade(fore, fs, weight * coef, inTexture, depth + 1);
+        // Transparent if the background turns out to reach a material (removed below
+        // otherwise); kept beside its own side's layers for the random choice.
+        if (!foreMat) push(kVoid, weight * coef, fs);
+    }
+    int mid = count;
+    if (doBack) backMat = shade(back, bs, weight * (1 - coef), inTexture, depth + 1);
+    if (!foreMat && !backMat) {
+        count = start;
+        st.pcol = fs.pcol * coef + bs.pcol * (1 - coef);
+        st.pert = fs.pert * coef + bs.pert * (1 - coef);
+        return false;
+    }
+    if (doBack && !backMat) push(kVoid, weight * (1 - coef), bs);
+    if (count - start > ChainResult::kMaxLayers && doFore && doBack) {
+        // Too many layers: keep one side, chosen with the mixture's probability, its
+        // weights divided by that probability (the expectation is raymixture's).
+        bool keepFore = rng->uniform() < coef;
+        int from = keepFore ? start : mid, to = keepFore ? mid : count;
+        double scale = keepFore ? 1 / coef : 1 / (1 - coef);
+        int out = start;
+        for (int i = from; i < to; ++i) {
+            buf[out] = buf[i];
+            buf[out++].weight *= scale;
+        }
+        count = out;
+    }
+    return true;
+}
+
+bool SurfaceChainEvaluator::Impl::shade(int32_t mod, WalkState& st, double weight,
+                                        bool inTexture, int depth) {
+    for (int32_t m = mod; m != kVoid; m = prim(m).modifier) {
+        const Primitive& p = prim(m);
+        const ChainRecord& r = chains.records[m];
+        if (depth > kMaxDepth) throw InputError(p.loc, "modifier chain too deep");
+        switch (r.kind) {
+            case ChainKind::NotModifier:
+            case ChainKind::Unsupported:
+                throw notSupportedYet(p.loc, std::string(primTypeName(p.type)) + " '" + p.name +
+                                                 "' in a modifier chain");
+            case ChainKind::Material:
+                if (inTexture)
+                    throw InputError(p.loc, std::string(primTypeName(p.type)) + " '" + p.name +
+                                                "': conflicting material in a modifier chain");
+                // RADIANCE raytexture: the material's own modifiers apply before shading.
+                shade(p.modifier, st, weight, true, depth + 1);
+                push(m, weight, st);
+                return true;
+            case ChainKind::Func:
+                setRay(r, p);
+                if (r.colour)
+                    st.pcol *= Color(expr(r, 0), expr(r, 1), expr(r, 2));
+                else
+                    st.pcol *= expr(r, 0);
+                break;
+            case ChainKind::Data: {
+                setRay(r, p);
+                auto v = dataValues(r);
+                if (r.colour)
+                    st.pcol *= channelFunctions(r, v);
+                else
+                    st.pcol *= call1(r.funcs[0], v[0]);
+                break;
+            }
+            case ChainKind::Pict:
+                setRay(r, p);
+                st.pcol *= channelFunctions(r, pictValues(r));
+                break;
+            case ChainKind::Text:
+                st.pcol *= inText(r) ? r.textFore : r.textBack;
+                break;
+            case ChainKind::TexFunc:
+                setRay(r, p);
+                addPerturbation(r, st, {expr(r, 0), expr(r, 1), expr(r, 2)});
+                break;
+            case ChainKind::TexData: {
+                setRay(r, p);
+                auto v = dataValues(r);
+                addPerturbation(r, st, {call3(r.funcs[0], v.data()), call3(r.funcs[1], v.data()),
+                                        call3(r.funcs[2], v.data())});
+                break;
+            }
+            case ChainKind::MixFunc:
+                setRay(r, p);
+                if (mix(m, r.foreMod, r.backMod, expr(r, 0), st, weight, inTexture, depth))
+                    return true;
+                break;
+            case ChainKind::MixData: {
+                setRay(r, p);
+                double c = call1(r.funcs[0], dataValues(r)[0]);
+                if (mix(m, r.foreMod, r.backMod, c, st, weight, inTexture, depth)) return true;
+                break;
+            }
+            case ChainKind::MixPict: {
+                setRay(r, p);
+                auto v = pictValues(r);
+                double c = call3(r.funcs[0], v.data());
+                if (mix(m, r.foreMod, r.backMod, c, st, weight, inTexture, depth)) return true;
+                break;
+            }
+            case ChainKind::MixText:
+                // RADIANCE compat (text.c): not a blend, the point picks one modifier.
+                if (shade(inText(r) ? r.foreMod : r.backMod, st, weight, inTexture, depth + 1)) {
+                    if (p.modifier != kVoid)
+                        throw InputError(p.loc, "mixtext '" + p.name + "': inappropriate modifier");
+                    return true;
+                }
+                break;
+        }
+    }
+    return false;
+}
+
+SurfaceChainEvaluator::SurfaceChainEvaluator(const SurfaceChains& chains)
+    : impl_(std::make_unique<Impl>(*chains.impl_)) {}
+
+SurfaceChainEvaluator::~SurfaceChainEvaluator() = default;
+
+ChainResult SurfaceChainEvaluator::resolve(int32_t modifier, const PatternPoint& at, Rng& rng) {
+    ChainResult res;
+    const SurfaceChains::Impl& c = impl_->chains;
+    if (modifier == kVoid || c.plainMaterial[modifier] >= 0) {
+        res.layers[0].material = modifier == kVoid ? kVoid : modifier;
+        res.count = 1;
+        return res;
+    }
+    Impl& im = *impl_;
+    im.at = &at;
+    im.rng = &rng;
+    im.count = 0;
+    WalkState st;
+    // RADIANCE compat (raytrace.c): a chain that reaches no material leaves the surface
+    // transparent.
+    if (!im.shade(modifier, st, 1.0, false, 0)) im.push(kVoid, 1.0, st);
+    res.count = std::min(im.count, ChainResult::kMaxLayers);
+    std::copy(im.buf.begin(), im.buf.begin() + res.count, res.layers.begin());
+    return res;
+}
+
+}  // namespace rp::material
