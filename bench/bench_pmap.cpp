@@ -1,6 +1,7 @@
 // Photon map speed: kd-tree build of 1 M photons (1 thread and all threads), k-NN lookups
-// per second for k = 50 and 500 at random surface points of a room-like box, file save and
-// load, and bytes per photon in memory and on disk.
+// per second for k = 50 and 500 (old kd-tree walk vs the bucket index of lookup_index.h) on
+// photons on the surfaces of a room-like box and uniform in a box, bias-compensated lookups
+// (50..500), the index build, file save and load, and bytes per photon.
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -10,6 +11,7 @@
 #include <random>
 
 #include "pmap/density.h"
+#include "pmap/lookup_index.h"
 #include "pmap/photon_map.h"
 
 namespace {
@@ -83,44 +85,125 @@ void BM_BuildPhotonMap1M(benchmark::State& state) {
 }
 BENCHMARK(BM_BuildPhotonMap1M)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// One density-estimate lookup per iteration (k+1 nearest, adaptive radius, normal filter)
-// at random points on the room's surfaces; each benchmark thread has its own PhotonLookup.
+// Photons uniform in the room's volume (as volume photons would be), normals random.
+std::vector<Photon> boxPhotons(size_t n, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1), f(0.5, 1.5);
+    std::vector<Photon> v;
+    v.reserve(n);
+    for (size_t i = 0; i < n; ++i) {
+        Vec3 p(6 * u(rng), 4 * u(rng), 3 * u(rng));
+        Vec3 nrm = normalize(Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+        v.push_back(makePhoton(p, nrm, {f(rng) * 1e-6, f(rng) * 1e-6, f(rng) * 1e-6}));
+    }
+    return v;
+}
+
+const PhotonMap& boxMap() {
+    static const PhotonMap map(PhotonMapType::Volume, boxPhotons(kMillion, 3));
+    return map;
+}
+
+// Built on first use (by whichever benchmark asks first), as a renderer would.
+const PhotonIndex& roomIndex() {
+    static const LazyPhotonIndex lazy;
+    return lazy.get(roomMap().photons());
+}
+const PhotonIndex& boxIndex() {
+    static const LazyPhotonIndex lazy;
+    return lazy.get(boxMap().photons());
+}
+
+// Query points: on the room's surfaces with their normals (room map), or uniform in the
+// box without a normal filter (box map, as volume lookups).
+std::vector<SurfacePoint> queryPoints(bool box, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<SurfacePoint> q;
+    for (int i = 0; i < 4096; ++i)
+        q.push_back(box ? SurfacePoint{Vec3(6 * u(rng), 4 * u(rng), 3 * u(rng)), Vec3()}
+                        : roomPoint(rng));
+    return q;
+}
+
+// One lookup per iteration (k+1 nearest, adaptive radius) through PhotonLookup; each
+// benchmark thread has its own. Args: k, map (0 room surfaces, 1 uniform box), search
+// (0 old kd-tree walk, 1 bucket index).
 void BM_Lookup1M(benchmark::State& state) {
-    const PhotonMap& map = roomMap();
     const int k = static_cast<int>(state.range(0));
-    PhotonLookup lookup(map, LookupParams{k, 0, 0.5});
-    std::mt19937_64 rng(100 + state.thread_index());
-    std::vector<SurfacePoint> queries;
-    for (int i = 0; i < 4096; ++i) queries.push_back(roomPoint(rng));
+    const bool box = state.range(1) != 0, indexed = state.range(2) != 0;
+    const PhotonMap& map = box ? boxMap() : roomMap();
+    const PhotonIndex* index = indexed ? (box ? &boxIndex() : &roomIndex()) : nullptr;
+    PhotonLookup lookup(map, LookupParams{k, 0, 0.5}, index);
+    const auto queries = queryPoints(box, 100 + state.thread_index());
     size_t i = 0, found = 0;
     for (auto _ : state) {
         const SurfacePoint& q = queries[i++ & 4095];
-        found += lookup.findPhotons(q.pos, &q.normal).size();
+        found += lookup.findPhotons(q.pos, box ? nullptr : &q.normal).size();
     }
+    state.SetLabel(std::string(box ? "box" : "room") + (indexed ? " index" : " kd-tree"));
     state.counters["lookups/s"] =
         benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
     state.counters["found"] = double(found) / double(state.iterations());
     state.counters["short"] = double(lookup.shortLookups());
 }
-BENCHMARK(BM_Lookup1M)->Arg(50)->Arg(500)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_Lookup1M)->Arg(50)->Arg(500)->Unit(benchmark::kMicrosecond)->Threads(2)->UseRealTime();
+BENCHMARK(BM_Lookup1M)
+    ->ArgsProduct({{50, 500}, {0, 1}, {0, 1}})
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Lookup1M)
+    ->ArgsProduct({{50, 500}, {0}, {0, 1}})
+    ->Unit(benchmark::kMicrosecond)
+    ->Threads(2)
+    ->UseRealTime();
 
 // Full density estimate (lookup + flux sum) for comparison with the bare lookup.
 void BM_SurfaceDensity1M(benchmark::State& state) {
-    const PhotonMap& map = roomMap();
-    PhotonLookup lookup(map, LookupParams{static_cast<int>(state.range(0)), 0, 0.5});
-    std::mt19937_64 rng(7);
-    std::vector<SurfacePoint> queries;
-    for (int i = 0; i < 4096; ++i) queries.push_back(roomPoint(rng));
+    const bool indexed = state.range(1) != 0;
+    PhotonLookup lookup(roomMap(), LookupParams{static_cast<int>(state.range(0)), 0, 0.5},
+                        indexed ? &roomIndex() : nullptr);
+    const auto queries = queryPoints(false, 7);
     size_t i = 0;
     for (auto _ : state) {
         const SurfacePoint& q = queries[i++ & 4095];
         benchmark::DoNotOptimize(lookup.surfaceDensity(q.pos, q.normal));
     }
+    state.SetLabel(indexed ? "index" : "kd-tree");
     state.counters["lookups/s"] =
         benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_SurfaceDensity1M)->Arg(50)->Arg(500)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SurfaceDensity1M)->ArgsProduct({{50, 500}, {0, 1}})->Unit(benchmark::kMicrosecond);
+
+// Bias-compensated estimate, bandwidth 50..500, on the room map (with the index).
+void BM_BiasCompDensity1M(benchmark::State& state) {
+    const bool indexed = state.range(0) != 0;
+    PhotonLookup lookup(roomMap(), LookupParams{500, 0, 0.5}, indexed ? &roomIndex() : nullptr);
+    const auto queries = queryPoints(false, 9);
+    BiasCompStats stats;
+    size_t i = 0;
+    for (auto _ : state) {
+        const SurfacePoint& q = queries[i++ & 4095];
+        benchmark::DoNotOptimize(lookup.biasCompensatedDensity(q.pos, q.normal, 50, 500, &stats));
+    }
+    state.SetLabel(stats.report("global") + (indexed ? " index" : " kd-tree"));
+    state.counters["lookups/s"] =
+        benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_BiasCompDensity1M)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// Index build over 1 M photons (all threads) and its size.
+void BM_BuildIndex1M(benchmark::State& state) {
+    const PhotonMap& map = roomMap();
+    size_t bytes = 0;
+    for (auto _ : state) {
+        PhotonIndex index(map.photons(), true);
+        bytes = index.memoryBytes();
+        benchmark::DoNotOptimize(&index);
+    }
+    state.counters["index bytes/photon"] = double(bytes) / double(map.size());
+    state.counters["photons/s"] =
+        benchmark::Counter(double(kMillion) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_BuildIndex1M)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 std::string tempMapPath() {
     return (std::filesystem::temp_directory_path() /

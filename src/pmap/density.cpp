@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "util/error.h"
+
 namespace rp::pmap {
 
 namespace {
@@ -15,12 +17,15 @@ constexpr int kMaxDistCount = 1000;
 constexpr size_t kShortLookupThreshold = 1;
 }  // namespace
 
-PhotonLookup::PhotonLookup(const PhotonMap& map, const LookupParams& params)
+PhotonLookup::PhotonLookup(const PhotonMap& map, const LookupParams& params,
+                           const PhotonIndex* index)
     : map_(&map),
+      index_(index),
       bandwidth_(static_cast<int>(
           std::min<uint64_t>(std::max(params.bandwidth, 1), std::max<uint64_t>(map.size(), 1)))),
       fixedRadius_(params.maxSearchRadius > 0),
       gatherTolerance_(params.gatherTolerance) {
+    RP_CHECK(!index || index->size() == map.size());
     const size_t queueLen = static_cast<size_t>(bandwidth_) + 1;
     hits_.resize(queueLen);
     if (fixedRadius_) {
@@ -36,9 +41,14 @@ PhotonLookup::PhotonLookup(const PhotonMap& map, const LookupParams& params)
 }
 
 std::span<const PhotonHit> PhotonLookup::findPhotons(const Vec3& pos, const Vec3* normal) {
-    const size_t queueLen = hits_.size();
+    return search(pos, normal, static_cast<size_t>(bandwidth_) + 1);
+}
+
+std::span<PhotonHit> PhotonLookup::search(const Vec3& pos, const Vec3* normal, size_t queueLen) {
+    const std::span<PhotonHit> queue(hits_.data(), queueLen);
     lastSearchDist2_ = static_cast<float>(maxDist2_);
-    found_ = findNearestPhotons(map_->photons(), pos, normal, lastSearchDist2_, hits_);
+    found_ = index_ ? index_->findNearest(pos, normal, lastSearchDist2_, queue)
+                    : findNearestPhotons(map_->photons(), pos, normal, lastSearchDist2_, queue);
     ++lookups_;
     if (found_ == queueLen) lastSearchDist2_ = hits_[0].dist2;
 
@@ -84,11 +94,36 @@ std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& 
     return irrad;
 }
 
+std::array<double, 3> PhotonLookup::biasCompensatedDensity(const Vec3& pos, const Vec3& normal,
+                                                           int bwMin, int bwMax,
+                                                           BiasCompStats* stats) {
+    if (map_->empty()) return {0, 0, 0};
+    const int upper = static_cast<int>(
+        std::min<uint64_t>(std::max(bwMax, 1), static_cast<uint64_t>(map_->size())));
+    const size_t queueLen = static_cast<size_t>(upper) + 1;
+    if (hits_.size() < queueLen) hits_.resize(queueLen);
+    auto hits = search(pos, &normal, queueLen);
+    const BiasCompResult r = compensateBias(hits, map_->photons(), lastSearchDist2_,
+                                            hits.size() == queueLen, std::min(bwMin, upper),
+                                            upper, biasPrefix_);
+    // compensateBias sorted the hits: no longer a heap, so forget them.
+    found_ = 0;
+    if (stats && r.bandwidth > 0) stats->add(r.bandwidth, r.relError);
+    return r.density;
+}
+
 std::array<double, 3> PhotonLookup::precompDensity(const Vec3& pos, const Vec3& normal) const {
     std::array<double, 3> irrad = {0, 0, 0};
     if (map_->empty()) return irrad;
     // RADIANCE compat: find1Photon searches within the squared radius CoGdist.
-    const int64_t idx = findNearestPhoton(map_->photons(), pos, &normal, map_->stats().cogDist2);
+    int64_t idx = -1;
+    if (index_) {
+        PhotonHit hit{};
+        if (index_->findNearest(pos, &normal, map_->stats().cogDist2, {&hit, 1}) == 1)
+            idx = hit.index;
+    } else {
+        idx = findNearestPhoton(map_->photons(), pos, &normal, map_->stats().cogDist2);
+    }
     if (idx < 0) return irrad;
     const auto f = map_->photons()[static_cast<size_t>(idx)].fluxRgb();
     return {f[0], f[1], f[2]};

@@ -1,6 +1,7 @@
 // Photon density estimates as RADIANCE computes them (pmutil.c photonDensity,
 // photonPreCompDensity) and the automatic maximum search radius of findPhotons
-// (pmapdata.c; manual section 3.2.3). Bias compensation (-ap file min max) is not here yet.
+// (pmapdata.c; manual section 3.2.3), and the bias-compensated estimate (-ap file min max;
+// the bandwidth choice itself is in bias_comp.h). The search index is lookup_index.h.
 #pragma once
 
 #include <array>
@@ -8,7 +9,9 @@
 #include <span>
 #include <vector>
 
+#include "pmap/bias_comp.h"
 #include "pmap/kdtree.h"
+#include "pmap/lookup_index.h"
 #include "pmap/photon_map.h"
 #include "util/vec.h"
 
@@ -27,8 +30,12 @@ struct LookupParams {
 class PhotonLookup {
 public:
     // The map must outlive this object. Bandwidths above the photon count are clamped to it
-    // (RADIANCE compat: loadPmaps "adjusting density estimate bandwidth").
-    PhotonLookup(const PhotonMap& map, const LookupParams& params);
+    // (RADIANCE compat: loadPmaps "adjusting density estimate bandwidth"). With `index`
+    // (built over map.photons(), outliving this object; share one per map between threads,
+    // e.g. via LazyPhotonIndex) searches use it: the same photons, several times faster.
+    // Without, they walk the map's kd-tree (kdtree.h findNearestPhotons).
+    PhotonLookup(const PhotonMap& map, const LookupParams& params,
+                 const PhotonIndex* index = nullptr);
 
     // RADIANCE's findPhotons: up to bandwidth+1 nearest photons to `pos` (normal filter if
     // `normal` is non-null; null for volume photons) within the current maximum radius,
@@ -57,6 +64,17 @@ public:
     // 0 if none.
     std::array<double, 3> precompDensity(const Vec3& pos, const Vec3& normal) const;
 
+    // Bias-compensated surfaceDensity (-ap file bwMin bwMax): gathers up to bwMax+1 photons
+    // (findPhotons' search and adaptive radius, with a queue of bwMax+1) and returns E/pi at
+    // the bandwidth in [bwMin, bwMax] chosen as documented in bias_comp.h (bwMax is clamped
+    // to the photon count, bwMin to bwMax). RADIANCE compat: RADIANCE sizes the automatic
+    // radius for the upper bandwidth, so construct this lookup with bandwidth = bwMax.
+    // The result depends only on the photons found; with a fixed maximum radius (-am), or
+    // while the adaptive radius does not cut the search short, it is independent of query
+    // order and threads. Adds the lookup to `stats` when non-null.
+    std::array<double, 3> biasCompensatedDensity(const Vec3& pos, const Vec3& normal, int bwMin,
+                                                 int bwMax, BiasCompStats* stats = nullptr);
+
     // Current squared maximum search radius (RADIANCE's maxDist0) and its limit.
     double maxDist2() const { return maxDist2_; }
     double maxDist2Limit() const { return maxDist2Limit_; }
@@ -67,7 +85,11 @@ public:
     uint64_t shortLookups() const { return shortLookups_; }
 
 private:
+    // findPhotons with a queue of queueLen (<= hits_.size()).
+    std::span<PhotonHit> search(const Vec3& pos, const Vec3* normal, size_t queueLen);
+
     const PhotonMap* map_;
+    const PhotonIndex* index_;
     int bandwidth_;
     bool fixedRadius_;
     double gatherTolerance_;
@@ -79,6 +101,7 @@ private:
     uint64_t shortLookups_ = 0;
     std::vector<PhotonHit> hits_;
     size_t found_ = 0;
+    std::vector<std::array<double, 3>> biasPrefix_;  // scratch for compensateBias
 };
 
 }  // namespace rp::pmap

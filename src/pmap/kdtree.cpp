@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "pmap/lookup_heap.h"
 #include "util/error.h"
 
 namespace rp::pmap {
@@ -113,29 +114,7 @@ size_t knnSearch(const Photon* tree, size_t n, const float q[3], const QueryNorm
             const float dx = q[0] - p.pos[0], dy = q[1] - p.pos[1], dz = q[2] - p.pos[2];
             const float d2 = dx * dx + dy * dy + dz * dz;
             if (d2 < maxDist2 && (!kFilter || qn.accepts(p))) {
-                const uint32_t idx = static_cast<uint32_t>(node - 1);
-                if (found < k) {
-                    // Sift up (1-based heap positions, max at the top).
-                    size_t i = ++found;
-                    while (i > 1 && heap[(i >> 1) - 1].dist2 <= d2) {
-                        heap[i - 1] = heap[(i >> 1) - 1];
-                        i >>= 1;
-                    }
-                    heap[i - 1] = {d2, idx};
-                    if (found == k) maxDist2 = heap[0].dist2;
-                } else {
-                    // Replace the furthest and sift down.
-                    size_t i = 1;
-                    while (i <= (k >> 1)) {
-                        size_t j = i << 1;
-                        if (j < k && heap[j - 1].dist2 < heap[j].dist2) ++j;
-                        if (d2 >= heap[j - 1].dist2) break;
-                        heap[i - 1] = heap[j - 1];
-                        i = j;
-                    }
-                    heap[i - 1] = {d2, idx};
-                    maxDist2 = heap[0].dist2;
-                }
+                offerPhoton(heap, k, found, maxDist2, d2, static_cast<uint32_t>(node - 1));
             }
             node = nearChild;
         }

@@ -1,0 +1,101 @@
+// Bias-compensated bandwidth choice and its statistics (see bias_comp.h).
+#include "pmap/bias_comp.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "util/vec.h"
+
+namespace rp::pmap {
+
+void BiasCompStats::add(int bandwidth, double relError) {
+    ++lookups;
+    minBandwidth = std::min(minBandwidth, bandwidth);
+    maxBandwidth = std::max(maxBandwidth, bandwidth);
+    sumBandwidth += bandwidth;
+    minError = std::min(minError, relError);
+    maxError = std::max(maxError, relError);
+    sumError2 += relError * relError;
+}
+
+void BiasCompStats::merge(const BiasCompStats& o) {
+    lookups += o.lookups;
+    minBandwidth = std::min(minBandwidth, o.minBandwidth);
+    maxBandwidth = std::max(maxBandwidth, o.maxBandwidth);
+    sumBandwidth += o.sumBandwidth;
+    minError = std::min(minError, o.minError);
+    maxError = std::max(maxError, o.maxError);
+    sumError2 += o.sumError2;
+}
+
+double BiasCompStats::rmsError() const {
+    return lookups ? std::sqrt(sumError2 / double(lookups)) : 0;
+}
+
+std::string BiasCompStats::report(const char* photonType) const {
+    if (!lookups) return {};
+    return fmt::format("{}/{}/{:.1f} {}, ({:.3f}/{:.3f}/{:.3f} error)", minBandwidth,
+                       maxBandwidth, meanBandwidth(), photonType, minError, maxError,
+                       rmsError());
+}
+
+BiasCompResult compensateBias(std::span<PhotonHit> hits, std::span<const Photon> photons,
+                              double searchDist2, bool full, int bwMin, int bwMax,
+                              std::vector<std::array<double, 3>>& prefix) {
+    BiasCompResult res;
+    const size_t m = hits.size();
+    if (m < 2) return res;
+    // Ties broken by index so the order (and so the sums) never depends on the search.
+    std::sort(hits.begin(), hits.end(), [](const PhotonHit& a, const PhotonHit& b) {
+        return a.dist2 < b.dist2 || (a.dist2 == b.dist2 && a.index < b.index);
+    });
+    // prefix[j] = flux of photons 1..j (1-based), summed in distance order.
+    if (prefix.size() < m + 1) prefix.resize(m + 1);
+    prefix[0] = {0, 0, 0};
+    for (size_t i = 0; i < m; ++i) {
+        const auto f = photons[hits[i].index].fluxRgb();
+        for (int c = 0; c < 3; ++c) prefix[i + 1][c] = prefix[i][c] + f[c];
+    }
+    const int last = static_cast<int>(m) - 1;  // largest bandwidth with a (j+1)-th distance
+    const int b2 = std::clamp(bwMax, 1, last);
+    const int b1 = std::clamp(bwMin, 1, b2);
+
+    auto estimate = [&](int j) {
+        const double dj = hits[j - 1].dist2;
+        const double dNext = (j == last && !full) ? searchDist2 : double(hits[j].dist2);
+        const double r2 = 0.25 * (dj + dNext + 2 * std::sqrt(dj * dNext));
+        std::array<double, 3> e;
+        for (int c = 0; c < 3; ++c) e[c] = prefix[j][c] / (kPi * kPi * r2);
+        return e;
+    };
+    auto consistent = [](const std::array<double, 3>& ej, int j, const std::array<double, 3>& er,
+                         int r) {
+        if (r >= j) return true;
+        const double rel = kBiasCompZ * std::sqrt(1.0 / r - 1.0 / j);
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(ej[c] - er[c]) > rel * ej[c]) return false;
+        return true;
+    };
+
+    const std::array<double, 3> e1 = estimate(b1);
+    int lo = b1, hi = b2;
+    std::array<double, 3> eLo = e1;
+    while (lo < hi) {
+        const int mid = lo + (hi - lo + 1) / 2;
+        const std::array<double, 3> eMid = estimate(mid);
+        if (consistent(eMid, mid, e1, b1) && consistent(eMid, mid, eLo, lo)) {
+            lo = mid;
+            eLo = eMid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    res.density = eLo;
+    res.bandwidth = lo;
+    res.relError = 1.0 / std::sqrt(double(lo));
+    return res;
+}
+
+}  // namespace rp::pmap

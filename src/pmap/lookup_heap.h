@@ -1,0 +1,41 @@
+// The bounded max-heap of nearest-photon results shared by the kd-tree search (kdtree.cpp)
+// and the bucket index (lookup_index.cpp), so both keep exactly the same photons.
+// RADIANCE compat: pmapkdt.c keeps a queue of maxGather+1 entries the same way.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "pmap/kdtree.h"
+
+namespace rp::pmap {
+
+// Offers photon `idx` at squared distance d2 (< maxDist2, checked by the caller) to the
+// heap heap[0..found) of capacity k (1-based positions internally; heap[0] is the
+// furthest). Once the heap is full, maxDist2 shrinks to the furthest kept, so later
+// candidates must be strictly nearer.
+inline void offerPhoton(PhotonHit* heap, size_t k, size_t& found, float& maxDist2, float d2,
+                        uint32_t idx) {
+    if (found < k) {
+        size_t i = ++found;  // sift up
+        while (i > 1 && heap[(i >> 1) - 1].dist2 <= d2) {
+            heap[i - 1] = heap[(i >> 1) - 1];
+            i >>= 1;
+        }
+        heap[i - 1] = {d2, idx};
+        if (found == k) maxDist2 = heap[0].dist2;
+    } else {
+        size_t i = 1;  // replace the furthest and sift down
+        while (i <= (k >> 1)) {
+            size_t j = i << 1;
+            if (j < k && heap[j - 1].dist2 < heap[j].dist2) ++j;
+            if (d2 >= heap[j - 1].dist2) break;
+            heap[i - 1] = heap[j - 1];
+            i = j;
+        }
+        heap[i - 1] = {d2, idx};
+        maxDist2 = heap[0].dist2;
+    }
+}
+
+}  // namespace rp::pmap
