@@ -1,0 +1,212 @@
+// The ambient calculation's option logic (see ambient.h): which points get -av, the
+// division counts and sample weights per level, record radii, the cache and the -af file.
+// Sampling is in ambient_hemisphere.cpp, record storage in irradiance_cache.cpp.
+#include "render/ambient.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <mutex>
+#include <unordered_set>
+#include <vector>
+
+#include "render/ambient_file.h"
+#include "render/ambient_hemisphere.h"
+#include "render/irradiance_cache.h"
+#include "util/warnings.h"
+
+namespace rp::render {
+
+namespace {
+constexpr double kTiny = 1e-6;  // RADIANCE's FTINY
+}  // namespace
+
+struct Ambient::Impl {
+    AmbientOptions opt;
+    double sceneSize = 0;
+    double minRadius = 0;  // RADIANCE minarad: scene size / -ar
+    double maxRadius = 0;  // RADIANCE maxarad
+    double minWeight = 2e-3;
+    std::vector<char> excluded;  // per Scene::prims index: 1 = gets -av
+    bool voidExcluded = false;
+    std::unique_ptr<IrradianceCache> cache;  // null with -aa 0
+    // Log-brightness sum and count of stored records, for -aw (RADIANCE avsum, navsum).
+    std::atomic<double> logSum{0};
+    std::atomic<long> logCount{0};
+    std::mutex saveMutex;
+    size_t saved = 0;  // new records already appended to the -af file
+
+    bool isExcluded(int32_t modifier) const {
+        if (modifier < 0 || size_t(modifier) >= excluded.size()) return voidExcluded;
+        return excluded[size_t(modifier)] != 0;
+    }
+
+    void countValue(const Color& v) {
+        double b = v.brightness();
+        if (b > kTiny) {
+            logSum.fetch_add(std::log(b), std::memory_order_relaxed);
+            logCount.fetch_add(1, std::memory_order_relaxed);
+        }
+    }
+
+    Color fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) const;
+    Color makeRecord(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng);
+};
+
+Ambient::Ambient(const AmbientOptions& options, double sceneSize, const Scene& scene,
+                 double minWeight)
+    : impl_(std::make_unique<Impl>()) {
+    Impl& m = *impl_;
+    m.opt = options;
+    m.sceneSize = sceneSize;
+    m.minWeight = minWeight;
+    // RADIANCE compat (ambient.c setambres): records are at least size/ar apart and
+    // reach at most 64 times that (half the scene without -ar), never over half the scene.
+    m.minRadius = options.resolution > 0 ? sceneSize / options.resolution : 0;
+    m.maxRadius = m.minRadius > kTiny ? 64 * m.minRadius : sceneSize / 2;
+    if (sceneSize > 0) m.maxRadius = std::min(m.maxRadius, sceneSize / 2);
+    if (m.maxRadius <= 0) m.maxRadius = 1e10;
+
+    // -ae/-ai: the list names modifiers; the last of the two options sets its meaning.
+    std::unordered_set<std::string> names(options.modifiers.begin(), options.modifiers.end());
+    m.excluded.resize(scene.prims.size());
+    for (size_t i = 0; i < scene.prims.size(); ++i) {
+        bool listed = names.count(scene.prims[i].name) != 0;
+        m.excluded[i] = options.includeList ? !listed : listed;
+    }
+    // RADIANCE compat (multambient): a point without an object (rtrace -I) is never
+    // excluded.
+    m.voidExcluded = false;
+
+    if (options.accuracy > kTiny)
+        m.cache = std::make_unique<IrradianceCache>(options.accuracy, m.minRadius, sceneSize);
+
+    if (options.file.empty()) return;
+    if (!m.cache) {
+        // RADIANCE compat (ambient.c setambient): -aa 0 leaves the ambient file alone.
+        warn(fmt::format("zero ambient accuracy so \"{}\" not opened", options.file));
+        return;
+    }
+    if (!std::filesystem::exists(options.file)) return;
+    AmbientFileContents f = readAmbientFile(options.file);
+    std::string mine = ambientFileOptions(options);
+    // RADIANCE reuses ambient files whatever the options; records from other settings are
+    // still valid irradiance estimates, only of other quality, so we warn, not refuse.
+    if (f.options != mine)
+        warn(fmt::format("ambient file {} was made with {}, now using {}", options.file,
+                         f.options.empty() ? "unknown options" : f.options, mine));
+    for (const AmbientRecord& r : f.records) {
+        m.cache->insert(r, false);
+        m.countValue(r.value);
+    }
+}
+
+Ambient::~Ambient() = default;
+
+Color Ambient::ambientValue() const {
+    // RADIANCE compat (ambient.c multambient, "dumbamb"): the geometric mean of the
+    // computed brightnesses, with -av counted -aw times, in the colour of -av.
+    const AmbientOptions& o = impl_->opt;
+    long n = impl_->logCount.load(std::memory_order_relaxed);
+    if (o.valueWeight <= 0 || n == 0) return o.value;
+    double sum = impl_->logSum.load(std::memory_order_relaxed);
+    double l = o.value.brightness();
+    if (l > kTiny) {
+        double d = std::exp((std::log(l) * o.valueWeight + sum) / double(o.valueWeight + n));
+        return o.value * (d / l);
+    }
+    return Color::grey(std::exp(sum / double(n)));
+}
+
+Color Ambient::Impl::fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) const {
+    // RADIANCE compat (ambcomp.c): without the cache the division count follows the ray
+    // weight, lowered so that samples stay above -lw; each sample carries its share of
+    // the weight (the material's ambient coefficient is assumed to be AVGREFL: the caller
+    // applies the real one afterwards).
+    double wt = at.weight;
+    if (minWeight > 0) {
+        double cap = 0.8 * kAverageReflectance * at.weight / (opt.divisions * minWeight);
+        wt = std::min(wt, cap);
+    }
+    HemisphereParams p = hemisphereDivisions(opt.divisions, opt.supersamples, wt, 1);
+    p.sampleLevel = at.ambientLevel + 1;
+    p.sampleWeight =
+        at.weight * kAverageReflectance / (double(p.thetaDivisions) * p.phiDivisions);
+    p.gradients = false;
+    if (p.superSamples <= 8) p.superSamples = 0;  // RADIANCE 5: not worth it below 9
+    return sampleHemisphere(at.offsetOrigin, at.normal, p, tracer, rng).value;
+}
+
+Color Ambient::Impl::makeRecord(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) {
+    // RADIANCE compat (ambient.c makeambient): a record's weight is AVGREFL per level,
+    // unless the ray is much lighter already; it sets the division count and radius.
+    double wt = std::pow(kAverageReflectance, at.ambientLevel);
+    if (at.weight < 0.1 * wt) wt = 1.25 * at.weight;
+    HemisphereParams p = hemisphereDivisions(opt.divisions, opt.supersamples, wt, 3);
+    p.sampleLevel = at.ambientLevel + 1;
+    // Cached values are reused by many rays, so samples carry the full AVGREFL share
+    // (ambcomp.c: rcoef = AVGREFL with -aa > 0).
+    p.sampleWeight = at.weight * kAverageReflectance;
+    if (p.superSamples <= 8) p.superSamples = 0;
+    HemisphereEstimate est = sampleHemisphere(at.offsetOrigin, at.normal, p, tracer, rng);
+
+    AmbientRecord rec;
+    rec.position = at.point;
+    rec.normal = at.normal;
+    rec.value = est.value;
+    rec.level = at.ambientLevel;
+    rec.weight = wt;
+    double b = est.value.brightness();
+    if (b > kTiny) {  // gradients are stored relative to the value (ambcomp.c)
+        rec.gradPosition = est.gradPosition / b;
+        rec.gradDirection = est.gradDirection / b;
+    }
+    // RADIANCE compat (ambcomp.c doambient): radius = harmonic mean distance, shrunk
+    // where the translational gradient is steep, at least minarad (capping the gradient
+    // there instead), grown by 1/sqrt(weight) for deeper levels, at most maxarad.
+    double r = est.sumInverseDistance > kTiny ? est.samples / est.sumInverseDistance
+                                              : maxRadius;
+    double g2 = dot(rec.gradPosition, rec.gradPosition);
+    if (g2 * r * r > 1) r = 1 / std::sqrt(g2);
+    if (r < minRadius) {
+        r = minRadius;
+        if (g2 * r * r > 1) rec.gradPosition *= 1 / (r * std::sqrt(g2));
+    }
+    r /= std::sqrt(wt);
+    r = std::min(r, maxRadius);
+    rec.radius = std::max(r, 1e-12);
+    cache->insert(rec, true);
+    countValue(rec.value);
+    return rec.value;
+}
+
+Color Ambient::indirect(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) const {
+    const Impl& m = *impl_;
+    if (at.ambientLevel >= m.opt.bounces || m.opt.divisions <= 0 || m.isExcluded(at.modifier))
+        return ambientValue();
+    if (!m.cache) return m.fresh(at, tracer, rng);
+    CacheQuery q{at.point, at.normal, at.ambientLevel, at.weight};
+    Color c;
+    if (m.cache->lookup(q, &rng, c)) return c;
+    // Inserting is thread-safe; the Impl is logically the shared cache.
+    return const_cast<Impl&>(m).makeRecord(at, tracer, rng);
+}
+
+void Ambient::save() const {
+    Impl& m = *impl_;
+    if (m.opt.file.empty() || !m.cache) return;
+    std::lock_guard<std::mutex> lock(m.saveMutex);
+    std::vector<AmbientRecord> recs = m.cache->newRecords();
+    if (m.saved >= recs.size() && std::filesystem::exists(m.opt.file)) return;
+    std::vector<AmbientRecord> todo(recs.begin() + long(std::min(m.saved, recs.size())),
+                                    recs.end());
+    appendAmbientFile(m.opt.file, ambientFileOptions(m.opt), todo);
+    m.saved = recs.size();
+}
+
+long Ambient::recordCount() const { return impl_->cache ? impl_->cache->size() : 0; }
+
+}  // namespace rp::render

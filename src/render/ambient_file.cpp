@@ -1,0 +1,188 @@
+// The -af ambient file (see ambient_file.h).
+#include "render/ambient_file.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "util/error.h"
+#include "util/header.h"
+
+namespace rp::render {
+
+namespace {
+
+template <typename T>
+void put(unsigned char*& p, T v) {
+    static_assert(sizeof(T) == 4 || sizeof(T) == 8);
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    if constexpr (std::endian::native == std::endian::big)
+        for (size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
+    std::memcpy(p, b, sizeof(T));
+    p += sizeof(T);
+}
+
+template <typename T>
+T get(const unsigned char*& p) {
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, p, sizeof(T));
+    if constexpr (std::endian::native == std::endian::big)
+        for (size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
+    T v;
+    std::memcpy(&v, b, sizeof(T));
+    p += sizeof(T);
+    return v;
+}
+
+void putVecF(unsigned char*& p, const Vec3& v) {
+    for (int i = 0; i < 3; ++i) put<float>(p, float(v[i]));
+}
+Vec3 getVecF(const unsigned char*& p) {
+    Vec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = get<float>(p);
+    return v;
+}
+
+bool finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+Header makeHeader(const std::string& options) {
+    Header h;
+    h.lines.push_back("radphoton ambient values (irradiance cache records)");
+    h.lines.push_back("AMBIENT_OPTIONS=" + options);
+    h.lines.push_back(fmt::format("RECORD_BYTES={}", kAmbientRecordBytes));
+    h.lines.push_back("BYTE_ORDER=little");
+    h.lines.push_back(std::string("FORMAT=") + kAmbientFormat);
+    return h;
+}
+
+// Checks the header of an open ambient file; throws InputError naming `path`.
+Header checkHeader(std::istream& in, const std::string& path) {
+    Header h = readHeader(in, path);
+    SourceLoc loc{path, 0};
+    if (h.format() != kAmbientFormat)
+        throw InputError(loc, fmt::format("not an ambient file (FORMAT={}, expected {})",
+                                          h.format().empty() ? "none" : h.format(),
+                                          kAmbientFormat));
+    if (h.value("RECORD_BYTES") != std::to_string(kAmbientRecordBytes))
+        throw InputError(loc, fmt::format("ambient records of {} bytes, expected {}",
+                                          h.value("RECORD_BYTES"), kAmbientRecordBytes));
+    if (h.value("BYTE_ORDER") != "little")
+        throw InputError(loc, "ambient file byte order is not 'little'");
+    return h;
+}
+
+}  // namespace
+
+std::string ambientFileOptions(const AmbientOptions& o) {
+    return fmt::format("-aa {} -ar {} -ad {} -as {} -ab {}", o.accuracy, o.resolution,
+                       o.divisions, o.supersamples, o.bounces);
+}
+
+void encodeAmbientRecord(const AmbientRecord& r, unsigned char* out) {
+    unsigned char* p = out;
+    for (int i = 0; i < 3; ++i) put<double>(p, r.position[i]);
+    putVecF(p, r.normal);
+    for (int i = 0; i < 3; ++i) put<float>(p, float(r.value[i]));
+    put<float>(p, float(r.radius));
+    putVecF(p, r.gradPosition);
+    putVecF(p, r.gradDirection);
+    put<float>(p, float(r.weight));
+    put<int32_t>(p, int32_t(r.level));
+    RP_CHECK(size_t(p - out) == kAmbientRecordBytes);
+}
+
+AmbientRecord decodeAmbientRecord(const unsigned char* in) {
+    const unsigned char* p = in;
+    AmbientRecord r;
+    for (int i = 0; i < 3; ++i) r.position[i] = get<double>(p);
+    r.normal = getVecF(p);
+    for (int i = 0; i < 3; ++i) r.value[i] = get<float>(p);
+    r.radius = get<float>(p);
+    r.gradPosition = getVecF(p);
+    r.gradDirection = getVecF(p);
+    r.weight = get<float>(p);
+    r.level = get<int32_t>(p);
+    return r;
+}
+
+AmbientFileContents readAmbientFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(SourceLoc{path, 0}, "can't open ambient file");
+    Header h = checkHeader(in, path);
+    AmbientFileContents out;
+    out.options = h.value("AMBIENT_OPTIONS");
+    std::vector<unsigned char> data((std::istreambuf_iterator<char>(in)),
+                                    std::istreambuf_iterator<char>());
+    if (data.size() % kAmbientRecordBytes != 0)
+        throw InputError(SourceLoc{path, 0},
+                         fmt::format("truncated ambient file: {} bytes after the {} whole "
+                                     "records",
+                                     data.size() % kAmbientRecordBytes,
+                                     data.size() / kAmbientRecordBytes));
+    size_t n = data.size() / kAmbientRecordBytes;
+    out.records.reserve(n);
+    for (size_t i = 0; i < n; ++i) {
+        AmbientRecord r = decodeAmbientRecord(data.data() + i * kAmbientRecordBytes);
+        double nl = length(r.normal);
+        bool ok = finite(r.position) && finite(r.normal) && finite(r.gradPosition) &&
+                  finite(r.gradDirection) && std::isfinite(r.value.r) &&
+                  std::isfinite(r.value.g) && std::isfinite(r.value.b) &&
+                  std::isfinite(r.radius) && r.radius > 0 && std::isfinite(r.weight) &&
+                  r.level >= 0 && std::fabs(nl - 1) < 1e-3;
+        if (!ok)
+            throw InputError(SourceLoc{path, 0},
+                             fmt::format("corrupt ambient record {} of {}", i + 1, n));
+        r.normal = r.normal / nl;
+        out.records.push_back(r);
+    }
+    return out;
+}
+
+void appendAmbientFile(const std::string& path, const std::string& options,
+                       const std::vector<AmbientRecord>& records) {
+    SourceLoc loc{path, 0};
+    std::vector<unsigned char> data(records.size() * kAmbientRecordBytes);
+    for (size_t i = 0; i < records.size(); ++i)
+        encodeAmbientRecord(records[i], data.data() + i * kAmbientRecordBytes);
+
+    if (std::filesystem::exists(path)) {
+        {
+            std::ifstream in(path, std::ios::binary);
+            if (!in) throw InputError(loc, "can't open ambient file");
+            checkHeader(in, path);
+        }
+        std::ofstream out(path, std::ios::binary | std::ios::app);
+        out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
+        out.flush();
+        if (!out) throw InputError(loc, "error writing to ambient file");
+        return;
+    }
+    std::string tmp = fmt::format("{}.{}.tmp", path, ::getpid());
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) throw InputError(loc, "can't create ambient file");
+        writeHeader(out, makeHeader(options));
+        out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
+        out.flush();
+        if (!out) {
+            std::remove(tmp.c_str());
+            throw InputError(loc, "error writing to ambient file");
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        throw InputError(loc, fmt::format("can't create ambient file: {}", std::strerror(errno)));
+    }
+}
+
+}  // namespace rp::render

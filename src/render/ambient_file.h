@@ -1,0 +1,43 @@
+// The -af ambient file: irradiance cache records kept across runs. A RADIANCE header
+// (FORMAT=radphoton_ambient, the -a options that made the records, the record size)
+// followed by fixed-size little-endian binary records appended by each run, as RADIANCE
+// appends to its own ambient files. Not RADIANCE's own binary AMBVAL layout.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/irradiance_cache.h"
+#include "render/render_options.h"
+
+namespace rp::render {
+
+constexpr const char* kAmbientFormat = "radphoton_ambient";
+constexpr size_t kAmbientRecordBytes = 84;
+
+// "-aa 0.1 -ar 256 -ad 1024 -as 512 -ab 2": the options that decide what records mean,
+// as stored in the header (AMBIENT_OPTIONS=).
+std::string ambientFileOptions(const AmbientOptions& o);
+
+struct AmbientFileContents {
+    std::string options;                 // the AMBIENT_OPTIONS= line ("" if absent)
+    std::vector<AmbientRecord> records;  // in file order
+};
+
+// Reads a whole ambient file. Throws InputError naming `path` for an unreadable file,
+// another format, a different record size, a partial record at the end or a record with
+// non-finite or impossible values.
+AmbientFileContents readAmbientFile(const std::string& path);
+
+// Adds `records` at the end of `path`. A missing file is created with a header holding
+// `options` (written to a temporary file and renamed, so a crash leaves no half header);
+// an existing one is first checked to be an ambient file (InputError otherwise).
+void appendAmbientFile(const std::string& path, const std::string& options,
+                       const std::vector<AmbientRecord>& records);
+
+// The fixed binary layout, exposed for tests: position 3 x f64, normal 3 x f32, value
+// 3 x f32, radius f32, gradPosition 3 x f32, gradDirection 3 x f32, weight f32, level i32.
+void encodeAmbientRecord(const AmbientRecord& r, unsigned char* out);
+AmbientRecord decodeAmbientRecord(const unsigned char* in);
+
+}  // namespace rp::render

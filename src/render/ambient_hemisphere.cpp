@@ -1,0 +1,174 @@
+// Hemisphere sampling for the ambient calculation (see ambient_hemisphere.h).
+#include "render/ambient_hemisphere.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rp::render {
+
+namespace {
+
+struct Division {
+    Color sum;                 // sum of sample radiances
+    double sumB = 0, sumB2 = 0;  // brightness sums, for the division's own variance
+    double prior = 0;          // per-sample variance guessed from the neighbours
+    double error = 0;          // estimated variance of this division's mean
+    double minDistance = 1e10; // nearest surface seen through this division
+    int n = 0;
+};
+
+double meanBrightness(const Division& d) { return d.n > 0 ? d.sumB / d.n : 0; }
+
+}  // namespace
+
+void tangentFrame(const Vec3& n, Vec3& u, Vec3& v) {
+    // Duff, Burgess, Christensen et al. 2017, "Building an Orthonormal Basis, Revisited".
+    double sign = std::copysign(1.0, n.z);
+    double a = -1.0 / (sign + n.z);
+    double b = n.x * n.y * a;
+    u = Vec3(1 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    v = Vec3(b, sign + n.y * n.y * a, -n.y);
+}
+
+HemisphereParams hemisphereDivisions(int divisions, int supersamples, double weight,
+                                     int minTheta) {
+    // RADIANCE compat (ambcomp.c inithemi, RADIANCE 3): theta rows from ad*wt/pi, phi
+    // columns pi times as many, so divisions are roughly square in solid angle.
+    HemisphereParams p;
+    p.thetaDivisions = std::max(minTheta, int(std::sqrt(divisions * weight / kPi) + 0.5));
+    p.phiDivisions = std::max(1, int(kPi * p.thetaDivisions + 0.5));
+    p.superSamples = std::max(0, int(supersamples * weight + 0.5));
+    return p;
+}
+
+HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
+                                    const HemisphereParams& params, HemisphereTracer& tracer,
+                                    Rng& rng) {
+    const int M = std::max(1, params.thetaDivisions);
+    const int N = std::max(1, params.phiDivisions);
+    Vec3 ux, uy;
+    tangentFrame(normal, ux, uy);
+    std::vector<Division> div(size_t(M) * N);
+    HemisphereEstimate est;
+
+    // One jittered sample in division (j, k): sin^2(theta) is uniform for a cosine
+    // density, so rows of equal sin^2 width carry equal weight (Ward et al. 1988).
+    auto shoot = [&](int j, int k) {
+        double sin2 = (j + rng.uniform()) / M;
+        double phi = 2 * kPi * (k + rng.uniform()) / N;
+        double sinT = std::sqrt(sin2), cosT = std::sqrt(std::max(0.0, 1 - sin2));
+        Vec3 dir = normalize(ux * (std::cos(phi) * sinT) + uy * (std::sin(phi) * sinT) +
+                             normal * cosT);
+        HemisphereTracer::Sample s =
+            tracer.trace(origin, dir, params.sampleLevel, params.sampleWeight);
+        Division& d = div[size_t(j) * N + k];
+        double b = s.radiance.brightness();
+        d.sum += s.radiance;
+        d.sumB += b;
+        d.sumB2 += b * b;
+        ++d.n;
+        double dist = s.distance > 0 ? s.distance : 1e10;
+        d.minDistance = std::min(d.minDistance, dist);
+        est.sumInverseDistance += 1 / dist;
+        ++est.samples;
+    };
+
+    for (int j = 0; j < M; ++j)
+        for (int k = 0; k < N; ++k) shoot(j, k);
+
+    if (params.superSamples > 0 && M * N > 1) {
+        // RADIANCE compat (ambcomp.c comperrs): the first variance guess of a division is
+        // the mean of a quarter of the squared brightness differences to its neighbours
+        // (phi wraps around); later its own sample variance takes over.
+        for (int j = 0; j < M; ++j)
+            for (int k = 0; k < N; ++k) {
+                Division& d = div[size_t(j) * N + k];
+                double b = meanBrightness(d), sum = 0;
+                int count = 0;
+                auto add = [&](int jj, int kk) {
+                    double diff = meanBrightness(div[size_t(jj) * N + kk]) - b;
+                    sum += 0.25 * diff * diff;
+                    ++count;
+                };
+                if (j > 0) add(j - 1, k);
+                if (j + 1 < M) add(j + 1, k);
+                if (N > 1) {
+                    add(j, (k + N - 1) % N);
+                    add(j, (k + 1) % N);
+                }
+                d.prior = count ? sum / count : 0;
+                d.error = d.prior;
+            }
+        // Each super-sample goes to the division whose mean is least certain.
+        std::vector<int> heap(div.size());
+        for (size_t i = 0; i < heap.size(); ++i) heap[i] = int(i);
+        auto less = [&](int a, int b) { return div[a].error < div[b].error; };
+        std::make_heap(heap.begin(), heap.end(), less);
+        for (int s = 0; s < params.superSamples; ++s) {
+            std::pop_heap(heap.begin(), heap.end(), less);
+            int i = heap.back();
+            if (div[i].error <= 0) break;  // nothing varies: more samples change nothing
+            shoot(i / N, i % N);
+            Division& d = div[i];
+            double own = (d.sumB2 - d.sumB * d.sumB / d.n) / (d.n - 1);
+            double variance = (d.prior + (d.n - 1) * std::max(0.0, own)) / d.n;
+            d.error = variance / d.n;
+            std::push_heap(heap.begin(), heap.end(), less);
+        }
+    }
+
+    for (const Division& d : div) est.value += d.sum / d.n;
+    est.value = est.value / double(div.size());
+    if (!params.gradients) return est;
+
+    // Row boundaries: sin^2(theta_j-) = j / M.
+    auto sinBound = [&](int j) { return std::sqrt(double(j) / M); };
+    auto thetaBound = [&](int j) { return std::asin(std::min(1.0, sinBound(j))); };
+    auto L = [&](int j, int k) { return meanBrightness(div[size_t(j) * N + (k % N)]); };
+    auto R = [&](int j, int k) { return div[size_t(j) * N + (k % N)].minDistance; };
+
+    // Rotational gradient (Ward & Heckbert 1992, eq. 10 in our sign convention):
+    // dV/d(rotation) = E_cos[L tan(theta) v_phi], with tan and v_phi averaged exactly over
+    // each division so the horizon row stays finite.
+    Vec3 gr;
+    const double sincPhi = N > 1 ? std::sin(kPi / N) / (kPi / N) : 0;
+    for (int k = 0; k < N; ++k) {
+        double phi = 2 * kPi * (k + 0.5) / N;
+        Vec3 vk = ux * -std::sin(phi) + uy * std::cos(phi);
+        double rowSum = 0;
+        for (int j = 0; j < M; ++j) {
+            double t0 = thetaBound(j), t1 = thetaBound(j + 1);
+            double tanAvg = M * ((t1 - std::sin(t1) * std::cos(t1)) -
+                                 (t0 - std::sin(t0) * std::cos(t0)));
+            rowSum += L(j, k) * tanAvg;
+        }
+        gr += vk * (rowSum * sincPhi);
+    }
+    est.gradDirection = gr / (double(M) * N);
+
+    // Translational gradient (Ward & Heckbert 1992, eq. 12): moving the point shifts the
+    // division boundaries over the surfaces seen, by (dx / distance); each boundary
+    // contributes the radiance step across it times its cosine-weighted length.
+    Vec3 gt;
+    for (int k = 0; k < N; ++k) {
+        double phiC = 2 * kPi * (k + 0.5) / N, phiB = 2 * kPi * k / N;
+        Vec3 uk = ux * std::cos(phiC) + uy * std::sin(phiC);
+        Vec3 vkb = ux * -std::sin(phiB) + uy * std::cos(phiB);
+        double radial = 0, tangential = 0;
+        for (int j = 1; j < M; ++j) {
+            double s = sinBound(j), c2 = 1 - s * s;
+            radial += s * c2 * (L(j, k) - L(j - 1, k)) / std::min(R(j, k), R(j - 1, k));
+        }
+        if (N > 1)
+            for (int j = 0; j < M; ++j) {
+                int km = (k + N - 1) % N;
+                tangential += (sinBound(j + 1) - sinBound(j)) * (L(j, k) - L(j, km)) /
+                              std::min(R(j, k), R(j, km));
+            }
+        gt += uk * (2 * std::sin(kPi / N) * radial) + vkb * tangential;
+    }
+    est.gradPosition = gt / kPi;
+    return est;
+}
+
+}  // namespace rp::render

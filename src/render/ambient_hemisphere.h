@@ -1,0 +1,54 @@
+// One irradiance computation of the ambient calculation: stratified cosine-weighted
+// hemisphere sampling over (theta, phi) divisions, -as super-sampling of the divisions
+// that vary most, and Ward & Heckbert's (1992) rotational and translational gradients.
+// Caching, record radii and the -a option logic live in ambient.cpp / irradiance_cache.h.
+#pragma once
+
+#include <vector>
+
+#include "render/ambient.h"
+#include "util/color.h"
+#include "util/rng.h"
+#include "util/vec.h"
+
+namespace rp::render {
+
+// RADIANCE's assumed average reflectance (ambient.h AVGREFL): the factor by which a
+// hemisphere sample's weight drops, and the per-level weight of cached values.
+constexpr double kAverageReflectance = 0.5;
+
+struct HemisphereParams {
+    int thetaDivisions = 1;   // M: rows in sin^2(theta) (equal cosine-weighted measure)
+    int phiDivisions = 1;     // N: columns in phi
+    int superSamples = 0;     // extra samples, given to the divisions with largest variance
+    int sampleLevel = 1;      // ambient level of the sample rays
+    double sampleWeight = 1;  // RADIANCE weight of each sample ray
+    bool gradients = true;    // compute the Ward & Heckbert gradients
+};
+
+// RADIANCE 3 inithemi's division counts for `divisions` (-ad) times `weight`:
+// M = sqrt(ad*wt/pi) + .5 (at least `minTheta`), N = pi*M + .5, and the -as super-sample
+// count as*wt + .5.
+HemisphereParams hemisphereDivisions(int divisions, int supersamples, double weight,
+                                     int minTheta);
+
+struct HemisphereEstimate {
+    Color value;            // mean radiance over the cosine-weighted hemisphere (E / pi)
+    double sumInverseDistance = 0;  // sum of 1/distance over every sample (radius: harmonic mean)
+    int samples = 0;        // rays traced
+    // Gradients of brightness(value) (Color::brightness), not yet normalised:
+    Vec3 gradPosition;      // d value / d position (tangent plane), per unit length
+    Vec3 gradDirection;     // rotation vector gradient: value(N') ~ value + g . (N x N')
+};
+
+// Traces the hemisphere above unit `normal` from `origin`. Allocates its division table
+// per call (not on the lookup hot path; the tracer may recurse into another computation
+// on the same thread, so per-thread scratch could not be shared safely).
+HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
+                                    const HemisphereParams& params, HemisphereTracer& tracer,
+                                    Rng& rng);
+
+// An orthonormal tangent frame (u, v, n) with u x v = n (Duff et al. 2017, branchless).
+void tangentFrame(const Vec3& n, Vec3& u, Vec3& v);
+
+}  // namespace rp::render

@@ -1,0 +1,135 @@
+#include "render/ambient_hemisphere.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render/ambient_test_tracers.h"
+#include "render/irradiance_cache.h"
+
+namespace rp::render {
+namespace {
+
+using testing::ceilingStep;
+using testing::FunctionTracer;
+
+HemisphereParams params(int divisions, int supersamples) {
+    HemisphereParams p = hemisphereDivisions(divisions, supersamples, 1, 3);
+    p.sampleLevel = 1;
+    p.sampleWeight = 0.5;
+    return p;
+}
+
+TEST(AmbientHemisphereTest, DivisionCountsFollowRadiance) {
+    HemisphereParams p = hemisphereDivisions(1024, 512, 1, 3);
+    EXPECT_EQ(p.thetaDivisions, 18);  // sqrt(1024 / pi) + .5
+    EXPECT_EQ(p.phiDivisions, 57);    // pi * 18 + .5
+    EXPECT_EQ(p.superSamples, 512);
+    p = hemisphereDivisions(1024, 512, 0.25, 3);
+    EXPECT_EQ(p.thetaDivisions, 9);
+    EXPECT_EQ(p.superSamples, 128);
+    EXPECT_EQ(hemisphereDivisions(4, 0, 1, 3).thetaDivisions, 3);  // the cache's minimum
+    EXPECT_EQ(hemisphereDivisions(4, 0, 1, 1).thetaDivisions, 1);
+}
+
+TEST(AmbientHemisphereTest, TangentFrameIsOrthonormal) {
+    for (Vec3 n : {Vec3{0, 0, 1}, Vec3{0, 0, -1}, normalize(Vec3{1, 2, -3}), Vec3{1, 0, 0}}) {
+        Vec3 u, v;
+        tangentFrame(n, u, v);
+        EXPECT_NEAR(length(u), 1, 1e-12);
+        EXPECT_NEAR(length(v), 1, 1e-12);
+        EXPECT_NEAR(dot(u, n), 0, 1e-12);
+        EXPECT_NEAR(dot(v, n), 0, 1e-12);
+        Vec3 c = cross(u, v);
+        EXPECT_NEAR(length(c - n), 0, 1e-12);
+    }
+}
+
+// Every sample leaves through the hemisphere with the right density: the mean of
+// cos(theta) under cosine weighting is 2/3, of cos^2 it is 1/2.
+TEST(AmbientHemisphereTest, CosineWeightedMoments) {
+    const Vec3 n = normalize(Vec3{-1, 0.5, 0.2});
+    FunctionTracer tracer([&](const Vec3&, const Vec3& d) {
+        double c = dot(d, n);
+        EXPECT_GE(c, -1e-12);
+        return HemisphereTracer::Sample{Color{c, c * c, 1}, 1};
+    });
+    Rng rng(11, RngDomain::Test, 0);
+    HemisphereParams p = params(2048, 0);
+    HemisphereEstimate e = sampleHemisphere({0, 0, 0}, n, p, tracer, rng);
+    EXPECT_NEAR(e.value.r, 2.0 / 3, 2e-3);
+    EXPECT_NEAR(e.value.g, 0.5, 2e-3);
+    EXPECT_DOUBLE_EQ(e.value.b, 1);
+    EXPECT_EQ(e.samples, p.thetaDivisions * p.phiDivisions);
+    EXPECT_NEAR(e.sumInverseDistance, e.samples, 1e-9);
+}
+
+// Super-samples go where the radiance varies: a small bright patch near the zenith
+// makes them land there, and the estimate stays unbiased.
+TEST(AmbientHemisphereTest, SuperSamplesGoWhereRadianceVaries) {
+    long nearPatch = 0;
+    FunctionTracer tracer([&](const Vec3&, const Vec3& d) {
+        bool patch = d.z > 0.95 && d.x > 0;
+        if (d.z > 0.9) ++nearPatch;
+        return HemisphereTracer::Sample{Color::grey(patch ? 10 : 0), 1};
+    });
+    Rng rng(12, RngDomain::Test, 0);
+    HemisphereParams p = params(256, 400);
+    HemisphereEstimate e = sampleHemisphere({0, 0, 0}, {0, 0, 1}, p, tracer, rng);
+    EXPECT_EQ(e.samples, p.thetaDivisions * p.phiDivisions + 400);
+    // cos^2 > 0.9025 covers 1 - 0.9025 of the cosine measure; half of it is bright.
+    EXPECT_NEAR(e.value.r, 10 * 0.5 * (1 - 0.95 * 0.95), 0.05);
+    // Zenith rows (d.z > 0.9: 19% of the measure) get most of the 400 extra samples.
+    EXPECT_GT(nearPatch, 0.19 * p.thetaDivisions * p.phiDivisions + 200);
+}
+
+// Radiance 1 + d.x: V(N) = 1 + (2/3) N.x, so turning N from z toward x changes V by
+// (2/3) sin(angle); with our convention V(N') ~ V + g . (N x N'), g.y = 2/3.
+TEST(AmbientHemisphereTest, RotationalGradientMatchesAnalytic) {
+    FunctionTracer tracer([](const Vec3&, const Vec3& d) {
+        return HemisphereTracer::Sample{Color::grey(1 + d.x), 1};
+    });
+    Rng rng(13, RngDomain::Test, 0);
+    HemisphereEstimate e = sampleHemisphere({0, 0, 0}, {0, 0, 1}, params(1024, 0), tracer, rng);
+    EXPECT_NEAR(e.value.r, 1, 5e-3);
+    EXPECT_NEAR(e.gradDirection.y, 2.0 / 3, 0.02);
+    EXPECT_NEAR(e.gradDirection.x, 0, 0.02);
+    EXPECT_NEAR(e.gradDirection.z, 0, 1e-12);
+}
+
+// A ceiling at height 1, radiance 1 for x < 0 and 3 for x >= 0: seen from (x, 0, 0) the
+// cosine-weighted fraction of the bright half is 1/2 + x / (2 sqrt(1 + x^2)), so
+// V(x) = 2 + x / sqrt(1 + x^2) and dV/dx = 1 at x = 0 (Ward & Heckbert's set-up).
+double stepValue(double x) { return 2 + x / std::sqrt(1 + x * x); }
+
+TEST(AmbientHemisphereTest, TranslationalGradientMatchesAnalytic) {
+    FunctionTracer tracer(ceilingStep(1, 1, 3));
+    Rng rng(14, RngDomain::Test, 0);
+    HemisphereEstimate e = sampleHemisphere({0, 0, 0}, {0, 0, 1}, params(4096, 0), tracer, rng);
+    EXPECT_NEAR(e.value.r, stepValue(0), 0.01);
+    EXPECT_NEAR(e.gradPosition.x, 1, 0.1);
+    EXPECT_NEAR(e.gradPosition.y, 0, 0.05);
+    EXPECT_NEAR(e.gradPosition.z, 0, 1e-12);
+}
+
+TEST(AmbientHemisphereTest, GradientsImproveExtrapolation) {
+    FunctionTracer tracer(ceilingStep(1, 1, 3));
+    Rng rng(15, RngDomain::Test, 0);
+    HemisphereEstimate e = sampleHemisphere({0, 0, 0}, {0, 0, 1}, params(1024, 512), tracer, rng);
+    AmbientRecord rec;
+    rec.normal = {0, 0, 1};
+    rec.value = e.value;
+    rec.gradPosition = e.gradPosition / e.value.brightness();
+    rec.gradDirection = e.gradDirection / e.value.brightness();
+    rec.radius = 2;
+    for (double x : {-0.2, 0.1, 0.25}) {
+        Vec3 p{x, 0, 0};
+        double truth = stepValue(x);
+        double with = extrapolate(rec, p, rec.normal, true).r;
+        double without = extrapolate(rec, p, rec.normal, false).r;
+        EXPECT_LT(std::fabs(with - truth), 0.5 * std::fabs(without - truth)) << "x " << x;
+    }
+}
+
+}  // namespace
+}  // namespace rp::render

@@ -1,0 +1,120 @@
+// The direct calculation of the backward pass (RADIANCE source.c direct(), srcsamp.c,
+// virtuals.c, m_mirror's virtual sources): the scene's light sources as the renderer sees
+// them, their subdivision into samples at -ds resolution with -dj jitter, the sorted
+// source test with the -dt threshold and -dc certainty, and virtual sources relayed by
+// planar mirrors (-dr, -dp). Shadow rays are traced by the caller's ShadowOracle, which
+// knows materials (glass and trans pass light, mirrors reflect it, sources emit).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "geometry/scene_geometry.h"
+#include "material/material.h"
+#include "render/render_options.h"
+#include "render/source_list.h"
+#include "scene/primitive.h"
+#include "util/color.h"
+#include "util/rng.h"
+#include "util/vec.h"
+
+namespace rp::render {
+
+// What a shadow ray does where it meets a surface (answered by the renderer core).
+struct ShadowEvent {
+    enum class Kind : uint8_t {
+        Opaque,    // blocked: the sample contributes nothing
+        Transmit,  // continue straight on, light multiplied by `colour` (glass, trans)
+        Reflect,   // planar mirror: continue reflected, light multiplied by `colour`
+        Emit,      // a light source surface: `colour` is its radiance toward the ray origin
+    } kind = Kind::Opaque;
+    Color colour;
+};
+
+// Per-thread access to materials for shadow rays. Implemented by the renderer core.
+class ShadowOracle {
+public:
+    virtual ~ShadowOracle() = default;
+    // The first surface along `ray` (t < ray.tmax); antimatter and other invisible
+    // surfaces are already skipped.
+    virtual std::optional<Hit> closestHit(const Ray& ray) = 0;
+    // What a shadow ray travelling in `dir` does at `hit`.
+    virtual ShadowEvent event(const Hit& hit, const Vec3& dir) = 0;
+    // Radiance of distant source `source` (index into SceneGeometry::sources()) seen in
+    // unit direction `dir` (patterns applied); zero if it is not a light source.
+    virtual Color distantRadiance(int32_t source, const Vec3& dir) = 0;
+};
+
+// The point being shaded.
+struct DirectPoint {
+    Vec3 point;       // hit point
+    Vec3 normal;      // shading normal on the side the ray came from
+    Vec3 geomNormal;  // geometric normal on that side (for spawn offsets)
+    const Hit* hit = nullptr;  // the hit (spawnRay/spawnSegment offsets)
+    bool transmits = false;    // the material transmits: sources behind count too
+    // The ray's weight (RADIANCE r->rweight): -dt is relative to it (threshold dt/weight)
+    // and sources are subdivided less for low-weight rays (-ds/weight), as in RADIANCE.
+    double weight = 1;
+};
+
+// RADIANCE's coefficient function for one source sample: the material's BRDF*cos for
+// light from unit direction `toLight`, given the sample's solid angle `omega`
+// (material::evaluate). Zero means "this sample cannot contribute".
+// compute() multiplies it by omega: a sample contributes
+// coefficient(toLight, omega) * omega * radiance (so a coefficient of cos gives irradiance).
+using DirectCoefficient = std::function<Color(const Vec3& toLight, double omega)>;
+
+// Where we differ from RADIANCE, and why (details beside the code):
+//  - subdivision (source_sampling.h): polygon cells are clipped exactly against the
+//    polygon and get their exact solid angle (RADIANCE aims at bounding-box cells and
+//    scales the whole source's area); spheres and distant sources use equal-solid-angle
+//    cells of their direction cone; at most 64 cells per source (MAXSPART) throughout;
+//  - untested samples (-dt) are scaled by this call's found/estimated brightness ratio,
+//    not by RADIANCE's per-source hit statistics gathered over the run (those depend on
+//    the order rays are traced in, i.e. on threads);
+//  - the -dp pretest is geometric (opaque surfaces only; see source_list.h);
+//  - spotlights: the cone cut-off is applied; the focal length (a virtual emission point
+//    behind the spot) is not;
+//  - a shadow ray that reaches its target without the accelerator reporting the source
+//    (grazing) is given the source's emission there, since the target is on it.
+class DirectLighting {
+public:
+    // Builds the source list by RADIANCE's rules (source.c marksources): surfaces whose
+    // material is light, spotlight, illum or glow with positive radius (local glows
+    // only illuminate within their radius), and distant `source`s with light-type
+    // materials (a glow on a `source`, such as a sky, is left to the ambient calculation:
+    // RADIANCE's SSKIP). Zero-radiance sources are dropped. With -dr > 0 and mirrors in
+    // the scene, virtual sources are added (virtuals.c) unless `virtualSources` is false
+    // (photon-map mode switches them off).
+    DirectLighting(const Scene& scene, const SceneGeometry& geometry,
+                   const DirectOptions& options, bool virtualSources = true);
+    ~DirectLighting();
+
+    // Direct contribution at `at`: sum over sources and their samples of
+    // coefficient(toLight, omega) * radiance arriving along the shadow ray, honouring
+    // -dt/-dc (untested sources estimated as RADIANCE does) and -dj.
+    Color compute(const DirectPoint& at, const DirectCoefficient& coefficient,
+                  ShadowOracle& oracle, Rng& rng) const;
+
+    // Whether `prim` is the surface of a (real) direct source: rays descended from
+    // ambient or sampled specular rays must not count its emission again
+    // (RADIANCE badcomponent). A local glow counts only within its radius of `from`.
+    bool isSourceSurface(int32_t prim, const Vec3& from) const;
+    // Whether distant source `source` is in the list (a `source` with a light material).
+    bool isDistantSource(int32_t source) const;
+
+    size_t sourceCount() const;         // real sources
+    size_t virtualSourceCount() const;  // relayed by mirrors
+
+    // The list itself (real sources first, then virtual ones), for diagnostics and tests.
+    const SourceList& sourceList() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rp::render

@@ -1,0 +1,465 @@
+// The direct calculation against closed-form irradiance: parallel squares (form factor),
+// spheres, disks, distant sources, occluders, glass, spotlights, the -dt/-dc source test
+// and mirror-relayed virtual sources. The oracle here is a stand-in for the renderer:
+// light materials emit their radiance, glass transmits 0.9, mirrors reflect 0.9, anything
+// else is opaque.
+#include "render/direct.h"
+#include "render/source_sampling.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "light/light_sources.h"
+#include "scene/reader.h"
+
+namespace rp::render {
+namespace {
+
+class TestOracle : public ShadowOracle {
+public:
+    TestOracle(const Scene& scene, const SceneGeometry& geo) : scene_(scene), geo_(geo) {}
+    std::optional<Hit> closestHit(const Ray& ray) override {
+        ++rays;
+        return geo_.closestHit(ray);
+    }
+    ShadowEvent event(const Hit& hit, const Vec3&) override {
+        int32_t mat = light::findMaterial(scene_, hit.prim);
+        if (mat == kVoid) return {};
+        const Primitive& m = scene_.prims[size_t(mat)];
+        switch (m.type) {
+        case PrimType::Light:
+        case PrimType::Spotlight:
+        case PrimType::Glow:
+        case PrimType::Illum:
+            return {ShadowEvent::Kind::Emit, {m.rargs[0], m.rargs[1], m.rargs[2]}};
+        case PrimType::Glass: return {ShadowEvent::Kind::Transmit, Color::grey(0.9)};
+        case PrimType::Mirror: return {ShadowEvent::Kind::Reflect, Color::grey(0.9)};
+        default: return {};
+        }
+    }
+    Color distantRadiance(int32_t source, const Vec3&) override {
+        int32_t mat = light::findMaterial(scene_, geo_.sources()[size_t(source)].prim);
+        const Primitive& m = scene_.prims[size_t(mat)];
+        return {m.rargs[0], m.rargs[1], m.rargs[2]};
+    }
+    long rays = 0;
+
+private:
+    const Scene& scene_;
+    const SceneGeometry& geo_;
+};
+
+// Irradiance coefficient for a surface with normal n: cos (compute() adds omega).
+DirectCoefficient cosine(const Vec3& n) {
+    return [n](const Vec3& toLight, double) {
+        double c = dot(toLight, n);
+        return c > 0 ? Color::grey(c) : Color{};
+    };
+}
+
+// Form factor from a differential area to a parallel rectangle [0,x]x[0,y] at height h
+// with a corner above it (Howell's catalogue, C-12), extended as an odd function of x, y.
+double cornerFactor(double x, double y, double h) {
+    double X = x / h, Y = y / h;
+    double sx = std::sqrt(1 + X * X), sy = std::sqrt(1 + Y * Y);
+    return (X / sx * std::atan(Y / sx) + Y / sy * std::atan(X / sy)) / (2 * kPi);
+}
+// Irradiance from a parallel rectangle [x1,x2]x[y1,y2] (relative to the foot of the
+// point) of radiance L at height h.
+double rectIrradiance(double L, double x1, double x2, double y1, double y2, double h) {
+    double f = cornerFactor(x2, y2, h) - cornerFactor(x1, y2, h) - cornerFactor(x2, y1, h) +
+               cornerFactor(x1, y1, h);
+    return L * kPi * f;
+}
+
+// A downward-facing square of side s centred above the origin at height h.
+std::string squareDown(const std::string& mod, const std::string& name, double cx, double cy,
+                       double s, double h) {
+    double a = s / 2;
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "%s polygon %s 0 0 12 %g %g %g %g %g %g %g %g %g %g %g %g\n",
+                  mod.c_str(), name.c_str(), cx - a, cy - a, h, cx - a, cy + a, h, cx + a, cy + a,
+                  h, cx + a, cy - a, h);
+    return buf;
+}
+
+struct Fixture {
+    explicit Fixture(const std::string& text) : scene(parseScene(text)), geo(scene) {}
+    Color irradiance(const DirectOptions& opt, const Vec3& p, const Vec3& n, uint64_t seed = 1,
+                     bool virtualSources = true, long* rays = nullptr) {
+        DirectLighting direct(scene, geo, opt, virtualSources);
+        TestOracle oracle(scene, geo);
+        DirectPoint at;
+        at.point = p;
+        at.normal = at.geomNormal = n;
+        Rng rng(seed, RngDomain::Test, 0);
+        Color c = direct.compute(at, cosine(n), oracle, rng);
+        if (rays) *rays = oracle.rays;
+        return c;
+    }
+    Scene scene;
+    SceneGeometry geo;
+};
+
+const std::string kLight = "void light bright 0 0 3 100 100 100\n";
+
+TEST(DirectSquare, MatchesFormFactor) {
+    Fixture f(kLight + squareDown("bright", "lamp", 0, 0, 0.5, 1));
+    double exact = rectIrradiance(100, -0.25, 0.25, -0.25, 0.25, 1);
+    DirectOptions opt;
+    opt.sampling = 0.01;
+    EXPECT_NEAR(f.irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, exact, 0.005 * exact);
+    opt.sampling = 0.2;
+    EXPECT_NEAR(f.irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, exact, 0.03 * exact);
+    opt.sampling = 0;
+    EXPECT_NEAR(f.irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, exact, 0.03 * exact);
+}
+
+TEST(DirectSquare, OffAxisAndTilted) {
+    // Point off to the side: the square spans x in [0.75, 1.25] relative to it.
+    Fixture f(kLight + squareDown("bright", "lamp", 0, 0, 0.5, 1));
+    double exact = rectIrradiance(100, -1.25, -0.75, -0.25, 0.25, 1);
+    DirectOptions opt;
+    opt.sampling = 0.01;
+    EXPECT_NEAR(f.irradiance(opt, {1, 0, 0}, {0, 0, 1}).r, exact, 0.005 * exact);
+}
+
+TEST(DirectSquare, ConcavePolygonSolidAngleIsExact) {
+    // An L-shaped light: three unit-ish squares; the solid angles of the cells must sum
+    // to the L's, and irradiance must equal the sum over its three squares.
+    std::string text = kLight +
+                       "bright polygon ell 0 0 18  0 0 1  0 1 1  0.5 1 1  0.5 0.5 1  1 0.5 1  1 0 1\n";
+    Fixture f(text);
+    double exact = rectIrradiance(100, 0, 0.5, 0, 1, 1) + rectIrradiance(100, 0.5, 1, 0, 0.5, 1);
+    DirectOptions opt;
+    opt.sampling = 0.01;
+    EXPECT_NEAR(f.irradiance(opt, {0.1, 0.1, 0}, {0, 0, 1}).r,
+                rectIrradiance(100, -0.1, 0.4, -0.1, 0.9, 1) +
+                    rectIrradiance(100, 0.4, 0.9, -0.1, 0.4, 1),
+                0.005 * exact);
+    // Sum of sample solid angles = exact solid angle of the L (triangles from the point).
+    DirectLighting direct(f.scene, f.geo, opt);
+    std::vector<SourceSample> samples;
+    Rng rng(3, RngDomain::Test, 0);
+    Vec3 from{0.1, 0.1, 0};
+    opt.jitter = 1;
+    sampleSource(direct.sourceList(), direct.sourceList().sources[0], f.geo.shapes(), from, opt, 1,
+                 rng, samples);
+    double sum = 0;
+    for (const auto& s : samples) sum += s.omega;
+    auto tri = [&](Vec3 a, Vec3 b, Vec3 c) { return triangleSolidAngle(from, a, b, c); };
+    double omega = tri({0, 0, 1}, {0, 1, 1}, {0.5, 1, 1}) + tri({0, 0, 1}, {0.5, 1, 1}, {0.5, 0, 1}) +
+                   tri({0.5, 0, 1}, {0.5, 0.5, 1}, {1, 0.5, 1}) +
+                   tri({0.5, 0, 1}, {1, 0.5, 1}, {1, 0, 1});
+    EXPECT_NEAR(sum, omega, 1e-9 * omega);
+    for (const auto& s : samples) {
+        // Jittered samples stay on the L.
+        bool inLeft = s.target.x >= -1e-9 && s.target.x <= 0.5 + 1e-9 && s.target.y >= -1e-9 &&
+                      s.target.y <= 1 + 1e-9;
+        bool inRight = s.target.x >= 0.5 - 1e-9 && s.target.x <= 1 + 1e-9 &&
+                       s.target.y >= -1e-9 && s.target.y <= 0.5 + 1e-9;
+        EXPECT_TRUE(inLeft || inRight) << s.target.x << " " << s.target.y;
+    }
+}
+
+TEST(DirectSphere, MatchesSinSquared) {
+    Fixture f(kLight + "bright sphere ball 0 0 4 0 0 2 0.1\n");
+    double exact = 100 * kPi * 0.01 / 4;  // L pi (r/d)^2
+    DirectOptions opt;
+    for (double ds : {0.0, 0.01, 0.2}) {
+        opt.sampling = ds;
+        EXPECT_NEAR(f.irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, exact, 0.005 * exact) << ds;
+    }
+    // Inside the sphere: nothing (it emits outward).
+    EXPECT_EQ(f.irradiance(opt, {0, 0, 2.05}, {0, 0, 1}).r, 0);
+}
+
+TEST(DirectRing, DiskOnAxis) {
+    Fixture f(kLight + "bright ring disk 0 0 8 0 0 2 0 0 -1 0 0.5\n");
+    double exact = 100 * kPi * 0.25 / (0.25 + 4);  // L pi r^2 / (r^2 + h^2)
+    DirectOptions opt;
+    opt.sampling = 0.01;
+    EXPECT_NEAR(f.irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, exact, 0.01 * exact);
+    opt.sampling = 0;
+    EXPECT_NEAR(f.irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, exact, 0.03 * exact);
+}
+
+TEST(DirectCylinder, FarAwayLooksLikeItsProjection) {
+    // A thin tube far away: omega ~ projected area (2 r L) / d^2.
+    Fixture f(kLight + "bright cylinder tube 0 0 7 -0.5 0 10 0.5 0 10 0.05\n");
+    double exact = 100 * (2 * 0.05 * 1.0) / 100;
+    DirectOptions opt;
+    for (double ds : {0.0, 0.01, 0.2}) {
+        opt.sampling = ds;
+        EXPECT_NEAR(f.irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, exact, 0.02 * exact) << ds;
+    }
+}
+
+TEST(DirectDistant, OmegaTimesCosine) {
+    Fixture f("void light sun 0 0 3 1000 1000 1000\n"
+              "sun source s 0 0 4 0 1 1 0.5\n"
+              "void glow sky 0 0 4 1 1 1 0\nsky source skydome 0 0 4 0 0 1 180\n");
+    double omega = 2 * kPi * (1 - std::cos(0.25 * kPi / 180));
+    double exact = 1000 * omega * std::cos(kPi / 4);
+    DirectOptions opt;
+    for (double ds : {0.0, 0.2, 0.001}) {
+        opt.sampling = ds;
+        EXPECT_NEAR(f.irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, exact, 0.002 * exact) << ds;
+    }
+    DirectLighting direct(f.scene, f.geo, opt);
+    EXPECT_EQ(direct.sourceCount(), 1u);  // the sky glow is left to the ambient calculation
+    EXPECT_TRUE(direct.isDistantSource(0));
+    EXPECT_FALSE(direct.isDistantSource(1));
+}
+
+TEST(DirectShadow, OccluderGlassAndBackSide) {
+    const std::string lamp = kLight + squareDown("bright", "lamp", 0, 0, 0.5, 1);
+    DirectOptions opt;
+    opt.sampling = 0.01;
+    double open = Fixture(lamp).irradiance(opt, {0, 0, 0}, {0, 0, 1}).r;
+    ASSERT_GT(open, 0);
+    std::string board = "void plastic grey 0 0 5 .5 .5 .5 0 0\n" +
+                        squareDown("grey", "board", 0, 0, 2, 0.5);
+    EXPECT_EQ(Fixture(lamp + board).irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, 0);
+    std::string pane = "void glass clear 0 0 3 .96 .96 .96\n" +
+                       squareDown("clear", "pane", 0, 0, 2, 0.5);
+    EXPECT_NEAR(Fixture(lamp + pane).irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, 0.9 * open,
+                1e-9 * open);
+    // Two panes: 0.81.
+    std::string pane2 = squareDown("clear", "pane2", 0, 0, 2, 0.7);
+    EXPECT_NEAR(Fixture(lamp + pane + pane2).irradiance(opt, {0, 0, 0}, {0, 0, 1}).r,
+                0.81 * open, 1e-9 * open);
+    // Above the lamp, looking down at its back: nothing.
+    EXPECT_EQ(Fixture(lamp).irradiance(opt, {0, 0, 2}, {0, 0, -1}).r, 0);
+    // Another light in between blocks (it is not the source being sampled). With -dt 0:
+    // a blocked bright source lowers the estimate of untested samples of the other.
+    opt.threshold = 0;
+    std::string other = "void light dim 0 0 3 1 1 1\n" + squareDown("dim", "other", 0, 0, 2, 0.5);
+    Color c = Fixture(lamp + other).irradiance(opt, {0, 0, 0}, {0, 0, 1});
+    double otherOnly =
+        Fixture("void light dim 0 0 3 1 1 1\n" + squareDown("dim", "other", 0, 0, 2, 0.5))
+            .irradiance(opt, {0, 0, 0}, {0, 0, 1})
+            .r;
+    EXPECT_NEAR(c.r, otherOnly, 1e-9);
+}
+
+TEST(DirectSpotlight, OutsideConeIsDark) {
+    Fixture f("void spotlight spot 0 0 7 100 100 100 30 0 0 -1\n" +
+              squareDown("spot", "lamp", 0, 0, 0.2, 2));
+    DirectOptions opt;
+    double below = f.irradiance(opt, {0, 0, 0}, {0, 0, 1}).r;
+    // The unit-length aim vector puts the focus 1 m behind the lamp: (d / (d + 1))^2.
+    double focus = (2.0 / 3.0) * (2.0 / 3.0);
+    EXPECT_NEAR(below, focus * rectIrradiance(100, -0.1, 0.1, -0.1, 0.1, 2), 0.01 * below);
+    EXPECT_EQ(f.irradiance(opt, {5, 0, 0}, {0, 0, 1}).r, 0);
+}
+
+TEST(DirectGlow, OnlyWithinItsRadius) {
+    Fixture f("void glow warm 0 0 4 10 10 10 3\n" + squareDown("warm", "panel", 0, 0, 0.5, 1));
+    DirectOptions opt;
+    EXPECT_GT(f.irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, 0);
+    EXPECT_EQ(f.irradiance(opt, {5, 0, 0}, {0, 0, 1}).r, 0);
+    DirectLighting direct(f.scene, f.geo, opt);
+    int32_t panel = direct.sourceList().sources[0].light.prim;
+    EXPECT_TRUE(direct.isSourceSurface(panel, {0, 0, 0}));
+    EXPECT_FALSE(direct.isSourceSurface(panel, {5, 0, 0}));
+    // A glow of radius 0 is no direct source at all.
+    Fixture g("void glow faint 0 0 4 10 10 10 0\n" + squareDown("faint", "panel", 0, 0, 0.5, 1));
+    EXPECT_EQ(DirectLighting(g.scene, g.geo, opt).sourceCount(), 0u);
+}
+
+std::string severalLights() {
+    std::string t = "void light a 0 0 3 100 100 100\nvoid light b 0 0 3 5 5 5\n"
+                    "void light c 0 0 3 1 1 1\nvoid plastic grey 0 0 5 .5 .5 .5 0 0\n";
+    t += squareDown("a", "la", 0, 0, 0.3, 1.5);
+    t += squareDown("b", "lb", 1, 0, 0.3, 1.5);
+    t += squareDown("b", "lb2", -1, 1, 0.3, 1.2);
+    t += squareDown("c", "lc", 0, -2, 0.3, 1);
+    t += squareDown("c", "lc2", 2, 2, 0.3, 1);
+    t += squareDown("grey", "shade", 0.667, 0, 0.4, 1);  // hides lb from the origin
+    return t;
+}
+
+TEST(DirectThreshold, DefaultCloseToTestingAll) {
+    Fixture f(severalLights());
+    DirectOptions all;
+    all.threshold = 0;
+    long raysAll = 0, raysDefault = 0;
+    double exact = f.irradiance(all, {0, 0, 0}, {0, 0, 1}, 1, true, &raysAll).r;
+    DirectOptions def;
+    double approx = f.irradiance(def, {0, 0, 0}, {0, 0, 1}, 1, true, &raysDefault).r;
+    EXPECT_NEAR(approx, exact, 0.05 * exact);
+    EXPECT_LE(raysDefault, raysAll);
+    // dt = 0 tests every sample: as many shadow rays as samples of lights in view.
+    DirectLighting direct(f.scene, f.geo, all);
+    EXPECT_EQ(direct.sourceCount(), 5u);
+    // -dc 1: what is left untested is bounded by dt times the result.
+    DirectOptions sure;
+    sure.certainty = 1;
+    double certain = f.irradiance(sure, {0, 0, 0}, {0, 0, 1}).r;
+    EXPECT_NEAR(certain, exact, sure.threshold * exact);
+}
+
+TEST(DirectThreshold, HighThresholdEstimatesUntested) {
+    Fixture f(severalLights());
+    DirectOptions all;
+    all.threshold = 0;
+    long raysAll = 0, raysFew = 0;
+    double exact = f.irradiance(all, {0, 0, 0}, {0, 0, 1}, 1, true, &raysAll).r;
+    DirectOptions few;
+    few.threshold = 0.5;
+    few.certainty = 0;
+    double approx = f.irradiance(few, {0, 0, 0}, {0, 0, 1}, 1, true, &raysFew).r;
+    EXPECT_LT(raysFew, raysAll);
+    EXPECT_NEAR(approx, exact, 0.2 * exact);
+}
+
+TEST(DirectVirtual, MirrorRelaysTheLight) {
+    // Lamp 2 above a mirror floor; the point faces down so it sees the lamp only in the
+    // mirror: the image is the lamp reflected to z = -2, 3 below the point.
+    std::string text = kLight + squareDown("bright", "lamp", 0, 0, 0.5, 2) +
+                       "void mirror silver 0 0 3 .9 .9 .9\n"
+                       "silver polygon floor 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n";
+    Fixture f(text);
+    DirectOptions opt;
+    opt.sampling = 0.01;
+    double exact = 0.9 * rectIrradiance(100, -1.25, -0.75, -0.25, 0.25, 3);
+    EXPECT_NEAR(f.irradiance(opt, {1, 0, 1}, {0, 0, -1}).r, exact, 0.01 * exact);
+    DirectLighting direct(f.scene, f.geo, opt);
+    EXPECT_EQ(direct.sourceCount(), 1u);
+    EXPECT_EQ(direct.virtualSourceCount(), 1u);
+    opt.relays = 0;
+    EXPECT_EQ(f.irradiance(opt, {1, 0, 1}, {0, 0, -1}).r, 0);
+    opt.relays = 2;
+    EXPECT_EQ(f.irradiance(opt, {1, 0, 1}, {0, 0, -1}, 1, /*virtualSources=*/false).r, 0);
+    // Facing up, the point sees the lamp directly and not its image.
+    double direct1 = f.irradiance(opt, {1, 0, 1}, {0, 0, 1}).r;
+    EXPECT_NEAR(direct1, rectIrradiance(100, -1.25, -0.75, -0.25, 0.25, 1), 0.01 * direct1);
+}
+
+TEST(DirectVirtual, SmallMirrorOnlyWhereItIs) {
+    // A small mirror: the image is seen only through it.
+    std::string text = kLight + squareDown("bright", "lamp", 0, 0, 0.5, 2) +
+                       "void mirror silver 0 0 3 .9 .9 .9\n"
+                       "silver polygon m 0 0 12 -0.2 -0.2 0 0.2 -0.2 0 0.2 0.2 0 -0.2 0.2 0\n";
+    Fixture f(text);
+    DirectOptions opt;
+    EXPECT_GT(f.irradiance(opt, {0, 0, 1}, {0, 0, -1}).r, 0);
+    EXPECT_EQ(f.irradiance(opt, {3, 0, 1}, {0, 0, -1}).r, 0);
+}
+
+TEST(DirectVirtual, DistantSourceInAMirror) {
+    Fixture f("void light sun 0 0 3 1000 1000 1000\nsun source s 0 0 4 0 1 1 0.5\n"
+              "void mirror silver 0 0 3 .9 .9 .9\n"
+              "silver polygon floor 0 0 12 -50 -50 0 50 -50 0 50 50 0 -50 50 0\n");
+    double omega = 2 * kPi * (1 - std::cos(0.25 * kPi / 180));
+    double exact = 0.9 * 1000 * omega * std::cos(kPi / 4);
+    DirectOptions opt;
+    EXPECT_NEAR(f.irradiance(opt, {0, 0, 1}, {0, 0, -1}).r, exact, 0.002 * exact);
+    // Under the mirror the sun is blocked and no image is seen.
+    EXPECT_EQ(f.irradiance(opt, {0, 0, -1}, {0, 0, 1}).r, 0);
+}
+
+TEST(DirectVirtual, TwoRelays) {
+    // A corner of two mirrors: floor (x in [0,5]) and wall x = 0 facing +x. Each single
+    // reflection and both orders of the double one make a virtual source.
+    std::string text = kLight + squareDown("bright", "lamp", 1, 0, 0.5, 2) +
+                       "void mirror silver 0 0 3 .9 .9 .9\n"
+                       "silver polygon floor 0 0 12 0 -5 0 5 -5 0 5 5 0 0 5 0\n"
+                       "silver polygon wall 0 0 12 0 -5 0 0 5 0 0 5 5 0 -5 5\n";
+    Fixture f(text);
+    DirectOptions opt;
+    opt.relays = 1;
+    EXPECT_EQ(DirectLighting(f.scene, f.geo, opt).virtualSourceCount(), 2u);
+    const Vec3 n = normalize(Vec3{-1, 0, -1});
+    double one = f.irradiance(opt, {2, 0, 1}, n).r;
+    opt.relays = 2;
+    EXPECT_EQ(DirectLighting(f.scene, f.geo, opt).virtualSourceCount(), 4u);
+    double two = f.irradiance(opt, {2, 0, 1}, n).r;
+    EXPECT_GT(one, 0);
+    EXPECT_GT(two, one);  // the doubly reflected image (below, behind the wall) adds light
+}
+
+TEST(DirectVirtual, PretestDropsHiddenMirrors) {
+    // An opaque board between the mirror floor and the lamp: no mirror point sees it.
+    std::string base = kLight + squareDown("bright", "lamp", 0, 0, 0.5, 2) +
+                       "void mirror silver 0 0 3 .9 .9 .9\n"
+                       "silver polygon floor 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n";
+    Fixture opaque(base + "void plastic grey 0 0 5 .5 .5 .5 0 0\n" +
+                   squareDown("grey", "board", 0, 0, 12, 1));
+    DirectOptions opt;
+    EXPECT_EQ(DirectLighting(opaque.scene, opaque.geo, opt).virtualSourceCount(), 0u);
+    opt.pretest = 0;  // -dp 0: always keep (and always test) the full path
+    EXPECT_EQ(DirectLighting(opaque.scene, opaque.geo, opt).virtualSourceCount(), 1u);
+    opt.pretest = 512;
+    Fixture glass(base + "void glass clear 0 0 3 .96 .96 .96\n" +
+                  squareDown("clear", "pane", 0, 0, 12, 1));
+    EXPECT_EQ(DirectLighting(glass.scene, glass.geo, opt).virtualSourceCount(), 1u);
+}
+
+TEST(DirectVirtual, BackOfAMirrorRelaysNothing) {
+    // The mirror faces down, away from the lamp above it.
+    Fixture f(kLight + squareDown("bright", "lamp", 0, 0, 0.5, 2) +
+              "void mirror silver 0 0 3 .9 .9 .9\n"
+              "silver polygon floor 0 0 12 -5 -5 0 -5 5 0 5 5 0 5 -5 0\n");
+    DirectOptions opt;
+    EXPECT_EQ(DirectLighting(f.scene, f.geo, opt).virtualSourceCount(), 0u);
+}
+
+TEST(DirectPointOnSurface, SpawnsOffTheHitSurface) {
+    Fixture f(kLight + squareDown("bright", "lamp", 0, 0, 0.5, 1) +
+              "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+              "grey polygon floor 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n");
+    std::optional<Hit> hit = f.geo.closestHit({{0.1, 0, 0.5}, {0, 0, -1}});
+    ASSERT_TRUE(hit);
+    DirectOptions opt;
+    opt.sampling = 0.01;
+    DirectLighting direct(f.scene, f.geo, opt);
+    TestOracle oracle(f.scene, f.geo);
+    DirectPoint at;
+    at.point = hit->point;
+    at.normal = at.geomNormal = {0, 0, 1};
+    at.hit = &*hit;
+    Rng rng(1, RngDomain::Test, 0);
+    double e = direct.compute(at, cosine(at.normal), oracle, rng).r;
+    double exact = rectIrradiance(100, -0.35, 0.15, -0.25, 0.25, 1);
+    EXPECT_NEAR(e, exact, 0.005 * exact);
+}
+
+TEST(DirectDeterminism, SameSeedSameResult) {
+    Fixture f(severalLights());
+    DirectOptions opt;
+    opt.jitter = 1;
+    opt.sampling = 0.05;
+    Color a = f.irradiance(opt, {0.1, 0.2, 0}, {0, 0, 1}, 7);
+    Color b = f.irradiance(opt, {0.1, 0.2, 0}, {0, 0, 1}, 7);
+    EXPECT_EQ(a, b);
+    Color c = f.irradiance(opt, {0.1, 0.2, 0}, {0, 0, 1}, 8);
+    EXPECT_NEAR(c.r, a.r, 0.05 * a.r);  // jitter moves samples, not the total much
+}
+
+TEST(DirectJitter, StaysWithinTheCell) {
+    Fixture f(kLight + squareDown("bright", "lamp", 0, 0, 0.5, 1));
+    DirectOptions opt;
+    opt.sampling = 0.01;  // 64 cells of 0.0625
+    DirectLighting direct(f.scene, f.geo, opt);
+    const DirectSource& src = direct.sourceList().sources[0];
+    std::vector<SourceSample> centred, jittered;
+    Rng rng(5, RngDomain::Test, 0);
+    sampleSource(direct.sourceList(), src, f.geo.shapes(), {0, 0, 0}, opt, 1, rng, centred);
+    opt.jitter = 0.5;
+    sampleSource(direct.sourceList(), src, f.geo.shapes(), {0, 0, 0}, opt, 1, rng, jittered);
+    ASSERT_EQ(centred.size(), 64u);
+    ASSERT_EQ(jittered.size(), centred.size());
+    for (size_t i = 0; i < centred.size(); ++i) {
+        // Jitter 0.5 moves a sample at most a quarter cell along each axis.
+        EXPECT_LE(std::fabs(jittered[i].target.x - centred[i].target.x), 0.0625 / 4 + 1e-12);
+        EXPECT_LE(std::fabs(jittered[i].target.y - centred[i].target.y), 0.0625 / 4 + 1e-12);
+        EXPECT_NEAR(jittered[i].omega, centred[i].omega, 1e-12);
+    }
+}
+
+}  // namespace
+}  // namespace rp::render

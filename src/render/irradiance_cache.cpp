@@ -1,0 +1,235 @@
+// The irradiance cache's storage and lookup (see irradiance_cache.h).
+//
+// Why a multi-level hash grid rather than RADIANCE's octree: we are not given the scene
+// cube's origin, and a grid keyed by hashed cell coordinates needs none; every level's
+// cells are twice the size of the one below, and a record lives in the finest level
+// whose cells are at least twice its reach (1.1 aa R_i, the largest distance a lookup
+// can accept), linked into every cell its reach overlaps (at most 2x2x2). A query
+// therefore probes one cell per level in use. Each link copies what the first tests
+// need (position, radius, level, weight) into one cache line, so rejecting a candidate
+// does not touch the record itself.
+//
+// Why our own hash table rather than tbb::concurrent_unordered_map: a lookup makes one
+// find per level on the hottest path of the renderer, and TBB's split-ordered lists cost
+// more per find than a flat table. Ours is open addressing with linear probing; readers
+// take no lock: a slot's cell pointer is stored before its key (release), and a full
+// table is replaced by a doubled copy published through an atomic pointer, the old one
+// kept alive until the cache dies so that readers still probing it stay safe. Inserts take a mutex: each
+// follows a hemisphere of hundreds of rays, so they are rare.
+#include "render/irradiance_cache.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <deque>
+
+namespace rp::render {
+
+namespace {
+
+// RADIANCE compat (ambient.c sumambient): the lookup jitters the accuracy by
+// [0.9, 1.1), so a record can be accepted out to 1.1 aa R.
+constexpr double kMaxJitter = 1.1;
+constexpr int kLevels = 64;
+
+uint64_t mixKey(uint64_t h) {
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+    return h ^ (h >> 31);
+}
+
+// Cells are found by a 64-bit hash of (level, x, y, z) alone; two cells hashing alike
+// would share a list (candidates are tested by distance anyway; only a record whose two
+// cells collide could be counted twice), with odds of about 2^-64 per pair.
+uint64_t cellKey(int level, int64_t x, int64_t y, int64_t z) {
+    uint64_t h = mixKey(uint64_t(x) ^ (uint64_t(level) << 58));
+    h = mixKey(h ^ uint64_t(y));
+    return mixKey(h ^ (uint64_t(z) * 0x9e3779b97f4a7c15ULL));
+}
+
+int64_t cellIndex(double t) {
+    constexpr double kLimit = 4.0e18;  // far beyond any sane scene; keeps the cast defined
+    return int64_t(std::floor(std::clamp(t, -kLimit, kLimit)));
+}
+
+}  // namespace
+
+// One cell's entry for a record: the data the cheap tests need, in one cache line.
+struct alignas(64) IrradianceCache::Node {
+    const Node* next = nullptr;  // written once before the node is published
+    Vec3 position;
+    double radius = 0;
+    double weight = 1;
+    int level = 0;
+    const AmbientRecord* rec = nullptr;
+};
+
+struct IrradianceCache::Cells {
+    struct Cell {
+        std::atomic<const Node*> head{nullptr};
+    };
+    struct Table {
+        explicit Table(size_t capacity)
+            : mask(capacity - 1), keys(capacity), cells(capacity) {}
+        size_t mask;
+        std::vector<std::atomic<uint64_t>> keys;  // 0: empty slot
+        std::vector<std::atomic<Cell*>> cells;
+    };
+    std::atomic<const Table*> current{nullptr};
+    std::vector<std::unique_ptr<Table>> tables;  // every table ever published
+    std::vector<std::unique_ptr<Cell>> owned;
+    std::deque<AmbientRecord> records;  // stable addresses
+    std::deque<Node> nodes;
+    size_t used = 0;
+
+    static uint64_t slotKey(uint64_t key) { return key ? key : 1; }
+
+    const Cell* find(uint64_t key) const {
+        const Table* t = current.load(std::memory_order_acquire);
+        key = slotKey(key);
+        for (size_t i = key & t->mask;; i = (i + 1) & t->mask) {
+            uint64_t k = t->keys[i].load(std::memory_order_acquire);
+            if (k == key) return t->cells[i].load(std::memory_order_relaxed);
+            if (k == 0) return nullptr;
+        }
+    }
+
+    static void put(Table& t, uint64_t key, Cell* cell) {
+        for (size_t i = key & t.mask;; i = (i + 1) & t.mask)
+            if (t.keys[i].load(std::memory_order_relaxed) == 0) {
+                t.cells[i].store(cell, std::memory_order_relaxed);
+                t.keys[i].store(key, std::memory_order_release);
+                return;
+            }
+    }
+
+    // Caller holds the insert mutex.
+    Cell& findOrAdd(uint64_t key) {
+        if (const Cell* c = find(key)) return const_cast<Cell&>(*c);
+        key = slotKey(key);
+        Table* t = tables.back().get();
+        if (2 * (used + 1) > t->mask + 1) {  // keep the load under 1/2: short probes
+            auto bigger = std::make_unique<Table>(2 * (t->mask + 1));
+            for (size_t i = 0; i <= t->mask; ++i)
+                if (uint64_t k = t->keys[i].load(std::memory_order_relaxed))
+                    put(*bigger, k, t->cells[i].load(std::memory_order_relaxed));
+            t = bigger.get();
+            tables.push_back(std::move(bigger));
+            current.store(t, std::memory_order_release);
+        }
+        owned.push_back(std::make_unique<Cell>());
+        Cell* cell = owned.back().get();
+        put(*t, key, cell);
+        ++used;
+        return *cell;
+    }
+};
+
+IrradianceCache::IrradianceCache(double accuracy, double minRadius, double sceneSize)
+    : accuracy_(accuracy), minRadius_(minRadius), cells_(std::make_unique<Cells>()) {
+    double reach = kMaxJitter * accuracy_ *
+                   (minRadius > 0 ? minRadius : (sceneSize > 0 ? sceneSize / 1024 : 1e-3));
+    cell0_ = std::max(2 * reach, 1e-12);
+    cells_->tables.push_back(std::make_unique<Cells::Table>(1024));
+    cells_->current.store(cells_->tables.back().get(), std::memory_order_release);
+}
+
+IrradianceCache::~IrradianceCache() = default;
+
+Color extrapolate(const AmbientRecord& rec, const Vec3& p, const Vec3& n, bool gradients) {
+    double f = 1;
+    if (gradients) {
+        f += dot(rec.gradPosition, p - rec.position);
+        f += dot(rec.gradDirection, cross(rec.normal, n));
+    }
+    if (f <= 0) return {};
+    return rec.value * f;
+}
+
+bool IrradianceCache::lookup(const CacheQuery& q, Rng* jitter, Color& out) const {
+    const double maxErr = accuracy_ * (jitter ? kMaxJitter : 1.0);
+    const double maxErr2 = maxErr * maxErr;
+    // RADIANCE compat (sumambient "ray behind test"): tolerance in scene units.
+    const double behindTolerance = minRadius_ * accuracy_ + 1e-3;
+    Color sum;
+    double weightSum = 0;
+
+    auto consider = [&](const Node& n) {
+        Vec3 d = q.point - n.position;
+        double e1sq = dot(d, d) / (n.radius * n.radius);
+        if (e1sq > maxErr2) return;
+        // A record from a deeper bounce or a lighter ray is less accurate than wanted.
+        if (n.level > q.level || n.weight < q.weight - 1e-6) return;
+        const AmbientRecord& r = *n.rec;
+        double e2sq = (1 - dot(r.normal, q.normal)) * q.weight;
+        if (e2sq < 0) e2sq = 0;
+        if (e1sq + e2sq > maxErr2) return;
+        // Skip records lying in front of the point (they see a different hemisphere).
+        if (0.5 * dot(d, r.normal + q.normal) < -behindTolerance) return;
+        double e = std::sqrt(e1sq) + std::sqrt(e2sq);
+        double limit = jitter ? accuracy_ * (0.9 + 0.2 * jitter->uniform()) : accuracy_;
+        if (e > limit) return;
+        double w = e <= 1e-3 ? 1e3 : 1 / e;  // Ward's weight 1/e, capped as RADIANCE
+        sum += extrapolate(r, q.point, q.normal, useGradients_) * w;
+        weightSum += w;
+    };
+
+    uint64_t used = levelsUsed_.load(std::memory_order_acquire);
+    while (used) {
+        int level = std::countr_zero(used);
+        used &= used - 1;
+        double cell = std::ldexp(cell0_, level);
+        const Cells::Cell* c =
+            cells_->find(cellKey(level, cellIndex(q.point.x / cell), cellIndex(q.point.y / cell),
+                                 cellIndex(q.point.z / cell)));
+        if (!c) continue;
+        for (const Node* n = c->head.load(std::memory_order_acquire); n; n = n->next)
+            consider(*n);
+    }
+    if (weightSum <= 1e-6) return false;
+    out = sum / weightSum;
+    return true;
+}
+
+void IrradianceCache::insert(const AmbientRecord& rec, bool isNew) {
+    const double reach = kMaxJitter * accuracy_ * rec.radius;
+    int level = 0;
+    double cell = cell0_;
+    while (cell < 2 * reach && level < kLevels - 1) {
+        cell *= 2;
+        ++level;
+    }
+    int64_t lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = cellIndex((rec.position[a] - reach) / cell);
+        hi[a] = std::min(cellIndex((rec.position[a] + reach) / cell), lo[a] + 1);
+    }
+    std::lock_guard<std::mutex> lock(insertMutex_);
+    const AmbientRecord* stored = &cells_->records.emplace_back(rec);
+    for (int64_t x = lo[0]; x <= hi[0]; ++x)
+        for (int64_t y = lo[1]; y <= hi[1]; ++y)
+            for (int64_t z = lo[2]; z <= hi[2]; ++z) {
+                Node& node = cells_->nodes.emplace_back();
+                node.position = rec.position;
+                node.radius = rec.radius;
+                node.weight = rec.weight;
+                node.level = rec.level;
+                node.rec = stored;
+                std::atomic<const Node*>& head = cells_->findOrAdd(cellKey(level, x, y, z)).head;
+                node.next = head.load(std::memory_order_relaxed);
+                head.store(&node, std::memory_order_release);
+            }
+    levelsUsed_.fetch_or(uint64_t(1) << level, std::memory_order_release);
+    count_.fetch_add(1, std::memory_order_relaxed);
+    if (isNew) new_.push_back(stored);
+}
+
+std::vector<AmbientRecord> IrradianceCache::newRecords() const {
+    std::lock_guard<std::mutex> lock(insertMutex_);
+    std::vector<AmbientRecord> out;
+    out.reserve(new_.size());
+    for (const AmbientRecord* r : new_) out.push_back(*r);
+    return out;
+}
+
+}  // namespace rp::render

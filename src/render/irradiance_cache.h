@@ -1,0 +1,87 @@
+// Ward's irradiance cache (RADIANCE ambient.c): records of hemisphere estimates with a
+// validity radius and Ward & Heckbert gradients, found by position for weighted
+// extrapolation. Lookups take no lock and allocate nothing; inserts take a mutex (each
+// follows a whole hemisphere computation). How records are computed and when one is made
+// lives in ambient.cpp.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "util/color.h"
+#include "util/rng.h"
+#include "util/vec.h"
+
+namespace rp::render {
+
+// RADIANCE's AMBVAL, in double precision in memory. The fields a lookup tests first
+// (position, radius, level, weight) come first so that rejecting a candidate touches
+// one cache line.
+struct AmbientRecord {
+    Vec3 position;
+    double radius = 0;    // validity radius R_i of Ward's error estimate
+    int level = 0;        // ambient level of the ray that made it
+    double weight = 1;    // RADIANCE's record weight (AVGREFL^level, or from the ray)
+    Vec3 normal;          // unit
+    Color value;          // mean radiance of the hemisphere (irradiance / pi)
+    Vec3 gradPosition;    // translational gradient of brightness(value), relative (1/length)
+    Vec3 gradDirection;   // rotational gradient, relative: factor 1 + g . (N_i x N)
+};
+
+// The query of one lookup.
+struct CacheQuery {
+    Vec3 point;
+    Vec3 normal;
+    int level = 0;
+    double weight = 1;   // the ray's weight (scales the normal error, as RADIANCE)
+};
+
+class IrradianceCache {
+public:
+    // `accuracy`: -aa (> 0). `minRadius`: the smallest radius computed records get
+    // (scene size / -ar, 0 if -ar 0) and `sceneSize`: used to size the grid cells.
+    IrradianceCache(double accuracy, double minRadius, double sceneSize);
+    ~IrradianceCache();
+    IrradianceCache(const IrradianceCache&) = delete;
+    IrradianceCache& operator=(const IrradianceCache&) = delete;
+
+    // Weighted extrapolation of every record that covers the query within -aa
+    // (RADIANCE sumambient): Ward's error e = |P-Pi|/Ri + sqrt((1 - N.Ni) weight), accepted
+    // when e < aa times a jitter in [0.9, 1.1) drawn from `jitter` (null: no jitter);
+    // records in front of the point, computed at a deeper level or for a lighter ray are
+    // skipped. Returns false when no record passes (the caller computes a new one).
+    bool lookup(const CacheQuery& q, Rng* jitter, Color& out) const;
+
+    // Adds a record; safe concurrently with lookups and other inserts. `isNew` records
+    // are also kept, in insertion order, for newRecords().
+    void insert(const AmbientRecord& rec, bool isNew = true);
+
+    long size() const { return count_.load(std::memory_order_relaxed); }
+    // Records inserted with isNew, in order (a copy: taken under the insert mutex).
+    std::vector<AmbientRecord> newRecords() const;
+
+    // Tests compare extrapolation with and without gradients.
+    void setUseGradients(bool on) { useGradients_ = on; }
+
+private:
+    struct Node;
+    struct Cells;
+    double accuracy_;
+    double minRadius_;
+    double cell0_;       // edge of the finest grid cells
+    bool useGradients_ = true;
+    std::unique_ptr<Cells> cells_;
+    std::atomic<uint64_t> levelsUsed_{0};  // bit l: some record lives in grid level l
+    std::atomic<long> count_{0};
+    mutable std::mutex insertMutex_;
+    std::vector<const AmbientRecord*> new_;
+};
+
+// Value of `rec` extrapolated to point p with normal n (RADIANCE extambient): the first-
+// order Taylor expansion with both gradients, clamped at zero.
+Color extrapolate(const AmbientRecord& rec, const Vec3& p, const Vec3& n, bool gradients);
+
+}  // namespace rp::render

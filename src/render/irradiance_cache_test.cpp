@@ -1,0 +1,112 @@
+#include "render/irradiance_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace rp::render {
+namespace {
+
+AmbientRecord record(const Vec3& p, const Vec3& n, double value, double radius) {
+    AmbientRecord r;
+    r.position = p;
+    r.normal = normalize(n);
+    r.value = Color::grey(value);
+    r.radius = radius;
+    return r;
+}
+
+// The grid must find exactly the records a scan of all of them accepts: radii over
+// three decades put records on many grid levels, and queries land near cell borders.
+TEST(IrradianceCacheTest, LookupMatchesBruteForce) {
+    const double aa = 0.2, minRadius = 0.01;
+    IrradianceCache cache(aa, minRadius, 10);
+    std::vector<AmbientRecord> all;
+    Rng rng(21, RngDomain::Test, 0);
+    for (int i = 0; i < 3000; ++i) {
+        Vec3 p{rng.uniform() * 4 - 2, rng.uniform() * 4 - 2, rng.uniform() * 0.2};
+        Vec3 n{0.3 * (rng.uniform() - 0.5), 0.3 * (rng.uniform() - 0.5), 1};
+        double radius = minRadius * std::pow(1000.0, rng.uniform());
+        AmbientRecord r = record(p, n, 1 + rng.uniform(), radius);
+        r.gradPosition = {0.1 * rng.uniform(), -0.1 * rng.uniform(), 0};
+        cache.insert(r);
+        all.push_back(r);
+    }
+    EXPECT_EQ(cache.size(), 3000);
+    int found = 0;
+    for (int i = 0; i < 2000; ++i) {
+        CacheQuery q;
+        q.point = {rng.uniform() * 4 - 2, rng.uniform() * 4 - 2, rng.uniform() * 0.2};
+        q.normal = normalize(Vec3{0.2 * (rng.uniform() - 0.5), 0, 1});
+        Color sum;
+        double wsum = 0;
+        for (const AmbientRecord& r : all) {
+            Vec3 d = q.point - r.position;
+            double e1 = length(d) / r.radius;
+            double e2 = std::sqrt(std::max(0.0, 1 - dot(q.normal, r.normal)));
+            if (0.5 * dot(d, r.normal + q.normal) < -(minRadius * aa + 1e-3)) continue;
+            if (e1 + e2 > aa) continue;
+            double w = e1 + e2 <= 1e-3 ? 1e3 : 1 / (e1 + e2);
+            sum += extrapolate(r, q.point, q.normal, true) * w;
+            wsum += w;
+        }
+        Color got;
+        bool ok = cache.lookup(q, nullptr, got);
+        ASSERT_EQ(ok, wsum > 1e-6) << "query " << i;
+        if (ok) {
+            ++found;
+            EXPECT_NEAR(got.r, sum.r / wsum, 1e-9);
+        }
+    }
+    EXPECT_GT(found, 100);
+}
+
+TEST(IrradianceCacheTest, RejectsRecordsInFrontAndOfDeeperLevels) {
+    IrradianceCache cache(0.2, 0.01, 10);
+    AmbientRecord above = record({0, 0, 0.05}, {0, 0, 1}, 7, 1);
+    cache.insert(above);
+    CacheQuery q;
+    q.point = {0, 0, 0};
+    q.normal = {0, 0, 1};
+    Color c;
+    EXPECT_FALSE(cache.lookup(q, nullptr, c)) << "a record 5 cm above the point";
+
+    AmbientRecord deep = record({0, 0, 0}, {0, 0, 1}, 3, 1);
+    deep.level = 1;
+    deep.weight = 0.5;
+    cache.insert(deep);
+    EXPECT_FALSE(cache.lookup(q, nullptr, c));
+    q.level = 1;
+    q.weight = 0.5;
+    ASSERT_TRUE(cache.lookup(q, nullptr, c));
+    EXPECT_DOUBLE_EQ(c.r, 3);
+}
+
+TEST(IrradianceCacheTest, ExtrapolationUsesBothGradients) {
+    AmbientRecord r = record({0, 0, 0}, {0, 0, 1}, 2, 1);
+    r.gradPosition = {0.5, 0, 0};
+    r.gradDirection = {0, 0.25, 0};
+    double a = 0.1;
+    Vec3 n{std::sin(a), 0, std::cos(a)};  // N_i x N = (0, sin a, 0)
+    Color c = extrapolate(r, {0.2, 0, 0}, n, true);
+    EXPECT_NEAR(c.r, 2 * (1 + 0.1 + 0.25 * std::sin(a)), 1e-12);
+    EXPECT_EQ(extrapolate(r, {0.2, 0, 0}, n, false), Color::grey(2));
+    r.gradPosition = {-10, 0, 0};
+    EXPECT_EQ(extrapolate(r, {0.2, 0, 0}, r.normal, true), Color{});  // clamped at zero
+}
+
+TEST(IrradianceCacheTest, NewRecordsKeepOrderAndSkipLoaded) {
+    IrradianceCache cache(0.1, 0.01, 10);
+    cache.insert(record({0, 0, 0}, {0, 0, 1}, 1, 1), false);
+    cache.insert(record({1, 0, 0}, {0, 0, 1}, 2, 1));
+    cache.insert(record({2, 0, 0}, {0, 0, 1}, 3, 1));
+    std::vector<AmbientRecord> n = cache.newRecords();
+    ASSERT_EQ(n.size(), 2u);
+    EXPECT_EQ(n[0].value.r, 2);
+    EXPECT_EQ(n[1].value.r, 3);
+    EXPECT_EQ(cache.size(), 3);
+}
+
+}  // namespace
+}  // namespace rp::render

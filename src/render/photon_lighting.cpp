@@ -1,0 +1,140 @@
+#include "render/photon_lighting.h"
+
+#include <filesystem>
+#include <string>
+
+#include "util/error.h"
+#include "util/warnings.h"
+
+namespace rp::render {
+
+PhotonLighting::Lookups::Lookups(const PhotonLighting& owner) : owner_(owner) {
+    for (const Map& m : owner.maps_) {
+        pmap::LookupParams p;
+        // With bias compensation the search radius is sized for the upper bandwidth.
+        p.bandwidth = m.use.bandwidth2 > 0 ? m.use.bandwidth2 : m.use.bandwidth;
+        p.maxSearchRadius = owner.maxSearchRadius_;
+        lookups.emplace_back(m.map, p, m.index.get());  // index: see lookup_index.h
+    }
+    biasStats.resize(owner.maps_.size());
+}
+
+PhotonLighting::Lookups::~Lookups() {
+    for (const pmap::PhotonLookup& l : lookups) {
+        owner_.shortLookups_ += l.shortLookups();
+        owner_.lookups_ += l.lookups();
+    }
+    std::lock_guard<std::mutex> lock(owner_.statsMutex_);
+    for (size_t i = 0; i < biasStats.size(); ++i) owner_.biasStats_[i].merge(biasStats[i]);
+}
+
+namespace {
+
+// Lookups go through the cache-friendly bucket index (pmap/lookup_index.h, 20 bytes per
+// photon on top of the map's 24; same photons as the kd-tree walk, about 1.7x faster).
+constexpr bool kUseSearchIndex = true;
+
+int64_t fileMtime(const std::string& path) {
+    std::error_code ec;
+    auto t = std::filesystem::last_write_time(path, ec);
+    if (ec) return 0;
+    auto sys = std::chrono::file_clock::to_sys(t);
+    return std::chrono::duration_cast<std::chrono::seconds>(sys.time_since_epoch()).count();
+}
+
+}  // namespace
+
+PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double maxSearchRadius,
+                               const Scene& scene)
+    : maxSearchRadius_(maxSearchRadius) {
+    int64_t newestInput = 0;
+    std::string newestName;
+    for (const SceneInput& in : scene.inputs)
+        if (in.mtime > newestInput) {
+            newestInput = in.mtime;
+            newestName = in.path;
+        }
+    for (const PhotonMapUse& use : uses) {
+        Map m;
+        m.use = use;
+        m.file = use.file;
+        m.map = pmap::PhotonMap::load(use.file);
+        using T = pmap::PhotonMapType;
+        T type = m.map.type();
+        const char* name = pmap::photonMapTypeName(type);
+        if (type == T::Contrib)
+            throw InputError(use.file + ": contribution photon maps are used by rcontrib, "
+                                        "not by the renderer");
+        if (type == T::Volume)
+            throw notSupportedYet(SourceLoc{use.file, 0}, "volume photon maps in the renderer");
+        int* slot = type == T::Caustic ? &caustic_ : type == T::Direct ? &direct_ : &global_;
+        if (*slot >= 0)
+            throw InputError(use.file + ": more than one " + std::string(name) +
+                             " photon map given with -ap");
+        if (m.use.bandwidth <= 0) {
+            m.use.bandwidth = type == T::PreComp ? 1 : kDefaultBandwidth;
+            if (type != T::PreComp)
+                warn("no bandwidth given for " + std::string(name) + " photon map " +
+                     use.file + ", using " + std::to_string(kDefaultBandwidth));
+        }
+        if (m.use.bandwidth2 > 0 && m.use.bandwidth2 <= m.use.bandwidth)
+            throw InputError(use.file + ": bias compensation needs bwidth2 > bwidth1 (" +
+                             std::to_string(m.use.bandwidth) + " " +
+                             std::to_string(m.use.bandwidth2) + ")");
+        if (type == T::PreComp) m.use.bandwidth2 = 0;  // RADIANCE: precomputed maps use 1
+        int64_t mt = fileMtime(use.file);
+        if (mt > 0 && newestInput > mt)
+            throw InputError(use.file + ": photon map is older than scene file " + newestName +
+                             " (stale: rerun mkpmap)");
+        *slot = int(maps_.size());
+        if (kUseSearchIndex) m.index = std::make_unique<pmap::PhotonIndex>(m.map.photons());
+        maps_.push_back(std::move(m));
+    }
+    biasStats_.resize(maps_.size());
+}
+
+std::string PhotonLighting::biasReport() const {
+    std::lock_guard<std::mutex> lock(statsMutex_);
+    std::string out;
+    for (size_t i = 0; i < maps_.size(); ++i) {
+        std::string r = biasStats_[i].report(pmap::photonMapTypeName(maps_[i].map.type()));
+        if (r.empty()) continue;
+        if (!out.empty()) out += ", ";
+        out += r;
+    }
+    return out;
+}
+
+PhotonLighting::~PhotonLighting() = default;
+
+std::unique_ptr<PhotonLighting::Lookups> PhotonLighting::makeLookups() const {
+    return std::make_unique<Lookups>(*this);
+}
+
+Color PhotonLighting::density(Lookups& l, int index, const Vec3& pos,
+                              const Vec3& normal) const {
+    if (index < 0) return {};
+    pmap::PhotonLookup& lookup = l.lookups[size_t(index)];
+    const Map& m = maps_[size_t(index)];
+    std::array<double, 3> d;
+    if (m.map.type() == pmap::PhotonMapType::PreComp)
+        d = lookup.precompDensity(pos, normal);
+    else if (m.use.bandwidth2 > 0)
+        d = lookup.biasCompensatedDensity(pos, normal, m.use.bandwidth, m.use.bandwidth2,
+                                          &l.biasStats[size_t(index)]);
+    else
+        d = lookup.surfaceDensity(pos, normal);
+    return Color{d[0], d[1], d[2]};
+}
+
+Color PhotonLighting::globalDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const {
+    return density(l, global_, pos, normal);
+}
+Color PhotonLighting::causticDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const {
+    return density(l, caustic_, pos, normal);
+}
+Color PhotonLighting::directDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const {
+    return density(l, direct_, pos, normal);
+}
+
+}  // namespace rp::render

@@ -1,0 +1,104 @@
+// The options rtrace, rpict (and later rcontrib and rvu) share: RADIANCE's -d (direct),
+// -s (specular), -l (limits), -a (ambient), -b, -i/-I, -u, -e, -w and -ap families, with
+// RADIANCE 5.4's defaults and spellings (doc/man/rtrace.1). Tool-specific options (rtrace's
+// -o/-f/-h/-x/-y, rpict's -x/-y/-p/-v/-o) are parsed by each tool; what is common lives here.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "util/color.h"
+
+namespace rp::render {
+
+struct DirectOptions {
+    double threshold = 0.03;  // -dt: relative contribution below which sources are not tested
+    double certainty = 0.75;  // -dc: 1 = test every source, 0 = trust the estimates
+    double jitter = 0;        // -dj: 0 = sample cell centres, 1 = anywhere in the cell
+    double sampling = 0.2;    // -ds: source size over distance per sample (0 = no subdivision)
+    int relays = 2;           // -dr: virtual source (mirror) relay levels
+    int pretest = 512;        // -dp: virtual source pretest density (samples per steradian)
+    bool visibility = true;   // -dv: light sources visible to primary/specular rays
+};
+
+struct SpecularOptions {
+    double sampling = 1.0;    // -ss: rough specular samples (0 = none, >1 several)
+    double threshold = 0.15;  // -st: rough specular below this goes to the ambient calc
+};
+
+struct LimitOptions {
+    int maxDepth = -10;       // -lr: < 0 means Russian roulette past |maxDepth| (RADIANCE 5)
+    double minWeight = 2e-3;  // -lw: rays of smaller weight are not traced (roulette if lr<0)
+};
+
+struct AmbientOptions {
+    Color value;               // -av: ambient value for rays past the last bounce
+    int valueWeight = 0;       // -aw: weight of -av in the running average (0 = fixed)
+    int bounces = 0;           // -ab
+    double accuracy = 0.1;     // -aa: 0 turns the irradiance cache off
+    int resolution = 256;      // -ar: scene size / ar = minimum record spacing
+    int divisions = 1024;      // -ad: hemisphere samples per irradiance computation
+    int supersamples = 512;    // -as: extra samples where the divisions vary most
+    std::string file;          // -af: ambient file (records kept across runs)
+    // -ae/-ai (and -aE/-aI from files): modifiers excluded from / the only ones included
+    // in the cache (others get -av). Order matters as in RADIANCE: the last of -ae/-ai
+    // decides the mode; the list accumulates.
+    std::vector<std::string> modifiers;
+    bool includeList = false;  // true: `modifiers` lists the included ones (-ai/-aI)
+};
+
+// -ap file [bwidth1 [bwidth2]]: one photon map to use while rendering (issue 6).
+struct PhotonMapUse {
+    std::string file;
+    int bandwidth = 0;   // 0: the default for the map's type (a warning is given)
+    int bandwidth2 = 0;  // > bandwidth: bias compensation between the two
+};
+
+// -me/-ma/-mg/-ms: the global participating medium ("mist"). Parsed and printed by
+// -defaults as RADIANCE does; the renderer does not model a global medium yet.
+struct MistOptions {
+    Color extinction;            // -me: extinction coefficient per unit length
+    Color albedo;                // -ma: scattering albedo
+    double eccentricity = 0;     // -mg: Henyey-Greenstein g
+    double samplingDistance = 0; // -ms
+    bool any() const {
+        return !extinction.isBlack() || !albedo.isBlack() || eccentricity != 0 ||
+               samplingDistance != 0;
+    }
+};
+
+struct RenderOptions {
+    DirectOptions direct;
+    SpecularOptions specular;
+    LimitOptions limits;
+    AmbientOptions ambient;
+    MistOptions mist;
+    std::vector<PhotonMapUse> photonMaps;  // -ap (repeatable)
+    double photonMaxRadius = 0;            // -am: fixed maximum search radius, 0 = automatic
+    bool backVisible = true;               // -bv
+    bool irradiance = false;               // -i: compute irradiance at surfaces hit
+    // -u: uncorrelated (random) sampling. RADIANCE compat: rpict's default is off; rtrace
+    // (rtmain.c) turns it on before parsing, and so does our rtrace (rtrace_options.cpp).
+    bool uncorrelated = false;
+    int threads = 1;                       // -n
+    std::string errorFile;                 // -e: diagnostics go here instead of stderr
+    bool warnings = true;                  // -w
+};
+
+// Consumes one common option starting at args[i] (and its values), advancing i past
+// them. Returns false, leaving i unchanged, if args[i] is not a common option so that the
+// caller can try its own. Boolean options follow RADIANCE: "-bv" toggles, "-bv+"/"-bv-"
+// set. Throws InputError (util/error.h, no location) with a one-line message for a missing or
+// non-numeric value or an out-of-range one (negative -ad, -n < 1, ...). -aE/-aI files
+// are read here (one modifier per whitespace-separated word); a missing one is an
+// InputError naming it. -ap takes the following words as bandwidths only when they are
+// integers; as RADIANCE (pmapopt.c), asking for a photon map with -ab 0 sets -ab 1.
+// Also handled: -n (threads), -e (error file), -w, and the mist options -me -ma -mg -ms.
+bool parseRenderOption(const std::vector<std::string>& args, size_t& i, RenderOptions& opt);
+
+// The lines RADIANCE's `rtrace -defaults` prints for these options (print_rdefaults in
+// RADIANCE's rtmain/rpmain), e.g. "-dt 0.030000\t\t\t# direct threshold", in the same
+// order, reflecting `opt`.
+std::string formatRenderDefaults(const RenderOptions& opt);
+
+}  // namespace rp::render

@@ -1,0 +1,223 @@
+// Common render options: every family, booleans, errors, -defaults text, and the @file /
+// $EVAR expansion (command_args.h).
+#include "render/render_options.h"
+
+#include <cstdlib>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "render/command_args.h"
+#include "util/error.h"
+#include "util/temp_dir_for_tests.h"
+
+namespace rp::render {
+namespace {
+
+// Parses every argument of `line` as common options; fails if one is not consumed.
+RenderOptions parse(std::vector<std::string> args, RenderOptions o = {}) {
+    size_t i = 0;
+    while (i < args.size()) {
+        size_t before = i;
+        EXPECT_TRUE(parseRenderOption(args, i, o)) << args[i];
+        if (i == before) break;
+    }
+    return o;
+}
+
+std::string errorOf(std::vector<std::string> args) {
+    RenderOptions o;
+    size_t i = 0;
+    try {
+        while (i < args.size() && parseRenderOption(args, i, o)) {}
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(RenderOptions, DirectSpecularLimits) {
+    RenderOptions o = parse({"-dt", "0.1", "-dc", "0.9", "-dj", "0.5", "-ds", "0", "-dr", "3",
+                             "-dp", "64", "-ss", "2", "-st", "0.5", "-lr", "8", "-lw", "1e-3"});
+    EXPECT_DOUBLE_EQ(o.direct.threshold, 0.1);
+    EXPECT_DOUBLE_EQ(o.direct.certainty, 0.9);
+    EXPECT_DOUBLE_EQ(o.direct.jitter, 0.5);
+    EXPECT_DOUBLE_EQ(o.direct.sampling, 0);
+    EXPECT_EQ(o.direct.relays, 3);
+    EXPECT_EQ(o.direct.pretest, 64);
+    EXPECT_DOUBLE_EQ(o.specular.sampling, 2);
+    EXPECT_DOUBLE_EQ(o.specular.threshold, 0.5);
+    EXPECT_EQ(o.limits.maxDepth, 8);
+    EXPECT_DOUBLE_EQ(o.limits.minWeight, 1e-3);
+}
+
+TEST(RenderOptions, Ambient) {
+    RenderOptions o = parse({"-av", "0.1", "0.2", "0.3", "-aw", "5", "-ab", "2", "-aa", "0.2",
+                             "-ar", "64", "-ad", "512", "-as", "128", "-af", "x.amb"});
+    EXPECT_EQ(o.ambient.value, Color(0.1, 0.2, 0.3));
+    EXPECT_EQ(o.ambient.valueWeight, 5);
+    EXPECT_EQ(o.ambient.bounces, 2);
+    EXPECT_DOUBLE_EQ(o.ambient.accuracy, 0.2);
+    EXPECT_EQ(o.ambient.resolution, 64);
+    EXPECT_EQ(o.ambient.divisions, 512);
+    EXPECT_EQ(o.ambient.supersamples, 128);
+    EXPECT_EQ(o.ambient.file, "x.amb");
+}
+
+TEST(RenderOptions, IncludeExcludeLists) {
+    TempDir dir;
+    std::ofstream(dir.file("mods")) << "a b\n c\n";
+    RenderOptions o = parse({"-ae", "x", "-aE", dir.file("mods")});
+    EXPECT_FALSE(o.ambient.includeList);
+    EXPECT_EQ(o.ambient.modifiers, (std::vector<std::string>{"x", "a", "b", "c"}));
+    // Switching to include starts a new list (RADIANCE renderopts.c).
+    o = parse({"-ai", "y", "-aI", dir.file("mods")}, o);
+    EXPECT_TRUE(o.ambient.includeList);
+    EXPECT_EQ(o.ambient.modifiers, (std::vector<std::string>{"y", "a", "b", "c"}));
+    EXPECT_NE(errorOf({"-aI", dir.file("missing")}).find("missing"), std::string::npos);
+}
+
+TEST(RenderOptions, Booleans) {
+    RenderOptions o;
+    EXPECT_TRUE(o.backVisible);
+    o = parse({"-bv"}, o);
+    EXPECT_FALSE(o.backVisible);  // toggles
+    o = parse({"-bv"}, o);
+    EXPECT_TRUE(o.backVisible);
+    o = parse({"-bv-", "-dv-", "-i+", "-u+", "-w-"}, o);
+    EXPECT_FALSE(o.backVisible);
+    EXPECT_FALSE(o.direct.visibility);
+    EXPECT_TRUE(o.irradiance);
+    EXPECT_TRUE(o.uncorrelated);
+    EXPECT_FALSE(o.warnings);
+    o = parse({"-bv+", "-dv+", "-i-", "-u-", "-w+", "-i"}, o);
+    EXPECT_TRUE(o.backVisible);
+    EXPECT_TRUE(o.direct.visibility);
+    EXPECT_TRUE(o.irradiance);
+    EXPECT_FALSE(o.uncorrelated);
+    EXPECT_TRUE(o.warnings);
+    o = parse({"-bvy", "-dvf", "-i0", "-u1"}, o);
+    EXPECT_TRUE(o.backVisible);
+    EXPECT_FALSE(o.direct.visibility);
+    EXPECT_FALSE(o.irradiance);
+    EXPECT_TRUE(o.uncorrelated);
+    EXPECT_EQ(errorOf({"-bvx"}), "unknown option '-bvx'");
+}
+
+TEST(RenderOptions, PhotonMaps) {
+    RenderOptions o = parse({"-ap", "g.pm", "-ap", "c.pm", "50", "-ap", "b.pm", "50", "200",
+                             "-am", "0.5"});
+    ASSERT_EQ(o.photonMaps.size(), 3u);
+    EXPECT_EQ(o.photonMaps[0].file, "g.pm");
+    EXPECT_EQ(o.photonMaps[0].bandwidth, 0);
+    EXPECT_EQ(o.photonMaps[1].bandwidth, 50);
+    EXPECT_EQ(o.photonMaps[1].bandwidth2, 0);
+    EXPECT_EQ(o.photonMaps[2].bandwidth, 50);
+    EXPECT_EQ(o.photonMaps[2].bandwidth2, 200);
+    EXPECT_DOUBLE_EQ(o.photonMaxRadius, 0.5);
+    EXPECT_EQ(o.ambient.bounces, 1);  // RADIANCE pmapopt.c: a photon map implies -ab 1
+    // A following word that is not an integer is the next option (or the octree).
+    std::vector<std::string> args{"-ap", "g.pm", "scene.oct"};
+    size_t i = 0;
+    RenderOptions p;
+    EXPECT_TRUE(parseRenderOption(args, i, p));
+    EXPECT_EQ(i, 2u);
+    EXPECT_NE(errorOf({"-ap", "g.pm", "0"}), "");
+    EXPECT_NE(errorOf({"-ap", "g.pm", "50", "20"}), "");
+    EXPECT_NE(errorOf({"-am", "0"}), "");
+    EXPECT_EQ(errorOf({"-ap"}), "missing value for option '-ap'");
+}
+
+TEST(RenderOptions, ThreadsErrorFileMist) {
+    RenderOptions o = parse({"-n", "4", "-e", "err.txt", "-me", "0.1", "0.1", "0.1", "-ma",
+                             "0.5", "0.5", "0.5", "-mg", "0.3", "-ms", "0.2"});
+    EXPECT_EQ(o.threads, 4);
+    EXPECT_EQ(o.errorFile, "err.txt");
+    EXPECT_TRUE(o.mist.any());
+    EXPECT_DOUBLE_EQ(o.mist.eccentricity, 0.3);
+}
+
+TEST(RenderOptions, Errors) {
+    EXPECT_EQ(errorOf({"-dt"}), "missing value for option '-dt'");
+    EXPECT_EQ(errorOf({"-dt", "abc"}), "bad value 'abc' for option '-dt'");
+    EXPECT_EQ(errorOf({"-ab", "1.5"}), "bad value '1.5' for option '-ab'");
+    EXPECT_EQ(errorOf({"-av", "1", "2"}), "missing value for option '-av'");
+    EXPECT_NE(errorOf({"-ad", "-1"}), "");
+    EXPECT_NE(errorOf({"-n", "0"}), "");
+    EXPECT_NE(errorOf({"-dc", "2"}), "");
+    // Not common options: left for the tool (which reports them as unknown).
+    std::vector<std::string> args{"-xx"};
+    size_t i = 0;
+    RenderOptions o;
+    EXPECT_FALSE(parseRenderOption(args, i, o));
+    EXPECT_EQ(i, 0u);
+    args = {"-I"};
+    EXPECT_FALSE(parseRenderOption(args, i, o));
+}
+
+TEST(RenderOptions, DefaultsText) {
+    RenderOptions o;
+    const std::string text = formatRenderDefaults(o);
+    EXPECT_EQ(text.substr(0, text.find('\n', text.find('\n') + 1) + 1),
+              "-i-\t\t\t\t# irradiance calculation off\n"
+              "-u-\t\t\t\t# correlated quasi-Monte Carlo sampling\n");
+    EXPECT_NE(text.find("-dt 0.030000\t\t\t# direct threshold\n"), std::string::npos);
+    EXPECT_NE(text.find("-dc 0.750000\t\t\t# direct certainty\n"), std::string::npos);
+    EXPECT_NE(text.find("-dr 2        \t\t\t# direct relays\n"), std::string::npos);
+    EXPECT_NE(text.find("-av 0.000000 0.000000 0.000000\t# ambient value\n"), std::string::npos);
+    EXPECT_NE(text.find("-ad 1024     \t\t\t# ambient divisions\n"), std::string::npos);
+    EXPECT_NE(text.find("-me 0.00e+00 0.00e+00 0.00e+00\t# mist extinction coefficient\n"),
+              std::string::npos);
+    EXPECT_NE(text.find("-lr -10      \t\t\t# limit reflection (Russian roulette)\n"),
+              std::string::npos);
+    EXPECT_NE(text.find("-lw 2.00e-03\t\t\t# limit weight\n"), std::string::npos);
+    EXPECT_EQ(text.substr(text.rfind('-')), "-am 0.0\t\t\t\t# max photon search radius\n");
+    o.limits.maxDepth = 6;
+    EXPECT_NE(formatRenderDefaults(o).find("-lr 6        \t\t\t# limit reflection\n"),
+              std::string::npos);
+}
+
+TEST(RenderOptionsExpand, SplitWords) {
+    EXPECT_EQ(splitWords("  -ab 2\n-av 'a b' \"c d\"e\t"),
+              (std::vector<std::string>{"-ab", "2", "-av", "a b", "c de"}));
+    EXPECT_TRUE(splitWords(" \n ").empty());
+}
+
+TEST(RenderOptionsExpand, FileAndEnvironment) {
+    TempDir dir;
+    std::ofstream(dir.file("opts")) << "-ab 2 -aa 0.2\n";
+    std::ofstream(dir.file("outer")) << "@" << dir.file("opts") << " -ad 64\n";
+    ::setenv("RP_TEST_RTRACE_OPTS", "-lr 4 -lw 0.01", 1);
+    std::vector<std::string> args{"rtrace", "@" + dir.file("outer"), "$RP_TEST_RTRACE_OPTS", "x"};
+    expandArgAt(args, 1);
+    EXPECT_EQ(args, (std::vector<std::string>{"rtrace", "-ab", "2", "-aa", "0.2", "-ad", "64",
+                                              "$RP_TEST_RTRACE_OPTS", "x"}));
+    expandArgAt(args, 7);
+    EXPECT_EQ(args[7], "-lr");
+    EXPECT_EQ(args.size(), 12u);
+    // An empty expansion removes the argument.
+    ::setenv("RP_TEST_RTRACE_EMPTY", "", 1);
+    std::vector<std::string> e{"rtrace", "$RP_TEST_RTRACE_EMPTY", "scene"};
+    expandArgAt(e, 1);
+    EXPECT_EQ(e, (std::vector<std::string>{"rtrace", "scene"}));
+}
+
+TEST(RenderOptionsExpand, Errors) {
+    TempDir dir;
+    std::vector<std::string> args{"rtrace", "@" + dir.file("none")};
+    try {
+        expandArgAt(args, 1);
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "cannot expand '@" + dir.file("none") + "'");
+    }
+    ::unsetenv("RP_TEST_RTRACE_UNSET");
+    args = {"rtrace", "$RP_TEST_RTRACE_UNSET"};
+    EXPECT_THROW(expandArgAt(args, 1), InputError);
+    std::ofstream(dir.file("self")) << "@" << dir.file("self");
+    args = {"rtrace", "@" + dir.file("self")};
+    EXPECT_THROW(expandArgAt(args, 1), InputError);
+}
+
+}  // namespace
+}  // namespace rp::render

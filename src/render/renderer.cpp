@@ -1,0 +1,169 @@
+#include "render/renderer.h"
+
+#include <cmath>
+#include <random>
+
+#include "render/renderer_impl.h"
+#include "util/error.h"
+
+namespace rp::render {
+
+namespace {
+
+bool isLightType(PrimType t) {
+    return t == PrimType::Light || t == PrimType::Illum || t == PrimType::Glow ||
+           t == PrimType::Spotlight;
+}
+
+// Materials whose material::evaluate can be non-zero: they take direct light.
+bool takesDirect(const material::MaterialParams& m) {
+    return std::holds_alternative<material::NormalParams>(m) ||
+           std::holds_alternative<material::AnisoParams>(m) ||
+           std::holds_alternative<material::FuncParams>(m) ||
+           std::holds_alternative<material::BrtdParams>(m);
+}
+
+MaterialEntry makeEntry(const Scene& scene, int32_t index) {
+    MaterialEntry e;
+    const Primitive& p = scene.prims[size_t(index)];
+    e.isLight = isLightType(p.type);
+    try {
+        e.params = material::makeMaterial(p);
+    } catch (const InputError& err) {
+        e.error = err.what();
+        return e;
+    }
+    e.diffuseLike = takesDirect(*e.params);
+    std::optional<std::string> alt;
+    if (auto* m = std::get_if<material::MirrorParams>(&*e.params)) alt = m->alternate;
+    if (auto* l = std::get_if<material::LightParams>(&*e.params)) alt = l->alternate;
+    if (alt) {
+        e.hasAlternate = true;
+        e.alternate = lastModifier(scene, index, *alt);
+        if (e.alternate == kVoid && *alt != "void")
+            e.error = InputError(p.loc, std::string(primTypeName(p.type)) + " '" + p.name +
+                                            "': undefined alternate material '" + *alt + "'")
+                          .what();
+    }
+    return e;
+}
+
+// Photon-map mode with a global map (manual 5.1, RADIANCE 5.4): the ambient calculation
+// makes one bounce (final gather) whose sample hits read the global map; any positive
+// -ab acts as 1, and so does -ab 0 (RADIANCE 5.4 raises it to 1, see the caustic and mist
+// validation READMEs); a negative -ab reads the map at the primary hit (no gather).
+AmbientOptions photonAmbientOptions(const RenderOptions& o, const PhotonLighting& photons) {
+    AmbientOptions a = o.ambient;
+    if (photons.active()) a.bounces = a.bounces < 0 ? -1 : 1;
+    return a;
+}
+
+}  // namespace
+
+int32_t lastModifier(const Scene& scene, int32_t before, const std::string& name) {
+    if (name == "void") return kVoid;
+    for (int32_t i = before - 1; i >= 0; --i) {
+        const Primitive& p = scene.prims[size_t(i)];
+        if (isModifier(p.type) && p.name == name) return i;
+    }
+    return kVoid;
+}
+
+Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions& o,
+                     std::vector<std::string> searchPath)
+    : scene(s),
+      geometry(g),
+      options(o),
+      chains(s, std::move(searchPath)),
+      photons(o.photonMaps, o.photonMaxRadius, s),
+      ambientOptions(photonAmbientOptions(o, photons)),
+      // RADIANCE compat (source.c): in photon-map mode virtual sources are not made;
+      // mirror-reflected light then arrives through caustic photons.
+      direct(s, g, o.direct, o.photonMaps.empty()),
+      ambient(ambientOptions, g.sceneCube().size, s, o.limits.minWeight) {
+    materials.resize(s.prims.size());
+    for (size_t i = 0; i < s.prims.size(); ++i)
+        if (primCategory(s.prims[i].type) == PrimCategory::Material)
+            materials[i] = makeEntry(s, int32_t(i));
+    // Every surface's chain must be evaluable (RADIANCE checks modifiers as it loads).
+    for (const Primitive& p : s.prims)
+        if (isSurface(p.type) && p.type != PrimType::Source) chains.checkChain(p.modifier);
+    // -u+: a new random base per run (RADIANCE's uncorrelated sampling); -u-: fixed, so
+    // that a ray's result depends only on its input position.
+    seed = o.uncorrelated ? (uint64_t(std::random_device{}()) << 32 | std::random_device{}()) : 0;
+    shadeOptions.specThreshold = o.specular.threshold;
+    shadeOptions.backVisible = o.backVisible;
+}
+
+const MaterialEntry& Renderer::Impl::material(int32_t index) const {
+    const MaterialEntry& e = materials[size_t(index)];
+    if (!e.params) {
+        if (!e.error.empty()) throw InputError(e.error);
+        throw InputError(scene.prims[size_t(index)].loc,
+                         "'" + scene.prims[size_t(index)].name + "' is not a material");
+    }
+    return e;
+}
+
+Renderer::Renderer(const Scene& scene, const SceneGeometry& geometry,
+                   const RenderOptions& options, std::vector<std::string> searchPath)
+    : scene_(scene), geometry_(geometry), options_(options) {
+    impl_ = std::make_unique<Impl>(scene_, geometry_, options_, std::move(searchPath));
+}
+
+Renderer::~Renderer() = default;
+
+Renderer::ContextPtr Renderer::makeContext() const {
+    ContextPtr ctx(new Context(*this, *impl_));
+    if (impl_->photons.active()) ctx->photonLookups = impl_->photons.makeLookups();
+    return ctx;
+}
+
+void Renderer::ContextDeleter::operator()(Context* c) const { delete c; }
+
+const PhotonLighting& Renderer::photons() const { return impl_->photons; }
+
+RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
+                          uint64_t rayIndex, std::vector<TracedRay>* tree) const {
+    ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);
+    ctx.tree = tree;
+    ctx.treeDepth = 0;
+    RayResult result;
+    result.origin = origin;
+    result.direction = dir;
+    RayState state;
+    state.irradianceHit = options_.irradiance;
+    double distance = 1e10;
+    result.value = ctx.radiance(Ray{origin, dir}, state, &result, distance);
+    ctx.tree = nullptr;
+    return result;
+}
+
+RayResult Renderer::irradiance(Context& ctx, const Vec3& point, const Vec3& normal,
+                               uint64_t rayIndex) const {
+    ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);
+    RayResult result;
+    result.origin = point;
+    result.direction = normal;
+    Vec3 n = normalize(normal);
+    // A hit record for a surface through `point` facing n, with the offset rule of
+    // geometry/ray.h for float-traversed surfaces.
+    Hit hit;
+    hit.point = point;
+    hit.normal = n;
+    hit.front = true;
+    hit.t = 0;
+    hit.offset = std::fmax(maxAbs(point), 1e-3) * kFloatOffsetRel;
+    result.hit = true;
+    result.distance = result.effectiveLength = 0;
+    result.point = point;
+    result.normal = result.unperturbedNormal = n;
+    result.value = ctx.irradianceAt(hit, n, 0, 1);
+    return result;
+}
+
+long Renderer::raysTraced() const { return impl_->rays.load(std::memory_order_relaxed); }
+
+void Renderer::flushAmbientFile() const { impl_->ambient.save(); }
+
+}  // namespace rp::render

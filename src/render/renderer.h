@@ -1,0 +1,110 @@
+// The backward ray tracer shared by rtrace and rpict (RADIANCE raytrace.c/rayfunc
+// dispatch): a ray meets a surface, its material (after patterns, textures and mixtures)
+// is shaded with direct light (direct.h), ideal and sampled specular rays, and indirect
+// light from the ambient calculation (ambient.h). One Renderer per scene and options,
+// shared by all threads; one Renderer::Context per thread.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/scene_geometry.h"
+#include "render/render_options.h"
+#include "scene/primitive.h"
+#include "util/color.h"
+#include "util/vec.h"
+
+namespace rp::render {
+
+// What rtrace's -o specifiers report about one traced ray (RADIANCE rtrace.c oputs).
+struct RayResult {
+    Vec3 origin, direction;   // o d: as traced (direction unit)
+    Color value;              // v: radiance along the ray (irradiance with -i / -I)
+    Color coefficient{1, 1, 1};  // W: the ray's colour coefficient (1 for input rays)
+    double weight = 1;        // w: the ray's weight (1 for input rays)
+    bool hit = false;         // false: the ray left the scene
+    double distance = 1e10;   // L: distance to the first intersection (RADIANCE FHUGE if none)
+    double effectiveLength = 1e10;  // l: effective distance (through mirrors: apparent)
+    Vec3 point;               // p: first intersection
+    Vec3 normal;              // n: perturbed surface normal (RADIANCE's ron + pert)
+    Vec3 unperturbedNormal;   // N
+    double u = 0, v = 0;      // c: local surface coordinates (geometry/ray.h Hit::u, v)
+    int32_t prim = -1;        // s: surface hit (index into Scene::prims; -1 none)
+    int32_t modifier = -1;    // m: its modifier
+    int32_t material = -1;    // M: its material after patterns/textures/aliases
+    Color mirrored;           // r: value contribution of pure specular reflection
+    Color unmirrored;         // x: value minus the mirrored part
+    double mirroredLength = 1e10;    // R: effective length of the mirrored ray
+    double unmirroredLength = 1e10;  // X: effective length of the unmirrored part
+};
+
+// One ray of the ray tree, for rtrace's ~ specifier (every ray traced, parents first).
+struct TracedRay {
+    int depth = 0;  // 0: the input ray
+    RayResult result;
+};
+
+class DirectLighting;
+class Ambient;
+class PhotonLighting;
+
+class Renderer {
+public:
+    // Resolves materials and patterns, builds the source list and the ambient cache
+    // (loading -af). Throws InputError for bad material arguments, missing function
+    // files and materials that are not supported yet.
+    Renderer(const Scene& scene, const SceneGeometry& geometry, const RenderOptions& options,
+             std::vector<std::string> searchPath);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Per-thread state: random streams, pattern evaluators, scratch space. Opaque
+    // outside src/render; ContextPtr destroys it where its type is complete.
+    class Context;
+    struct ContextDeleter {
+        void operator()(Context* c) const;
+    };
+    using ContextPtr = std::unique_ptr<Context, ContextDeleter>;
+    ContextPtr makeContext() const;
+
+    // Traces one input ray from `origin` in unit direction `dir`. `rayIndex` keys the
+    // random streams so that a ray's result does not depend on the thread tracing it
+    // (the shared ambient cache can still make results order dependent, as in RADIANCE).
+    // With options.irradiance (-i) the value at the first surface hit is irradiance.
+    // `tree` (may be null) receives every ray traced for this one, for rtrace -o~.
+    RayResult trace(Context& ctx, const Vec3& origin, const Vec3& dir, uint64_t rayIndex,
+                    std::vector<TracedRay>* tree = nullptr) const;
+
+    // rtrace -I: irradiance at `point` on a surface facing unit `normal` (light arriving
+    // from the side the normal points to), direct plus ambient, as RADIANCE computes it
+    // with a ray starting just off the point.
+    RayResult irradiance(Context& ctx, const Vec3& point, const Vec3& normal,
+                         uint64_t rayIndex) const;
+
+    const Scene& scene() const { return scene_; }
+    const SceneGeometry& geometry() const { return geometry_; }
+    const RenderOptions& options() const { return options_; }
+
+    // Statistics since construction (all threads): rays traced, for -t reports.
+    long raysTraced() const;
+
+    // The -ap photon maps (inactive without), e.g. for the short-lookup count.
+    const PhotonLighting& photons() const;
+
+    // Writes new ambient records to the -af file (if any). Called by the tools at exit.
+    void flushAmbientFile() const;
+
+private:
+    struct Impl;
+    const Scene& scene_;
+    const SceneGeometry& geometry_;
+    RenderOptions options_;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rp::render

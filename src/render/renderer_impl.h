@@ -1,0 +1,117 @@
+// Internals of Renderer shared by its source files (renderer.cpp: construction and the
+// public entry points; shade.cpp: the shading loop; shadow.cpp: shadow rays and
+// hemisphere samples). Not for use outside src/render.
+#pragma once
+
+#include <atomic>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "material/material.h"
+#include "material/surface_chain.h"
+#include "render/ambient.h"
+#include "render/direct.h"
+#include "render/photon_lighting.h"
+#include "render/renderer.h"
+#include "util/rng.h"
+
+namespace rp::render {
+
+// RADIANCE's ray type bits that matter for over-counting (badcomponent): a ray that
+// descends from an ambient sample or a sampled (rough) specular ray must not see the
+// emission of surfaces the direct calculation already counts.
+struct RayState {
+    int depth = 0;             // reflections so far (RADIANCE rlvl)
+    double weight = 1;         // estimated contribution to the result (rweight)
+    int ambientLevel = 0;      // ambient bounces so far
+    bool indirect = false;     // descended from an ambient or sampled specular ray
+    bool primary = true;       // the input ray itself
+    bool irradianceHit = false;  // -i: shade the first surface as white Lambertian
+};
+
+// One material record, checked once. `error` holds the message for a record that cannot
+// be used (not supported yet, bad values): thrown when a ray first meets it, as RADIANCE
+// reports problems with materials when they are used.
+struct MaterialEntry {
+    std::optional<material::MaterialParams> params;
+    std::string error;
+    int32_t alternate = kVoid;  // mirror/illum alternate material record (kVoid: void)
+    bool hasAlternate = false;
+    bool isLight = false;       // light, illum, glow, spotlight
+    bool diffuseLike = false;   // material::evaluate can be non-zero (direct light applies)
+};
+
+struct Renderer::Impl {
+    Impl(const Scene& scene, const SceneGeometry& geometry, const RenderOptions& options,
+         std::vector<std::string> searchPath);
+
+    const Scene& scene;
+    const SceneGeometry& geometry;
+    const RenderOptions& options;
+    material::SurfaceChains chains;
+    std::vector<MaterialEntry> materials;  // indexed by prim (only material records used)
+    PhotonLighting photons;                // -ap maps (inactive without)
+    AmbientOptions ambientOptions;         // -a options as used (photon mode adjusts -ab)
+    DirectLighting direct;
+    Ambient ambient;
+    material::ShadeOptions shadeOptions;
+    uint64_t seed = 0;  // base of every ray's random stream
+    mutable std::atomic<long> rays{0};
+
+    const MaterialEntry& material(int32_t index) const;  // throws for unusable records
+};
+
+class Renderer::Context : public ShadowOracle, public HemisphereTracer {
+public:
+    Context(const Renderer& renderer, const Impl& impl);
+
+    // ShadowOracle
+    std::optional<Hit> closestHit(const Ray& ray) override;
+    ShadowEvent event(const Hit& hit, const Vec3& dir) override;
+    Color distantRadiance(int32_t source, const Vec3& dir) override;
+    // HemisphereTracer
+    Sample trace(const Vec3& origin, const Vec3& dir, int ambientLevel,
+                 double weight) override;
+
+    // Radiance arriving at ray.origin from ray.dir. `first` (may be null) receives what
+    // the first surface hit was; `distance` the distance to it (1e10 if none).
+    Color radiance(const Ray& ray, const RayState& state, RayResult* first, double& distance);
+
+    // Irradiance at a point on a white Lambertian surface facing `normal`.
+    Color irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel, double weight);
+
+    const Renderer& renderer;
+    const Impl& impl;
+    material::SurfaceChainEvaluator chains;
+    Rng rng{0, RngDomain::Sampling, 0};
+    std::vector<TracedRay>* tree = nullptr;
+    int treeDepth = 0;
+    std::unique_ptr<PhotonLighting::Lookups> photonLookups;  // null without photon maps
+
+private:
+    Color shadeHit(const Ray& ray, const Hit& hit, const RayState& state, RayResult* first,
+                   Color& passWeight);
+    Color shadeLayer(const Ray& ray, const Hit& hit, const RayState& state,
+                     const material::ShadingLayer& layer, RayResult* first,
+                     bool& passThrough);
+    Color escaped(const Ray& ray, const RayState& state);
+    Color directAt(const Hit& hit, const material::MaterialParams& params,
+                   const material::SurfacePoint& sp, bool transmits, double weight);
+    Color ambientAt(const Hit& hit, const Vec3& normal, int32_t modifier,
+                    const RayState& state);
+    material::ChainResult resolve(int32_t modifier, const Hit& hit, const Vec3& dir);
+    // Radiance of a light material reached through `modifier` (patterns applied) seen
+    // along `dir`; `isGlow`/`isLight` say what it was (both false: not a light).
+    Color sourceRadiance(int32_t modifier, const Hit& at, const Vec3& dir, bool& isGlow,
+                         bool& isLight);
+    ShadowEvent layerEvent(const Hit& hit, const Vec3& dir, const material::ShadingLayer& l);
+
+    int sampleDepth_ = 0;  // depth of the ray whose ambient samples are being traced
+};
+
+// The record named `name` most recently defined before record `before` (RADIANCE
+// lastmod); kVoid for "void" or when none.
+int32_t lastModifier(const Scene& scene, int32_t before, const std::string& name);
+
+}  // namespace rp::render

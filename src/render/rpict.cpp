@@ -1,0 +1,280 @@
+// rpict's picture loop and header (see rpict.h).
+//
+// RADIANCE compat (rpict.c render/fillscanline/fillscanbar/fillsample): samples are laid
+// out in RADIANCE's quincunx pattern (every hstep = 1.41*ps pixels along scanlines that
+// are ystep = ps/1.41 apart, alternate scanlines offset by half a step). Between two
+// samples along a scanline, and then between two sampled scanlines in each column, the
+// middle pixel is traced when the ends differ by more than -pt (relative, per colour
+// component; also in depth when a z-file is written) and the halves are treated the same
+// way; otherwise the pixels between are interpolated linearly.
+//
+// Not RADIANCE: rpict also remembers where the previous scanline needed subdivision and
+// forces sampling there (its "sample density" array), which makes each scanline depend
+// on the one before. We leave that out so that scanlines, and then the bands between
+// them, can be filled in parallel with results that never depend on the thread count.
+#include "render/rpict.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <ostream>
+
+#include <fmt/format.h>
+
+#include "image/file_write.h"
+#include "image/view.h"
+#include "util/error.h"
+#include "util/rng.h"
+#include "util/warnings.h"
+
+namespace rp::render {
+
+std::string formatProgress(long rays, double percentDone, double seconds) {
+    return fmt::format("{} rays, {:4.2f}% after {:.4f} hours", rays, percentDone,
+                       seconds / 3600.0);
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Serialised, rate-limited progress reports (RADIANCE's -t alarm).
+class Progress {
+public:
+    Progress(const ProgressCallback& cb, int interval, int rows, const std::atomic<long>& rays)
+        : cb_(cb), interval_(interval), rows_(rows), rays_(rays), start_(Clock::now()),
+          last_(start_) {}
+
+    void start() { report(true); }
+    void advance(int rows) {
+        done_ += rows;
+        report(false);
+    }
+    void finish() { report(true); }
+
+private:
+    void report(bool always) {
+        if (!cb_ || interval_ <= 0) return;
+        std::lock_guard<std::mutex> lock(mutex_);
+        auto now = Clock::now();
+        if (!always && now - last_ < std::chrono::seconds(interval_)) return;
+        last_ = now;
+        RenderProgress p;
+        p.percentDone = 100.0 * std::min(done_.load(), rows_) / rows_;
+        p.primaryRays = rays_.load();
+        p.seconds = std::chrono::duration<double>(now - start_).count();
+        cb_(p);
+    }
+
+    const ProgressCallback& cb_;
+    int interval_;
+    int rows_;
+    const std::atomic<long>& rays_;
+    std::atomic<int> done_{0};
+    std::mutex mutex_;
+    Clock::time_point start_, last_;
+};
+
+// RADIANCE's bigdiff: some component differs by more than `md` times the other's value.
+bool bigDiff(const Pixel& a, const Pixel& b, double md) {
+    for (int i = 0; i < 3; ++i)
+        if (a[i] - b[i] > md * b[i] || b[i] - a[i] > md * a[i]) return true;
+    return false;
+}
+
+struct Sampler {
+    ViewRays rays;
+    int xres, yres;
+    double jitter, threshold;
+    bool useDepth;
+    std::vector<Pixel>& pixels;
+    std::vector<float>& z;
+    std::atomic<long>& traced;
+
+    size_t at(int x, int row) const { return size_t(row) * size_t(xres) + size_t(x); }
+
+    void trace(PixelTracer& tracer, int x, int row) {
+        const uint64_t index = uint64_t(row) * uint64_t(xres) + uint64_t(x);
+        // RADIANCE compat (pixjitter): .5 + pj*(.5 - random) in each direction.
+        Rng rng(0, RngDomain::Pixel, index);
+        const double jx = 0.5 + jitter * (0.5 - rng.uniform());
+        const double jy = 0.5 + jitter * (0.5 - rng.uniform());
+        // Image y runs from the bottom; picture rows from the top.
+        auto ray = rays.ray((x + jx) / xres, (yres - 1 - row + jy) / yres);
+        const size_t i = at(x, row);
+        if (!ray) {  // outside a fisheye's circle: black, as RADIANCE
+            pixels[i] = Pixel{0, 0, 0};
+            z[i] = 0;
+            return;
+        }
+        double distance = 0;
+        Color c = tracer(ray->origin, ray->direction, index, &distance);
+        traced.fetch_add(1, std::memory_order_relaxed);
+        pixels[i] = Pixel{float(c.r), float(c.g), float(c.b)};
+        z[i] = float(distance);
+    }
+
+    bool differ(size_t a, size_t b) const {
+        if (useDepth && 2.0 * std::fabs(double(z[a]) - z[b]) > threshold * (double(z[a]) + z[b]))
+            return true;
+        return bigDiff(pixels[a], pixels[b], threshold);
+    }
+
+    // Fills the pixels strictly between positions k0 and k1 of a line whose ends are
+    // known; `pos(k)` gives the pixel index and `trace(k)` traces position k.
+    template <class Pos, class Trace>
+    void fill(int k0, int k1, const Pos& pos, const Trace& traceAt) {
+        if (k1 - k0 <= 1) return;
+        const size_t a = pos(k0), b = pos(k1);
+        if (differ(a, b)) {
+            const int m = k0 + (k1 - k0) / 2;
+            traceAt(m);
+            fill(k0, m, pos, traceAt);
+            fill(m, k1, pos, traceAt);
+            return;
+        }
+        const int len = k1 - k0;
+        for (int k = k0 + 1; k < k1; ++k) {
+            // (b - a) * k / len keeps values that are linear in position exact.
+            const size_t i = pos(k);
+            for (int c = 0; c < 3; ++c)
+                pixels[i][c] = float(pixels[a][c] + (double(pixels[b][c]) - pixels[a][c]) *
+                                                        (k - k0) / len);
+            z[i] = float(z[a] + (double(z[b]) - z[a]) * (k - k0) / len);
+        }
+    }
+
+    // A sampled scanline: pixel 0, then every hstep, the first step halved on odd
+    // sampled scanlines (counted from the top), and the last pixel.
+    void sampledRow(PixelTracer& tracer, int row, int count, int hstep) {
+        std::vector<int> xs{0};
+        const int first = std::max(1, count % 2 == 0 ? hstep : hstep / 2);
+        for (int x = first;; x += hstep) {
+            if (x >= xres - 1) {
+                if (xs.back() != xres - 1) xs.push_back(xres - 1);
+                break;
+            }
+            xs.push_back(x);
+        }
+        auto pos = [&](int x) { return at(x, row); };
+        auto traceAt = [&](int x) { trace(tracer, x, row); };
+        trace(tracer, 0, row);
+        for (size_t j = 1; j < xs.size(); ++j) {
+            traceAt(xs[j]);
+            fill(xs[j - 1], xs[j], pos, traceAt);
+        }
+    }
+
+    // The scanlines strictly between two sampled ones, column by column.
+    void band(PixelTracer& tracer, int row0, int row1) {
+        for (int x = 0; x < xres; ++x) {
+            auto pos = [&](int row) { return at(x, row); };
+            auto traceAt = [&](int row) { trace(tracer, x, row); };
+            fill(row0, row1, pos, traceAt);
+        }
+    }
+};
+
+}  // namespace
+
+Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& factory,
+                      const ProgressCallback& progress, std::vector<float>* depth) {
+    ViewRays rays(options.view);
+    if (options.view.aft > 0) throw notSupportedYet({}, "aft clipping (-va)");
+    const PictureSize size = pictureSize(options);
+    int ps = options.sampleSpacing;
+    if (ps < 1) {
+        ps = 1;
+    } else if (ps > kMaxSampleSpacing) {
+        warn(fmt::format("pixel sampling reduced from {} to {}", ps, kMaxSampleSpacing));
+        ps = kMaxSampleSpacing;
+    }
+    // RADIANCE compat (rpict.c render): quincunx steps.
+    const int hstep = (ps * 140 + 49) / 99;
+    const int ystep = std::max(1, (ps * 99 + 70) / 140);
+
+    Picture pic(size.xres, size.yres);
+    std::vector<float> z(pic.pixels.size(), 0.0f);
+    std::atomic<long> traced{0};
+    Sampler s{rays,  size.xres,  size.yres, options.pixelJitter, options.sampleThreshold,
+              depth != nullptr, pic.pixels, z, traced};
+
+    // Sampled scanlines from the top: 0, ystep, 2*ystep, ... and always the last.
+    std::vector<int> rows;
+    for (int r = 0; r < size.yres - 1; r += ystep) rows.push_back(r);
+    rows.push_back(size.yres - 1);
+    if (rows.size() > 1 && rows[rows.size() - 2] == rows.back()) rows.pop_back();
+
+    Progress report(progress, options.reportInterval, size.yres, traced);
+    report.start();
+    std::mutex factoryMutex;
+    tbb::enumerable_thread_specific<PixelTracer> tracers;
+    auto tracerHere = [&]() -> PixelTracer& {
+        PixelTracer& t = tracers.local();
+        if (!t) {
+            std::lock_guard<std::mutex> lock(factoryMutex);
+            t = factory();
+            RP_CHECK(bool(t));
+        }
+        return t;
+    };
+    tbb::task_arena arena(std::max(1, options.render.threads));
+    arena.execute([&] {
+        tbb::parallel_for(size_t(0), rows.size(), [&](size_t k) {
+            s.sampledRow(tracerHere(), rows[k], int(k), hstep);
+            report.advance(1);
+        });
+        tbb::parallel_for(size_t(1), rows.size(), [&](size_t k) {
+            s.band(tracerHere(), rows[k - 1], rows[k]);
+            report.advance(rows[k] - rows[k - 1] - 1);
+        });
+    });
+    report.finish();
+
+    pic.header.lines.push_back(viewHeaderLine(options.view));
+    // RADIANCE compat (rpict.c): PIXASPECT only when the pixels are not about square.
+    if (size.pixelAspect < .99 || size.pixelAspect > 1.01)
+        pic.header.lines.push_back(fmt::format("PIXASPECT={:f}", size.pixelAspect));
+    if (depth) *depth = std::move(z);
+    return pic;
+}
+
+void addRpictHeader(Picture& picture, const std::string& commandLine, std::time_t now) {
+    auto& lines = picture.header.lines;
+    lines.insert(lines.begin(), {commandLine, std::string("SOFTWARE= ") + kSoftwareName});
+    // RADIANCE compat (header.c fputnow): local capture time, then the same in GMT.
+    std::tm local{}, gmt{};
+    localtime_r(&now, &local);
+    gmtime_r(&now, &gmt);
+    auto stamp = [](const char* key, const std::tm& t) {
+        return fmt::format("{} {:04d}:{:02d}:{:02d} {:02d}:{:02d}:{:02d}", key, t.tm_year + 1900,
+                           t.tm_mon + 1, t.tm_mday, t.tm_hour, t.tm_min, t.tm_sec);
+    };
+    lines.push_back(stamp("CAPDATE=", local));
+    lines.push_back(stamp("GMT=", gmt));
+}
+
+void writeRpictOutput(const Picture& picture, const std::vector<float>* depth,
+                      const RpictOptions& options, std::ostream& out) {
+    if (!options.zFile.empty() && depth) {
+        RP_CHECK(depth->size() == picture.pixels.size());
+        std::string bytes(reinterpret_cast<const char*>(depth->data()),
+                          depth->size() * sizeof(float));
+        writeFileAtomically(options.zFile, bytes);
+    }
+    if (options.outputFile.empty()) {
+        writePicture(out, picture);
+        out.flush();
+        if (!out) throw InputError("write error on standard output");
+    } else {
+        writePicture(options.outputFile, picture);
+    }
+}
+
+}  // namespace rp::render

@@ -1,0 +1,71 @@
+// rpict's picture loop: view rays through jittered pixel positions, RADIANCE's adaptive
+// image sampling (trace a sparse grid, interpolate where neighbours agree, trace where
+// they do not), in parallel, and the picture's header. The ray tracing itself is
+// injected (a PixelTracer per worker thread) so the loop is tested without a scene;
+// options live in rpict_options.h.
+#pragma once
+
+#include <cstdint>
+#include <ctime>
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "image/picture.h"
+#include "render/rpict_options.h"
+#include "util/color.h"
+#include "util/vec.h"
+
+namespace rp::render {
+
+// Traces one primary ray (unit `dir`) and returns its radiance; stores the distance to
+// the first hit in *distance (the tracer's "miss" distance when nothing is hit).
+// `index` = row * xres + column (row 0 at the top), so results never depend on threads.
+using PixelTracer =
+    std::function<Color(const Vec3& org, const Vec3& dir, uint64_t index, double* distance)>;
+// Called once per worker thread (serialised); each tracer is used by one thread only.
+using PixelTracerFactory = std::function<PixelTracer()>;
+
+struct RenderProgress {
+    double percentDone = 0;  // scanlines finished over all scanlines
+    long primaryRays = 0;    // tracer calls so far
+    double seconds = 0;      // wall time since the start
+};
+// Called (serialised, from any thread) at the start, every -t seconds and at the end
+// when options.reportInterval > 0; never otherwise.
+using ProgressCallback = std::function<void(const RenderProgress&)>;
+
+// "1234 rays, 45.00% after 0.0123 hours" (RADIANCE's report() without host and CPU
+// times); the tool prefixes "rpict: ".
+std::string formatProgress(long rays, double percentDone, double seconds);
+
+// The largest -ps RADIANCE allows (MAXDIV); larger values are reduced with a warning.
+constexpr int kMaxSampleSpacing = 16;
+
+// Renders the picture: size from pictureSize(options), header lines VIEW= and (when the
+// pixel aspect is not within 1%) PIXASPECT=. Pixels outside a fisheye's circle are
+// black with depth 0 and are not traced. With `depth` non-null it receives one distance
+// per pixel (top row first) and, as RADIANCE does with -z, depth differences also stop
+// interpolation. Uses options.render.threads worker threads. Throws InputError for an
+// invalid view (ViewRays' messages) and for aft clipping (-va), which the tracer
+// interface cannot honour yet.
+Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& factory,
+                      const ProgressCallback& progress = {}, std::vector<float>* depth = nullptr);
+
+// Completes an rpict header as RADIANCE's rpict writes it: `commandLine` and
+// "SOFTWARE= radphoton ..." before the lines renderPicture added, "CAPDATE=" (local time)
+// and "GMT=" of `now` after them. writePicture then adds FORMAT=.
+void addRpictHeader(Picture& picture, const std::string& commandLine, std::time_t now);
+
+// Writes the picture to options.outputFile (via a temporary file renamed when complete,
+// never a half-written picture) or, without -o, to `out`; and with -z the depth file:
+// raw native-endian floats, one per pixel, top row first (RADIANCE's z-file layout),
+// written the same safe way. Throws InputError when a file cannot be written.
+void writeRpictOutput(const Picture& picture, const std::vector<float>* depth,
+                      const RpictOptions& options, std::ostream& out);
+
+// What the SOFTWARE= line names.
+constexpr const char* kSoftwareName = "radphoton 0.1";
+
+}  // namespace rp::render

@@ -1,0 +1,237 @@
+// rtrace ray input and result formatting (see rtrace_io.h).
+#include "render/rtrace_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+
+#include "util/colr.h"
+#include "util/error.h"
+
+namespace rp::render {
+
+namespace {
+
+constexpr const char* kKnownSpecs = "odvVwWlLcpnNsmMrxRX~";
+constexpr const char* kColorSpecs = "vVWrx";
+
+bool isColorSpec(char c) { return std::strchr(kColorSpecs, c) != nullptr; }
+
+}  // namespace
+
+OutputSpec parseOutputSpec(const std::string& spec, char outputFormat) {
+    OutputSpec out;
+    std::string* into = &out.primary;
+    for (size_t k = 0; k < spec.size(); ++k) {
+        char c = spec[k];
+        if (c == 't' || c == 'T') {
+            // RADIANCE compat (rtrace.c setoutput): a trailing t/T is ignored.
+            if (k + 1 == spec.size()) break;
+            if (into == &out.tree) throw InputError("-o: only one 't' or 'T' allowed in '" + spec + "'");
+            into = &out.tree;
+            out.traceSources = c == 'T';
+            continue;
+        }
+        if (std::strchr(kKnownSpecs, c) == nullptr || c == '\0')
+            throw InputError(std::string("unknown output specifier '") + c + "' in -o" + spec);
+        if (outputFormat == 'c' && !isColorSpec(c))
+            throw InputError(std::string("-fc (RGBE) output only for colour values (v V W r x), not '") +
+                             c + "'");
+        *into += c;
+    }
+    return out;
+}
+
+// ---- input ----
+
+bool RayReader::word(std::string& w) {
+    w.clear();
+    int c;
+    while ((c = in_.get()) != EOF) {
+        if (c == '\n') ++line_;
+        if (!std::isspace(c)) break;
+    }
+    if (c == EOF) return false;
+    wordLine_ = line_;
+    w += char(c);
+    while ((c = in_.peek()) != EOF && !std::isspace(c)) w += char(in_.get());
+    return true;
+}
+
+RayReader::Status RayReader::next(InputRay& ray) {
+    double v[6];
+    if (format_ == 'a') {
+        std::string w;
+        for (int k = 0; k < 6; ++k) {
+            if (!word(w)) {
+                if (k == 0) return Status::End;
+                error_ = "bad ray at input line " + std::to_string(line_) +
+                         ": incomplete ray at end of input";
+                return Status::Bad;
+            }
+            char* end = nullptr;
+            v[k] = std::strtod(w.c_str(), &end);
+            if (*end != '\0') {
+                error_ = "bad ray at input line " + std::to_string(wordLine_) + ": '" + w +
+                         "' is not a number";
+                return Status::Bad;
+            }
+        }
+    } else {
+        const size_t size = format_ == 'f' ? sizeof(float) : sizeof(double);
+        char buf[6 * sizeof(double)];
+        in_.read(buf, std::streamsize(6 * size));
+        const std::streamsize got = in_.gcount();
+        if (got == 0) return Status::End;
+        if (got != std::streamsize(6 * size)) {
+            error_ = "incomplete ray at end of input (" + std::to_string(got) + " of " +
+                     std::to_string(6 * size) + " bytes)";
+            return Status::Bad;
+        }
+        for (int k = 0; k < 6; ++k) {
+            if (format_ == 'f') {
+                float f;
+                std::memcpy(&f, buf + k * size, size);
+                v[k] = f;
+            } else {
+                std::memcpy(&v[k], buf + k * size, size);
+            }
+        }
+    }
+    ray.origin = {v[0], v[1], v[2]};
+    ray.direction = {v[3], v[4], v[5]};
+    ++rays_;
+    return Status::Ok;
+}
+
+// ---- output ----
+
+RayWriter::RayWriter(OutputSpec spec, char format, const Scene* scene)
+    : spec_(std::move(spec)), format_(format), scene_(scene) {}
+
+void RayWriter::real(std::string& out, double v) const {
+    if (format_ == 'a') {
+        // RADIANCE compat (rtrace.c puta): "%e" then a tab after every value.
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%e\t", v);
+        out += buf;
+    } else if (format_ == 'f') {
+        float f = float(v);
+        out.append(reinterpret_cast<const char*>(&f), sizeof f);
+    } else {
+        out.append(reinterpret_cast<const char*>(&v), sizeof v);
+    }
+}
+
+void RayWriter::color(std::string& out, const Color& c) const {
+    if (format_ == 'c') {
+        Colr colr = toColr(c.r, c.g, c.b);
+        out.append(reinterpret_cast<const char*>(colr.data()), colr.size());
+        return;
+    }
+    real(out, c.r);
+    real(out, c.g);
+    real(out, c.b);
+}
+
+// RADIANCE compat (rtrace.c oputs/oputm/oputM): names are text followed by a tab in every
+// output format; "*" when the ray hit nothing, "void" for the void modifier.
+void RayWriter::name(std::string& out, int32_t index, bool hit) const {
+    if (!hit) out += '*';
+    else if (index < 0) out += "void";
+    else if (scene_ && size_t(index) < scene_->prims.size()) out += scene_->prims[size_t(index)].name;
+    else out += std::to_string(index);
+    out += '\t';
+}
+
+void RayWriter::record(std::string& out, const std::string& letters, const RayResult& r) const {
+    const bool hit = r.hit;
+    auto vec = [&](const Vec3& v, bool valid) {
+        for (int k = 0; k < 3; ++k) real(out, valid ? v[k] : 0.0);
+    };
+    for (char c : letters) {
+        switch (c) {
+        case 'o': vec(r.origin, true); break;
+        case 'd': vec(r.direction, true); break;
+        case 'v': color(out, r.value); break;
+        case 'V': color(out, r.value * r.coefficient); break;  // contribution to the result
+        case 'w': real(out, r.weight); break;
+        case 'W': color(out, r.coefficient); break;
+        case 'l': real(out, r.effectiveLength); break;
+        case 'L': real(out, r.distance); break;
+        case 'c': real(out, hit ? r.u : 0.0); real(out, hit ? r.v : 0.0); break;
+        // RADIANCE compat (oputp/oputn/oputN): zeros when nothing was hit.
+        case 'p': vec(r.point, hit); break;
+        case 'n': vec(r.normal, hit); break;
+        case 'N': vec(r.unperturbedNormal, hit); break;
+        case 's': name(out, r.prim, hit && r.prim >= 0); break;
+        case 'm': name(out, r.modifier, hit); break;
+        case 'M': name(out, r.material, hit); break;
+        case 'r': color(out, r.mirrored); break;
+        case 'x': color(out, r.unmirrored); break;
+        case 'R': real(out, r.mirroredLength); break;
+        case 'X': real(out, r.unmirroredLength); break;
+        case '~': out += "~\t"; break;
+        default: break;
+        }
+    }
+}
+
+void RayWriter::write(std::string& out, const RayResult& r,
+                      const std::vector<TracedRay>* tree) const {
+    if (spec_.wantsTree() && tree) {
+        // RADIANCE compat (rtrace.c ourtrace/tabin): one record per traced ray, indented
+        // by one tab per ancestor, before the input ray's own record.
+        for (const TracedRay& t : *tree) {
+            out.append(size_t(std::max(0, t.depth)), '\t');
+            record(out, spec_.tree, t.result);
+            if (format_ == 'a') out += '\n';
+        }
+    }
+    if (spec_.primary.empty()) return;
+    record(out, spec_.primary, r);
+    if (format_ == 'a') out += '\n';
+}
+
+void RayWriter::writeBogus(std::string& out) const {
+    RayResult r;
+    r.value = Color();
+    r.coefficient = Color();
+    r.weight = 0;
+    r.distance = r.effectiveLength = r.mirroredLength = r.unmirroredLength = 0;
+    if (spec_.primary.empty()) return;
+    record(out, spec_.primary, r);
+    if (format_ == 'a') out += '\n';
+}
+
+std::string rtraceHeader(const std::string& commandLine, char outputFormat) {
+    std::string h = "#?RADIANCE\n";
+    h += commandLine + "\n";
+    h += "SOFTWARE= radphoton\n";
+    // RADIANCE compat (fputnow): local capture time and GMT.
+    std::time_t now = std::time(nullptr);
+    char buf[64];
+    std::tm tmv{};
+    localtime_r(&now, &tmv);
+    std::strftime(buf, sizeof buf, "CAPDATE= %Y:%m:%d %H:%M:%S\n", &tmv);
+    h += buf;
+    gmtime_r(&now, &tmv);
+    std::strftime(buf, sizeof buf, "GMT= %Y:%m:%d %H:%M:%S\n", &tmv);
+    h += buf;
+    h += "FORMAT=";
+    h += outputFormat == 'a' ? "ascii" : outputFormat == 'f' ? "float"
+         : outputFormat == 'd' ? "double" : "32-bit_rle_rgbe";
+    h += "\n\n";
+    return h;
+}
+
+std::string resolutionLine(int xres, int yres) {
+    return "-Y " + std::to_string(yres) + " +X " + std::to_string(xres) + "\n";
+}
+
+}  // namespace rp::render

@@ -1,0 +1,88 @@
+// rtrace's ray input and result output (RADIANCE rtrace.c getvec/printvals/oput*): the -o
+// specifier list, reading origin/direction records in -fa/-ff/-fd, and formatting one ray's
+// RayResult (and its ray tree) in -fa/-ff/-fd/-fc. The batch driver is in rtrace_run.h.
+#pragma once
+
+#include <cstdint>
+#include <istream>
+#include <string>
+#include <vector>
+
+#include "render/renderer.h"
+#include "scene/primitive.h"
+#include "util/vec.h"
+
+namespace rp::render {
+
+// -o spec: letters before a 't' or 'T' are printed for each input ray; letters after it for
+// every ray of the ray tree (RADIANCE rtrace.1: "t", "T" also traces rays to sources).
+struct OutputSpec {
+    std::string primary;
+    std::string tree;
+    bool traceSources = false;  // 'T'
+    bool wantsTree() const { return !tree.empty(); }
+};
+
+// Throws InputError for a letter rtrace does not know, and with format 'c' for a letter
+// that is not a colour (v V W r x: RADIANCE writes those as 4-byte RGBE).
+OutputSpec parseOutputSpec(const std::string& spec, char outputFormat);
+
+struct InputRay {
+    Vec3 origin, direction;  // as read (direction not normalised)
+};
+
+// Reads rays: 6 numbers each, ASCII words or native-endian float/double.
+class RayReader {
+public:
+    enum class Status { Ok, End, Bad };
+    RayReader(std::istream& in, char format) : in_(in), format_(format) {}
+
+    // End: clean end of input. Bad: ASCII text that is not a number or a record cut short;
+    // error() says what and where ("bad ray at input line 3: 'abc' is not a number").
+    Status next(InputRay& ray);
+    const std::string& error() const { return error_; }
+    long line() const { return line_; }     // current input line (ASCII)
+    uint64_t rays() const { return rays_; }  // records read so far
+
+private:
+    bool word(std::string& w);  // next white-space separated word (ASCII); counts lines
+    std::istream& in_;
+    char format_;
+    long line_ = 1;
+    long wordLine_ = 1;
+    uint64_t rays_ = 0;
+    std::string error_;
+};
+
+// Formats results for one output spec and format (RADIANCE oput* functions).
+class RayWriter {
+public:
+    // `scene` (may be null: names print as "*" / indices) names surfaces, modifiers and
+    // materials for s, m, M.
+    RayWriter(OutputSpec spec, char format, const Scene* scene);
+
+    // Appends the tree records (if requested) then the ray's own record.
+    void write(std::string& out, const RayResult& r, const std::vector<TracedRay>* tree) const;
+    // RADIANCE's bogus record (zero direction or unusable input): every value zero.
+    void writeBogus(std::string& out) const;
+
+    const OutputSpec& spec() const { return spec_; }
+
+private:
+    void record(std::string& out, const std::string& letters, const RayResult& r) const;
+    void real(std::string& out, double v) const;
+    void color(std::string& out, const Color& c) const;
+    void name(std::string& out, int32_t index, bool hit) const;
+    OutputSpec spec_;
+    char format_;
+    const Scene* scene_;
+};
+
+// The header rtrace writes with -h+: the command line up to the scene file, SOFTWARE,
+// CAPDATE/GMT (RADIANCE fputnow) and FORMAT; the empty line ends it.
+std::string rtraceHeader(const std::string& commandLine, char outputFormat);
+
+// "-Y y +X x\n" (RADIANCE fprtresolu, standard orientation).
+std::string resolutionLine(int xres, int yres);
+
+}  // namespace rp::render

@@ -1,0 +1,46 @@
+// rtrace's command line (RADIANCE rtmain.c, rtrace.1): the options struct, its parser and
+// the -defaults text. The common render options are parsed by render_options.h; the ray
+// input/output formats by rtrace_io.h; the run itself by rtrace_run.h.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/render_options.h"
+
+namespace rp::render {
+
+struct RtraceOptions {
+    RenderOptions render;         // -n, -e, -w and every common option live here
+    std::string outputSpec = "v";  // -o
+    char inputFormat = 'a';       // -f first letter: a f d
+    char outputFormat = 'a';      // -f second letter: a f d c
+    bool header = true;           // -h
+    int xres = 0;                 // -x: flush interval (with -y: picture width)
+    int yres = 0;                 // -y
+    bool immediateIrradiance = false;  // -I
+    bool limitDistance = false;   // -ld (parsed; not supported by the renderer yet)
+    bool printDefaults = false;   // -defaults / -help: print and exit, no scene needed
+    std::string sceneFile;        // the octree / scene file (last argument)
+    std::vector<std::string> args;  // after @file/$EVAR expansion, argv[0] first
+    size_t optionCount = 0;       // args[0..optionCount) are program and options (header)
+};
+
+// RtraceOptions with rtrace's own defaults: RADIANCE compat (rtmain.c): uncorrelated
+// sampling (-u+), -lr -10 and -lw 2e-3.
+RtraceOptions rtraceDefaults();
+
+// Parses argv (argv[0] the program). @file and $EVAR arguments are expanded at option
+// positions. Throws InputError: "unknown option '-xx'", missing/bad values, "missing octree
+// argument", extra arguments after the octree, -fc with specifiers that are not colours.
+// Stops early (printDefaults set, sceneFile empty) at -defaults or -help.
+RtraceOptions parseRtraceArgs(int argc, const char* const* argv);
+RtraceOptions parseRtraceArgs(std::vector<std::string> args);
+
+// What `rtrace -defaults` prints (RADIANCE rtmain.c printdefaults, then the common options).
+std::string formatRtraceDefaults(const RtraceOptions& opt);
+
+// "ascii", "float", "double" or "32-bit_rle_rgbe" (RADIANCE formstr).
+const char* formatName(char format);
+
+}  // namespace rp::render

@@ -1,0 +1,43 @@
+// rtrace's driver loop (RADIANCE rtrace.c rtrace()): read rays in batches, trace each batch
+// in parallel, write results in input order, flush at -x boundaries and after bogus records,
+// check the -x*-y count. The tracing function is injected so that the loop is tested
+// without a scene; tools/rtrace.cpp passes one that calls Renderer.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <istream>
+#include <ostream>
+#include <vector>
+
+#include "render/renderer.h"
+#include "render/rtrace_io.h"
+
+namespace rp::render {
+
+// Traces one input ray. `direction` is unit length; `rayIndex` is the record's 0-based
+// position in the input (bogus records count), so results do not depend on threads.
+// `tree` is non-null when the output wants the ray tree. Called concurrently.
+using RayTraceFn = std::function<RayResult(const Vec3& origin, const Vec3& direction,
+                                           uint64_t rayIndex, std::vector<TracedRay>* tree)>;
+
+struct RtraceRunSettings {
+    char inputFormat = 'a';
+    int xres = 0, yres = 0;  // -x -y
+    int threads = 1;         // -n
+    size_t batchSize = 0;    // rays per batch; 0: 64 per thread (tests use small values)
+};
+
+struct RtraceRunStats {
+    uint64_t rays = 0;     // traced
+    uint64_t bogus = 0;    // zero-direction or non-finite records
+    uint64_t nonFinite = 0;
+};
+
+// Writes the resolution line first when both -x and -y are given. Throws InputError for bad
+// input (after writing and flushing every result before it) and, with -x and -y, for input
+// that ends before x*y rays ("unexpected EOF on input").
+RtraceRunStats runRtrace(const RtraceRunSettings& settings, std::istream& in, std::ostream& out,
+                         const RayWriter& writer, const RayTraceFn& trace);
+
+}  // namespace rp::render

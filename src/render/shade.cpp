@@ -1,0 +1,344 @@
+// The shading loop of the backward pass (RADIANCE raytrace.c, rayshade and the m_*
+// material routines): a ray meets a surface, the modifier chain gives material layers,
+// each layer adds emission, ideal/sampled specular rays, direct light and indirect
+// (ambient) light. Shadow rays and hemisphere samples are in shadow.cpp.
+#include <cmath>
+
+#include "render/renderer_impl.h"
+#include "util/error.h"
+
+namespace rp::render {
+
+namespace {
+
+bool isPlanar(PrimType t) { return t == PrimType::Polygon || t == PrimType::Ring; }
+
+bool passesIrradiance(const material::MaterialParams& m) {
+    // RADIANCE irr_ignore: with -i, transparent materials are passed through so that the
+    // irradiance is computed on the first opaque surface behind them.
+    return std::holds_alternative<material::GlassParams>(m) ||
+           std::holds_alternative<material::DielectricParams>(m) ||
+           std::holds_alternative<material::AntimatterParams>(m);
+}
+
+constexpr double kNoHit = 1e10;
+
+}  // namespace
+
+Renderer::Context::Context(const Renderer& r, const Impl& i)
+    : renderer(r), impl(i), chains(i.chains) {}
+
+material::ChainResult Renderer::Context::resolve(int32_t modifier, const Hit& hit,
+                                                 const Vec3& dir) {
+    if (impl.chains.isPlain(modifier)) {
+        material::ChainResult r;
+        r.count = 1;
+        r.layers[0].material = impl.chains.plainMaterial(modifier);
+        return r;
+    }
+    material::PatternPoint at;
+    at.dir = dir;
+    at.point = hit.point;
+    at.normal = hit.normal;
+    at.distance = hit.t;
+    at.rdot = -dot(dir, hit.normal);
+    return chains.resolve(modifier, at, rng);
+}
+
+Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResult* first,
+                                  double& distance) {
+    impl.rays.fetch_add(1, std::memory_order_relaxed);
+    size_t treeIndex = 0;
+    if (tree) {
+        treeIndex = tree->size();
+        TracedRay t;
+        t.depth = state.depth;
+        t.result.origin = ray.origin;
+        t.result.direction = ray.dir;
+        t.result.weight = state.weight;
+        tree->push_back(t);
+    }
+    Ray r = ray;
+    double travelled = 0;
+    Color total, coef{1, 1, 1};
+    distance = kNoHit;
+    // Transparent surfaces (antimatter, void mixtures, invisible illums) pass the ray on;
+    // bounded so that a pathological stack of them cannot loop.
+    for (int pass = 0; pass < 64; ++pass) {
+        std::optional<Hit> hit = impl.geometry.closestHit(r);
+        if (!hit) {
+            total += coef * escaped(r, state);
+            break;
+        }
+        Color passWeight;
+        Color c = shadeHit(r, *hit, state, first, passWeight);
+        total += coef * c;
+        if (passWeight.max() <= 0) {
+            distance = travelled + hit->t;
+            break;
+        }
+        coef *= passWeight;
+        travelled += hit->t;
+        r = spawnRay(*hit, r.dir);
+    }
+    if (tree) {
+        RayResult& t = (*tree)[treeIndex].result;
+        t.value = total;
+        t.distance = distance;
+    }
+    return total;
+}
+
+Color Renderer::Context::shadeHit(const Ray& ray, const Hit& hit, const RayState& state,
+                                  RayResult* first, Color& passWeight) {
+    material::ChainResult chain = resolve(hit.modifier, hit, ray.dir);
+    Color value;
+    for (int i = 0; i < chain.count; ++i) {
+        const material::ShadingLayer& layer = chain.layers[size_t(i)];
+        bool pass = false;
+        Color c = shadeLayer(ray, hit, state, layer, first, pass);
+        value += c * layer.weight;
+        if (pass) passWeight += Color{1, 1, 1} * layer.weight;
+    }
+    return value;
+}
+
+Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RayState& state,
+                                    const material::ShadingLayer& layer, RayResult* first,
+                                    bool& passThrough) {
+    if (layer.material == kVoid) {
+        passThrough = true;
+        return {};
+    }
+    const MaterialEntry& e = impl.material(layer.material);
+    const material::MaterialParams& params = *e.params;
+
+    // Shading point: RADIANCE raynormal (perturbed normal flipped to the ray's side).
+    Vec3 ng = hit.front ? hit.normal : -hit.normal;
+    Vec3 n = ng;
+    if (lengthSquared(layer.perturbation) > 0) {
+        n = normalize(hit.normal + layer.perturbation);
+        if (!hit.front) n = -n;
+    }
+    material::SurfacePoint sp = material::makeSurfacePoint(ray.dir, ng, hit.front, layer.pattern);
+    sp.normal = n;
+    sp.flat = isPlanar(impl.scene.prims[size_t(hit.prim)].type);
+
+    auto fillFirst = [&](RayResult* f) {
+        if (!f || f->hit) return;
+        f->hit = true;
+        f->distance = f->effectiveLength = hit.t;
+        f->point = hit.point;
+        f->normal = hit.front ? n : -n;  // RADIANCE reports ron + pert, unflipped
+        f->unperturbedNormal = hit.normal;
+        f->u = hit.u;
+        f->v = hit.v;
+        f->prim = hit.prim;
+        f->modifier = hit.modifier;
+        f->material = layer.material;
+    };
+
+    if (e.isLight) {
+        const auto& light = std::get<material::LightParams>(params);
+        bool source = impl.direct.isSourceSurface(hit.prim, ray.origin);
+        // RADIANCE badcomponent: rays descended from ambient or sampled specular rays
+        // must not count light the direct calculation already gave.
+        if (state.indirect && source) {
+            fillFirst(first);
+            return {};
+        }
+        if (light.kind == material::LightParams::Kind::Illum) {
+            // ray.html illum: seen directly (or by specular rays) it is its alternate.
+            if (e.alternate == kVoid) {
+                passThrough = true;
+                return {};
+            }
+            material::ShadingLayer alt = layer;
+            alt.material = impl.chains.isPlain(e.alternate) ? impl.chains.plainMaterial(e.alternate)
+                                                            : kVoid;
+            if (!impl.chains.isPlain(e.alternate)) {
+                material::ChainResult c = resolve(e.alternate, hit, ray.dir);
+                Color v;
+                for (int i = 0; i < c.count; ++i) {
+                    bool p = false;
+                    v += shadeLayer(ray, hit, state, c.layers[size_t(i)], first, p) *
+                         c.layers[size_t(i)].weight;
+                    if (p) passThrough = true;
+                }
+                return v;
+            }
+            return shadeLayer(ray, hit, state, alt, first, passThrough);
+        }
+        fillFirst(first);
+        if (source && !impl.options.direct.visibility && !state.indirect) return {};  // -dv-
+        material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
+        return b.emitted;
+    }
+
+    if (state.irradianceHit) {
+        if (passesIrradiance(params)) {
+            passThrough = true;
+            return {};
+        }
+        fillFirst(first);
+        // -i: the first surface is white Lambertian; the value is its irradiance.
+        return irradianceAt(hit, n, state.ambientLevel, state.weight);
+    }
+
+    if (e.hasAlternate && std::holds_alternative<material::MirrorParams>(params)) {
+        // ray.html mirror: with an alternate material the mirror only relays sources
+        // (virtual sources); every other ray sees the alternate.
+        if (e.alternate == kVoid) {
+            passThrough = true;
+            return {};
+        }
+        material::ChainResult c = resolve(e.alternate, hit, ray.dir);
+        Color v;
+        for (int i = 0; i < c.count; ++i) {
+            bool p = false;
+            v += shadeLayer(ray, hit, state, c.layers[size_t(i)], first, p) *
+                 c.layers[size_t(i)].weight;
+            if (p) passThrough = true;
+        }
+        return v;
+    }
+
+    material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
+    if (b.transparent) {
+        passThrough = true;
+        return {};
+    }
+    fillFirst(first);
+    Color value = b.emitted;
+
+    // Specular rays (RADIANCE rayorigin rules for -lr and -lw).
+    const LimitOptions& lim = impl.options.limits;
+    for (int i = 0; i < b.numRays; ++i) {
+        const material::SpecularRay& sr = b.rays[size_t(i)];
+        Color rc = sr.weight;
+        RayState child = state;
+        child.depth = state.depth + 1;
+        child.weight = state.weight * rc.average();
+        child.primary = false;
+        child.irradianceHit = false;
+        child.indirect = state.indirect || sr.sampled;
+        if (child.weight <= 0) continue;
+        if (lim.maxDepth > 0) {
+            if (child.depth > lim.maxDepth || child.weight < lim.minWeight) continue;
+        } else {
+            if (lim.maxDepth < 0 && child.depth > -lim.maxDepth) continue;
+            if (child.weight < lim.minWeight) {
+                double p = child.weight / lim.minWeight;
+                if (rng.uniform() >= p) continue;
+                rc = rc / p;  // promote the survivor (Russian roulette)
+                child.weight = lim.minWeight;
+            }
+        }
+        Ray out = spawnRay(hit, sr.dir);
+        double d = kNoHit;
+        Color c = radiance(out, child, nullptr, d);
+        if (sr.medium.kind == material::MediumChange::Kind::Given && d < kNoHit) {
+            for (int k = 0; k < 3; ++k) c[k] *= std::exp(-sr.medium.extinction[k] * d);
+        }
+        Color contrib = rc * c;
+        value += contrib;
+        if (first && first->prim == hit.prim && state.primary) {
+            if (sr.kind == material::ScatterKind::SpecularReflection && !sr.sampled) {
+                first->mirrored += contrib;
+                first->mirroredLength = hit.t + d;
+            }
+        }
+    }
+
+    if (e.diffuseLike) {
+        if (impl.photons.hasDirect()) {
+            // Direct photons replace the direct calculation (manual 5.4; a debug aid).
+            value += b.ambientReflect *
+                     impl.photons.directDensity(*photonLookups, hit.point, n);
+        } else {
+            bool transmits = b.ambientTransmit.max() > 0;
+            value += directAt(hit, params, sp, transmits, state.weight);
+        }
+    }
+    if (b.ambientReflect.max() > 0)
+        value += b.ambientReflect * ambientAt(hit, n, layer.material, state);
+    if (b.ambientTransmit.max() > 0)
+        value += b.ambientTransmit * ambientAt(hit, -n, layer.material, state);
+    if (first && first->prim == hit.prim && state.primary) {
+        first->unmirrored = value - first->mirrored;
+        first->unmirroredLength = hit.t;
+    }
+    return value;
+}
+
+Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams& params,
+                                  const material::SurfacePoint& sp, bool transmits,
+                                  double weight) {
+    DirectPoint at;
+    at.weight = weight;
+    at.point = hit.point;
+    at.normal = sp.normal;
+    at.geomNormal = sp.geomNormal;
+    at.hit = &hit;
+    at.transmits = transmits;
+    return impl.direct.compute(
+        at,
+        [&](const Vec3& toLight, double omega) {
+            return material::evaluate(params, sp, toLight, omega);
+        },
+        *this, rng);
+}
+
+Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t modifier,
+                                   const RayState& state) {
+    AmbientPoint ap;
+    ap.point = hit.point;
+    ap.normal = normal;
+    double side = dot(normal, hit.normal) >= 0 ? hit.offset : -hit.offset;
+    ap.offsetOrigin = hit.point + hit.normal * side;
+    ap.modifier = modifier;
+    ap.ambientLevel = state.ambientLevel;
+    ap.weight = state.weight;
+    Color c;
+    const PhotonLighting& pm = impl.photons;
+    if (pm.active()) {
+        // RADIANCE pmapamb.c: a final-gather sample's hit (or any hit with -ab -1) reads
+        // the global map, which holds caustic light too; hits of other rays add the
+        // caustic map and gather the rest.
+        if (pm.hasGlobal() && (state.ambientLevel > 0 || impl.ambientOptions.bounces < 0))
+            return pm.globalDensity(*photonLookups, hit.point, normal);
+        if (pm.hasCaustic() && state.ambientLevel == 0)
+            c += pm.causticDensity(*photonLookups, hit.point, normal);
+    }
+    int saved = sampleDepth_;
+    sampleDepth_ = state.depth;
+    c += impl.ambient.indirect(ap, *this, rng);
+    sampleDepth_ = saved;
+    return c;
+}
+
+Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel,
+                                      double weight) {
+    // White Lambertian receiver: direct irradiance sum L cos omega, plus pi times the
+    // ambient calculation's average radiance.
+    DirectPoint at;
+    at.point = hit.point;
+    at.normal = normal;
+    at.geomNormal = normal;
+    at.hit = &hit;
+    at.weight = weight;
+    Color e = impl.direct.compute(
+        at,
+        [&](const Vec3& toLight, double) {
+            double c = dot(normal, toLight);
+            return c > 0 ? Color{c, c, c} : Color{};
+        },
+        *this, rng);
+    RayState st;
+    st.ambientLevel = ambientLevel;
+    st.weight = weight;
+    st.depth = sampleDepth_;
+    return e + ambientAt(hit, normal, kVoid, st) * kPi;
+}
+
+}  // namespace rp::render

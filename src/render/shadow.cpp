@@ -1,0 +1,203 @@
+// Shadow rays (ShadowOracle: what a ray toward a light source meets), rays that leave
+// the scene (distant sources and skies), and ambient hemisphere samples
+// (HemisphereTracer) for the renderer core.
+#include <cmath>
+
+#include "render/renderer_impl.h"
+
+namespace rp::render {
+
+namespace {
+constexpr double kNoHit = 1e10;
+}
+
+std::optional<Hit> Renderer::Context::closestHit(const Ray& ray) {
+    return impl.geometry.closestHit(ray);
+}
+
+ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
+                                          const material::ShadingLayer& layer) {
+    ShadowEvent ev;
+    if (layer.material == kVoid) {
+        ev.kind = ShadowEvent::Kind::Transmit;
+        ev.colour = Color{1, 1, 1};
+        return ev;
+    }
+    const MaterialEntry& e = impl.material(layer.material);
+    const material::MaterialParams& params = *e.params;
+    Vec3 ng = hit.front ? hit.normal : -hit.normal;
+    material::SurfacePoint sp = material::makeSurfacePoint(dir, ng, hit.front, layer.pattern);
+    if (lengthSquared(layer.perturbation) > 0) {
+        sp.normal = normalize(hit.normal + layer.perturbation);
+        if (!hit.front) sp.normal = -sp.normal;
+    }
+    if (e.isLight) {
+        material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
+        const auto& light = std::get<material::LightParams>(params);
+        if (light.kind == material::LightParams::Kind::Illum)
+            b.emitted = light.radiance * layer.pattern;  // a source for shadow rays
+        ev.kind = ShadowEvent::Kind::Emit;
+        ev.colour = b.emitted;
+        return ev;
+    }
+    if (std::holds_alternative<material::AntimatterParams>(params)) {
+        ev.kind = ShadowEvent::Kind::Transmit;
+        ev.colour = Color{1, 1, 1};
+        return ev;
+    }
+    if (const auto* m = std::get_if<material::MirrorParams>(&params)) {
+        if (!hit.front) return ev;
+        ev.kind = ShadowEvent::Kind::Reflect;
+        ev.colour = m->color * layer.pattern;
+        return ev;
+    }
+    if (const auto* t = std::get_if<material::NormalParams>(&params)) {
+        if (!hit.front && !impl.options.backVisible) {
+            ev.kind = ShadowEvent::Kind::Transmit;
+            ev.colour = Color{1, 1, 1};
+            return ev;
+        }
+        // RADIANCE normal.c: a shadow ray passes trans straight through with the
+        // specular transmission (the diffuse part is lit, not transparent).
+        if (t->kind == material::NormalParams::Kind::Trans && t->tspec > 0) {
+            ev.kind = ShadowEvent::Kind::Transmit;
+            ev.colour = t->color * layer.pattern * t->tspec;
+        }
+        return ev;
+    }
+    if (std::holds_alternative<material::GlassParams>(params) ||
+        std::holds_alternative<material::DielectricParams>(params)) {
+        material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
+        if (b.transparent) {
+            ev.kind = ShadowEvent::Kind::Transmit;
+            ev.colour = Color{1, 1, 1};
+            return ev;
+        }
+        for (int i = 0; i < b.numRays; ++i) {
+            const material::SpecularRay& r = b.rays[size_t(i)];
+            // Only unbent transmission relays light to a source sample (RADIANCE traces
+            // shadow rays straight; a refracting dielectric blocks them).
+            if (r.kind == material::ScatterKind::SpecularTransmission &&
+                dot(r.dir, dir) > 1 - 1e-9) {
+                ev.kind = ShadowEvent::Kind::Transmit;
+                ev.colour = r.weight;
+            }
+        }
+        return ev;
+    }
+    return ev;  // opaque
+}
+
+ShadowEvent Renderer::Context::event(const Hit& hit, const Vec3& dir) {
+    material::ChainResult chain = resolve(hit.modifier, hit, dir);
+    if (chain.count == 1) return layerEvent(hit, dir, chain.layers[0]);
+    // Mixtures: emission wins (the shadow ray reached a source); otherwise the layers'
+    // transmission (or reflection) is averaged by weight, opaque layers counting zero.
+    ShadowEvent out;
+    Color emit, pass;
+    bool anyEmit = false;
+    ShadowEvent::Kind passKind = ShadowEvent::Kind::Transmit;
+    for (int i = 0; i < chain.count; ++i) {
+        const material::ShadingLayer& l = chain.layers[size_t(i)];
+        ShadowEvent ev = layerEvent(hit, dir, l);
+        if (ev.kind == ShadowEvent::Kind::Emit) {
+            anyEmit = true;
+            emit += ev.colour * l.weight;
+        } else if (ev.kind != ShadowEvent::Kind::Opaque) {
+            passKind = ev.kind;
+            pass += ev.colour * l.weight;
+        }
+    }
+    if (anyEmit) {
+        out.kind = ShadowEvent::Kind::Emit;
+        out.colour = emit;
+    } else if (pass.max() > 0) {
+        out.kind = passKind;
+        out.colour = pass;
+    }
+    return out;
+}
+
+Color Renderer::Context::sourceRadiance(int32_t modifier, const Hit& at, const Vec3& dir,
+                                        bool& isGlow, bool& isLight) {
+    isGlow = isLight = false;
+    material::ChainResult chain = resolve(modifier, at, dir);
+    Color value;
+    for (int i = 0; i < chain.count; ++i) {
+        const material::ShadingLayer& l = chain.layers[size_t(i)];
+        if (l.material == kVoid) continue;
+        const MaterialEntry& e = impl.material(l.material);
+        if (!e.isLight) continue;
+        const auto& light = std::get<material::LightParams>(*e.params);
+        if (light.kind == material::LightParams::Kind::Glow)
+            isGlow = true;
+        else
+            isLight = true;
+        value += light.radiance * l.pattern * l.weight;
+    }
+    return value;
+}
+
+Color Renderer::Context::distantRadiance(int32_t source, const Vec3& dir) {
+    const DistantSource& src = impl.geometry.sources()[size_t(source)];
+    Hit at;
+    at.point = dir * kNoHit;
+    at.normal = -dir;
+    at.t = kNoHit;
+    at.prim = src.prim;
+    at.modifier = src.modifier;
+    bool glow = false, light = false;
+    return sourceRadiance(src.modifier, at, dir, glow, light);
+}
+
+Color Renderer::Context::escaped(const Ray& ray, const RayState& state) {
+    std::vector<int32_t> matches = impl.geometry.sourcesInDirection(ray.dir);
+    if (matches.empty()) return {};
+    // RADIANCE compat (source.c): a ray leaving the scene takes the first non-glow
+    // source whose disk contains its direction, else the first glow (sky, ground).
+    int32_t chosen = -1;
+    Color chosenValue;
+    bool chosenGlow = false;
+    for (int32_t idx : matches) {
+        const DistantSource& src = impl.geometry.sources()[size_t(idx)];
+        Hit at;
+        at.point = ray.origin + ray.dir * kNoHit;
+        at.normal = -ray.dir;
+        at.t = kNoHit;
+        at.prim = src.prim;
+        at.modifier = src.modifier;
+        bool glow = false, light = false;
+        Color v = sourceRadiance(src.modifier, at, ray.dir, glow, light);
+        if (!glow && !light) continue;
+        if (chosen < 0 || (chosenGlow && !glow)) {
+            chosen = idx;
+            chosenValue = v;
+            chosenGlow = glow;
+            if (!glow) break;
+        }
+    }
+    if (chosen < 0) return {};
+    bool directSource = impl.direct.isDistantSource(chosen);
+    if (directSource && state.indirect) return {};  // counted by the direct calculation
+    if (directSource && !impl.options.direct.visibility) return {};
+    return chosenValue;
+}
+
+HemisphereTracer::Sample Renderer::Context::trace(const Vec3& origin, const Vec3& dir,
+                                                  int ambientLevel, double weight) {
+    RayState st;
+    st.depth = sampleDepth_ + 1;
+    st.weight = weight;
+    st.ambientLevel = ambientLevel;
+    st.indirect = true;
+    st.primary = false;
+    Sample s;
+    double d = kNoHit;
+    int saved = sampleDepth_;
+    s.radiance = radiance(Ray{origin, dir}, st, nullptr, d);
+    sampleDepth_ = saved;
+    s.distance = d;
+    return s;
+}
+
+}  // namespace rp::render

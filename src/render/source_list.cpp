@@ -1,0 +1,263 @@
+// Building the direct calculation's source list (see source_list.h).
+#include "render/source_list.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "material/material.h"
+
+namespace rp::render {
+
+namespace {
+
+constexpr double kFtiny = 1e-6;  // RADIANCE FTINY
+
+double area2(const std::array<double, 6>& t) {
+    return (t[2] - t[0]) * (t[5] - t[1]) - (t[4] - t[0]) * (t[3] - t[1]);
+}
+
+Vec3 sourceCentre(const light::LightSource& s, const ShapeSet& shapes,
+                  const std::vector<PlanarRegion>& regions, int32_t region) {
+    size_t i = size_t(s.shapeIndex);
+    switch (s.shape) {
+    case light::EmitterShape::Polygon: return regions[size_t(region)].centroid;
+    case light::EmitterShape::Sphere: return shapes.spheres[i].center;
+    case light::EmitterShape::Ring: return shapes.rings[i].centre;
+    case light::EmitterShape::Cone: {
+        const ConeShape& c = shapes.cones[i];
+        return c.p0 + c.axis * (0.5 * c.length);
+    }
+    case light::EmitterShape::Distant: return shapes.sources[i].dir;
+    }
+    return {};
+}
+
+// Side (+1/-1) of the mirror from which `src` (real or virtual) can be seen through it,
+// 0 if none: a local source must lie off the plane, a distant one off its direction.
+int reflectingSide(const MirrorPlane& m, const DirectSource& src) {
+    double s = src.distant() ? dot(m.region.normal, src.apparentCentre)
+                             : m.region.signedDistance(src.apparentCentre);
+    double tol = src.distant() ? kFtiny : kFtiny * std::fmax(1.0, maxAbs(src.apparentCentre));
+    if (std::fabs(s) <= tol) return 0;
+    return s > 0 ? 1 : -1;
+}
+
+// Whether a flat real source emits toward some part of the mirror (its front faces a
+// mirror corner).
+bool facesMirror(const DirectSource& src, const ShapeSet& shapes,
+                 const std::vector<PlanarRegion>& regions, const MirrorPlane& m) {
+    Vec3 n;
+    if (src.light.shape == light::EmitterShape::Polygon)
+        n = regions[size_t(src.region)].normal;
+    else if (src.light.shape == light::EmitterShape::Ring)
+        n = shapes.rings[size_t(src.light.shapeIndex)].normal;
+    else
+        return true;
+    for (const auto& t : m.region.tris)
+        for (int k = 0; k < 3; ++k)
+            if (dot(n, m.region.at(t[2 * k], t[2 * k + 1]) - src.centre) > 0) return true;
+    return false;
+}
+
+// Modifiers of surfaces a pretest ray may pass: anything that is not plainly opaque
+// (transmitting materials, light sources, unknown kinds), since the oracle that knows
+// materials is not available here. Conservative: a virtual source is only dropped when
+// opaque surfaces block every pretest ray.
+ModifierSet passableModifiers(const Scene& scene, const ShapeSet& shapes) {
+    ModifierSet skip;
+    auto consider = [&](int32_t prim, int32_t modifier) {
+        int32_t mat = light::findMaterial(scene, prim);
+        if (mat == kVoid) return;
+        switch (scene.prims[size_t(mat)].type) {
+        case PrimType::Plastic:
+        case PrimType::Metal:
+        case PrimType::Plastic2:
+        case PrimType::Metal2:
+        case PrimType::Plasfunc:
+        case PrimType::Metfunc:
+        case PrimType::Plasdata:
+        case PrimType::Metdata:
+        case PrimType::Mirror:
+            return;
+        default: skip.add(modifier);
+        }
+    };
+    for (const auto& p : shapes.polygons) consider(p.prim, p.modifier);
+    for (const auto& p : shapes.spheres) consider(p.prim, p.modifier);
+    for (const auto& p : shapes.cones) consider(p.prim, p.modifier);
+    for (const auto& p : shapes.rings) consider(p.prim, p.modifier);
+    return skip;
+}
+
+// RADIANCE's -dp pretest (virtuals.c vstestvis), geometric: whether some point of the
+// mirror sees the real source's centre past opaque surfaces. Sample count: `density`
+// per steradian of the mirror as seen from the source (at least 4, at most 256).
+bool mirrorSeesSource(const SceneGeometry& geometry, const ModifierSet& skip,
+                      const MirrorPlane& m, const DirectSource& src, int side, int density) {
+    const PlanarRegion& r = m.region;
+    double omega = 2 * kPi;
+    if (!src.distant()) {
+        double d = length(src.centre - r.centroid);
+        omega = d > 0 ? std::fmin(2 * kPi, r.area / (d * d)) : 2 * kPi;
+    }
+    int n = int(std::clamp(std::ceil(density * omega), 4.0, 256.0));
+    int k = int(std::ceil(std::sqrt(double(n))));
+    Vec3 lift = r.normal * (side * 1e-6 * std::fmax(1.0, maxAbs(r.centroid)));
+    for (int i = 0; i < k; ++i)
+        for (int j = 0; j < k; ++j) {
+            double u = r.u0 + (i + 0.5) / k * (r.u1 - r.u0);
+            double v = r.v0 + (j + 0.5) / k * (r.v1 - r.v0);
+            if (!r.contains(u, v)) continue;
+            Vec3 p = r.at(u, v) + lift;
+            Vec3 dir = src.distant() ? src.centre : src.centre - p;
+            double dist = src.distant() ? HUGE_VAL : length(dir);
+            if (!src.distant()) dir = dir / dist;
+            // Light surfaces are passed (so the source's own never blocks); stop short
+            // of the source's centre.
+            double tmax = src.distant() ? HUGE_VAL : dist * (1 - 1e-6);
+            if (!geometry.occluded(p, dir, tmax, &skip)) return true;
+        }
+    return false;
+}
+
+}  // namespace
+
+bool PlanarRegion::contains(double u, double v) const {
+    if (u < u0 || u > u1 || v < v0 || v > v1) return false;
+    for (const auto& t : tris) {
+        double a = (t[2] - t[0]) * (v - t[1]) - (u - t[0]) * (t[3] - t[1]);
+        double b = (t[4] - t[2]) * (v - t[3]) - (u - t[2]) * (t[5] - t[3]);
+        double c = (t[0] - t[4]) * (v - t[5]) - (u - t[4]) * (t[1] - t[5]);
+        if (a >= 0 && b >= 0 && c >= 0) return true;
+    }
+    return false;
+}
+
+PlanarRegion makePlanarRegion(const ShapeSet& shapes, size_t index) {
+    const PolygonShape& p = shapes.polygons[index];
+    PlanarRegion r;
+    r.normal = p.normal;
+    r.offset = p.offset;
+    r.origin = p.origin;
+    r.uAxis = p.uAxis;
+    r.vAxis = cross(p.normal, p.uAxis);
+    r.u0 = r.v0 = HUGE_VAL;
+    r.u1 = r.v1 = -HUGE_VAL;
+    double cu = 0, cv = 0;
+    for (size_t t = 0; t < shapes.triangles.size(); ++t) {
+        if (shapes.trianglePolygon[t] != index) continue;
+        std::array<double, 6> uv;
+        for (int k = 0; k < 3; ++k) {
+            Vec3 rel = shapes.vertices[shapes.triangles[t][size_t(k)]] - r.origin;
+            uv[size_t(2 * k)] = dot(rel, r.uAxis);
+            uv[size_t(2 * k + 1)] = dot(rel, r.vAxis);
+            r.u0 = std::fmin(r.u0, uv[size_t(2 * k)]);
+            r.u1 = std::fmax(r.u1, uv[size_t(2 * k)]);
+            r.v0 = std::fmin(r.v0, uv[size_t(2 * k + 1)]);
+            r.v1 = std::fmax(r.v1, uv[size_t(2 * k + 1)]);
+        }
+        double a = 0.5 * area2(uv);
+        if (a < 0) {  // keep every triangle counter-clockwise about the normal
+            std::swap(uv[2], uv[4]);
+            std::swap(uv[3], uv[5]);
+            a = -a;
+        }
+        if (a <= 0) continue;
+        r.tris.push_back(uv);
+        r.area += a;
+        cu += a * (uv[0] + uv[2] + uv[4]) / 3;
+        cv += a * (uv[1] + uv[3] + uv[5]) / 3;
+    }
+    r.centroid = r.area > 0 ? r.at(cu / r.area, cv / r.area) : r.origin;
+    return r;
+}
+
+SourceList buildSourceList(const Scene& scene, const SceneGeometry& geometry,
+                           const DirectOptions& options, bool virtualSources) {
+    SourceList list;
+    const ShapeSet& shapes = geometry.shapes();
+    list.sourceOfPrim.assign(scene.prims.size(), -1);
+    list.distantInList.assign(shapes.sources.size(), false);
+
+    // RADIANCE compat: illum surfaces are direct sources in the backward pass.
+    light::LightSearchOptions search;
+    search.illumEmits = true;
+    for (const light::LightSource& ls : light::findLightSources(scene, geometry, search)) {
+        const bool glow = ls.params.kind == material::LightParams::Kind::Glow;
+        if (glow && ls.distant()) continue;  // sky or ground glow: SSKIP
+        DirectSource src;
+        src.light = ls;
+        if (glow) src.proximity = ls.params.glowMaxRadius;
+        if (ls.shape == light::EmitterShape::Polygon) {
+            src.region = int32_t(list.regions.size());
+            list.regions.push_back(makePlanarRegion(shapes, size_t(ls.shapeIndex)));
+            if (list.regions.back().area <= 0) {
+                list.regions.pop_back();
+                continue;
+            }
+        }
+        src.centre = sourceCentre(ls, shapes, list.regions, src.region);
+        src.apparentCentre = src.centre;
+        if (ls.distant())
+            list.distantInList[size_t(ls.shapeIndex)] = true;
+        else
+            list.sourceOfPrim[size_t(ls.prim)] = int32_t(list.sources.size());
+        list.sources.push_back(std::move(src));
+    }
+    list.realCount = list.sources.size();
+    if (!virtualSources || options.relays <= 0 || list.sources.empty()) return list;
+
+    // Planar mirrors. RADIANCE's m_mirror relays only through flat surfaces; a curved
+    // mirror (sphere, cone) makes no virtual source.
+    for (size_t i = 0; i < shapes.polygons.size(); ++i) {
+        int32_t mat = light::findMaterial(scene, shapes.polygons[i].prim);
+        if (mat == kVoid || scene.prims[size_t(mat)].type != PrimType::Mirror) continue;
+        MirrorPlane m;
+        m.prim = shapes.polygons[i].prim;
+        m.modifier = shapes.polygons[i].modifier;
+        m.region = makePlanarRegion(shapes, i);
+        if (m.region.area > 0) list.mirrors.push_back(std::move(m));
+    }
+    if (list.mirrors.empty()) return list;
+
+    const ModifierSet passable = passableModifiers(scene, shapes);
+    // Level by level (virtuals.c addvirtuals): each source of the previous level seen
+    // through each mirror other than the one it was last relayed by.
+    size_t levelStart = 0, levelEnd = list.sources.size();
+    for (int level = 1; level <= options.relays; ++level) {
+        for (size_t s = levelStart; s < levelEnd; ++s) {
+            for (size_t mi = 0; mi < list.mirrors.size(); ++mi) {
+                const DirectSource& base = list.sources[s];
+                const MirrorPlane& m = list.mirrors[mi];
+                if (!base.mirrors.empty() && base.mirrors.front() == int32_t(mi)) continue;
+                // A mirror reflects on its front only (the oracle answers Opaque on its
+                // back), so only sources in front of it are relayed.
+                int side = reflectingSide(m, base);
+                if (side <= 0) continue;
+                if (base.mirrors.empty()) {
+                    if (!facesMirror(base, shapes, list.regions, m)) continue;
+                    if (options.pretest > 0 &&
+                        !mirrorSeesSource(geometry, passable, m, base, side, options.pretest))
+                        continue;
+                } else {
+                    // The relaying mirror must lie on the side light reaches this one from.
+                    const MirrorPlane& prev = list.mirrors[size_t(base.mirrors.front())];
+                    double d = m.region.signedDistance(prev.region.centroid);
+                    if (d * side <= 0) continue;
+                }
+                DirectSource v = base;
+                v.mirrors.insert(v.mirrors.begin(), int32_t(mi));
+                v.mirrorSide = side;
+                v.apparentCentre = base.distant() ? m.reflectDir(base.apparentCentre)
+                                                  : m.reflectPoint(base.apparentCentre);
+                list.sources.push_back(std::move(v));
+            }
+        }
+        levelStart = levelEnd;
+        levelEnd = list.sources.size();
+        if (levelStart == levelEnd) break;
+    }
+    return list;
+}
+
+}  // namespace rp::render

@@ -1,0 +1,107 @@
+// rpict: render a RADIANCE picture of a scene (RADIANCE rpict.1). Options in
+// src/render/rpict_options.h, the picture loop in rpict.h, the renderer in renderer.h.
+//   rpict [options] [@file] [$EVAR] scene.oct|scene.rad ...
+#include <algorithm>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <vector>
+
+#include "calc/search_path.h"
+#include "gen/builtin_commands.h"
+#include "geometry/scene_geometry.h"
+#include "image/view.h"
+#include "render/command_args.h"
+#include "render/renderer.h"
+#include "render/rpict.h"
+#include "render/rpict_options.h"
+#include "render/rpict_tracer.h"
+#include "scene/scene_load.h"
+#include "util/error.h"
+#include "util/header.h"
+#include "util/paths.h"
+#include "util/warnings.h"
+
+namespace {
+
+using namespace rp::render;
+
+int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
+    std::vector<std::string> args = argVector(argc, argv);
+    args.erase(args.begin());
+    RpictCommand cmd = parseRpictCommand(args);
+    const RpictOptions& o = cmd.options;
+    if (cmd.printVersion) {
+        std::cout << kSoftwareName << '\n';
+        return 0;
+    }
+    if (cmd.printDefaults) {
+        std::cout << formatRpictDefaults(o);
+        return 0;
+    }
+    // RADIANCE compat (rpmain.c fixargv0 + printargs): the header's command line starts
+    // with the program's base name and stops before the scene.
+    const int headerCount = std::max(1, argc - int(cmd.sceneFiles.size()));
+    std::vector<const char*> headerArgs(argv, argv + headerCount);
+    headerArgs[0] = "rpict";
+    const std::string commandLine = rp::commandLine(int(headerArgs.size()), headerArgs.data());
+    if (!o.render.errorFile.empty()) {
+        // RADIANCE compat (rpmain.c -e): diagnostics appended to the file.
+        diagFile.open(o.render.errorFile, std::ios::app);
+        if (!diagFile) throw rp::InputError("cannot open error file " + o.render.errorFile);
+        diag = &diagFile;
+        *diag << "**************\n*** " << rp::commandLine(argc, argv) << '\n';
+    }
+    std::ostream* warnTo = diag;
+    const bool warnings = o.render.warnings;
+    rp::setWarningSink([warnTo, warnings](const std::string& m) {
+        if (warnings) *warnTo << "rpict: warning: " << m << '\n';
+    });
+    // RADIANCE reads the octree from standard input without a scene argument; we need
+    // the scene to be named (use "-" for standard input).
+    if (cmd.sceneFiles.empty()) throw rp::InputError("missing scene file");
+    if (o.render.mist.any())
+        throw rp::notSupportedYet({}, "global participating medium (-me/-ma/-mg/-ms)");
+    // Check the view before the (slow) scene load, as RADIANCE's setview does.
+    rp::ViewRays checkView(o.view);
+    if (o.view.aft > 0) throw rp::notSupportedYet({}, "aft clipping (-va)");
+
+    rp::Scene scene = rp::loadScene(cmd.sceneFiles, rp::gen::builtinLoadOptions());
+    rp::SceneGeometry geometry(scene);
+    Renderer renderer(scene, geometry, o.render, rp::calc::defaultSearchPath(rp::projectLibDir()));
+
+    auto progress = [&](const RenderProgress& p) {
+        // The renderer's count includes shadow and ambient rays, as RADIANCE's nrays.
+        *diag << "rpict: " << formatProgress(renderer.raysTraced(), p.percentDone, p.seconds)
+              << std::endl;
+    };
+    std::vector<float> depth;
+    rp::Picture picture;
+    try {
+        picture = renderPicture(o, rendererPixelTracers(renderer), progress,
+                                o.zFile.empty() ? nullptr : &depth);
+    } catch (...) {
+        renderer.flushAmbientFile();  // keep the records computed so far, as RADIANCE
+        throw;
+    }
+    renderer.flushAmbientFile();
+    addRpictHeader(picture, commandLine, std::time(nullptr));
+    writeRpictOutput(picture, o.zFile.empty() ? nullptr : &depth, o, std::cout);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::ostream* diag = &std::cerr;
+    std::ofstream diagFile;
+    try {
+        return run(argc, argv, diag, diagFile);
+    } catch (const rp::InputError& e) {
+        *diag << "rpict: " << e.what() << '\n';
+        if (diag != &std::cerr) std::cerr << "rpict: " << e.what() << '\n';
+        return 1;
+    }
+}

@@ -1,0 +1,96 @@
+// rtrace: trace rays from standard input through a scene (RADIANCE rtrace.1). Options in
+// src/render/rtrace_options.h, input/output in rtrace_io.h, the loop in rtrace_run.h.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <vector>
+
+#include "calc/search_path.h"
+#include "gen/builtin_commands.h"
+#include "geometry/scene_geometry.h"
+#include "render/renderer.h"
+#include "render/rtrace_io.h"
+#include "render/rtrace_options.h"
+#include "render/rtrace_run.h"
+#include "render/rtrace_tracer.h"
+#include "scene/scene_load.h"
+#include "util/error.h"
+#include "util/header.h"
+#include "util/paths.h"
+#include "util/warnings.h"
+
+namespace {
+
+std::string headerCommandLine(const rp::render::RtraceOptions& o) {
+    std::vector<const char*> argv;
+    for (size_t k = 0; k < o.optionCount && k < o.args.size(); ++k) argv.push_back(o.args[k].c_str());
+    return rp::commandLine(int(argv.size()), argv.data());
+}
+
+int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& diagFile) {
+    using namespace rp::render;
+    if (!o.render.errorFile.empty()) {
+        // RADIANCE compat (rtmain.c -e): diagnostics appended to the file.
+        diagFile.open(o.render.errorFile, std::ios::app);
+        if (!diagFile) {
+            std::cerr << "rtrace: cannot open error file " << o.render.errorFile << '\n';
+            return 2;
+        }
+        diag = &diagFile;
+        *diag << "**************\n*** " << headerCommandLine(o) << ' ' << o.sceneFile << '\n';
+    }
+    std::ostream* warnTo = diag;
+    const bool warnings = o.render.warnings;
+    rp::setWarningSink([warnTo, warnings](const std::string& m) {
+        if (warnings) *warnTo << "rtrace: warning: " << m << '\n';
+    });
+    if (o.limitDistance) throw rp::notSupportedYet({}, "rtrace -ld (limit distance)");
+    if (o.render.mist.any()) throw rp::notSupportedYet({}, "global participating medium (-me/-ma/-mg/-ms)");
+    OutputSpec spec = parseOutputSpec(o.outputSpec, o.outputFormat);
+
+    rp::Scene scene = rp::loadScene({o.sceneFile}, rp::gen::builtinLoadOptions());
+    rp::SceneGeometry geometry(scene);
+    Renderer renderer(scene, geometry, o.render, rp::calc::defaultSearchPath(rp::projectLibDir()));
+
+    std::ostream& out = std::cout;
+    if (o.header) out << rtraceHeader(headerCommandLine(o), o.outputFormat);
+
+    // rtrace -I: the input origin is a surface point and the direction its normal.
+    RendererTracer tracer(renderer, o.immediateIrradiance);
+    RtraceRunSettings settings;
+    settings.inputFormat = o.inputFormat;
+    settings.xres = o.xres;
+    settings.yres = o.yres;
+    settings.threads = o.render.threads;
+    RayWriter writer(spec, o.outputFormat, &scene);
+    try {
+        runRtrace(settings, std::cin, out, writer, tracer.trace());
+    } catch (...) {
+        renderer.flushAmbientFile();  // keep the records computed so far, as RADIANCE
+        throw;
+    }
+    renderer.flushAmbientFile();
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::ios::sync_with_stdio(false);  // rays are read and written through iostreams only
+    std::ostream* diag = &std::cerr;
+    std::ofstream diagFile;
+    try {
+        rp::render::RtraceOptions o = rp::render::parseRtraceArgs(argc, argv);
+        if (o.printDefaults) {
+            std::cout << rp::render::formatRtraceDefaults(o);
+            return 0;
+        }
+        return run(o, diag, diagFile);
+    } catch (const rp::InputError& e) {
+        std::cout.flush();
+        *diag << "rtrace: " << e.what() << '\n';
+        if (diag != &std::cerr) std::cerr << "rtrace: " << e.what() << '\n';
+        return 1;
+    }
+}
