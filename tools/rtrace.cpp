@@ -2,6 +2,7 @@
 // src/render/rtrace_options.h, input/output in rtrace_io.h, the loop in rtrace_run.h.
 #include <cstdio>
 #include <fstream>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <vector>
@@ -71,6 +72,9 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
         throw;
     }
     renderer.flushAmbientFile();
+    if (std::getenv("RADPHOTON_STATS"))  // run statistics for tuning and benchmarks
+        std::cerr << "rtrace: " << renderer.raysTraced() << " rays, "
+                  << renderer.ambientRecords() << " ambient records\n";
     return 0;
 }
 

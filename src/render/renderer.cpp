@@ -164,6 +164,8 @@ RayResult Renderer::irradiance(Context& ctx, const Vec3& point, const Vec3& norm
 
 long Renderer::raysTraced() const { return impl_->rays.load(std::memory_order_relaxed); }
 
+long Renderer::ambientRecords() const { return impl_->ambient.recordCount(); }
+
 void Renderer::flushAmbientFile() const { impl_->ambient.save(); }
 
 }  // namespace rp::render

@@ -92,6 +92,8 @@ public:
 
     // Statistics since construction (all threads): rays traced, for -t reports.
     long raysTraced() const;
+    // Ambient records in the irradiance cache (loaded and computed).
+    long ambientRecords() const;
 
     // The -ap photon maps (inactive without), e.g. for the short-lookup count.
     const PhotonLighting& photons() const;

@@ -105,9 +105,14 @@ private:
     // along `dir`; `isGlow`/`isLight` say what it was (both false: not a light).
     Color sourceRadiance(int32_t modifier, const Hit& at, const Vec3& dir, bool& isGlow,
                          bool& isLight);
+    ShadowEvent mixedEvent(const Hit& hit, const Vec3& dir);
     ShadowEvent layerEvent(const Hit& hit, const Vec3& dir, const material::ShadingLayer& l);
 
     int sampleDepth_ = 0;  // depth of the ray whose ambient samples are being traced
+    // RADIANCE compat (pmapmat.h shadowRayInPmap): in photon-map mode a shadow ray is
+    // stopped by transparent surfaces when the photons already carry that light.
+    bool shadowBlockedByTransparent_ = false;
+    bool shadowInPhotonMap(const RayState& state) const;
 };
 
 // The record named `name` most recently defined before record `before` (RADIANCE

@@ -211,9 +211,12 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     fillFirst(first);
     Color value = b.emitted;
 
-    // Specular rays (RADIANCE rayorigin rules for -lr and -lw).
+    // Specular rays (RADIANCE rayorigin rules for -lr and -lw). RADIANCE compat
+    // (pmapmat.h ambRayInPmap): in photon-map mode an ambient ray's specular children are
+    // not traced, since the photons already carry diffuse-specular-* paths.
     const LimitOptions& lim = impl.options.limits;
-    for (int i = 0; i < b.numRays; ++i) {
+    const bool specularInPmap = impl.photons.active() && state.ambientLevel > 0;
+    for (int i = 0; i < (specularInPmap ? 0 : b.numRays); ++i) {
         const material::SpecularRay& sr = b.rays[size_t(i)];
         Color rc = sr.weight;
         RayState child = state;
@@ -257,7 +260,8 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
                      impl.photons.directDensity(*photonLookups, hit.point, n);
         } else {
             bool transmits = b.ambientTransmit.max() > 0;
-            value += directAt(hit, params, sp, transmits, state.weight);
+            shadowBlockedByTransparent_ = shadowInPhotonMap(state);
+        value += directAt(hit, params, sp, transmits, state.weight);
         }
     }
     if (b.ambientReflect.max() > 0)
@@ -327,6 +331,9 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int am
     at.geomNormal = normal;
     at.hit = &hit;
     at.weight = weight;
+    RayState here;
+    here.ambientLevel = ambientLevel;
+    shadowBlockedByTransparent_ = shadowInPhotonMap(here);
     Color e = impl.direct.compute(
         at,
         [&](const Vec3& toLight, double) {
@@ -339,6 +346,15 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int am
     st.weight = weight;
     st.depth = sampleDepth_;
     return e + ambientAt(hit, normal, kVoid, st) * kPi;
+}
+
+bool Renderer::Context::shadowInPhotonMap(const RayState& state) const {
+    // pmapmat.h shadowRayInPmap: with -ab < 0, or below an ambient ray in any photon
+    // mode, or on the primary path when a caustic map carries diffuse-specular-light.
+    const PhotonLighting& pm = impl.photons;
+    if (!pm.active()) return false;
+    if (impl.ambientOptions.bounces < 0) return true;
+    return state.ambientLevel > 0 ? true : pm.hasCaustic();
 }
 
 }  // namespace rp::render

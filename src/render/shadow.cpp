@@ -89,6 +89,24 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
 }
 
 ShadowEvent Renderer::Context::event(const Hit& hit, const Vec3& dir) {
+    ShadowEvent ev = mixedEvent(hit, dir);
+    if (shadowBlockedByTransparent_ && ev.kind != ShadowEvent::Kind::Emit) {
+        // Photon-map mode: light through glass, trans or mirrors comes from the photons
+        // (pmapmat.h shadowRayInPmap); antimatter and void still pass it.
+        material::ChainResult chain = resolve(hit.modifier, hit, dir);
+        bool clear = true;
+        for (int i = 0; i < chain.count; ++i) {
+            int32_t m = chain.layers[size_t(i)].material;
+            if (m != kVoid &&
+                !std::holds_alternative<material::AntimatterParams>(*impl.material(m).params))
+                clear = false;
+        }
+        if (!clear) return ShadowEvent{};
+    }
+    return ev;
+}
+
+ShadowEvent Renderer::Context::mixedEvent(const Hit& hit, const Vec3& dir) {
     material::ChainResult chain = resolve(hit.modifier, hit, dir);
     if (chain.count == 1) return layerEvent(hit, dir, chain.layers[0]);
     // Mixtures: emission wins (the shadow ray reached a source); otherwise the layers'
