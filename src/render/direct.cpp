@@ -138,9 +138,14 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
     const Impl& im = *impl_;
     const SourceList& list = im.list;
     const ShapeSet& shapes = im.geometry.shapes();
-    std::vector<Candidate> cands;
-    std::vector<Vec3> crossings;
-    std::vector<SourceSample> samples;
+    // Scratch kept per thread (compute is not re-entered: shadow rays do not shade).
+    thread_local std::vector<Candidate> cands;
+    thread_local std::vector<Vec3> crossings;
+    thread_local std::vector<SourceSample> samples;
+    thread_local std::vector<double> tail;
+    cands.clear();
+    crossings.clear();
+    samples.clear();
 
     for (size_t si = 0; si < list.sources.size(); ++si) {
         const DirectSource& src = list.sources[si];
@@ -232,7 +237,7 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
     std::stable_sort(cands.begin(), cands.end(),
                      [](const Candidate& a, const Candidate& b) { return a.brt > b.brt; });
     const size_t n = cands.size();
-    std::vector<double> tail(n + 1, 0.0);
+    tail.assign(n + 1, 0.0);
     for (size_t i = n; i-- > 0;) tail[i] = tail[i + 1] + cands[i].brt;
     const size_t nshadcheck =
         size_t(std::pow(double(n), std::clamp(im.options.certainty, 0.0, 1.0)) + 0.5);

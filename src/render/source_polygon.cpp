@@ -122,14 +122,41 @@ void uniformInPiece(const Piece& p, Rng& rng, double& u, double& v) {
 
 void samplePolygon(const PlanarRegion& r, const Vec3& from, double ds, double weight,
                    double jitter, Rng& rng, std::vector<SourceSample>& out) {
-    std::vector<Cell> cells;
+    // Scratch kept per thread: this runs for every shaded point.
+    thread_local std::vector<Cell> cells;
+    thread_local std::vector<Piece> pieces;
+    cells.clear();
     Cell whole{r.u0, r.u1, r.v0, r.v1};
     if (ds > 0)
         partition(r, from, whole, kMaxSourceParts, std::fmax(weight, 1e-6) / ds, cells);
     else
         cells.push_back(whole);
 
-    std::vector<Piece> pieces;
+    // Fast path: a polygon that fills its bounding rectangle (the usual rectangular
+    // luminaire or window) needs no clipping; each cell is a rectangle of the source.
+    const double boxArea = (r.u1 - r.u0) * (r.v1 - r.v0);
+    if (std::fabs(r.area - boxArea) <= 1e-9 * boxArea) {
+        for (const Cell& c : cells) {
+            double su = 0.5 * (c.u0 + c.u1), sv = 0.5 * (c.v0 + c.v1);
+            if (jitter > 0) {
+                su += jitter * (rng.uniform() - 0.5) * (c.u1 - c.u0);
+                sv += jitter * (rng.uniform() - 0.5) * (c.v1 - c.v0);
+            }
+            Vec3 a = r.at(c.u0, c.v0), b = r.at(c.u1, c.v0), cc = r.at(c.u1, c.v1),
+                 d4 = r.at(c.u0, c.v1);
+            double omega = triangleSolidAngle(from, a, b, cc) + triangleSolidAngle(from, a, cc, d4);
+            SourceSample smp;
+            smp.target = r.at(su, sv);
+            Vec3 d = smp.target - from;
+            smp.dist = length(d);
+            if (!(smp.dist > 0) || !(omega > 0)) continue;
+            smp.dir = d / smp.dist;
+            smp.omega = omega;
+            out.push_back(smp);
+        }
+        return;
+    }
+
     for (const Cell& c : cells) {
         pieces.clear();
         double total = 0, cu = 0, cv = 0;
