@@ -1,8 +1,9 @@
 // The function/data-driven families with their plain parameters: plasfunc, metfunc,
 // transfunc, plasdata, metdata, transdata (m_brdf.c m_brdf2; pmapmat.c brdf2PhotonScatter)
-// and BRTDfunc (m_brdf.c m_brdf; pmapmat.c brdfPhotonScatter). Evaluating their .cal
-// functions and data files is calc/'s job and not wired in yet: only the diffuse parts
-// (and BRTDfunc's constant or caller-given ideal specular colours) are computed here.
+// and BRTDfunc (m_brdf.c m_brdf; pmapmat.c brdfPhotonScatter). Their .cal functions and
+// data files are evaluated by the caller (material_calc.h) and arrive through
+// SurfacePoint: the ideal specular colours (BRTDfunc) and `directional`, the function's
+// value for a light direction, which evaluate() weights here as m_brdf.c dirbrdf does.
 #include <cmath>
 
 #include "material/detail.h"
@@ -23,9 +24,26 @@ Color lambert(const Vec3& n, const Vec3& l, const Color& rdiff, const Color& tdi
 // --- plasfunc & co ---------------------------------------------------------------------
 
 Color evaluateFunc(const FuncParams& m, const SurfacePoint& sp, const Vec3& l) {
-    // TODO(calc): add the specular reflection/transmission function's value.
-    return lambert(sp.normal, l, m.diffuseReflectance * sp.pattern,
-                   m.diffuseTransmittance * sp.pattern);
+    Color c = lambert(sp.normal, l, m.diffuseReflectance * sp.pattern,
+                      m.diffuseTransmittance * sp.pattern);
+    if (!sp.directional) return c;
+    // m_brdf.c dirbrdf (per unit source solid angle): the function value f times the
+    // cosine and the specular fraction; reflection is white for plasfunc/plasdata and the
+    // (patterned) material colour for metfunc/metdata, transmission is coloured.
+    double ldot = dot(sp.normal, l);
+    if (std::fabs(ldot) <= kFtiny) return c;                        // grazing
+    if (ldot < 0 ? m.trans <= kFtiny : m.trans >= 1 - kFtiny) return c;  // wrong side
+    if (ldot > 0 ? m.rspec <= kFtiny : m.tspec <= kFtiny) return c;     // diffuse only
+    double f = (*sp.directional)(l).r;
+    if (!(f > kFtiny)) return c;  // RADIANCE skips values <= FTINY (and math errors)
+    if (ldot > 0) {
+        bool metal = m.type == PrimType::Metfunc || m.type == PrimType::Metdata;
+        Color s = metal ? m.color * sp.pattern : Color{1, 1, 1};
+        c += s * (f * ldot * m.rspec);
+    } else {
+        c += m.color * sp.pattern * (f * -ldot * m.tspec);
+    }
+    return c;
 }
 
 BackwardResult shadeFunc(const FuncParams& m, const SurfacePoint& sp, const ShadeOptions& opt) {
@@ -81,9 +99,17 @@ Vec3 brtdTransmitDir(const SurfacePoint& sp) {
 }  // namespace
 
 Color evaluateBrtd(const BrtdParams& m, const SurfacePoint& sp, const Vec3& l) {
-    // TODO(calc): add the directional-diffuse functions rbrtd gbrtd bbrtd.
     BrtdHit h = setupBrtd(m, sp);
-    return lambert(sp.normal, l, h.rdiff, h.tdiff);
+    Color c = lambert(sp.normal, l, h.rdiff, h.tdiff);
+    if (!sp.directional || !m.directionalDiffuse) return c;
+    // m_brdf.c dirbrdf for BRTDfunc: the rbrtd gbrtd bbrtd values times |cos| on either
+    // side, neither scaled by the pattern nor by a specular fraction (RADIANCE uses 1);
+    // skipped when their brightness is <= FTINY.
+    double ldot = dot(sp.normal, l);
+    if (std::fabs(ldot) <= kFtiny) return c;
+    Color f = (*sp.directional)(l);
+    if (!(f.brightness() > kFtiny)) return c;
+    return c + f * std::fabs(ldot);
 }
 
 BackwardResult shadeBrtd(const BrtdParams& m, const SurfacePoint& sp) {

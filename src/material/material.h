@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <variant>
@@ -142,6 +143,10 @@ struct SurfacePoint {
     Color pattern{1, 1, 1};  // pattern colour modulation (r->pcol)
     Vec3 uDir;          // plastic2/metal2/trans2: evaluated u orientation (world)
     std::optional<Color> brtdSpecularReflection, brtdSpecularTransmission;  // BRTDfunc
+    // plasfunc/metfunc/transfunc/..data: the specular function's value for light from a
+    // unit world direction (grey); BRTDfunc: rbrtd gbrtd bbrtd. Null: no such part
+    // (MaterialCalcEvaluator::directional supplies it). Only evaluate() uses it.
+    const std::function<Color(const Vec3&)>* directional = nullptr;
 };
 
 // A SurfacePoint whose shading normal is the geometric one.

@@ -74,7 +74,8 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
     : scene(s),
       geometry(g),
       options(o),
-      chains(s, std::move(searchPath)),
+      chains(s, searchPath),
+      materialCalc(s, std::move(searchPath)),
       photons(o.photonMaps, o.photonMaxRadius, s),
       ambientOptions(photonAmbientOptions(o, photons)),
       // RADIANCE compat (source.c): in photon-map mode virtual sources are not made;

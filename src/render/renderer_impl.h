@@ -4,11 +4,13 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "material/material.h"
+#include "material/material_calc.h"
 #include "material/surface_chain.h"
 #include "render/ambient.h"
 #include "render/direct.h"
@@ -50,6 +52,7 @@ struct Renderer::Impl {
     const SceneGeometry& geometry;
     const RenderOptions& options;
     material::SurfaceChains chains;
+    material::MaterialCalc materialCalc;   // .cal functions of function-driven materials
     std::vector<MaterialEntry> materials;  // indexed by prim (only material records used)
     PhotonLighting photons;                // -ap maps (inactive without)
     AmbientOptions ambientOptions;         // -a options as used (photon mode adjusts -ab)
@@ -84,6 +87,8 @@ public:
     const Renderer& renderer;
     const Impl& impl;
     material::SurfaceChainEvaluator chains;
+    material::MaterialCalcEvaluator materialCalc;
+    std::function<Color(const Vec3&)> directional;  // materialCalc.directional, for evaluate
     Rng rng{0, RngDomain::Sampling, 0};
     std::vector<TracedRay>* tree = nullptr;
     int treeDepth = 0;
@@ -108,6 +113,10 @@ private:
     ShadowEvent mixedEvent(const Hit& hit, const Vec3& dir);
     ShadowEvent layerEvent(const Hit& hit, const Vec3& dir, const material::ShadingLayer& l);
 
+    // Sets materialCalc for `material` at the hit (when it has functions) and fills the
+    // SurfacePoint fields they give: u orientation, BRTDfunc colours, directional part.
+    void applyMaterialCalc(int32_t material, const Hit& hit, const Vec3& dir,
+                           material::SurfacePoint& sp);
     int sampleDepth_ = 0;  // depth of the ray whose ambient samples are being traced
     // RADIANCE compat (pmapmat.h shadowRayInPmap): in photon-map mode a shadow ray is
     // stopped by transparent surfaces when the photons already carry that light.

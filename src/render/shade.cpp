@@ -26,7 +26,33 @@ constexpr double kNoHit = 1e10;
 }  // namespace
 
 Renderer::Context::Context(const Renderer& r, const Impl& i)
-    : renderer(r), impl(i), chains(i.chains) {}
+    : renderer(r), impl(i), chains(i.chains), materialCalc(i.materialCalc) {
+    directional = [this](const Vec3& l) { return materialCalc.directional(l); };
+}
+
+void Renderer::Context::applyMaterialCalc(int32_t material, const Hit& hit, const Vec3& dir,
+                                          material::SurfacePoint& sp) {
+    if (!impl.materialCalc.uses(material)) return;
+    material::PatternPoint at;
+    at.dir = dir;
+    at.point = hit.point;
+    at.normal = hit.normal;
+    at.distance = hit.t;
+    at.rdot = -dot(dir, hit.normal);
+    materialCalc.setHit(material, at);
+    const material::MaterialParams& p = *impl.material(material).params;
+    if (std::holds_alternative<material::AnisoParams>(p)) {
+        sp.uDir = materialCalc.anisoU();
+    } else if (std::holds_alternative<material::BrtdParams>(p)) {
+        Color refl, trans;
+        materialCalc.brtdSpecular(refl, trans);
+        sp.brtdSpecularReflection = refl;
+        sp.brtdSpecularTransmission = trans;
+        sp.directional = &directional;
+    } else if (std::holds_alternative<material::FuncParams>(p)) {
+        sp.directional = &directional;
+    }
+}
 
 material::ChainResult Renderer::Context::resolve(int32_t modifier, const Hit& hit,
                                                  const Vec3& dir) {
@@ -203,6 +229,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         return v;
     }
 
+    applyMaterialCalc(layer.material, hit, ray.dir, sp);
     material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
     if (b.transparent) {
         passThrough = true;
@@ -261,6 +288,8 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         } else {
             bool transmits = b.ambientTransmit.max() > 0;
             shadowBlockedByTransparent_ = shadowInPhotonMap(state);
+        // Specular children may have used the function evaluator: set this hit again.
+        if (sp.directional) applyMaterialCalc(layer.material, hit, ray.dir, sp);
         value += directAt(hit, params, sp, transmits, state.weight);
         }
     }

@@ -1,0 +1,287 @@
+#include "material/material_calc.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+
+#include "calc/search_path.h"
+#include "util/error.h"
+
+namespace rp::material {
+
+namespace {
+
+Vec3 toVec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+std::array<double, 3> toArr(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+std::optional<double> number(const std::string& s) {
+    if (s.empty()) return std::nullopt;
+    char* end = nullptr;
+    double v = std::strtod(s.c_str(), &end);
+    if (end != s.c_str() + s.size()) return std::nullopt;
+    return v;
+}
+
+std::string what(const Primitive& p) {
+    return std::string(primTypeName(p.type)) + " '" + p.name + "'";
+}
+
+[[noreturn]] void fail(const Primitive& p, const std::string& msg) {
+    throw InputError(p.loc, what(p) + ": " + msg);
+}
+
+// Where the function file sits in each family's string arguments (ray.html).
+size_t funcFileIndex(PrimType t) {
+    switch (t) {
+    case PrimType::Plastic2:
+    case PrimType::Metal2:
+    case PrimType::Trans2: return 3;   // ux uy uz funcfile transform
+    case PrimType::Plasdata:
+    case PrimType::Metdata:
+    case PrimType::Transdata: return 2;  // func datafile funcfile x1 .. xN transform
+    case PrimType::BRTDfunc: return 9;   // 6 colours, 3 brtd functions, funcfile
+    default: return 1;                   // func funcfile transform
+    }
+}
+
+// Function files (RADIANCE compat: one global context, each file loaded once in order of
+// first use after rayinit.cal) and data files, found along the search path.
+class Loader {
+public:
+    explicit Loader(std::vector<std::string> path) : builder(path), path_(std::move(path)) {
+        builder.loadFile("rayinit.cal");
+    }
+
+    void functionFile(const Primitive& p, const std::string& file) {
+        if (file == "." || std::find(loaded_.begin(), loaded_.end(), file) != loaded_.end())
+            return;
+        try {
+            builder.loadFile(file);
+        } catch (const InputError& e) {
+            if (e.loc().line > 0) throw;  // a syntax error names its own file:line
+            fail(p, e.what());
+        }
+        loaded_.push_back(file);
+    }
+
+    std::shared_ptr<const calc::DataFile> data(const Primitive& p, const std::string& name) {
+        if (auto it = data_.find(name); it != data_.end()) return it->second;
+        auto found = calc::findFile(name, path_);
+        if (!found) fail(p, "cannot find data file '" + name + "'");
+        std::shared_ptr<const calc::DataFile> d;
+        try {
+            d = std::make_shared<const calc::DataFile>(calc::DataFile::load(*found));
+        } catch (const InputError& e) {
+            if (e.loc().line > 0) throw;
+            fail(p, e.what());
+        }
+        return data_[name] = d;
+    }
+
+    calc::Builder builder;
+
+private:
+    std::vector<std::string> path_;
+    std::vector<std::string> loaded_;
+    std::map<std::string, std::shared_ptr<const calc::DataFile>> data_;
+};
+
+}  // namespace
+
+MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPath)
+    : recordOf_(scene.prims.size(), -1) {
+    Loader loader(std::move(searchPath));
+    for (size_t i = 0; i < scene.prims.size(); ++i) {
+        const Primitive& p = scene.prims[i];
+        Record r;
+        switch (p.type) {
+        case PrimType::Plastic2:
+        case PrimType::Metal2:
+        case PrimType::Trans2: r.kind = Kind::Aniso; break;
+        case PrimType::Plasfunc:
+        case PrimType::Metfunc:
+        case PrimType::Transfunc: r.kind = Kind::Func; break;
+        case PrimType::Plasdata:
+        case PrimType::Metdata:
+        case PrimType::Transdata: r.kind = Kind::Data; break;
+        case PrimType::BRTDfunc: r.kind = Kind::Brtd; break;
+        default: continue;
+        }
+        r.prim = int32_t(i);
+        r.type = p.type;
+        r.rargs = p.rargs;
+        size_t ff = funcFileIndex(p.type);
+        if (p.sargs.size() <= ff) fail(p, "too few string arguments");  // reader checks this
+        size_t xfFirst = ff + 1;
+        if (r.kind == Kind::Data) {
+            r.data = loader.data(p, p.sargs[1]);
+            size_t nd = size_t(r.data->dimensions());
+            if (p.sargs.size() < xfFirst + nd)
+                fail(p, "data file '" + p.sargs[1] + "' has " + std::to_string(nd) +
+                            " dimensions but fewer coordinate functions are given");
+            r.coords.resize(nd);
+            for (size_t k = 0; k < nd; ++k) r.coords[k].name = p.sargs[xfFirst + k];
+            xfFirst += nd;
+        }
+        loader.functionFile(p, p.sargs[ff]);
+        r.forward = parseTransform(p.sargs, xfFirst, p.loc);
+        r.toObject = r.forward.inverse();
+        r.scale = r.forward.scale;
+
+        int nexpr = r.kind == Kind::Aniso ? 3 : r.kind == Kind::Brtd ? 6 : 0;
+        for (int k = 0; k < nexpr; ++k) {
+            if (auto v = number(p.sargs[k])) {
+                r.exprConstant[k] = true;
+                r.exprValue[k] = *v;
+            } else {
+                r.expr[k] = loader.builder.addExpression(p.sargs[k], p.loc);
+            }
+        }
+        if (r.kind == Kind::Func || r.kind == Kind::Data) r.fn[0].name = p.sargs[0];
+        if (r.kind == Kind::Brtd) {
+            bool allConstant = true;
+            for (int k = 0; k < 6; ++k) allConstant = allConstant && r.exprConstant[k];
+            bool anyBrtd = false;
+            for (int k = 0; k < 3; ++k) {
+                // RADIANCE compat (m_brdf.c): a name starting with '0' means no function.
+                const std::string& s = p.sargs[6 + k];
+                r.fn[k].name = s.empty() || s[0] == '0' ? "0" : s;
+                anyBrtd = anyBrtd || r.fn[k].name != "0";
+            }
+            r.needed = !allConstant || anyBrtd;
+        }
+        recordOf_[i] = int32_t(records_.size());
+        records_.push_back(std::move(r));
+    }
+    program_ = loader.builder.build();
+
+    // Resolve the named functions now so that a misspelt name is an error at its line.
+    for (Record& r : records_) {
+        const Primitive& p = scene.prims[r.prim];
+        auto resolve = [&](Callable& c) {
+            if (auto v = number(c.name)) {
+                c.how = Callable::How::Constant;
+                c.value = *v;
+            } else if (auto f = program_->function(c.name)) {
+                c.how = Callable::How::Function;
+                c.function = *f;
+            } else if (auto e = program_->variable(c.name)) {
+                c.how = Callable::How::Variable;
+                c.variable = *e;
+            } else {
+                fail(p, "unknown function '" + c.name + "'");
+            }
+        };
+        if (r.kind != Kind::Aniso)
+            for (int k = 0; k < (r.kind == Kind::Brtd ? 3 : 1); ++k) resolve(r.fn[k]);
+        for (Callable& c : r.coords) resolve(c);
+    }
+}
+
+MaterialCalc::~MaterialCalc() = default;
+
+bool MaterialCalc::uses(int32_t material) const {
+    if (material < 0 || size_t(material) >= recordOf_.size()) return false;
+    int32_t r = recordOf_[material];
+    return r >= 0 && records_[r].needed;
+}
+
+MaterialCalcEvaluator::MaterialCalcEvaluator(const MaterialCalc& calc)
+    : calc_(calc), eval_(calc.program_) {}
+
+MaterialCalcEvaluator::~MaterialCalcEvaluator() = default;
+
+void MaterialCalcEvaluator::setHit(int32_t material, const PatternPoint& at) {
+    RP_CHECK(material >= 0 && size_t(material) < calc_.recordOf_.size() &&
+             calc_.recordOf_[material] >= 0);
+    rec_ = &calc_.records_[calc_.recordOf_[material]];
+    // The same function-space values as patterns see (func.c setfunc).
+    const Transform& t = rec_->toObject;
+    ctx_ = calc::RayContext{};
+    ctx_.P = toVec(t.point(toArr(at.point)));
+    ctx_.D = toVec(t.direction(toArr(at.dir)));
+    ctx_.N = toVec(t.direction(toArr(at.normal)));
+    ctx_.T = at.distance * t.scale;
+    ctx_.Rdot = at.rdot;
+    ctx_.S = rec_->scale;
+    ctx_.Tvec = toVec(t.point({0, 0, 0}));
+    ctx_.I = toVec(t.direction({1, 0, 0}));
+    ctx_.J = toVec(t.direction({0, 1, 0}));
+    ctx_.K = toVec(t.direction({0, 0, 1}));
+    ctx_.args = rec_->rargs;
+    eval_.setRay(ctx_);
+    errorsAtHit_ = eval_.mathErrors();
+}
+
+Vec3 MaterialCalcEvaluator::anisoU() {
+    RP_CHECK(rec_ && rec_->kind == MaterialCalc::Kind::Aniso);
+    std::array<double, 3> u;
+    for (int k = 0; k < 3; ++k)
+        u[k] = rec_->exprConstant[k] ? rec_->exprValue[k]
+                                     : eval_.eval(calc_.program_->expression(rec_->expr[k]));
+    if (eval_.mathErrors() != errorsAtHit_) return {};  // aniso.c: "compute error", punt
+    Vec3 w = toVec(rec_->forward.direction(u));
+    double len = length(w);
+    return len > 0 && std::isfinite(len) ? w / len : Vec3{};
+}
+
+void MaterialCalcEvaluator::brtdSpecular(Color& reflection, Color& transmission) {
+    RP_CHECK(rec_ && rec_->kind == MaterialCalc::Kind::Brtd);
+    double v[6];
+    for (int k = 0; k < 6; ++k)
+        v[k] = rec_->exprConstant[k] ? rec_->exprValue[k]
+                                     : eval_.eval(calc_.program_->expression(rec_->expr[k]));
+    reflection = {v[0], v[1], v[2]};
+    transmission = {v[3], v[4], v[5]};
+}
+
+double MaterialCalcEvaluator::call(const MaterialCalc::Callable& c, std::span<const double> args) {
+    switch (c.how) {
+    case MaterialCalc::Callable::How::Constant: return c.value;
+    case MaterialCalc::Callable::How::Function: return eval_.call(c.function, args);
+    default: return eval_.eval(c.variable);
+    }
+}
+
+Color MaterialCalcEvaluator::directional(const Vec3& toLight, double omega) {
+    // m_brdf.c: a math error ("compute error") drops the whole specular part.
+    long before = eval_.mathErrors();
+    Color c = directionalValue(toLight, omega);
+    return eval_.mathErrors() == before ? c : Color{};
+}
+
+Color MaterialCalcEvaluator::directionalValue(const Vec3& toLight, double omega) {
+    RP_CHECK(rec_ && rec_->kind != MaterialCalc::Kind::Aniso);
+    // m_brdf.c: the light direction through the world -> function transform, made unit
+    // again (RADIANCE divides by the transform's scale), then the source solid angle.
+    Vec3 l = toVec(rec_->toObject.direction(toArr(toLight)));
+    double len = length(l);
+    if (len > 0) l = l / len;
+    double args[5] = {0, l.x, l.y, l.z, omega};
+    std::span<const double> ldx(args + 1, 4);
+    switch (rec_->kind) {
+    case MaterialCalc::Kind::Func:
+        return Color::grey(call(rec_->fn[0], ldx));
+    case MaterialCalc::Kind::Data: {
+        std::array<double, calc::DataFile::kMaxDimensions> pt{};
+        size_t nd = rec_->coords.size();
+        for (size_t k = 0; k < nd; ++k) pt[k] = call(rec_->coords[k], ldx);
+        args[0] = rec_->data->value(std::span<const double>(pt.data(), nd));
+        return Color::grey(call(rec_->fn[0], std::span<const double>(args, 5)));
+    }
+    default: {  // BRTDfunc; a repeated name is evaluated once (m_brdf.c)
+        Color c;
+        for (int k = 0; k < 3; ++k) {
+            const auto& f = rec_->fn[k];
+            int same = -1;
+            for (int j = 0; j < k && same < 0; ++j)
+                if (rec_->fn[j].name == f.name) same = j;
+            c[k] = same >= 0 ? c[same] : call(f, ldx);
+        }
+        return c;
+    }
+    }
+}
+
+}  // namespace rp::material

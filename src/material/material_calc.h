@@ -1,0 +1,121 @@
+// The .cal side of the function-driven materials, compiled once per scene: the u
+// orientation of plastic2/metal2/trans2 (aniso.c), the specular function or data file
+// of plasfunc/metfunc/transfunc/plasdata/metdata/transdata (m_brdf.c m_brdf2), and the
+// ideal specular colours and directional-diffuse functions of BRTDfunc (m_brdf.c m_brdf).
+// material.h stays free of calc/: the renderer evaluates these per hit and hands the
+// results in through SurfacePoint (uDir, brtdSpecular..., directional).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "calc/data_file.h"
+#include "calc/program.h"
+#include "material/pattern.h"
+#include "scene/primitive.h"
+#include "scene/xform.h"
+#include "util/color.h"
+#include "util/vec.h"
+
+namespace rp::material {
+
+class MaterialCalcEvaluator;
+
+// Every function-driven material of a scene compiled into one calc Program (function
+// and data files found along `searchPath`; RADIANCE's global context after rayinit.cal,
+// files loaded once in order of first use). Immutable after construction and shareable
+// between threads. Throws InputError at the record's file:line for a missing function
+// or data file, an unknown function name, too few data coordinates or a bad transform
+// (syntax errors in a function file keep their own file:line).
+class MaterialCalc {
+public:
+    MaterialCalc(const Scene& scene, std::vector<std::string> searchPath);
+    ~MaterialCalc();
+    MaterialCalc(const MaterialCalc&) = delete;
+    MaterialCalc& operator=(const MaterialCalc&) = delete;
+
+    // True if `material` (a prim index) has expressions to evaluate. A BRTDfunc whose
+    // six specular arguments are plain numbers and whose rbrtd gbrtd bbrtd are "0" needs
+    // nothing (params.cpp already holds its constants).
+    bool uses(int32_t material) const;
+
+private:
+    friend class MaterialCalcEvaluator;
+    enum class Kind : uint8_t { Aniso, Func, Data, Brtd };
+
+    // A function named in a string argument, called with the light direction: a user
+    // or builtin function, a variable (RADIANCE's funvalue accepts one: it ignores the
+    // arguments), or a plain number (our extension; "0" is RADIANCE's "none").
+    struct Callable {
+        enum class How : uint8_t { Constant, Function, Variable } how = How::Constant;
+        double value = 0;
+        calc::Function function;
+        calc::Entry variable;
+        std::string name;  // as given, for resolving after build and for errors
+    };
+
+    struct Record {
+        int32_t prim = -1;
+        Kind kind = Kind::Func;
+        PrimType type = PrimType::Plasfunc;
+        Transform toObject;  // world -> function space
+        Transform forward;   // function space -> world
+        double scale = 1;    // forward scale (S)
+        std::vector<double> rargs;
+        int expr[6] = {-1, -1, -1, -1, -1, -1};  // aniso: ux uy uz; BRTDfunc: 6 colours
+        bool exprConstant[6] = {false, false, false, false, false, false};
+        double exprValue[6] = {0, 0, 0, 0, 0, 0};
+        Callable fn[3];                 // func/data: fn[0]; BRTDfunc: rbrtd gbrtd bbrtd
+        std::vector<Callable> coords;   // data types: x1 .. xN
+        std::shared_ptr<const calc::DataFile> data;
+        bool needed = true;
+    };
+
+    std::vector<int32_t> recordOf_;  // prim index -> index into records_, or -1
+    std::vector<Record> records_;
+    std::shared_ptr<const calc::Program> program_;
+};
+
+// Per-thread evaluation state for a MaterialCalc (not thread-safe itself).
+class MaterialCalcEvaluator {
+public:
+    explicit MaterialCalcEvaluator(const MaterialCalc& calc);
+    ~MaterialCalcEvaluator();
+
+    // Sets the hit for `material` (must be uses()): at.dir, at.point, at.normal
+    // (unperturbed surface normal, not flipped), at.distance, at.rdot. The values the
+    // functions see are in the material's function space (its transform arguments).
+    void setHit(int32_t material, const PatternPoint& at);
+
+    // plastic2/metal2/trans2: the u orientation, world space (aniso.c getacoords: the
+    // ux uy uz values through the forward transform). Normalised; zero if degenerate or
+    // on a math error (evaluate() then punts to an isotropic frame, as aniso.c does).
+    Vec3 anisoU();
+
+    // BRTDfunc: the ideal specular reflection (rrefl grefl brefl) and transmission
+    // (rtrns gtrns btrns) colours at the hit. Not modified by the pattern (m_brdf.c).
+    void brtdSpecular(Color& reflection, Color& transmission);
+
+    // plasfunc/metfunc/transfunc: refl(lx, ly, lz, omega); ..data: func(datavalue(x1..xN),
+    // lx, ly, lz, omega) with each xi(lx, ly, lz, omega); BRTDfunc: rbrtd gbrtd bbrtd of
+    // (lx, ly, lz, omega). (lx ly lz) is the unit direction to the light in function space.
+    // The raw function values: material.cpp applies the specularity, colour and cosine.
+    // `omega` is the source's solid angle (RADIANCE passes it; 0 when unknown). A math
+    // error (division by zero, ...) gives zero, as m_brdf.c's "compute error".
+    Color directional(const Vec3& toLight, double omega = 0);
+
+private:
+    double call(const MaterialCalc::Callable& c, std::span<const double> args);
+    Color directionalValue(const Vec3& toLight, double omega);
+
+    const MaterialCalc& calc_;
+    calc::Evaluator eval_;
+    calc::RayContext ctx_;
+    const MaterialCalc::Record* rec_ = nullptr;
+    long errorsAtHit_ = 0;
+};
+
+}  // namespace rp::material
