@@ -63,19 +63,6 @@ private:
     size_t at_;
 };
 
-// RADIANCE check_bool: no suffix toggles; + y Y t T 1 set; - n N f F 0 clear.
-bool boolSuffix(const std::string& opt, size_t len, bool current) {
-    if (opt.size() == len) return !current;
-    if (opt.size() == len + 1) {
-        switch (opt[len]) {
-        case '+': case 'y': case 'Y': case 't': case 'T': case '1': return true;
-        case '-': case 'n': case 'N': case 'f': case 'F': case '0': return false;
-        default: break;
-        }
-    }
-    throw InputError("unknown option '" + opt + "'");
-}
-
 bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
 std::vector<std::string> readWordFile(const std::string& path, const std::string& what) {
@@ -101,6 +88,19 @@ Color readColor(Values& v) {
 }
 
 }  // namespace
+
+// RADIANCE check_bool: no suffix toggles; + y Y t T 1 set; - n N f F 0 clear.
+bool boolSuffix(const std::string& opt, size_t len, bool current) {
+    if (opt.size() == len) return !current;
+    if (opt.size() == len + 1) {
+        switch (opt[len]) {
+        case '+': case 'y': case 'Y': case 't': case 'T': case '1': return true;
+        case '-': case 'n': case 'N': case 'f': case 'F': case '0': return false;
+        default: break;
+        }
+    }
+    throw InputError("unknown option '" + opt + "'");
+}
 
 bool parseRenderOption(const std::vector<std::string>& args, size_t& i, RenderOptions& opt) {
     if (i >= args.size()) return false;

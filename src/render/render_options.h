@@ -96,6 +96,11 @@ struct RenderOptions {
 // Also handled: -n (threads), -e (error file), -w, and the mist options -me -ma -mg -ms.
 bool parseRenderOption(const std::vector<std::string>& args, size_t& i, RenderOptions& opt);
 
+// RADIANCE's check_bool for a boolean option whose name is opt[0, len): no suffix
+// toggles `current`; + y Y t T 1 set; - n N f F 0 clear; anything else is an unknown
+// option (InputError).
+bool boolSuffix(const std::string& opt, size_t len, bool current);
+
 // The lines RADIANCE's `rtrace -defaults` prints for these options (print_rdefaults in
 // RADIANCE's rtmain/rpmain), e.g. "-dt 0.030000\t\t\t# direct threshold", in the same
 // order, reflecting `opt`.

@@ -100,6 +100,9 @@ private:
     Color shadeLayer(const Ray& ray, const Hit& hit, const RayState& state,
                      const material::ShadingLayer& layer, RayResult* first,
                      bool& passThrough);
+    // Shades with a mirror's or illum's alternate material (its whole modifier chain).
+    Color shadeAlternate(const Ray& ray, const Hit& hit, const RayState& state,
+                         int32_t alternate, RayResult* first, bool& passThrough);
     Color escaped(const Ray& ray, const RayState& state);
     Color directAt(const Hit& hit, const material::MaterialParams& params,
                    const material::SurfacePoint& sp, bool transmits, double weight);

@@ -175,25 +175,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         }
         if (light.kind == material::LightParams::Kind::Illum) {
             // ray.html illum: seen directly (or by specular rays) it is its alternate.
-            if (e.alternate == kVoid) {
-                passThrough = true;
-                return {};
-            }
-            material::ShadingLayer alt = layer;
-            alt.material = impl.chains.isPlain(e.alternate) ? impl.chains.plainMaterial(e.alternate)
-                                                            : kVoid;
-            if (!impl.chains.isPlain(e.alternate)) {
-                material::ChainResult c = resolve(e.alternate, hit, ray.dir);
-                Color v;
-                for (int i = 0; i < c.count; ++i) {
-                    bool p = false;
-                    v += shadeLayer(ray, hit, state, c.layers[size_t(i)], first, p) *
-                         c.layers[size_t(i)].weight;
-                    if (p) passThrough = true;
-                }
-                return v;
-            }
-            return shadeLayer(ray, hit, state, alt, first, passThrough);
+            return shadeAlternate(ray, hit, state, e.alternate, first, passThrough);
         }
         fillFirst(first);
         if (source && !impl.options.direct.visibility && !state.indirect) return {};  // -dv-
@@ -214,19 +196,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     if (e.hasAlternate && std::holds_alternative<material::MirrorParams>(params)) {
         // ray.html mirror: with an alternate material the mirror only relays sources
         // (virtual sources); every other ray sees the alternate.
-        if (e.alternate == kVoid) {
-            passThrough = true;
-            return {};
-        }
-        material::ChainResult c = resolve(e.alternate, hit, ray.dir);
-        Color v;
-        for (int i = 0; i < c.count; ++i) {
-            bool p = false;
-            v += shadeLayer(ray, hit, state, c.layers[size_t(i)], first, p) *
-                 c.layers[size_t(i)].weight;
-            if (p) passThrough = true;
-        }
-        return v;
+        return shadeAlternate(ray, hit, state, e.alternate, first, passThrough);
     }
 
     applyMaterialCalc(layer.material, hit, ray.dir, sp);
@@ -302,6 +272,23 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         first->unmirroredLength = hit.t;
     }
     return value;
+}
+
+Color Renderer::Context::shadeAlternate(const Ray& ray, const Hit& hit, const RayState& state,
+                                        int32_t alternate, RayResult* first,
+                                        bool& passThrough) {
+    if (alternate == kVoid) {  // "void": the surface is invisible to this ray
+        passThrough = true;
+        return {};
+    }
+    material::ChainResult c = resolve(alternate, hit, ray.dir);
+    Color v;
+    for (int i = 0; i < c.count; ++i) {
+        bool p = false;
+        v += shadeLayer(ray, hit, state, c.layers[size_t(i)], first, p) * c.layers[size_t(i)].weight;
+        if (p) passThrough = true;
+    }
+    return v;
 }
 
 Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams& params,
