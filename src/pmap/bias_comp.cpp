@@ -70,31 +70,52 @@ BiasCompResult compensateBias(std::span<PhotonHit> hits, std::span<const Photon>
         for (int c = 0; c < 3; ++c) e[c] = prefix[j][c] / (kPi * kPi * r2);
         return e;
     };
-    auto consistent = [](const std::array<double, 3>& ej, int j, const std::array<double, 3>& er,
-                         int r) {
-        if (r >= j) return true;
-        const double rel = kBiasCompZ * std::sqrt(1.0 / r - 1.0 / j);
-        for (int c = 0; c < 3; ++c)
-            if (std::abs(ej[c] - er[c]) > rel * ej[c]) return false;
-        return true;
+    // Weighted history of estimates (weight j^2), kept as running sums per channel.
+    std::array<double, 3> sumW1 = {0, 0, 0}, sumW2 = {0, 0, 0};
+    double totalWeight = 0;
+    std::array<double, 3> mean{}, var{};
+    auto addToHistory = [&](const std::array<double, 3>& e, int j) {
+        const double w = double(j) * double(j);
+        totalWeight += w;
+        for (int c = 0; c < 3; ++c) {
+            sumW1[c] += w * e[c];
+            sumW2[c] += w * e[c] * e[c];
+            mean[c] = sumW1[c] / totalWeight;
+            var[c] = std::max(0.0, sumW2[c] / totalWeight - mean[c] * mean[c]);
+        }
+    };
+    for (int j = 1; j <= b1; ++j) addToHistory(estimate(j), j);
+
+    auto plausible = [&](const std::array<double, 3>& e) {
+        double p = 0;
+        for (int c = 0; c < 3; ++c) {
+            const double d = mean[c] - e[c];
+            if (var[c] > 0)
+                p += std::exp(-0.5 * d * d / var[c]);
+            else
+                p += std::abs(d) <= 1e-12 * std::abs(mean[c]) ? 1.0 : 0.0;
+        }
+        return p / 3 >= kBiasCompAccept;
     };
 
-    const std::array<double, 3> e1 = estimate(b1);
     int lo = b1, hi = b2;
-    std::array<double, 3> eLo = e1;
-    while (lo < hi) {
-        const int mid = lo + (hi - lo + 1) / 2;
+    std::array<double, 3> eLo = estimate(b1);
+    while (hi - lo > 1) {
+        const int mid = lo + (hi - lo) / 2;
         const std::array<double, 3> eMid = estimate(mid);
-        if (consistent(eMid, mid, e1, b1) && consistent(eMid, mid, eLo, lo)) {
+        if (plausible(eMid)) {
+            addToHistory(eMid, mid);
             lo = mid;
             eLo = eMid;
         } else {
-            hi = mid - 1;
+            hi = mid;
         }
     }
     res.density = eLo;
     res.bandwidth = lo;
-    res.relError = 1.0 / std::sqrt(double(lo));
+    double err = 0;
+    for (int c = 0; c < 3; ++c) err += mean[c] > 0 ? eLo[c] / mean[c] - 1 : 0;
+    res.relError = err / 3;
     return res;
 }
 

@@ -16,39 +16,33 @@
 
 namespace rp::pmap {
 
-// Formulation (ours; RADIANCE's differs, see below). A lookup gathers the m <= bw2+1
-// nearest photons, sorted by squared distance d_1 <= ... <= d_m. The estimate at
-// bandwidth j (j photons summed) is RADIANCE's photonDensity for k = j:
+// Formulation: RADIANCE's (pmapbias.c, after Schregle 2003), made deterministic. A lookup
+// gathers the m <= bw2+1 nearest photons, sorted by squared distance d_1 <= ... <= d_m.
+// The estimate at bandwidth j (j photons summed) is RADIANCE's photonDensity for k = j:
 //     E(j) = (sum of the flux of photons 1..j) / (pi * pi * R2(j)),
 //     R2(j) = ((sqrt(d_j) + sqrt(d_{j+1})) / 2)^2,
 // with d_{j+1} replaced by the search radius^2 when j+1 = m and the search ended short of
-// bw2+1 photons (as photonDensity uses its search limit then). E(bw2) with a full queue is
-// exactly surfaceDensity with bandwidth bw2. Bandwidths run over [b1, b2] = [min(bw1, m-1),
-// min(bw2, m-1)].
+// bw2+1 photons (as photonDensity uses its search limit then). Bandwidths run over
+// [b1, b2] = [min(bw1, m-1), min(bw2, m-1)].
 //
-// Bias is the systematic change of E(j) as j grows; noise of a j-photon estimate is
-// ~ E/sqrt(j) (Poisson count of photons of similar flux). Two nested estimates E(r), E(j),
-// r < j, share the r nearest photons, so under a constant density their difference has
-// variance E^2 (1/r - 1/j) (the photons r+1..j are independent of the first r). We call j
-// consistent with r when, in every RGB channel c,
-//     |E_c(j) - E_c(r)| <= kBiasCompZ * E_c(j) * sqrt(1/r - 1/j).
-// Binary search, as Schregle's, for the largest consistent bandwidth: lo = b1 (always
-// accepted), hi = b2; while lo < hi: mid = lo + ceil((hi - lo) / 2); if mid is consistent
-// with both b1 (the least biased estimate: bounds the total drift) and lo (the last
-// accepted: sensitive to a local jump, its difference has little noise when lo is large)
-// then lo = mid, else hi = mid - 1. The result is E(lo) with bandwidth lo.
+// A per-lookup history holds E(1), ..., E(b1) with weights j^2 (RADIANCE's BIASCOMP_WGT);
+// its weighted mean and variance per RGB channel describe what noise looks like here.
+// Binary search: lo = b1, hi = b2; while hi - lo > 1: mid = (lo + hi) / 2; the deviation
+// d_c = mean_c - E_c(mid) is plausible noise with likelihood p_c = exp(-d_c^2 / (2 var_c));
+// if the mean of p over the channels is at least kBiasCompAccept, E(mid) joins the history
+// (mean and variance updated) and lo = mid, else hi = mid. The result is the last estimate
+// that joined the history, E(lo). So bw1 = bw2 gives the fixed-bandwidth estimate.
 //
-// Why not RADIANCE's test: it compares each estimate with a weighted running mean of the
-// previous lookups' estimates, so the result depends on the order of queries (and on
-// threads). Ours uses only the photons around the query point: the same point always gets
-// the same bandwidth and estimate (given the same photons found, i.e. the same search
-// radius; see PhotonLookup on the adaptive radius). The price is a noisier reference: a
-// bias smaller than about kBiasCompZ / sqrt(b1) of the estimate goes undetected.
-constexpr double kBiasCompZ = 2.0;
+// RADIANCE accepts E(mid) with probability p (a random number per step), which makes its
+// result depend on the random stream, i.e. on the order of queries and on processes (the
+// caustic README: 138.6 vs 119.2 W/m2 at one sensor). We accept exactly when acceptance is
+// the more likely outcome (p >= 1/2, |d| <= 1.18 sigma): the same point always gets the
+// same bandwidth and estimate (given the same photons found, i.e. the same search radius;
+// see PhotonLookup on the adaptive radius).
+constexpr double kBiasCompAccept = 0.5;
 
-// Per-lookup relative error estimate of the report: 1/sqrt(bandwidth used), the noise of
-// the chosen estimate (its remaining bias is, by construction, within the noise; manual 5.3
-// calls these figures approximate too).
+// Per-lookup relative error of the report, as RADIANCE's: the result relative to the
+// final history mean, minus 1, averaged over the channels.
 
 // Statistics for the -t report (manual 5.3). Accumulate per thread, then merge().
 struct BiasCompStats {

@@ -49,10 +49,10 @@ TEST(BiasComp, UniformDensityGrowsToUpperBandwidth) {
     EXPECT_EQ(stats.lookups, uint64_t(m));
     EXPECT_GE(stats.minBandwidth, 50);
     EXPECT_LE(stats.maxBandwidth, 500);
-    // Each binary-search step rejects by chance with probability ~5 % (two tests at
-    // z = 2 of one statistic: identical photon colours make the channels agree), mostly
-    // late in the search where a rejection costs little; the mean stays near bw2.
-    EXPECT_GT(stats.meanBandwidth(), 0.85 * 500) << stats.report("global");
+    // The noise yardstick is the spread of the history E(1..50), so a binary-search step
+    // rejects by chance now and then (as RADIANCE's random test does on average); over a
+    // uniform density the bandwidth still ends far above bw1 (RADIANCE's rule: ~276).
+    EXPECT_GT(stats.meanBandwidth(), 4 * 50) << stats.report("global");
     EXPECT_NEAR(sum / m, 1.0, 0.02);
 }
 

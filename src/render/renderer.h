@@ -82,7 +82,9 @@ public:
 
     // rtrace -I: irradiance at `point` on a surface facing unit `normal` (light arriving
     // from the side the normal points to), direct plus ambient, as RADIANCE computes it
-    // with a ray starting just off the point.
+    // with a ray starting just off the point: the surface is taken kIrradianceOffset
+    // in front of `point`, as RADIANCE's rtrace does.
+    static constexpr double kIrradianceOffset = 1e-4;
     RayResult irradiance(Context& ctx, const Vec3& point, const Vec3& normal,
                          uint64_t rayIndex) const;
 
