@@ -15,6 +15,7 @@
 #include "image/view.h"
 #include "render/command_args.h"
 #include "render/renderer.h"
+#include "render/photon_lighting.h"
 #include "render/rpict.h"
 #include "render/rpict_options.h"
 #include "render/rpict_tracer.h"
@@ -72,10 +73,17 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
     rp::SceneGeometry geometry(scene);
     Renderer renderer(scene, geometry, o.render, rp::calc::defaultSearchPath(rp::projectLibDir()));
 
+    // Bias compensation statistics (manual 5.3) after each report; threads merge theirs
+    // when they finish, so the figures are complete in the last report.
+    auto biasReport = [&] {
+        std::string b = renderer.photons().biasReport();
+        if (!b.empty()) *diag << "rpict: " << b << std::endl;
+    };
     auto progress = [&](const RenderProgress& p) {
         // The renderer's count includes shadow and ambient rays, as RADIANCE's nrays.
         *diag << "rpict: " << formatProgress(renderer.raysTraced(), p.percentDone, p.seconds)
               << std::endl;
+        biasReport();
     };
     std::vector<float> depth;
     rp::Picture picture;
@@ -87,6 +95,7 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
         throw;
     }
     renderer.flushAmbientFile();
+    if (o.reportInterval > 0) biasReport();
     addRpictHeader(picture, commandLine, std::time(nullptr));
     writeRpictOutput(picture, o.zFile.empty() ? nullptr : &depth, o, std::cout);
     return 0;

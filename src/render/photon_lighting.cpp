@@ -1,5 +1,6 @@
 #include "render/photon_lighting.h"
 
+#include <cctype>
 #include <filesystem>
 #include <string>
 
@@ -97,7 +98,9 @@ std::string PhotonLighting::biasReport() const {
     std::lock_guard<std::mutex> lock(statsMutex_);
     std::string out;
     for (size_t i = 0; i < maps_.size(); ++i) {
-        std::string r = biasStats_[i].report(pmap::photonMapTypeName(maps_[i].map.type()));
+        std::string type = pmap::photonMapTypeName(maps_[i].map.type());
+        for (char& c : type) c = char(std::tolower(static_cast<unsigned char>(c)));
+        std::string r = biasStats_[i].report(type.c_str());
         if (r.empty()) continue;
         if (!out.empty()) out += ", ";
         out += r;

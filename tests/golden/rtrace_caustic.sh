@@ -6,7 +6,8 @@
 # 10 %; single flank points carry the ~14 % noise of a 50-photon estimate, band means do
 # not. Also: the focus needs RADIANCE's -I offset (the pretend surface 1e-4 above the
 # point; without it the 50 nearest photons give ~330 W/m2 instead of 114), and a fixed
-# bandwidth of 500 smears the focus into the 2-5 mm band, which bias compensation avoids.
+# bandwidth of 500 smears the focus into the 2-5 mm band, which bias compensation avoids;
+# rpict -t prints the bias compensation statistics (manual 5.3).
 set -u
 BIN="${RP_BIN:?RP_BIN not set}"
 VAL="${RP_SHARED_DIR:?RP_SHARED_DIR not set}/validation/caustic"
@@ -48,6 +49,12 @@ b500=$(bands k500.txt "$VAL/ref_pmap_caustic_ds0.001_bw50.txt")
 echo "bw 500: $b500"
 awk -v a="$b500" -v b="$bb" 'BEGIN { split(a, x, " "); split(b, y, " "); exit !(x[2] > 1.3 && y[2] < x[2]) }' ||
     bad "bw 500 should smear the focus into the 2-5 mm band more than bias compensation"
+
+# rpict -t reports bias compensation statistics in the manual's 5.3 format.
+"$BIN/rpict" -t 1 -x 16 -y 16 -vp 0 -1 1 -vd 0 1 -1 -ap c.pm 50 500 "$VAL/scene.rad" 2> t.txt > /dev/null ||
+    bad "rpict -t"
+grep -Eq '^rpict: [0-9]+/[0-9]+/[0-9.]+ caustic, \(-?[0-9.]+/-?[0-9.]+/[0-9.]+ error\)$' t.txt ||
+    bad "bias compensation report: $(tail -1 t.txt)"
 
 # -op reports the point RADIANCE evaluates: 1e-4 along the normal.
 echo "0.1 0.2 0 0 0 1" | "$BIN/rtrace" -h -I -op "$VAL/scene.rad" > op.txt 2> /dev/null
