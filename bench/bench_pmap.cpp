@@ -1,7 +1,7 @@
 // Photon map speed: kd-tree build of 1 M photons (1 thread and all threads), k-NN lookups
 // per second for k = 50 and 500 (old kd-tree walk vs the bucket index of lookup_index.h) on
 // photons on the surfaces of a room-like box and uniform in a box, bias-compensated lookups
-// (50..500), the index build, file save and load, and bytes per photon.
+// (50..500), the index build, file save and load, load + index, and bytes per photon.
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -233,6 +233,24 @@ void BM_SaveLoad1M(benchmark::State& state) {
         benchmark::Counter(fileBytes * state.iterations() / 1e6, benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_SaveLoad1M)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// What a renderer does before its first lookup: read the file, check it, build the index.
+void BM_LoadAndIndex1M(benchmark::State& state) {
+    const std::string path = tempMapPath();
+    roomMap().save(path, "bench_pmap", true);
+    size_t bytes = 0;
+    for (auto _ : state) {
+        PhotonMap m = PhotonMap::load(path);
+        PhotonIndex index(m.photons(), true);
+        bytes = index.memoryBytes();
+        benchmark::DoNotOptimize(&index);
+    }
+    std::filesystem::remove(path);
+    state.counters["index bytes/photon"] = double(bytes) / double(kMillion);
+    state.counters["photons/s"] =
+        benchmark::Counter(double(kMillion) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_LoadAndIndex1M)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

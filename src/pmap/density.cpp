@@ -41,13 +41,19 @@ PhotonLookup::PhotonLookup(const PhotonMap& map, const LookupParams& params,
 }
 
 std::span<const PhotonHit> PhotonLookup::findPhotons(const Vec3& pos, const Vec3* normal) {
-    return search(pos, normal, static_cast<size_t>(bandwidth_) + 1);
+    auto hits = search(pos, normal, static_cast<size_t>(bandwidth_) + 1);
+    if (index_)
+        for (PhotonHit& h : hits) h.index = index_->photonIndex(h.index);
+    return hits;
 }
 
+// With an index, the hits name the index's slots (PhotonIndex::findNearestSlots), so that
+// surfaceDensity can sum flux from the index's leaf-ordered copy; callers that hand hits out
+// map them to photon indices first. The photons, distances and heap order are the same.
 std::span<PhotonHit> PhotonLookup::search(const Vec3& pos, const Vec3* normal, size_t queueLen) {
     const std::span<PhotonHit> queue(hits_.data(), queueLen);
     lastSearchDist2_ = static_cast<float>(maxDist2_);
-    found_ = index_ ? index_->findNearest(pos, normal, lastSearchDist2_, queue)
+    found_ = index_ ? index_->findNearestSlots(pos, normal, lastSearchDist2_, queue)
                     : findNearestPhotons(map_->photons(), pos, normal, lastSearchDist2_, queue);
     ++lookups_;
     if (found_ == queueLen) lastSearchDist2_ = hits_[0].dist2;
@@ -70,7 +76,7 @@ std::span<PhotonHit> PhotonLookup::search(const Vec3& pos, const Vec3* normal, s
 std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& normal) {
     std::array<double, 3> irrad = {0, 0, 0};
     if (map_->empty()) return irrad;
-    auto hits = findPhotons(pos, &normal);
+    const auto hits = search(pos, &normal, static_cast<size_t>(bandwidth_) + 1);
     if (hits.size() < 2) return irrad;  // need at least 2 photons
 
     // hits is a max-heap: hits[0] is the furthest; the second furthest is a child of it.
@@ -82,11 +88,19 @@ std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& 
     if (hits.size() > 2) d2 = std::max(d2, static_cast<double>(hits[2].dist2));
     const double r2 = 0.25 * (d1 + d2 + 2 * std::sqrt(d1 * d2));
 
-    // Skip the extra (furthest) photon; uniform kernel.
-    const auto photons = map_->photons();
-    for (size_t i = 1; i < hits.size(); ++i) {
-        const auto f = photons[hits[i].index].fluxRgb();
-        for (int c = 0; c < 3; ++c) irrad[c] += f[c];
+    // Skip the extra (furthest) photon; uniform kernel. Summed in heap order, the same
+    // float fluxes either way (the index keeps a copy of each photon's RGBE flux).
+    if (index_) {
+        for (size_t i = 1; i < hits.size(); ++i) {
+            const auto f = index_->slotFlux(hits[i].index);
+            for (int c = 0; c < 3; ++c) irrad[c] += f[c];
+        }
+    } else {
+        const auto photons = map_->photons();
+        for (size_t i = 1; i < hits.size(); ++i) {
+            const auto f = photons[hits[i].index].fluxRgb();
+            for (int c = 0; c < 3; ++c) irrad[c] += f[c];
+        }
     }
     // Divide by the search area pi r^2 and by pi, RADIANCE's ambient normalisation.
     const double scale = 1.0 / (kPi * kPi * r2);
@@ -103,6 +117,8 @@ std::array<double, 3> PhotonLookup::biasCompensatedDensity(const Vec3& pos, cons
     const size_t queueLen = static_cast<size_t>(upper) + 1;
     if (hits_.size() < queueLen) hits_.resize(queueLen);
     auto hits = search(pos, &normal, queueLen);
+    if (index_)
+        for (PhotonHit& h : hits) h.index = index_->photonIndex(h.index);
     const BiasCompResult r = compensateBias(hits, map_->photons(), lastSearchDist2_,
                                             hits.size() == queueLen, std::min(bwMin, upper),
                                             upper, biasPrefix_);
@@ -119,8 +135,10 @@ std::array<double, 3> PhotonLookup::precompDensity(const Vec3& pos, const Vec3& 
     int64_t idx = -1;
     if (index_) {
         PhotonHit hit{};
-        if (index_->findNearest(pos, &normal, map_->stats().cogDist2, {&hit, 1}) == 1)
-            idx = hit.index;
+        if (index_->findNearestSlots(pos, &normal, map_->stats().cogDist2, {&hit, 1}) == 1) {
+            const auto f = index_->slotFlux(hit.index);
+            return {f[0], f[1], f[2]};
+        }
     } else {
         idx = findNearestPhoton(map_->photons(), pos, &normal, map_->stats().cogDist2);
     }

@@ -26,9 +26,11 @@ inline void offerPhoton(PhotonHit* heap, size_t k, size_t& found, float& maxDist
         if (found == k) maxDist2 = heap[0].dist2;
     } else {
         size_t i = 1;  // replace the furthest and sift down
-        while (i <= (k >> 1)) {
+        const size_t half = k >> 1;
+        while (i <= half) {
             size_t j = i << 1;
-            if (j < k && heap[j - 1].dist2 < heap[j].dist2) ++j;
+            // The larger child, chosen without a branch (which one is unpredictable).
+            if (j < k) j += static_cast<size_t>(heap[j - 1].dist2 < heap[j].dist2);
             if (d2 >= heap[j - 1].dist2) break;
             heap[i - 1] = heap[j - 1];
             i = j;

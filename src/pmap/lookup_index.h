@@ -4,43 +4,95 @@
 // the index only adds arrays next to it. Density estimates live in density.h.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "pmap/kdtree.h"
 #include "pmap/photon.h"
+#include "util/colr.h"
 #include "util/vec.h"
 
 namespace rp::pmap {
 
+// Advises the kernel to back [p, p + bytes) with transparent huge pages (Linux
+// MADV_HUGEPAGE; the 2 MiB-aligned part only; a no-op elsewhere). Why: on the virtual
+// machines we measure on, first touching fresh memory costs ~3 ms per MiB in 4 KiB page
+// faults, more than decoding a photon map or building its index; with huge pages it is
+// ~0.1 ms per MiB. Call before the memory is first written.
+void adviseHugePages(void* p, size_t bytes);
+
+// An allocator for the large arrays of photon maps and their indices: resize() leaves
+// elements uninitialised (each is written once by a parallel loop, so a zero fill would only
+// add a serial pass over the memory), and blocks of 4 MiB or more are 2 MiB-aligned and
+// advised for huge pages (adviseHugePages).
+template <class T>
+struct BulkAllocator {
+    using value_type = T;
+    BulkAllocator() = default;
+    template <class U>
+    BulkAllocator(const BulkAllocator<U>&) {}
+    static constexpr size_t kHugeThreshold = size_t{4} << 20;
+    static constexpr std::align_val_t kHugeAlign{size_t{2} << 20};
+    T* allocate(size_t n) {
+        const size_t bytes = n * sizeof(T);
+        if (bytes < kHugeThreshold) return std::allocator<T>().allocate(n);
+        void* p = ::operator new(bytes, kHugeAlign);
+        adviseHugePages(p, bytes);
+        return static_cast<T*>(p);
+    }
+    void deallocate(T* p, size_t n) {
+        if (n * sizeof(T) < kHugeThreshold)
+            std::allocator<T>().deallocate(p, n);
+        else
+            ::operator delete(p, kHugeAlign);
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        if constexpr (sizeof...(Args) == 0)
+            ::new (static_cast<void*>(p)) U;
+        else
+            ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+    template <class U>
+    bool operator==(const BulkAllocator<U>&) const { return true; }
+};
+template <class T>
+using BulkVector = std::vector<T, BulkAllocator<T>>;
+
 // Why a second structure: RADIANCE's implicit heap visits one 24-byte photon per node, and
 // the nodes of a subtree are spread over the whole array (node i's children at 2i, 2i+1),
 // so below the first few levels every node visited is a cache miss. Here the photons of a
-// leaf (at most kLeafSize) lie next to each other as float x[], y[], z[] and int8 normal
-// arrays, nodes are in depth-first order (left child follows its parent), and whole leaves
-// are tested with vectorisable loops. Searches return exactly the photons (and float
-// distances) that findNearestPhotons returns on the map's tree, except for ties.
+// leaf (at most kLeafSize) lie next to each other, nodes are in depth-first order (left
+// child follows its parent), and whole leaves are tested with vectorisable loops. Searches
+// return exactly the photons (and float distances) that findNearestPhotons returns on the
+// map's tree, except for ties.
 //
-// Memory: per photon 12 bytes of position, 3 bytes of normal and a 4-byte index into the
-// map's photon array (the results name photons in file order, as the old search did), plus
-// one 16-byte node per leaf of kLeafSize/2 .. kLeafSize photons and as many inner nodes:
-// about 20.4 bytes/photon with kLeafSize 32 (memoryBytes(); 21.1 with 16, which measured
-// no faster). The map's own 24 bytes/photon are unchanged. Reordering the map's photons
-// into leaf order would save the index and position copies but change what photons()
+// Memory: per photon 12 bytes of position, 3 bytes of normal, 4 bytes of RGBE flux and a
+// 4-byte index into the map's photon array (results name photons in file order, as the old
+// search did), slots padded to multiples of 4 per leaf, plus one 16-byte node per leaf of
+// kLeafSize/2 .. kLeafSize photons and as many inner nodes: about 24 bytes/photon with
+// kLeafSize 32 (memoryBytes(); 16 measured no faster). The flux copy lets density
+// estimates sum the photons found from leaf-ordered memory instead of one cache miss per
+// photon in the map (findNearestSlots). The map's own 24 bytes/photon are unchanged. Reordering the map's
+// photons into leaf order would save the index and copies but change what photons()
 // returns and how files are written (a permutation on save); not done.
 class PhotonIndex {
 public:
     static constexpr uint32_t kLeafSize = 32;
 
     // Builds the index over `photons` (any order; results index into this span, which must
-    // outlive nothing: positions and normals are copied). Median splits by count along the
-    // axis of largest extent of the photons in each node, so the tree shape depends only
-    // on the photon count; with `parallel`, large subtrees are built as TBB tasks and the
-    // result does not depend on the number of threads. Requires size() <= kMaxTreePhotons.
+    // outlive nothing: positions, normals and flux are copied). Median splits by count
+    // along the axis of largest extent of the photons in each node, so the tree shape
+    // depends only on the photon count; with `parallel`, large subtrees are built as TBB
+    // tasks and the result does not depend on the number of threads. Requires
+    // size() <= kMaxTreePhotons.
     explicit PhotonIndex(std::span<const Photon> photons, bool parallel = true);
 
     // As findNearestPhotons (kdtree.h): up to out.size() nearest photons with squared
@@ -51,7 +103,16 @@ public:
     size_t findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,
                        std::span<PhotonHit> out) const;
 
-    size_t size() const { return index_.size(); }
+    // As findNearest, but out[].index are the index's slots (leaf order) instead of photon
+    // indices; everything else (the photons found, distances, heap order) is the same,
+    // since the heap never looks at indices. photonIndex() maps a slot to the photon, and
+    // slotFlux() gives its flux without touching the map (same values as fluxRgb()).
+    size_t findNearestSlots(const Vec3& pos, const Vec3* normal, float maxDist2,
+                            std::span<PhotonHit> out) const;
+    uint32_t photonIndex(uint32_t slot) const { return index_[slot]; }
+    std::array<float, 3> slotFlux(uint32_t slot) const { return colrToRgb(flux_[slot]); }
+
+    size_t size() const { return size_; }
     // Bytes held by the index (not counting the map's photons).
     size_t memoryBytes() const;
 
@@ -68,10 +129,16 @@ private:
     template <bool kFilter>
     void searchNode(uint32_t node, float off[3], Search& s) const;
 
+    size_t size_ = 0;
     std::vector<Node> nodes_;
-    std::vector<float> x_, y_, z_;       // positions, by slot (leaf buckets contiguous)
-    std::vector<int8_t> nx_, ny_, nz_;   // normals x 127, by slot
-    std::vector<uint32_t> index_;        // slot -> photon index in the constructor's span
+    // Slots: each leaf's photons get slots first .. first + count, with `first` a multiple
+    // of 4 and the count padded to one (the leaf loops take 4 lanes at a time). A leaf's
+    // positions are one block pos_[3 first ..] = x[c4] y[c4] z[c4] (c4 = padded count),
+    // its normals (x 127) likewise in nrm_, so a leaf test reads two contiguous runs.
+    BulkVector<float> pos_;
+    BulkVector<int8_t> nrm_;
+    BulkVector<Colr> flux_;        // RGBE flux, by slot
+    BulkVector<uint32_t> index_;   // slot -> photon index in the constructor's span
     float boundsLo_[3] = {0, 0, 0}, boundsHi_[3] = {0, 0, 0};
 };
 

@@ -6,6 +6,8 @@
 //   pos 3 flt | norm 3 x 1 B | RGBE 4 x 1 B | primary 4 B | flags 1 B.
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -17,6 +19,7 @@
 #include <ostream>
 #include <random>
 
+#include "pmap/lookup_index.h"
 #include "pmap/photon_map.h"
 #include "pmap/portable_io.h"
 #include "util/error.h"
@@ -30,7 +33,8 @@ constexpr size_t kPrimaryRecordSize = 2;
 // Bytes after the version string up to and including numPrimary.
 constexpr size_t kFixedBinarySize = 8 + (3 + 6 + 3 + 1) * kPortableFloatSize + 4;  // 77
 constexpr size_t kMaxVersionLength = 32;
-constexpr size_t kChunkPhotons = size_t{1} << 16;  // photons encoded/decoded per chunk
+constexpr size_t kChunkPhotons = size_t{1} << 16;  // photons encoded per chunk
+constexpr size_t kReadChunkPhotons = size_t{1} << 18;  // photons read per chunk (7 MB)
 
 std::string cFormat(const char* format, auto... args) {
     char buf[256];
@@ -271,14 +275,26 @@ PhotonMap PhotonMap::read(std::istream& in, const std::string& what) {
     for (size_t i = 0; i < numPrimary; ++i)
         map.primaries_[i].srcIdx = static_cast<int16_t>(getInt(&buf[i * kPrimaryRecordSize], 2));
 
+    // Read in chunks (bounded memory for any map size) and decode each chunk in parallel:
+    // records are fixed-size, so photon i is at byte 27 i of its chunk. The photon array is
+    // advised for huge pages before its first write (see adviseHugePages: 4 KiB page
+    // faults cost more than the decoding here).
+    map.photons_.reserve(s.numPhotons);
+    adviseHugePages(map.photons_.data(), s.numPhotons * sizeof(Photon));
     map.photons_.resize(s.numPhotons);
-    buf.resize(kChunkPhotons * kPhotonRecordSize);
-    for (size_t i = 0; i < s.numPhotons; i += kChunkPhotons) {
-        const size_t n = std::min<size_t>(kChunkPhotons, s.numPhotons - i);
-        if (!readBytes(in, buf.data(), n * kPhotonRecordSize))
+    const size_t chunk = std::min<size_t>(kReadChunkPhotons, s.numPhotons);
+    BulkVector<unsigned char> raw(std::max<size_t>(chunk, 1) * kPhotonRecordSize);
+    for (size_t i = 0; i < s.numPhotons; i += kReadChunkPhotons) {
+        const size_t n = std::min<size_t>(kReadChunkPhotons, s.numPhotons - i);
+        if (!readBytes(in, raw.data(), n * kPhotonRecordSize))
             throw InputError(loc, fmt::format("truncated photon map (read error at photon {})", i));
-        for (size_t j = 0; j < n; ++j)
-            map.photons_[i + j] = decodePhoton(&buf[j * kPhotonRecordSize]);
+        Photon* dst = map.photons_.data() + i;
+        const unsigned char* src = raw.data();
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kChunkPhotons / 4),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              for (size_t j = r.begin(); j < r.end(); ++j)
+                                  dst[j] = decodePhoton(src + j * kPhotonRecordSize);
+                          });
     }
 
     if (std::string problem = checkKdTree(map.photons_); !problem.empty())

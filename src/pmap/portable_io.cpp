@@ -1,13 +1,29 @@
 // RADIANCE portable binary encodings (see portable_io.h for the contracts).
 #include "pmap/portable_io.h"
 
+#include <array>
 #include <cmath>
 
 namespace rp::pmap {
 
 namespace {
 constexpr double kMantissaScale = 0x7fffffff;
+
+// kPow2[e + 128] = 2^e for the exponent byte's range -128..127, exact (built by doubling
+// and halving). d * 2^e is exact for getFlt's |d| in [2^-31, 2] (far from double underflow
+// or overflow), so multiplying by the table equals std::ldexp bit for bit (checked on 5 M
+// random encodings, every exponent byte) and is several times faster: a map load decodes
+// three floats per photon.
+constexpr std::array<double, 256> makePow2() {
+    std::array<double, 256> t{};
+    double v = 1.0;
+    for (int e = 0; e < 128; ++e, v *= 2) t[size_t(e + 128)] = v;
+    v = 0.5;
+    for (int e = -1; e >= -128; --e, v *= 0.5) t[size_t(e + 128)] = v;
+    return t;
 }
+constexpr std::array<double, 256> kPow2 = makePow2();
+}  // namespace
 
 void putInt(std::string& out, int64_t value, int size) {
     const uint64_t u = static_cast<uint64_t>(value);
@@ -54,9 +70,9 @@ int64_t getInt(const unsigned char* in, int size) {
 double getFlt(const unsigned char* in) {
     const int64_t m = getInt(in, 4);
     if (m == 0) return 0.0;
-    const int e = static_cast<int>(getInt(in + 4, 1));
+    const int e = static_cast<int8_t>(in[4]);
     const double d = (static_cast<double>(m) + (m > 0 ? 0.5 : -0.5)) / kMantissaScale;
-    return std::ldexp(d, e);
+    return d * kPow2[size_t(e + 128)];
 }
 
 bool ByteReader::take(size_t n) {

@@ -54,6 +54,9 @@ struct Ambient::Impl {
 
     Color fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) const;
     Color makeRecord(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng);
+    // Ward radius R of a new record (its reach is aa R); may cap the relative gradient.
+    double recordRadius(const HemisphereEstimate& est, double brightness, double wt,
+                        Vec3& gradPosition) const;
 };
 
 Ambient::Ambient(const AmbientOptions& options, double sceneSize, const Scene& scene,
@@ -140,6 +143,46 @@ Color Ambient::Impl::fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng
     return sampleHemisphere(at.offsetOrigin, at.normal, p, tracer, rng).value;
 }
 
+// The curvature term may use this share of -aa: the rest is left to the records' Monte
+// Carlo noise and the normal test. With 1/4, Cornell at -aa 0.1 makes about as many
+// records as RADIANCE 3's rule did (and as RADIANCE 5 needs time for); with 1 it makes a
+// tenth and reads 2 % high (closing note of the session that chose it).
+constexpr double kCurvatureShare = 0.25;
+// The curvature never counts as less than this over the squared harmonic mean distance
+// R_h of the surfaces seen: the second-order analogue of Ward's split sphere, whose
+// first-order bound E/R_h RADIANCE 3 used. Our Hessian (sampleHemisphere) sees how the
+// light from the surfaces in view changes, not how their visibility does; R_h does.
+constexpr double kSplitSphereCurvature = 2.0;
+
+double Ambient::Impl::recordRadius(const HemisphereEstimate& est, double brightness,
+                                   double wt, Vec3& gradPosition) const {
+    // The reach of a record (how far lookups may use it) follows from its second-order
+    // error, as in RADIANCE 5's Hessian-based records, though by our own derivation:
+    // extrapolation with the gradients leaves the curvature term 1/2 k x^2 (k: largest
+    // |eigenvalue| of the value's Hessian relative to the value, from sampleHemisphere,
+    // at least kSplitSphereCurvature / R_h^2), so the relative error stays within tol out to
+    //     reach = sqrt(2 tol / k),   tol = kCurvatureShare * aa / sqrt(wt),
+    // deeper levels being allowed more error as RADIANCE's 1/sqrt(wt) radius growth allows.
+    // The reach grows as sqrt(aa) (RADIANCE 3's Ward-Heckbert reach aa R grows as aa), so
+    // halving -aa doubles the records instead of quadrupling them, and in smooth light
+    // (small k) records reach far. Bounds: at least aa * minarad (RADIANCE 3's smallest
+    // reach), at most maxarad, and where the first-order change over the reach would
+    // exceed the value itself (|g| reach > 1) the reach shrinks to 1/|g| (if the floor
+    // keeps it larger, the relative gradient `gradPosition` is capped instead). Stored as the
+    // Ward radius R = reach / aa, so lookups, the grid and the -af file work unchanged.
+    const double aa = opt.accuracy;
+    const double tol = kCurvatureShare * aa / std::sqrt(wt);
+    double k = brightness > kTiny ? est.maxCurvature() / brightness : 0;
+    const double rh = est.sumInverseDistance > kTiny ? est.samples / est.sumInverseDistance : 0;
+    if (rh > 0) k = std::max(k, kSplitSphereCurvature / (rh * rh));
+    double reach = k > 0 ? std::sqrt(2 * tol / k) : maxRadius;
+    const double g = length(gradPosition);
+    if (g * reach > 1) reach = 1 / g;
+    reach = std::clamp(reach, aa * minRadius, std::max(aa * minRadius, maxRadius));
+    if (g * reach > 1) gradPosition *= 1 / (g * reach);
+    return std::max(reach / aa, 1e-12);
+}
+
 Color Ambient::Impl::makeRecord(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) {
     // RADIANCE compat (ambient.c makeambient): a record's weight is AVGREFL per level,
     // unless the ray is much lighter already; it sets the division count and radius.
@@ -164,20 +207,7 @@ Color Ambient::Impl::makeRecord(const AmbientPoint& at, HemisphereTracer& tracer
         rec.gradPosition = est.gradPosition / b;
         rec.gradDirection = est.gradDirection / b;
     }
-    // RADIANCE compat (ambcomp.c doambient): radius = harmonic mean distance, shrunk
-    // where the translational gradient is steep, at least minarad (capping the gradient
-    // there instead), grown by 1/sqrt(weight) for deeper levels, at most maxarad.
-    double r = est.sumInverseDistance > kTiny ? est.samples / est.sumInverseDistance
-                                              : maxRadius;
-    double g2 = dot(rec.gradPosition, rec.gradPosition);
-    if (g2 * r * r > 1) r = 1 / std::sqrt(g2);
-    if (r < minRadius) {
-        r = minRadius;
-        if (g2 * r * r > 1) rec.gradPosition *= 1 / (r * std::sqrt(g2));
-    }
-    r /= std::sqrt(wt);
-    r = std::min(r, maxRadius);
-    rec.radius = std::max(r, 1e-12);
+    rec.radius = recordRadius(est, b, wt, rec.gradPosition);
     cache->insert(rec, true);
     countValue(rec.value);
     return rec.value;

@@ -25,6 +25,7 @@ public:
     struct Sample {
         Color radiance;           // radiance arriving back along the ray
         double distance = 1e10;   // distance to the surface hit (1e10 if none)
+        Vec3 normal;              // geometric normal there, either sign (zero: unknown)
     };
     // `ambientLevel` is the level of the new ray (1 for rays from a primary hit);
     // `weight` its RADIANCE ray weight (for -lw and the division count at deeper levels).

@@ -41,7 +41,7 @@ AmbientPoint pointAt(const Vec3& p) {
 // Radiance varying with position and direction, so records differ and carry gradients.
 FunctionTracer::Fn varied() {
     return [](const Vec3& o, const Vec3& d) {
-        return HemisphereTracer::Sample{Color{1 + o.x + d.x, 2 + d.y, 0.5}, 1 + o.y};
+        return HemisphereTracer::Sample{Color{1 + o.x + d.x, 2 + d.y, 0.5}, 1 + o.y, {}};
     };
 }
 
@@ -84,11 +84,12 @@ TEST(AmbientFileTest, SaveThenLoadGivesSameRecords) {
         Ambient amb(cachedOptions(file), 10, scene);
         FunctionTracer tracer(varied());
         Rng rng(31, RngDomain::Test, 0);
-        for (int i = 0; i < 10; ++i) amb.indirect(pointAt({i * 1.0, 0, 0}), tracer, rng);
+        // Points 20 apart: beyond any record's reach in this 10-unit scene (maxarad 5).
+        for (int i = 0; i < 10; ++i) amb.indirect(pointAt({i * 20.0, 0, 0}), tracer, rng);
         EXPECT_EQ(amb.recordCount(), 10);
         amb.save();
         // A second save adds only what is new since the first.
-        for (int i = 0; i < 5; ++i) amb.indirect(pointAt({i * 1.0, 3, 0}), tracer, rng);
+        for (int i = 0; i < 5; ++i) amb.indirect(pointAt({i * 20.0, 30, 0}), tracer, rng);
         amb.save();
         amb.save();
     }
@@ -96,7 +97,7 @@ TEST(AmbientFileTest, SaveThenLoadGivesSameRecords) {
     EXPECT_EQ(f.options, "-aa 0.1 -ar 100 -ad 64 -as 0 -ab 1");
     ASSERT_EQ(f.records.size(), 15u);
     EXPECT_EQ(f.records[0].position, (Vec3{0, 0, 0}));
-    EXPECT_EQ(f.records[14].position, (Vec3{4, 3, 0}));
+    EXPECT_EQ(f.records[14].position, (Vec3{80, 30, 0}));
 
     // Loading: the records are found again (no tracing at those points), with the same
     // values; nothing is written again unless new records come.
@@ -104,7 +105,7 @@ TEST(AmbientFileTest, SaveThenLoadGivesSameRecords) {
     EXPECT_EQ(again.recordCount(), 15);
     FunctionTracer tracer(varied());
     Rng rng(32, RngDomain::Test, 0);
-    Color c = again.indirect(pointAt({2, 0, 0}), tracer, rng);
+    Color c = again.indirect(pointAt({40, 0, 0}), tracer, rng);
     EXPECT_EQ(tracer.calls, 0);
     EXPECT_NEAR(c.r, f.records[2].value.r, 1e-6);
     again.save();

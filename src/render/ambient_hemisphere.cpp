@@ -14,12 +14,19 @@ struct Division {
     double prior = 0;          // per-sample variance guessed from the neighbours
     double error = 0;          // estimated variance of this division's mean
     double minDistance = 1e10; // nearest surface seen through this division
+    double hessian[3] = {0, 0, 0};  // sum over samples of their Hessian terms (see below)
     int n = 0;
 };
 
 double meanBrightness(const Division& d) { return d.n > 0 ? d.sumB / d.n : 0; }
 
 }  // namespace
+
+double HemisphereEstimate::maxCurvature() const {
+    double mean = 0.5 * (hessian[0] + hessian[2]);
+    double half = 0.5 * (hessian[0] - hessian[2]);
+    return std::abs(mean) + std::sqrt(half * half + hessian[1] * hessian[1]);
+}
 
 void tangentFrame(const Vec3& n, Vec3& u, Vec3& v) {
     // Duff, Burgess, Christensen et al. 2017, "Building an Orthonormal Basis, Revisited".
@@ -69,6 +76,34 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
         ++d.n;
         double dist = s.distance > 0 ? s.distance : 1e10;
         d.minDistance = std::min(d.minDistance, dist);
+        if (params.gradients && dist < 1e10) {
+            // Hessian of this sample's share of the value under a tangential move of the
+            // point (see the header): the surface seen is a small patch at distance d with
+            // unit normal facing back along -mu (mu . dir = cos_phi); its share of E is
+            // L A cos(theta') cos(phi') / r'^2 with the patch area A fixed, and twice
+            // differentiating at the centre gives, in the tangent frame (t = tangential part
+            // of dir, mu_t of mu), L pi/(MN) / (d^2 cos_phi) times
+            //     24 cos_phi t t^T - 4 (mu_t t^T + t mu_t^T) - 4 cos_phi I.
+            // Exact for an infinite plane (the sum vanishes, as irradiance does not change
+            // along it) and for a sphere around the point. Grazing patches are capped.
+            Vec3 mu = s.normal;
+            double cphi = dot(mu, dir);
+            if (cphi < 0) {
+                mu = -mu;
+                cphi = -cphi;
+            }
+            if (dot(mu, mu) < 0.5) {  // unknown normal: a patch facing the point
+                mu = dir;
+                cphi = 1;
+            }
+            cphi = std::max(cphi, 0.05);
+            double tx = std::cos(phi) * sinT, ty = std::sin(phi) * sinT;
+            double mx = dot(mu, ux), my = dot(mu, uy);
+            double f = b / (dist * dist * cphi);
+            d.hessian[0] += f * (24 * cphi * tx * tx - 8 * mx * tx - 4 * cphi);
+            d.hessian[1] += f * (24 * cphi * tx * ty - 4 * (mx * ty + tx * my));
+            d.hessian[2] += f * (24 * cphi * ty * ty - 8 * my * ty - 4 * cphi);
+        }
         est.sumInverseDistance += 1 / dist;
         ++est.samples;
     };
@@ -120,6 +155,9 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
     for (const Division& d : div) est.value += d.sum / d.n;
     est.value = est.value / double(div.size());
     if (!params.gradients) return est;
+    for (const Division& d : div)
+        for (int i = 0; i < 3; ++i) est.hessian[i] += d.hessian[i] / d.n;
+    for (double& h : est.hessian) h /= double(div.size());
 
     // Row boundaries: sin^2(theta_j-) = j / M.
     auto sinBound = [&](int j) { return std::sqrt(double(j) / M); };

@@ -39,6 +39,11 @@ struct HemisphereEstimate {
     // Gradients of brightness(value) (Color::brightness), not yet normalised:
     Vec3 gradPosition;      // d value / d position (tangent plane), per unit length
     Vec3 gradDirection;     // rotation vector gradient: value(N') ~ value + g . (N x N')
+    // Hessian of value under translation in the tangent plane, in the (u, v) frame of
+    // tangentFrame(normal): xx, xy, yy (per unit length squared; see sampleHemisphere).
+    double hessian[3] = {0, 0, 0};
+    // Largest |eigenvalue| of `hessian`: the strongest curvature of the value.
+    double maxCurvature() const;
 };
 
 // Traces the hemisphere above unit `normal` from `origin`. Allocates its division table

@@ -52,7 +52,7 @@ TEST(AmbientHemisphereTest, CosineWeightedMoments) {
     FunctionTracer tracer([&](const Vec3&, const Vec3& d) {
         double c = dot(d, n);
         EXPECT_GE(c, -1e-12);
-        return HemisphereTracer::Sample{Color{c, c * c, 1}, 1};
+        return HemisphereTracer::Sample{Color{c, c * c, 1}, 1, {}};
     });
     Rng rng(11, RngDomain::Test, 0);
     HemisphereParams p = params(2048, 0);
@@ -71,7 +71,7 @@ TEST(AmbientHemisphereTest, SuperSamplesGoWhereRadianceVaries) {
     FunctionTracer tracer([&](const Vec3&, const Vec3& d) {
         bool patch = d.z > 0.95 && d.x > 0;
         if (d.z > 0.9) ++nearPatch;
-        return HemisphereTracer::Sample{Color::grey(patch ? 10 : 0), 1};
+        return HemisphereTracer::Sample{Color::grey(patch ? 10 : 0), 1, {}};
     });
     Rng rng(12, RngDomain::Test, 0);
     HemisphereParams p = params(256, 400);
@@ -87,7 +87,7 @@ TEST(AmbientHemisphereTest, SuperSamplesGoWhereRadianceVaries) {
 // (2/3) sin(angle); with our convention V(N') ~ V + g . (N x N'), g.y = 2/3.
 TEST(AmbientHemisphereTest, RotationalGradientMatchesAnalytic) {
     FunctionTracer tracer([](const Vec3&, const Vec3& d) {
-        return HemisphereTracer::Sample{Color::grey(1 + d.x), 1};
+        return HemisphereTracer::Sample{Color::grey(1 + d.x), 1, {}};
     });
     Rng rng(13, RngDomain::Test, 0);
     HemisphereEstimate e = sampleHemisphere({0, 0, 0}, {0, 0, 1}, params(1024, 0), tracer, rng);
@@ -129,6 +129,32 @@ TEST(AmbientHemisphereTest, GradientsImproveExtrapolation) {
         double without = extrapolate(rec, p, rec.normal, false).r;
         EXPECT_LT(std::fabs(with - truth), 0.5 * std::fabs(without - truth)) << "x " << x;
     }
+}
+
+// The step ceiling again, now with its normal known to the hemisphere: the Hessian of
+// the value under translation is d2V/dx2 = -3x / (1 + x^2)^(5/2) along x and 0 along y;
+// a uniform ceiling (an infinite plane) has none at all.
+TEST(AmbientHemisphereTest, HessianMatchesAnalytic) {
+    auto ceiling = [](double lo, double hi) {
+        return [=](const Vec3& o, const Vec3& d) {
+            if (d.z <= 0) return HemisphereTracer::Sample{Color{}, 1e10, {}};
+            double t = (1 - o.z) / d.z;
+            double L = o.x + t * d.x < 0 ? lo : hi;
+            return HemisphereTracer::Sample{Color::grey(L), t, Vec3{0, 0, -1}};
+        };
+    };
+    FunctionTracer step(ceiling(1, 3));
+    Rng rng(16, RngDomain::Test, 0);
+    HemisphereEstimate e = sampleHemisphere({0.5, 0, 0}, {0, 0, 1}, params(8192, 0), step, rng);
+    const double truth = -3 * 0.5 / std::pow(1.25, 2.5);  // -0.859
+    EXPECT_NEAR(e.hessian[0], truth, 0.1 * std::fabs(truth));
+    EXPECT_NEAR(e.hessian[1], 0, 0.05);
+    EXPECT_NEAR(e.hessian[2], 0, 0.1);
+    EXPECT_NEAR(e.maxCurvature(), std::fabs(truth), 0.15 * std::fabs(truth));
+
+    FunctionTracer uniform(ceiling(2, 2));
+    e = sampleHemisphere({0.5, 0, 0}, {0, 0, 1}, params(8192, 0), uniform, rng);
+    EXPECT_LT(e.maxCurvature(), 0.05 * e.value.r);  // vs 2/R_h^2 = 1 times the value
 }
 
 }  // namespace

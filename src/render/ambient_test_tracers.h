@@ -30,7 +30,7 @@ private:
 // The same radiance from every direction, surfaces at distance `distance`.
 inline FunctionTracer::Fn constantRadiance(Color L, double distance = 1) {
     return [L, distance](const Vec3&, const Vec3&) {
-        return HemisphereTracer::Sample{L, distance};
+        return HemisphereTracer::Sample{L, distance, {}};
     };
 }
 
@@ -38,11 +38,11 @@ inline FunctionTracer::Fn constantRadiance(Color L, double distance = 1) {
 // hit point has x < 0 and `hi` where x >= 0 (nothing below the horizon).
 inline FunctionTracer::Fn ceilingStep(double h, double lo, double hi) {
     return [=](const Vec3& o, const Vec3& d) {
-        if (d.z <= 0) return HemisphereTracer::Sample{Color{}, 1e10};
+        if (d.z <= 0) return HemisphereTracer::Sample{Color{}, 1e10, {}};
         double t = (h - o.z) / d.z;
         double x = o.x + t * d.x;
         double L = x < 0 ? lo : hi;
-        return HemisphereTracer::Sample{Color::grey(L), t};
+        return HemisphereTracer::Sample{Color::grey(L), t, {}};
     };
 }
 

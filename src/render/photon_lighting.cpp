@@ -1,6 +1,9 @@
 #include "render/photon_lighting.h"
 
+#include <tbb/parallel_for.h>
+
 #include <cctype>
+#include <exception>
 #include <filesystem>
 #include <string>
 
@@ -55,11 +58,25 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
             newestInput = in.mtime;
             newestName = in.path;
         }
-    for (const PhotonMapUse& use : uses) {
+    // The maps load (and below, get their search indexes) concurrently; errors are
+    // reported in command-line order whatever the threads did.
+    std::vector<pmap::PhotonMap> loaded(uses.size());
+    std::vector<std::exception_ptr> failed(uses.size());
+    tbb::parallel_for(size_t(0), uses.size(), [&](size_t i) {
+        try {
+            loaded[i] = pmap::PhotonMap::load(uses[i].file);
+        } catch (...) {
+            failed[i] = std::current_exception();
+        }
+    });
+    for (const std::exception_ptr& e : failed)
+        if (e) std::rethrow_exception(e);
+    for (size_t i = 0; i < uses.size(); ++i) {
+        const PhotonMapUse& use = uses[i];
         Map m;
         m.use = use;
         m.file = use.file;
-        m.map = pmap::PhotonMap::load(use.file);
+        m.map = std::move(loaded[i]);
         using T = pmap::PhotonMapType;
         T type = m.map.type();
         const char* name = pmap::photonMapTypeName(type);
@@ -88,9 +105,12 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
             throw InputError(use.file + ": photon map is older than scene file " + newestName +
                              " (stale: rerun mkpmap)");
         *slot = int(maps_.size());
-        if (kUseSearchIndex) m.index = std::make_unique<pmap::PhotonIndex>(m.map.photons());
         maps_.push_back(std::move(m));
     }
+    if (kUseSearchIndex)
+        tbb::parallel_for(size_t(0), maps_.size(), [&](size_t i) {
+            maps_[i].index = std::make_unique<pmap::PhotonIndex>(maps_[i].map.photons());
+        });
     biasStats_.resize(maps_.size());
 }
 

@@ -79,7 +79,9 @@ public:
 
     // Radiance arriving at ray.origin from ray.dir. `first` (may be null) receives what
     // the first surface hit was; `distance` the distance to it (1e10 if none).
-    Color radiance(const Ray& ray, const RayState& state, RayResult* first, double& distance);
+    // `hitNormal` (optional) receives the geometric normal where the ray ended.
+    Color radiance(const Ray& ray, const RayState& state, RayResult* first, double& distance,
+                   Vec3* hitNormal = nullptr);
 
     // Irradiance at a point on a white Lambertian surface facing `normal`.
     Color irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel, double weight);

@@ -72,7 +72,7 @@ material::ChainResult Renderer::Context::resolve(int32_t modifier, const Hit& hi
 }
 
 Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResult* first,
-                                  double& distance) {
+                                  double& distance, Vec3* hitNormal) {
     impl.rays.fetch_add(1, std::memory_order_relaxed);
     size_t treeIndex = 0;
     if (tree) {
@@ -101,6 +101,7 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
         total += coef * c;
         if (passWeight.max() <= 0) {
             distance = travelled + hit->t;
+            if (hitNormal) *hitNormal = hit->normal;
             break;
         }
         coef *= passWeight;

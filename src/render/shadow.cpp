@@ -212,7 +212,7 @@ HemisphereTracer::Sample Renderer::Context::trace(const Vec3& origin, const Vec3
     Sample s;
     double d = kNoHit;
     int saved = sampleDepth_;
-    s.radiance = radiance(Ray{origin, dir}, st, nullptr, d);
+    s.radiance = radiance(Ray{origin, dir}, st, nullptr, d, &s.normal);
     sampleDepth_ = saved;
     s.distance = d;
     return s;

@@ -25,11 +25,4 @@ Colr toColr(double r, double g, double b) {
     return {mant(r), mant(g), mant(b), static_cast<uint8_t>(e + kColrExcess)};
 }
 
-std::array<float, 3> colrToRgb(const Colr& c) {
-    if (c[3] == 0) return {0, 0, 0};
-    double f = std::ldexp(1.0, static_cast<int>(c[3]) - (kColrExcess + 8));
-    return {static_cast<float>((c[0] + 0.5) * f), static_cast<float>((c[1] + 0.5) * f),
-            static_cast<float>((c[2] + 0.5) * f)};
-}
-
 }  // namespace rp
