@@ -67,7 +67,6 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
         throw rp::notSupportedYet({}, "global participating medium (-me/-ma/-mg/-ms)");
     // Check the view before the (slow) scene load, as RADIANCE's setview does.
     rp::ViewRays checkView(o.view);
-    if (o.view.aft > 0) throw rp::notSupportedYet({}, "aft clipping (-va)");
 
     rp::Scene scene = rp::loadScene(cmd.sceneFiles, rp::gen::builtinLoadOptions());
     rp::SceneGeometry geometry(scene);

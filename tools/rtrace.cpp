@@ -46,7 +46,6 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     rp::setWarningSink([warnTo, warnings](const std::string& m) {
         if (warnings) *warnTo << "rtrace: warning: " << m << '\n';
     });
-    if (o.limitDistance) throw rp::notSupportedYet({}, "rtrace -ld (limit distance)");
     if (o.render.mist.any()) throw rp::notSupportedYet({}, "global participating medium (-me/-ma/-mg/-ms)");
     OutputSpec spec = parseOutputSpec(o.outputSpec, o.outputFormat);
 
@@ -64,6 +63,7 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     settings.xres = o.xres;
     settings.yres = o.yres;
     settings.threads = o.render.threads;
+    settings.limitDistance = o.limitDistance;
     RayWriter writer(spec, o.outputFormat, &scene);
     try {
         runRtrace(settings, std::cin, out, writer, tracer.trace());

@@ -144,10 +144,12 @@ Color Ambient::Impl::fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng
 }
 
 // The curvature term may use this share of -aa: the rest is left to the records' Monte
-// Carlo noise and the normal test. With 1/4, Cornell at -aa 0.1 makes about as many
-// records as RADIANCE 3's rule did (and as RADIANCE 5 needs time for); with 1 it makes a
-// tenth and reads 2 % high (closing note of the session that chose it).
-constexpr double kCurvatureShare = 0.25;
+// Carlo noise and the normal test. Measured on the Cornell box with the README's -ab 8
+// -aa 0.05 options against RADIANCE's ref_classic_ab8: share 1: 12k records, MARE 1.9 %,
+// mean +1.7 %; 1/2: 38k records, 1.5 %, +1.4 %; 1/4: 197k records, 1.4 %, +1.2 % (three
+// points with light from the mirror and glass differ in every run by 25-37 %; without them
+// the MAREs are 1.0, 0.6 and 0.5 %). 1/2 keeps the accuracy at a fifth of the work of 1/4.
+constexpr double kCurvatureShare = 0.5;
 // The curvature never counts as less than this over the squared harmonic mean distance
 // R_h of the surfaces seen: the second-order analogue of Ward's split sphere, whose
 // first-order bound E/R_h RADIANCE 3 used. Our Hessian (sampleHemisphere) sees how the

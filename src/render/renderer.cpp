@@ -125,7 +125,8 @@ void Renderer::ContextDeleter::operator()(Context* c) const { delete c; }
 const PhotonLighting& Renderer::photons() const { return impl_->photons; }
 
 RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
-                          uint64_t rayIndex, std::vector<TracedRay>* tree) const {
+                          uint64_t rayIndex, std::vector<TracedRay>* tree,
+                          double maxDistance) const {
     ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);
     ctx.tree = tree;
     ctx.treeDepth = 0;
@@ -135,7 +136,7 @@ RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
     RayState state;
     state.irradianceHit = options_.irradiance;
     double distance = 1e10;
-    result.value = ctx.radiance(Ray{origin, dir}, state, &result, distance);
+    result.value = ctx.radiance(Ray{origin, dir, maxDistance}, state, &result, distance);
     ctx.tree = nullptr;
     return result;
 }

@@ -77,8 +77,11 @@ public:
     // (the shared ambient cache can still make results order dependent, as in RADIANCE).
     // With options.irradiance (-i) the value at the first surface hit is irradiance.
     // `tree` (may be null) receives every ray traced for this one, for rtrace -o~.
+    // `maxDistance` (rtrace -ld): surfaces beyond it are not seen and a ray reaching it
+    // ends there with nothing (RADIANCE's clipped ray), no source or sky behind.
     RayResult trace(Context& ctx, const Vec3& origin, const Vec3& dir, uint64_t rayIndex,
-                    std::vector<TracedRay>* tree = nullptr) const;
+                    std::vector<TracedRay>* tree = nullptr,
+                    double maxDistance = HUGE_VAL) const;
 
     // rtrace -I: irradiance at `point` on a surface facing unit `normal` (light arriving
     // from the side the normal points to), direct plus ambient, as RADIANCE computes it

@@ -114,7 +114,8 @@ struct Sampler {
             return;
         }
         double distance = 0;
-        Color c = tracer(ray->origin, ray->direction, index, &distance);
+        const double maxDistance = ray->maxDistance > 0 ? ray->maxDistance : HUGE_VAL;
+        Color c = tracer(ray->origin, ray->direction, index, maxDistance, &distance);
         traced.fetch_add(1, std::memory_order_relaxed);
         pixels[i] = Pixel{float(c.r), float(c.g), float(c.b)};
         z[i] = float(distance);
@@ -186,7 +187,6 @@ struct Sampler {
 Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& factory,
                       const ProgressCallback& progress, std::vector<float>* depth) {
     ViewRays rays(options.view);
-    if (options.view.aft > 0) throw notSupportedYet({}, "aft clipping (-va)");
     const PictureSize size = pictureSize(options);
     int ps = options.sampleSpacing;
     if (ps < 1) {

@@ -22,8 +22,9 @@ namespace rp::render {
 // Traces one primary ray (unit `dir`) and returns its radiance; stores the distance to
 // the first hit in *distance (the tracer's "miss" distance when nothing is hit).
 // `index` = row * xres + column (row 0 at the top), so results never depend on threads.
-using PixelTracer =
-    std::function<Color(const Vec3& org, const Vec3& dir, uint64_t index, double* distance)>;
+// `maxDistance`: the view's aft clipping distance along this ray (-va; HUGE_VAL if none).
+using PixelTracer = std::function<Color(const Vec3& org, const Vec3& dir, uint64_t index,
+                                        double maxDistance, double* distance)>;
 // Called once per worker thread (serialised); each tracer is used by one thread only.
 using PixelTracerFactory = std::function<PixelTracer()>;
 

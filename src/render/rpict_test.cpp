@@ -36,7 +36,7 @@ template <class F>
 PixelTracerFactory fakeFactory(int xres, TraceLog* log, F value, double distance = 1.0) {
     return [=]() -> PixelTracer {
         if (log) log->factoryCalls++;
-        return [=](const Vec3&, const Vec3&, uint64_t index, double* d) {
+        return [=](const Vec3&, const Vec3&, uint64_t index, double, double* d) {
             if (log) log->traced[index]++;
             *d = distance;
             return value(int(index % uint64_t(xres)), int(index / uint64_t(xres)));
@@ -128,7 +128,7 @@ TEST(RpictRender, ResultsDoNotDependOnThreads) {
     auto factory = [](std::atomic<int>* calls) -> PixelTracerFactory {
         return [calls]() -> PixelTracer {
             ++*calls;
-            return [](const Vec3& org, const Vec3& dir, uint64_t index, double* d) {
+            return [](const Vec3& org, const Vec3& dir, uint64_t index, double, double* d) {
                 *d = 2 + dir.x;
                 double v = 1 + dir.x + 0.5 * dir.z + (index % 97 == 0 ? 3.0 : 0.0);
                 return Color(v, v * v, org.z + 1);
@@ -173,7 +173,7 @@ TEST(RpictRender, RaysFollowTheView) {
     o.pixelJitter = 0;
     o.view.point = Vec3(1, 2, 3);
     PixelTracerFactory factory = []() -> PixelTracer {
-        return [](const Vec3& org, const Vec3& dir, uint64_t, double* d) {
+        return [](const Vec3& org, const Vec3& dir, uint64_t, double, double* d) {
             *d = 1;
             EXPECT_NEAR(length(dir), 1.0, 1e-12);
             EXPECT_EQ(org, Vec3(1, 2, 3));
@@ -188,12 +188,35 @@ TEST(RpictRender, RaysFollowTheView) {
     EXPECT_LT(pic.at(0, 16)[0], -0.3);  // left column looks left
 }
 
-TEST(RpictRender, UnsupportedAftClippingAndBadViews) {
+TEST(RpictRender, AftClippingReachesTheTracerAndBadViewsFail) {
     RpictOptions o = smallOptions(8, 8, 1);
-    auto f = fakeFactory(8, nullptr, [](int, int) { return Color(); });
+    // The tracer sees the aft distance along each ray: -va 10 minus -vo 2 on the axis,
+    // longer off it (the aft plane is a plane); without -va, no limit.
+    std::atomic<int> limited{0}, unlimited{0};
+    PixelTracerFactory f = [&]() -> PixelTracer {
+        return [&](const Vec3&, const Vec3&, uint64_t, double maxDistance, double* d) {
+            *d = 1;
+            if (maxDistance < HUGE_VAL) {
+                EXPECT_GE(maxDistance, 8 - 1e-9);
+                EXPECT_LT(maxDistance, 8 * 1.5);
+                ++limited;
+            } else {
+                ++unlimited;
+            }
+            return Color();
+        };
+    };
+    o.view.fore = 2;
     o.view.aft = 10;
-    EXPECT_THROW(renderPicture(o, f), InputError);
+    renderPicture(o, f);
+    EXPECT_GT(limited.load(), 0);
+    EXPECT_EQ(unlimited.load(), 0);
+    o.view.fore = 0;
     o.view.aft = 0;
+    limited = 0;
+    renderPicture(o, f);
+    EXPECT_EQ(limited.load(), 0);
+    EXPECT_GT(unlimited.load(), 0);
     o.view.direction = Vec3(0, 0, 0);
     EXPECT_THROW(renderPicture(o, f), InputError);
 }

@@ -11,8 +11,8 @@ PixelTracerFactory rendererPixelTracers(const Renderer& renderer) {
     return [&renderer]() -> PixelTracer {
         std::shared_ptr<Renderer::Context> ctx(renderer.makeContext());
         return [&renderer, ctx](const Vec3& org, const Vec3& dir, uint64_t index,
-                                double* distance) {
-            RayResult r = renderer.trace(*ctx, org, dir, index);
+                                double maxDistance, double* distance) {
+            RayResult r = renderer.trace(*ctx, org, dir, index, nullptr, maxDistance);
             *distance = r.distance;
             return r.value;
         };

@@ -16,6 +16,7 @@ namespace {
 
 struct Record {
     InputRay ray;
+    double maxDistance = HUGE_VAL;
     uint64_t index = 0;
     bool bogus = false;
     bool flushAfter = false;
@@ -74,6 +75,7 @@ RtraceRunStats runRtrace(const RtraceRunSettings& s, std::istream& in, std::ostr
                 r.bogus = true;
             } else {
                 r.ray.direction = r.ray.direction / len;
+                if (s.limitDistance) r.maxDistance = len;
             }
             // RADIANCE compat (rtrace.c): a zero direction flushes when -x is 0 or 1 or at
             // the -x boundary; other rays flush at the -x boundary.
@@ -99,7 +101,7 @@ RtraceRunStats runRtrace(const RtraceRunSettings& s, std::istream& in, std::ostr
                 }
                 std::vector<TracedRay> tree;
                 RayResult res = trace(r.ray.origin, r.ray.direction, r.index,
-                                      wantTree ? &tree : nullptr);
+                                      wantTree ? &tree : nullptr, r.maxDistance);
                 writer.write(r.text, res, wantTree ? &tree : nullptr);
             });
         });

@@ -17,14 +17,18 @@ namespace rp::render {
 
 // Traces one input ray. `direction` is unit length; `rayIndex` is the record's 0-based
 // position in the input (bogus records count), so results do not depend on threads.
-// `tree` is non-null when the output wants the ray tree. Called concurrently.
-using RayTraceFn = std::function<RayResult(const Vec3& origin, const Vec3& direction,
-                                           uint64_t rayIndex, std::vector<TracedRay>* tree)>;
+// `tree` is non-null when the output wants the ray tree. `maxDistance`: with -ld the
+// length of the direction as given (nothing beyond is seen), else infinite. Called
+// concurrently.
+using RayTraceFn =
+    std::function<RayResult(const Vec3& origin, const Vec3& direction, uint64_t rayIndex,
+                            std::vector<TracedRay>* tree, double maxDistance)>;
 
 struct RtraceRunSettings {
     char inputFormat = 'a';
     int xres = 0, yres = 0;  // -x -y
     int threads = 1;         // -n
+    bool limitDistance = false;  // -ld: rays end at the length of their direction
     size_t batchSize = 0;    // rays per batch; 0: 64 per thread (tests use small values)
 };
 

@@ -17,7 +17,7 @@ namespace rp::render {
 namespace {
 
 // The value encodes the input: red = rayIndex, green = origin.x, blue = direction.z.
-RayResult fake(const Vec3& o, const Vec3& d, uint64_t index, std::vector<TracedRay>*) {
+RayResult fake(const Vec3& o, const Vec3& d, uint64_t index, std::vector<TracedRay>*, double) {
     RayResult r;
     r.value = {double(index), o.x, d.z};
     return r;
@@ -47,13 +47,14 @@ TEST(RtraceRun, OrderWithThreads) {
     s.batchSize = 37;
     RayWriter w(parseOutputSpec("v", 'a'), 'a', nullptr);
     std::atomic<int> calls{0};
-    RayTraceFn slowFirst = [&](const Vec3& o, const Vec3& d, uint64_t i, std::vector<TracedRay>* t) {
+    RayTraceFn slowFirst = [&](const Vec3& o, const Vec3& d, uint64_t i, std::vector<TracedRay>* t,
+                               double) {
         ++calls;
         if (i % 37 == 0) {  // make the first of each batch finish last
             volatile double x = 0;
             for (int k = 0; k < 200000; ++k) x = x + k;
         }
-        return fake(o, d, i, t);
+        return fake(o, d, i, t, HUGE_VAL);
     };
     std::istringstream in(input);
     std::ostringstream out;
@@ -165,14 +166,15 @@ TEST(RtraceRun, TreeRequestedOnlyWhenWanted) {
     RtraceRunSettings s;
     RayWriter w(parseOutputSpec("vtw", 'a'), 'a', nullptr);
     int withTree = 0;
-    RayTraceFn f = [&](const Vec3& o, const Vec3& d, uint64_t i, std::vector<TracedRay>* t) {
+    RayTraceFn f = [&](const Vec3& o, const Vec3& d, uint64_t i, std::vector<TracedRay>* t,
+                       double) {
         if (t) {
             ++withTree;
             TracedRay tr;
             tr.result.weight = 0.5;
             t->push_back(tr);
         }
-        return fake(o, d, i, t);
+        return fake(o, d, i, t, HUGE_VAL);
     };
     runRtrace(s, in, out, w, f);
     EXPECT_EQ(withTree, 2);
@@ -191,6 +193,33 @@ TEST(RtraceRun, BinaryInputNormalisesDirection) {
     double v[3];
     std::memcpy(v, out.str().data(), sizeof v);
     EXPECT_EQ(v[2], 1.0);  // unit direction z
+}
+
+// -ld: the trace function gets the direction's length as the ray's limit (and a unit
+// direction); without it, no limit.
+TEST(RtraceRun, LimitDistancePassesTheDirectionLength) {
+    for (bool limit : {true, false}) {
+        RtraceRunSettings s;
+        s.limitDistance = limit;
+        RayWriter w(parseOutputSpec("v", 'a'), 'a', nullptr);
+        std::vector<double> seen;
+        RayTraceFn f = [&](const Vec3& o, const Vec3& d, uint64_t i, std::vector<TracedRay>* t,
+                           double maxDistance) {
+            seen.push_back(maxDistance);
+            EXPECT_NEAR(length(d), 1, 1e-12);
+            return fake(o, d, i, t, maxDistance);
+        };
+        std::istringstream in("0 0 0 0 0 2\n0 0 0 3 4 0\n");
+        std::ostringstream out;
+        runRtrace(s, in, out, w, f);
+        ASSERT_EQ(seen.size(), 2u);
+        if (limit) {
+            EXPECT_DOUBLE_EQ(seen[0], 2);
+            EXPECT_DOUBLE_EQ(seen[1], 5);
+        } else {
+            EXPECT_EQ(seen[0], HUGE_VAL);
+        }
+    }
 }
 
 }  // namespace

@@ -18,11 +18,11 @@ RendererTracer::~RendererTracer() = default;
 
 RayTraceFn RendererTracer::trace() const {
     return [this](const Vec3& origin, const Vec3& dir, uint64_t index,
-                  std::vector<TracedRay>* tree) {
+                  std::vector<TracedRay>* tree, double maxDistance) {
         Renderer::ContextPtr& ctx = contexts_->perThread.local();
         if (!ctx) ctx = renderer_.makeContext();
         if (irradiance_) return renderer_.irradiance(*ctx, origin, dir, index);
-        return renderer_.trace(*ctx, origin, dir, index, tree);
+        return renderer_.trace(*ctx, origin, dir, index, tree, maxDistance);
     };
 }
 

@@ -93,7 +93,9 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
     for (int pass = 0; pass < 64; ++pass) {
         std::optional<Hit> hit = impl.geometry.closestHit(r);
         if (!hit) {
-            total += coef * escaped(r, state);
+            // A ray with a length limit (rtrace -ld) that ends short of every surface is
+            // clipped: RADIANCE gives it no value, not the sources or sky behind.
+            if (!(r.tmax < HUGE_VAL)) total += coef * escaped(r, state);
             break;
         }
         Color passWeight;
@@ -107,6 +109,7 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
         coef *= passWeight;
         travelled += hit->t;
         r = spawnRay(*hit, r.dir);
+        if (ray.tmax < HUGE_VAL) r.tmax = std::max(0.0, ray.tmax - travelled);
     }
     if (tree) {
         RayResult& t = (*tree)[treeIndex].result;

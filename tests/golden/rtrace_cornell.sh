@@ -50,6 +50,13 @@ awk '{ print $1, $2, 0.001, 0, 0, 1 }' "$POINTS" | head -3 | "$RT" -h- -ab 0 -I 
     bad "-I exit status"
 awk -F'\t' '$1 <= 0 { exit 1 }' I.out || bad "-I irradiance on the floor must be > 0"
 
+# -ld: a direction shorter than the way to the floor sees nothing (clipped, value 0); a
+# longer one sees what -ld- sees.
+printf '2.75 2.75 1 0 0 -0.5\n2.75 2.75 1 0 0 -3\n' | "$RT" -h- -ab 0 -u- -ld+ -ov "$SCENE" > ld.out
+printf '2.75 2.75 1 0 0 -1\n' | "$RT" -h- -ab 0 -u- -ov "$SCENE" > nold.out
+[ "$(sed -n 1p ld.out)" = $'0.000000e+00\t0.000000e+00\t0.000000e+00\t' ] || bad "-ld+ short ray: $(sed -n 1p ld.out)"
+[ "$(sed -n 2p ld.out)" = "$(cat nold.out)" ] || bad "-ld+ long ray differs from -ld-"
+
 { head -3 rays.txt; echo "1 2 3 nope 0 1"; head -2 rays.txt; } |
     "$RT" -h- -ab 0 "$SCENE" > partial.out 2> e.txt
 [ $? -eq 1 ] || bad "bad ray exit status"
