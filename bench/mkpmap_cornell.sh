@@ -2,14 +2,15 @@
 # mkpmap on ../shared/validation/cornell with the README's targets (global 500k +
 # caustic 1m), -n 1 and -n 2: emitted and stored photons/s, kd-tree build time, bytes
 # per photon on disk, peak memory. RADIANCE 5.4a took 9.2 s (-n 1) and 6.2 s (-n 2) on
-# a machine of the same kind (README). Usage: bench/mkpmap_cornell.sh [build/tools]
+# a machine of the same kind (README). CPU time (user+sys) is printed too: on a shared
+# machine it varies far less than wall time. Usage: bench/mkpmap_cornell.sh [build/tools]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${1:-$root/build/tools}
 scene=$root/../shared/validation/cornell/scene.rad
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 for n in 1 2; do
-    /usr/bin/time -f "%e s wall, %M kB peak" -o "$tmp/time" \
+    /usr/bin/time -f "%e s wall, %U+%S s user+sys, %M kB peak" -o "$tmp/time" \
         "$bin/mkpmap" -fo -apg "$tmp/g.pm" 500k -apc "$tmp/c.pm" 1m -apr 1 -n $n "$scene" \
         > "$tmp/log" 2>&1
     emitted=$(awk '/photons emitted/ {print $1}' "$tmp/log")

@@ -7,9 +7,6 @@
 
 namespace rp {
 
-SceneGeometry::SceneGeometry(const Scene& scene)
-    : shapes_(std::make_unique<ShapeSet>(buildShapes(scene))),
-      accel_(std::make_unique<EmbreeAccel>(*shapes_)) {}
 
 SceneGeometry::~SceneGeometry() = default;
 SceneGeometry::SceneGeometry(SceneGeometry&&) noexcept = default;
@@ -36,24 +33,35 @@ namespace {
 // them changes nothing; moving off a boundary edge by the spawn offset is within the
 // float accuracy the hit was found with anyway. Triangles too small to hold such a
 // point are left alone.
-void insetIntoTriangle(Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n,
-                       double inset) {
+//
+// The edge data depend on the triangle only and are computed once (triangleInset); the
+// arithmetic is unchanged, so hit points are bit-identical to computing them per hit.
+template <class TriangleInset>
+TriangleInset triangleInset(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n) {
     const Vec3* v[3] = {&a, &b, &c};
-    Vec3 inward[3];
-    double room[3];  // height of the opposite vertex over each edge
+    TriangleInset t;
+    t.minRoom = HUGE_VAL;
     for (int i = 0; i < 3; ++i) {
-        inward[i] = normalize(cross(n, *v[(i + 1) % 3] - *v[i]));  // in plane, CCW about n
-        room[i] = dot(*v[(i + 2) % 3] - *v[i], inward[i]);
-        if (!(room[i] > 4 * inset)) return;
+        t.inward[i] = normalize(cross(n, *v[(i + 1) % 3] - *v[i]));  // in plane, CCW about n
+        double room = dot(*v[(i + 2) % 3] - *v[i], t.inward[i]);  // height of the third vertex
+        t.minRoom = std::isnan(room) || std::isnan(t.minRoom) ? NAN : std::fmin(t.minRoom, room);
     }
+    return t;
+}
+
+template <class TriangleInset>
+void insetIntoTriangle(Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c,
+                       const TriangleInset& t, double inset) {
+    if (!(t.minRoom > 4 * inset)) return;
+    const Vec3* v[3] = {&a, &b, &c};
     // Pushing off one edge can move the point toward another at an acute corner, so
     // repeat; three rounds settle every triangle whose heights exceed 4 insets.
     for (int round = 0; round < 3; ++round) {
         bool moved = false;
         for (int i = 0; i < 3; ++i) {
-            double dist = dot(p - *v[i], inward[i]);
+            double dist = dot(p - *v[i], t.inward[i]);
             if (dist < inset) {
-                p += inward[i] * (inset - dist);
+                p += t.inward[i] * (inset - dist);
                 moved = true;
             }
         }
@@ -62,6 +70,19 @@ void insetIntoTriangle(Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, con
 }
 
 }  // namespace
+
+SceneGeometry::SceneGeometry(const Scene& scene)
+    : shapes_(std::make_unique<ShapeSet>(buildShapes(scene))),
+      accel_(std::make_unique<EmbreeAccel>(*shapes_)) {
+    const ShapeSet& s = *shapes_;
+    insets_.reserve(s.triangles.size());
+    for (size_t i = 0; i < s.triangles.size(); ++i) {
+        const TriIndices& tri = s.triangles[i];
+        insets_.push_back(triangleInset<TriangleInset>(
+            s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]],
+            s.polygons[s.trianglePolygon[i]].normal));
+    }
+}
 
 Hit SceneGeometry::completeHit(const Ray& ray, const AccelHit& a) const {
     Hit h;
@@ -77,7 +98,7 @@ Hit SceneGeometry::completeHit(const Ray& ray, const AccelHit& a) const {
         h.offset = kFloatOffsetRel * std::fmax(scale, p.scale);
         const TriIndices& tri = shapes_->triangles[a.triangle];
         insetIntoTriangle(h.point, shapes_->vertices[tri[0]], shapes_->vertices[tri[1]],
-                          shapes_->vertices[tri[2]], p.normal, h.offset);
+                          shapes_->vertices[tri[2]], insets_[a.triangle], h.offset);
         Vec3 rel = h.point - p.origin;
         sp.normal = p.normal;
         sp.u = dot(rel, p.uAxis);

@@ -305,6 +305,25 @@ TEST(Emitter, DaylightSourcesThroughWindow) {
     EXPECT_LT(plan.sourceFlux(2).r, 0.05 * plan.sourceFlux(1).r);
 }
 
+// Many partitions of very different flux: the guided partition search (emitter.cpp
+// upperBound) must pick each source in proportion to its flux (4 sigma).
+TEST(Emitter, ManyPartitionsPickedByFlux) {
+    Builder b;
+    // A: 1 x 1 m at L = 100 in z = 0; B: 2 x 2 m at L = 1 in z = 1; both facing +z.
+    b.add(PrimType::Polygon, "a", {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0},
+          b.light("la", 100, 100, 100));
+    b.add(PrimType::Polygon, "b", {3, 0, 1, 5, 0, 1, 5, 2, 1, 3, 2, 1}, b.light("lb", 1, 1, 1));
+    SceneGeometry geom(b.scene());
+    EmissionOptions opt;
+    opt.partitionSize = 0.01;
+    EmissionPlan plan = planFor(b, geom, opt);
+    ASSERT_GT(plan.partitionCount(), 100u);
+    const double p = 100.0 / 104.0;  // A's share of the flux
+    long fromA = 0;
+    for (int i = 0; i < kPhotons; ++i) fromA += plan.emitPhoton(3, uint64_t(i)).ray.origin.z < 0.5;
+    EXPECT_NEAR(double(fromA) / kPhotons, p, 4 * std::sqrt(p * (1 - p) / kPhotons));
+}
+
 TEST(Emitter, DeterministicPerPhotonIndex) {
     Builder b;
     b.add(PrimType::Sphere, "s", {0, 0, 0, 0.5}, b.light("l", 1, 1, 1));

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "material/detail.h"
+#include "util/error.h"
 
 namespace rp::material {
 
@@ -56,14 +57,22 @@ bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, d
 }
 
 int roulette(const Component* c, int n, Rng& rng, Color& factor) {
+    // Each probability is computed once (divisions are a visible part of a photon's
+    // scatter); the callers pass at most 4 components.
+    constexpr int kMaxComponents = 4;
+    RP_CHECK(n <= kMaxComponents);
+    double prob[kMaxComponents];
     double total = 0;
-    for (int i = 0; i < n; ++i) total += std::max(c[i].coef.average(), 0.0);
+    for (int i = 0; i < n; ++i) {
+        prob[i] = std::max(c[i].coef.average(), 0.0);
+        total += prob[i];
+    }
     // Probabilities avg(C_i) as pmapmat.c; normalised only if they exceed 1 in sum
     // (non-physical input), so that the expectation stays exact either way.
     double scale = total > 1 ? total : 1;
     double xi = rng.uniform() * scale;
     for (int i = 0; i < n; ++i) {
-        double p = std::max(c[i].coef.average(), 0.0);
+        double p = prob[i];
         if (p <= 0) continue;
         if (xi < p) {
             factor = c[i].coef / (p / scale);

@@ -60,7 +60,9 @@ WardHit setupNormal(const NormalParams& m, const SurfacePoint& sp) {
     }
     setSplits(h, m, sp.pattern, rspec, metal, fest);
     h.prdir = transmittedDir(sp);
-    perpendicularFrame(sp.normal, h.u, h.v);
+    // The tangent frame only serves Ward lobe sampling, which pure specular never does;
+    // skipping it saves a normalize per hit on the common roughness-0 materials.
+    if (!m.pureSpecular) perpendicularFrame(sp.normal, h.u, h.v);
     h.au = h.av = m.roughness;
     return h;
 }

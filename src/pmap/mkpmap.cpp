@@ -168,7 +168,7 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         });
         report.buildSeconds += secondsSince(tb);
         auto tsave = Clock::now();
-        map.save(o.maps[t]->file, commandLine, o.overwrite);
+        arena.execute([&] { map.save(o.maps[t]->file, commandLine, o.overwrite); });  // -n
         report.saveSeconds += secondsSince(tsave);
         report.stored[t] = map.size();
     }

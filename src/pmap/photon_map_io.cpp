@@ -146,12 +146,23 @@ void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
     putInt(b, static_cast<int64_t>(primaries_.size()), 4);
     for (const PhotonPrimary& p : primaries_) putInt(b, p.srcIdx, 2);
     out.write(b.data(), static_cast<std::streamsize>(b.size()));
-    b.reserve(kChunkPhotons * kPhotonRecordSize);
-    for (size_t i = 0; i < photons_.size(); i += kChunkPhotons) {
-        b.clear();
-        const size_t end = std::min(photons_.size(), i + kChunkPhotons);
-        for (size_t j = i; j < end; ++j) encodePhoton(b, photons_[j]);
-        out.write(b.data(), static_cast<std::streamsize>(b.size()));
+    // Chunks are encoded in parallel (in the caller's task arena), a batch at a time to
+    // bound the buffer memory, and written in order: the bytes do not depend on threads.
+    constexpr size_t kBatch = 4;
+    std::string bufs[kBatch];
+    const size_t n = photons_.size();
+    for (size_t i = 0; i < n; i += kBatch * kChunkPhotons) {
+        const size_t chunks = std::min(kBatch, (n - i + kChunkPhotons - 1) / kChunkPhotons);
+        tbb::parallel_for(size_t{0}, chunks, [&](size_t k) {
+            std::string& buf = bufs[k];
+            buf.clear();
+            buf.reserve(kChunkPhotons * kPhotonRecordSize);
+            const size_t begin = i + k * kChunkPhotons;
+            const size_t end = std::min(n, begin + kChunkPhotons);
+            for (size_t j = begin; j < end; ++j) encodePhoton(buf, photons_[j]);
+        });
+        for (size_t k = 0; k < chunks; ++k)
+            out.write(bufs[k].data(), static_cast<std::streamsize>(bufs[k].size()));
     }
 }
 
