@@ -145,15 +145,19 @@ Color Ambient::Impl::fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng
 
 // The curvature term may use this share of -aa: the rest is left to the records' Monte
 // Carlo noise and the normal test. Measured on the Cornell box with the README's -ab 8
-// -aa 0.05 options against RADIANCE's ref_classic_ab8: share 1: 12k records, MARE 1.9 %,
-// mean +1.7 %; 1/2: 38k records, 1.5 %, +1.4 %; 1/4: 197k records, 1.4 %, +1.2 % (three
-// points with light from the mirror and glass differ in every run by 25-37 %; without them
-// the MAREs are 1.0, 0.6 and 0.5 %). 1/2 keeps the accuracy at a fifth of the work of 1/4.
+// -aa 0.05 options against RADIANCE's ref_classic_ab8: share 1: 12k records, MARE 1.9 %;
+// 1/2: 38k records, 1.5 %; 1/4: 197k records, 1.4 % (three points lit through the mirror
+// differ by 25-37 % in every run; without them 1.0, 0.6 and 0.5 %). 1/2 keeps the
+// accuracy at a fifth of the work of 1/4.
 constexpr double kCurvatureShare = 0.5;
 // The curvature never counts as less than this over the squared harmonic mean distance
-// R_h of the surfaces seen: the second-order analogue of Ward's split sphere, whose
-// first-order bound E/R_h RADIANCE 3 used. Our Hessian (sampleHemisphere) sees how the
-// light from the surfaces in view changes, not how their visibility does; R_h does.
+// R_h of the surfaces hit (at most maxarad): the second-order analogue of Ward's split
+// sphere, whose first-order bound E/R_h RADIANCE 3 used. Our Hessian (sampleHemisphere)
+// sees how the light from the surfaces in view changes, not how their visibility does;
+// R_h does. Rays that escape (sky through a window) do not lengthen R_h, and a record
+// that hits nothing counts as curved on the maxarad scale: without these two rules the
+// daylight room's classic -ab 5 read 10-20 % high away from the sun patch (MARE 9.8 %
+// against RADIANCE; with them 1.9 %), records near the window reaching far past it.
 constexpr double kSplitSphereCurvature = 2.0;
 
 double Ambient::Impl::recordRadius(const HemisphereEstimate& est, double brightness,
@@ -175,8 +179,9 @@ double Ambient::Impl::recordRadius(const HemisphereEstimate& est, double brightn
     const double aa = opt.accuracy;
     const double tol = kCurvatureShare * aa / std::sqrt(wt);
     double k = brightness > kTiny ? est.maxCurvature() / brightness : 0;
-    const double rh = est.sumInverseDistance > kTiny ? est.samples / est.sumInverseDistance : 0;
-    if (rh > 0) k = std::max(k, kSplitSphereCurvature / (rh * rh));
+    const double rh = est.sumInverseDistance > kTiny ? est.hits / est.sumInverseDistance : 0;
+    const double rSplit = rh > 0 ? std::min(rh, maxRadius) : maxRadius;
+    k = std::max(k, kSplitSphereCurvature / (rSplit * rSplit));
     double reach = k > 0 ? std::sqrt(2 * tol / k) : maxRadius;
     const double g = length(gradPosition);
     if (g * reach > 1) reach = 1 / g;

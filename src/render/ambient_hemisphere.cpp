@@ -106,6 +106,7 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
         }
         est.sumInverseDistance += 1 / dist;
         ++est.samples;
+        if (dist < 1e10) ++est.hits;
     };
 
     for (int j = 0; j < M; ++j)

@@ -36,6 +36,7 @@ struct HemisphereEstimate {
     Color value;            // mean radiance over the cosine-weighted hemisphere (E / pi)
     double sumInverseDistance = 0;  // sum of 1/distance over every sample (radius: harmonic mean)
     int samples = 0;        // rays traced
+    int hits = 0;           // of which met a surface (the others escaped to sources/sky)
     // Gradients of brightness(value) (Color::brightness), not yet normalised:
     Vec3 gradPosition;      // d value / d position (tangent plane), per unit length
     Vec3 gradDirection;     // rotation vector gradient: value(N') ~ value + g . (N x N')
