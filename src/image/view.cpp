@@ -226,6 +226,33 @@ std::string formatViewMinimal(const View& v) {
 
 std::string viewHeaderLine(const View& view) { return "VIEW=" + formatView(view); }
 
+ImagePlaneSize imagePlaneSize(const View& v) {
+    const double degHalf = kPi / 360.0;  // degrees to radians, halved
+    ImagePlaneSize p;
+    switch (v.type) {
+        case ViewType::kParallel:
+            p = {v.horizontal, v.vertical};
+            break;
+        case ViewType::kPerspective:
+            p = {2 * std::tan(v.horizontal * degHalf), 2 * std::tan(v.vertical * degHalf)};
+            break;
+        case ViewType::kCylindrical:
+            p = {v.horizontal * (kPi / 180), 2 * std::tan(v.vertical * degHalf)};
+            break;
+        case ViewType::kAngular:
+            p = {v.horizontal * (kPi / 180), v.vertical * (kPi / 180)};
+            break;
+        case ViewType::kHemispherical:
+            p = {2 * std::sin(v.horizontal * degHalf), 2 * std::sin(v.vertical * degHalf)};
+            break;
+        case ViewType::kPlanisphere:
+            p = {2 * std::sin(v.horizontal * degHalf) / (1 + std::cos(v.horizontal * degHalf)),
+                 2 * std::sin(v.vertical * degHalf) / (1 + std::cos(v.vertical * degHalf))};
+            break;
+    }
+    return p;
+}
+
 ViewRays::ViewRays(const View& v) : view_(v) {
     const char* illHoriz = "illegal horizontal view size";
     const char* illVert = "illegal vertical view size";
@@ -243,46 +270,34 @@ ViewRays::ViewRays(const View& v) : view_(v) {
     vvec_ = cross(hvec_, dir_);
     if (v.horizontal <= kTiny) throw InputError(illHoriz);
     if (v.vertical <= kTiny) throw InputError(illVert);
-    const double degHalf = kPi / 360.0;  // degrees to radians, halved
-    double hn = 0, vn = 0;
     switch (v.type) {
         case ViewType::kParallel:
-            hn = v.horizontal;
-            vn = v.vertical;
             break;
         case ViewType::kPerspective:
             if (v.horizontal >= 180 - kTiny) throw InputError(illHoriz);
             if (v.vertical >= 180 - kTiny) throw InputError(illVert);
-            hn = 2 * std::tan(v.horizontal * degHalf);
-            vn = 2 * std::tan(v.vertical * degHalf);
             break;
         case ViewType::kCylindrical:
             if (v.horizontal > 360 + kTiny) throw InputError(illHoriz);
             if (v.vertical >= 180 - kTiny) throw InputError(illVert);
-            hn = v.horizontal * (kPi / 180);
-            vn = 2 * std::tan(v.vertical * degHalf);
             break;
         case ViewType::kAngular:
             if (v.horizontal > 360 + kTiny) throw InputError(illHoriz);
             if (v.vertical > 360 + kTiny) throw InputError(illVert);
-            hn = v.horizontal * (kPi / 180);
-            vn = v.vertical * (kPi / 180);
             break;
         case ViewType::kHemispherical:
             if (v.horizontal > 180 + kTiny) throw InputError(illHoriz);
             if (v.vertical > 180 + kTiny) throw InputError(illVert);
-            hn = 2 * std::sin(v.horizontal * degHalf);
-            vn = 2 * std::sin(v.vertical * degHalf);
             break;
         case ViewType::kPlanisphere:
             if (v.horizontal >= 360 - kTiny) throw InputError(illHoriz);
             if (v.vertical >= 360 - kTiny) throw InputError(illVert);
-            hn = 2 * std::sin(v.horizontal * degHalf) / (1 + std::cos(v.horizontal * degHalf));
-            vn = 2 * std::sin(v.vertical * degHalf) / (1 + std::cos(v.vertical * degHalf));
             break;
         default:
             throw InputError("unknown view type");
     }
+    const ImagePlaneSize plane = imagePlaneSize(v);
+    const double hn = plane.horizontal, vn = plane.vertical;
     // RADIANCE compat (setview): the image-plane vectors carry the plane size except
     // where viewray works in angles (a, s; and horizontally for c).
     if (v.type != ViewType::kAngular && v.type != ViewType::kPlanisphere) {

@@ -69,6 +69,14 @@ std::string formatViewMinimal(const View& view);
 // "VIEW=" + formatView(view): the header line rpict writes.
 std::string viewHeaderLine(const View& view);
 
+// The image-plane extents RADIANCE's setview computes for the view's type and sizes
+// (-vh, -vv): plane widths for v/l/h, angles in radians for a, horizontally for c.
+// No range checks (ViewRays makes them); their ratio v/h is the picture's aspect.
+struct ImagePlaneSize {
+    double horizontal = 1, vertical = 1;
+};
+ImagePlaneSize imagePlaneSize(const View& view);
+
 // A validated view ready for ray generation (RADIANCE's setview).
 class ViewRays {
 public:

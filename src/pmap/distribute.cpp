@@ -16,7 +16,7 @@
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
-#include "pmap/lookup_index.h"  // adviseHugePages
+#include "util/bulk_memory.h"
 #include "util/error.h"
 
 namespace rp::pmap {
@@ -142,7 +142,7 @@ void traceRange(const PhotonTracer& tracer, tbb::task_arena& arena, uint64_t see
 
 // The final photon records of one map, appended chunk by chunk in index order. The array
 // is advised for huge pages before its first touch: 4 KiB page faults on fresh memory
-// cost more than filling it (lookup_index.h).
+// cost more than filling it (util/bulk_memory.h).
 class PhotonOutput {
 public:
     void reserve(size_t n) {

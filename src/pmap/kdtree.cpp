@@ -11,7 +11,7 @@
 #include <limits>
 
 #include "pmap/lookup_heap.h"
-#include "pmap/lookup_index.h"  // adviseHugePages
+#include "util/bulk_memory.h"
 #include "util/error.h"
 
 namespace rp::pmap {
@@ -138,7 +138,7 @@ std::vector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel) {
     std::vector<Photon> out;
     out.reserve(n);
     // Huge pages before the first touch: 4 KiB page faults on this fresh array cost about
-    // as much as the median partitions (lookup_index.h).
+    // as much as the median partitions (util/bulk_memory.h).
     adviseHugePages(out.data(), n * sizeof(Photon));
     out.resize(n);
     if (n == 0) return out;

@@ -7,10 +7,6 @@
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 #include <algorithm>
 #include <cstring>
 #include <cstdint>
@@ -98,19 +94,6 @@ void selectMedian(BuildRecord* p, uint32_t nLeft, uint32_t count) {
     });
 }
 }  // namespace
-
-void adviseHugePages(void* p, size_t bytes) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    constexpr uintptr_t kHuge = uintptr_t{2} << 20;
-    const uintptr_t begin = (reinterpret_cast<uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
-    const uintptr_t end = (reinterpret_cast<uintptr_t>(p) + bytes) & ~(kHuge - 1);
-    // Advice only: if the kernel refuses (no THP), the memory simply stays in small pages.
-    if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#else
-    (void)p;
-    (void)bytes;
-#endif
-}
 
 struct PhotonIndex::Search {
     float q[3];

@@ -17,54 +17,10 @@
 #include "pmap/kdtree.h"
 #include "pmap/photon.h"
 #include "util/colr.h"
+#include "util/bulk_memory.h"  // BulkVector
 #include "util/vec.h"
 
 namespace rp::pmap {
-
-// Advises the kernel to back [p, p + bytes) with transparent huge pages (Linux
-// MADV_HUGEPAGE; the 2 MiB-aligned part only; a no-op elsewhere). Why: on the virtual
-// machines we measure on, first touching fresh memory costs ~3 ms per MiB in 4 KiB page
-// faults, more than decoding a photon map or building its index; with huge pages it is
-// ~0.1 ms per MiB. Call before the memory is first written.
-void adviseHugePages(void* p, size_t bytes);
-
-// An allocator for the large arrays of photon maps and their indices: resize() leaves
-// elements uninitialised (each is written once by a parallel loop, so a zero fill would only
-// add a serial pass over the memory), and blocks of 4 MiB or more are 2 MiB-aligned and
-// advised for huge pages (adviseHugePages).
-template <class T>
-struct BulkAllocator {
-    using value_type = T;
-    BulkAllocator() = default;
-    template <class U>
-    BulkAllocator(const BulkAllocator<U>&) {}
-    static constexpr size_t kHugeThreshold = size_t{4} << 20;
-    static constexpr std::align_val_t kHugeAlign{size_t{2} << 20};
-    T* allocate(size_t n) {
-        const size_t bytes = n * sizeof(T);
-        if (bytes < kHugeThreshold) return std::allocator<T>().allocate(n);
-        void* p = ::operator new(bytes, kHugeAlign);
-        adviseHugePages(p, bytes);
-        return static_cast<T*>(p);
-    }
-    void deallocate(T* p, size_t n) {
-        if (n * sizeof(T) < kHugeThreshold)
-            std::allocator<T>().deallocate(p, n);
-        else
-            ::operator delete(p, kHugeAlign);
-    }
-    template <class U, class... Args>
-    void construct(U* p, Args&&... args) {
-        if constexpr (sizeof...(Args) == 0)
-            ::new (static_cast<void*>(p)) U;
-        else
-            ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-    }
-    template <class U>
-    bool operator==(const BulkAllocator<U>&) const { return true; }
-};
-template <class T>
-using BulkVector = std::vector<T, BulkAllocator<T>>;
 
 // Why a second structure: RADIANCE's implicit heap visits one 24-byte photon per node, and
 // the nodes of a subtree are spread over the whole array (node i's children at 2i, 2i+1),

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "util/bool_option.h"
 #include "util/error.h"
 
 namespace rp::pmap {
@@ -64,19 +65,6 @@ private:
     const char* const* argv_;
     int i_ = 1;
 };
-
-// RADIANCE check_bool: no suffix toggles; + y t 1 on; - n f 0 off.
-bool boolSuffix(const std::string& opt, size_t len, bool current) {
-    if (opt.size() == len) return !current;
-    if (opt.size() == len + 1) {
-        switch (opt[len]) {
-        case '+': case 'y': case 'Y': case 't': case 'T': case '1': return true;
-        case '-': case 'n': case 'N': case 'f': case 'F': case '0': return false;
-        default: break;
-        }
-    }
-    throw InputError("unknown option '" + opt + "'");
-}
 
 // Whitespace-separated words of a modifier list file (RADIANCE wordfile).
 std::vector<std::string> readWordFile(const std::string& path, const std::string& what) {

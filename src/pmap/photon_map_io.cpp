@@ -19,9 +19,9 @@
 #include <ostream>
 #include <random>
 
-#include "pmap/lookup_index.h"
 #include "pmap/photon_map.h"
 #include "pmap/portable_io.h"
+#include "util/bulk_memory.h"
 #include "util/error.h"
 
 namespace rp::pmap {

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "util/bool_option.h"
 #include "util/error.h"
 
 namespace rp::render {
@@ -88,19 +89,6 @@ Color readColor(Values& v) {
 }
 
 }  // namespace
-
-// RADIANCE check_bool: no suffix toggles; + y Y t T 1 set; - n N f F 0 clear.
-bool boolSuffix(const std::string& opt, size_t len, bool current) {
-    if (opt.size() == len) return !current;
-    if (opt.size() == len + 1) {
-        switch (opt[len]) {
-        case '+': case 'y': case 'Y': case 't': case 'T': case '1': return true;
-        case '-': case 'n': case 'N': case 'f': case 'F': case '0': return false;
-        default: break;
-        }
-    }
-    throw InputError("unknown option '" + opt + "'");
-}
 
 bool parseRenderOption(const std::vector<std::string>& args, size_t& i, RenderOptions& opt) {
     if (i >= args.size()) return false;

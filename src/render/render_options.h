@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "util/bool_option.h"  // boolSuffix, used by the rtrace/rpict parsers
 #include "util/color.h"
 
 namespace rp::render {
@@ -95,11 +96,6 @@ struct RenderOptions {
 // integers; as RADIANCE (pmapopt.c), asking for a photon map with -ab 0 sets -ab 1.
 // Also handled: -n (threads), -e (error file), -w, and the mist options -me -ma -mg -ms.
 bool parseRenderOption(const std::vector<std::string>& args, size_t& i, RenderOptions& opt);
-
-// RADIANCE's check_bool for a boolean option whose name is opt[0, len): no suffix
-// toggles `current`; + y Y t T 1 set; - n N f F 0 clear; anything else is an unknown
-// option (InputError).
-bool boolSuffix(const std::string& opt, size_t len, bool current);
 
 // The lines RADIANCE's `rtrace -defaults` prints for these options (print_rdefaults in
 // RADIANCE's rtmain/rpmain), e.g. "-dt 0.030000\t\t\t# direct threshold", in the same

@@ -180,37 +180,8 @@ std::string formatRpictDefaults(const RpictOptions& opt) {
 }
 
 double viewAspect(const View& v) {
-    // The image-plane sizes of RADIANCE's setview (as ViewRays computes them); the aspect
-    // is their ratio.
-    const double half = kPi / 360;  // degrees to radians, halved
-    double hn = 1, vn = 1;
-    switch (v.type) {
-        case ViewType::kParallel:
-            hn = v.horizontal;
-            vn = v.vertical;
-            break;
-        case ViewType::kPerspective:
-            hn = 2 * std::tan(v.horizontal * half);
-            vn = 2 * std::tan(v.vertical * half);
-            break;
-        case ViewType::kCylindrical:
-            hn = v.horizontal * (kPi / 180);
-            vn = 2 * std::tan(v.vertical * half);
-            break;
-        case ViewType::kAngular:
-            hn = v.horizontal * (kPi / 180);
-            vn = v.vertical * (kPi / 180);
-            break;
-        case ViewType::kHemispherical:
-            hn = 2 * std::sin(v.horizontal * half);
-            vn = 2 * std::sin(v.vertical * half);
-            break;
-        case ViewType::kPlanisphere:
-            hn = 2 * std::sin(v.horizontal * half) / (1 + std::cos(v.horizontal * half));
-            vn = 2 * std::sin(v.vertical * half) / (1 + std::cos(v.vertical * half));
-            break;
-    }
-    return vn / hn;
+    const ImagePlaneSize p = imagePlaneSize(v);  // as RADIANCE's setview
+    return p.vertical / p.horizontal;
 }
 
 PictureSize pictureSize(const RpictOptions& opt) {

@@ -23,6 +23,17 @@ bool passesIrradiance(const material::MaterialParams& m) {
 
 constexpr double kNoHit = 1e10;
 
+// The function-space view of a hit that patterns and material functions see.
+material::PatternPoint patternPoint(const Hit& hit, const Vec3& dir) {
+    material::PatternPoint at;
+    at.dir = dir;
+    at.point = hit.point;
+    at.normal = hit.normal;
+    at.distance = hit.t;
+    at.rdot = -dot(dir, hit.normal);
+    return at;
+}
+
 }  // namespace
 
 Renderer::Context::Context(const Renderer& r, const Impl& i)
@@ -33,13 +44,7 @@ Renderer::Context::Context(const Renderer& r, const Impl& i)
 void Renderer::Context::applyMaterialCalc(int32_t material, const Hit& hit, const Vec3& dir,
                                           material::SurfacePoint& sp) {
     if (!impl.materialCalc.uses(material)) return;
-    material::PatternPoint at;
-    at.dir = dir;
-    at.point = hit.point;
-    at.normal = hit.normal;
-    at.distance = hit.t;
-    at.rdot = -dot(dir, hit.normal);
-    materialCalc.setHit(material, at);
+    materialCalc.setHit(material, patternPoint(hit, dir));
     const material::MaterialParams& p = *impl.material(material).params;
     if (std::holds_alternative<material::AnisoParams>(p)) {
         sp.uDir = materialCalc.anisoU();
@@ -62,13 +67,7 @@ material::ChainResult Renderer::Context::resolve(int32_t modifier, const Hit& hi
         r.layers[0].material = impl.chains.plainMaterial(modifier);
         return r;
     }
-    material::PatternPoint at;
-    at.dir = dir;
-    at.point = hit.point;
-    at.normal = hit.normal;
-    at.distance = hit.t;
-    at.rdot = -dot(dir, hit.normal);
-    return chains.resolve(modifier, at, rng);
+    return chains.resolve(modifier, patternPoint(hit, dir), rng);
 }
 
 Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResult* first,

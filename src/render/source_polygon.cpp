@@ -118,6 +118,19 @@ void uniformInPiece(const Piece& p, Rng& rng, double& u, double& v) {
         t * (p.uv[size_t(2 * k + 3)] - p.uv[1]);
 }
 
+// One sample toward `target` carrying solid angle `omega`; none if either is degenerate.
+void addSample(std::vector<SourceSample>& out, const Vec3& from, const Vec3& target,
+               double omega) {
+    SourceSample s;
+    s.target = target;
+    const Vec3 d = target - from;
+    s.dist = length(d);
+    if (!(s.dist > 0) || !(omega > 0)) return;
+    s.dir = d / s.dist;
+    s.omega = omega;
+    out.push_back(s);
+}
+
 }  // namespace
 
 void samplePolygon(const PlanarRegion& r, const Vec3& from, double ds, double weight,
@@ -145,14 +158,7 @@ void samplePolygon(const PlanarRegion& r, const Vec3& from, double ds, double we
             Vec3 a = r.at(c.u0, c.v0), b = r.at(c.u1, c.v0), cc = r.at(c.u1, c.v1),
                  d4 = r.at(c.u0, c.v1);
             double omega = triangleSolidAngle(from, a, b, cc) + triangleSolidAngle(from, a, cc, d4);
-            SourceSample smp;
-            smp.target = r.at(su, sv);
-            Vec3 d = smp.target - from;
-            smp.dist = length(d);
-            if (!(smp.dist > 0) || !(omega > 0)) continue;
-            smp.dir = d / smp.dist;
-            smp.omega = omega;
-            out.push_back(smp);
+            addSample(out, from, r.at(su, sv), omega);
         }
         return;
     }
@@ -223,14 +229,7 @@ void samplePolygon(const PlanarRegion& r, const Vec3& from, double ds, double we
                 omega += triangleSolidAngle(from, a, r.at(p.uv[size_t(2 * k)], p.uv[size_t(2 * k + 1)]),
                                             r.at(p.uv[size_t(2 * k + 2)], p.uv[size_t(2 * k + 3)]));
         }
-        SourceSample s;
-        s.target = r.at(su, sv);
-        Vec3 d = s.target - from;
-        s.dist = length(d);
-        if (!(s.dist > 0) || !(omega > 0)) continue;
-        s.dir = d / s.dist;
-        s.omega = omega;
-        out.push_back(s);
+        addSample(out, from, r.at(su, sv), omega);
     }
 }
 
