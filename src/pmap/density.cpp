@@ -42,19 +42,23 @@ PhotonLookup::PhotonLookup(const PhotonMap& map, const LookupParams& params,
 
 std::span<const PhotonHit> PhotonLookup::findPhotons(const Vec3& pos, const Vec3* normal) {
     auto hits = search(pos, normal, static_cast<size_t>(bandwidth_) + 1);
-    if (index_)
+    if (index_) {
         for (PhotonHit& h : hits) h.index = index_->photonIndex(h.index);
+        std::make_heap(hits.begin(), hits.end(),
+                       [](const PhotonHit& a, const PhotonHit& b) { return a.dist2 < b.dist2; });
+    }
     return hits;
 }
 
 // With an index, the hits name the index's slots (PhotonIndex::findNearestSlots), so that
 // surfaceDensity can sum flux from the index's leaf-ordered copy; callers that hand hits out
-// map them to photon indices first. The photons, distances and heap order are the same.
+// map them to photon indices first. Either way hits_[0] is the furthest; with the index the
+// others are in no particular order (without, they form the kd-tree walk's heap).
 std::span<PhotonHit> PhotonLookup::search(const Vec3& pos, const Vec3* normal, size_t queueLen) {
-    const std::span<PhotonHit> queue(hits_.data(), queueLen);
     lastSearchDist2_ = static_cast<float>(maxDist2_);
-    found_ = index_ ? index_->findNearestSlots(pos, normal, lastSearchDist2_, queue)
-                    : findNearestPhotons(map_->photons(), pos, normal, lastSearchDist2_, queue);
+    found_ = index_ ? index_->findNearestSlots(pos, normal, lastSearchDist2_, queueLen, hits_)
+                    : findNearestPhotons(map_->photons(), pos, normal, lastSearchDist2_,
+                                         std::span<PhotonHit>(hits_.data(), queueLen));
     ++lookups_;
     if (found_ == queueLen) lastSearchDist2_ = hits_[0].dist2;
 
@@ -79,17 +83,20 @@ std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& 
     const auto hits = search(pos, &normal, static_cast<size_t>(bandwidth_) + 1);
     if (hits.size() < 2) return irrad;  // need at least 2 photons
 
-    // hits is a max-heap: hits[0] is the furthest; the second furthest is a child of it.
-    // RADIANCE compat: d1 is pmap->maxDist2 after the search, i.e. the furthest photon when
-    // the queue filled up and the search limit otherwise. (RADIANCE reads node[2] even when
-    // only 2 photons were found; we look only at children that exist.)
+    // hits[0] is the furthest (search()); d2 is the second furthest. RADIANCE compat: d1 is
+    // pmap->maxDist2 after the search, i.e. the furthest photon when the queue filled up
+    // and the search limit otherwise; RADIANCE takes d2 from the heap's children of the
+    // furthest, which hold the second furthest. (RADIANCE reads node[2] even when only 2
+    // photons were found; we look only at photons that exist.)
     const double d1 = lastSearchDist2_;
-    double d2 = hits[1].dist2;
-    if (hits.size() > 2) d2 = std::max(d2, static_cast<double>(hits[2].dist2));
+    float second = hits[1].dist2;
+    for (size_t i = 2; i < hits.size(); ++i) second = std::max(second, hits[i].dist2);
+    const double d2 = second;
     const double r2 = 0.25 * (d1 + d2 + 2 * std::sqrt(d1 * d2));
 
-    // Skip the extra (furthest) photon; uniform kernel. Summed in heap order, the same
-    // float fluxes either way (the index keeps a copy of each photon's RGBE flux).
+    // Skip the extra (furthest) photon; uniform kernel. The fluxes are RGBE values (8-bit
+    // mantissas), so their sum in double is exact and does not depend on the order of the
+    // hits (the index keeps a copy of each photon's RGBE flux).
     if (index_) {
         for (size_t i = 1; i < hits.size(); ++i) {
             const auto f = index_->slotFlux(hits[i].index);

@@ -1,41 +1,19 @@
-// Bucket kd-tree index for nearest-photon lookups (see lookup_index.h): build (topology
-// from counts, then median partitions as TBB tasks) and the k-nearest search.
+// Bucket index for nearest-photon lookups (see lookup_index.h): the k-nearest search
+// (the build is in lookup_index_build.cpp).
 #include "pmap/lookup_index.h"
 
-#include <fmt/format.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
-#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <cstring>
 #include <cstdint>
-#include <limits>
+#include <vector>
 
-#include "pmap/lookup_heap.h"
-#include "util/error.h"
 
 namespace rp::pmap {
 
 namespace {
 constexpr uint32_t kLeafTag = 3;
-// Subtrees with fewer photons than this are built serially (task overhead would dominate).
-constexpr uint32_t kParallelGrain = 1u << 14;
-// Photons (or nodes) per task in the copying passes of the build.
-constexpr size_t kCopyGrain = size_t{1} << 15;
-
-struct Range {
-    uint32_t begin, count;
-};
-
-// What the build partitions: a photon's position and its index, 16 bytes, so the median
-// selections stream through one compact array instead of gathering 24-byte photons by
-// index (a cache miss per comparison once the map is larger than the cache).
-struct BuildRecord {
-    float pos[3];
-    uint32_t index;
-};
-
 typedef float V4 __attribute__((vector_size(16)));
 typedef int32_t V4i __attribute__((vector_size(16)));
 typedef int8_t V4i8 __attribute__((vector_size(4)));
@@ -59,180 +37,36 @@ inline uint32_t laneMask(V4i m) {
 #endif
 }
 
-template <class F>
-void forChunks(bool parallel, size_t n, F&& f) {
-    if (parallel && n > kCopyGrain)
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kCopyGrain),
-                          [&](const tbb::blocked_range<size_t>& r) { f(r.begin(), r.end()); });
-    else
-        f(0, n);
-}
-
-// The lowest and highest coordinates of `count` records (lanes x, y, z; lane 3 holds the
-// index bits and is ignored), accumulated in record order with exactly std::min/std::max's
-// choice per lane (lo keeps its value unless v < lo; NaN never enters), so the result is
-// what a scalar loop over the photons in this order gives. One record per step.
-struct Box {
-    V4 lo, hi;
-};
-Box recordBounds(const BuildRecord* p, uint32_t count) {
-    const float inf = std::numeric_limits<float>::infinity();
-    V4 lo = splat(inf), hi = splat(-inf);
-    for (uint32_t i = 0; i < count; ++i) {
-        V4 v;
-        std::memcpy(&v, p + i, sizeof v);
-        lo = v < lo ? v : lo;
-        hi = hi < v ? v : hi;
-    }
-    return {lo, hi};
-}
-
-template <int kAxis>
-void selectMedian(BuildRecord* p, uint32_t nLeft, uint32_t count) {
-    std::nth_element(p, p + nLeft, p + count, [](const BuildRecord& a, const BuildRecord& b) {
-        return a.pos[kAxis] < b.pos[kAxis];
-    });
-}
 }  // namespace
 
 struct PhotonIndex::Search {
     float q[3];
     float n[3];
-    PhotonHit* heap;
+    PhotonHit* buf;  // candidates, cap >= k + kLeafSize entries
+    size_t cap;
     size_t k;
     size_t found;
     float maxDist2;
 };
 
+namespace {
+struct Nearer {
+    bool operator()(const PhotonHit& a, const PhotonHit& b) const { return a.dist2 < b.dist2; }
+};
+// A guessed radius holds about this many times k photons on a uniformly lit surface
+// (squared radius x 1.6): enough margin for the leaf-box density estimate's error, while
+// the selection stays short. Queries near a surface's edge see about half the density
+// and need a second, larger pass (findNearestSlots).
+constexpr float kGuessMargin = 1.6f;
+constexpr float kGuessGrowth = 4.0f;  // squared radius per further pass
+}  // namespace
+
 PhotonIndex::PhotonIndex(std::span<const Photon> photons, bool parallel) {
     build(photons, parallel);
 }
 
-void PhotonIndex::build(std::span<const Photon> photons, bool parallel) {
-    const size_t n = photons.size();
-    if (n > kMaxTreePhotons)
-        throw InputError(
-            fmt::format("too many photons for one map ({}; at most {})", n, kMaxTreePhotons));
-    if (n == 0) return;
-
-    // Pass 1, serial and cheap (one entry per node): the tree's shape. Splits are by count
-    // (left half = floor(count/2)), so it depends only on n, and node numbers (depth-first,
-    // left child right after its parent) are known before any photon is partitioned.
-    std::vector<Range> ranges;
-    ranges.reserve(2 * (n / (kLeafSize / 2) + 1));
-    nodes_.reserve(ranges.capacity());
-    size_t numSlots = 0;  // leaves' first slots: multiples of 4, in depth-first order
-    auto layout = [&](auto& self, uint32_t begin, uint32_t count) -> uint32_t {
-        const uint32_t id = static_cast<uint32_t>(nodes_.size());
-        nodes_.push_back({0, 0, kLeafTag | (count << 2), static_cast<uint32_t>(numSlots)});
-        ranges.push_back({begin, count});
-        if (count <= kLeafSize) numSlots += (count + 3) & ~3u;
-        if (count > kLeafSize) {
-            const uint32_t nLeft = count / 2;
-            self(self, begin, nLeft);
-            const uint32_t right = self(self, begin + nLeft, count - nLeft);
-            nodes_[id].link = right;
-        }
-        return id;
-    };
-    layout(layout, 0, static_cast<uint32_t>(n));
-    nodes_.shrink_to_fit();  // the reservation above is an upper bound (about 2x)
-    if (numSlots > kMaxTreePhotons)
-        throw InputError(fmt::format("too many photons for one map ({})", n));
-
-    // Pass 2: median partitions of work records (photon order to start with), independent
-    // subtrees as tasks. Each node's range is partitioned only by its own call, so the
-    // result is the same for any number of threads. nth_element on records makes the same
-    // comparisons and moves as on a permutation of indices compared through the photons
-    // (earlier versions), so the leaves hold the same photons in the same order.
-    size_ = n;
-    BulkVector<BuildRecord> work(n);
-    forChunks(parallel, n, [&](size_t b, size_t e) {
-        for (size_t i = b; i < e; ++i) {
-            const Photon& ph = photons[i];
-            work[i] = {{ph.pos[0], ph.pos[1], ph.pos[2]}, static_cast<uint32_t>(i)};
-        }
-    });
-    // Each inner node gets the bounds of its photons from its parent, which scans each
-    // child's range once after its median selection (that scan also gives leftMax).
-    const Box root = recordBounds(work.data(), static_cast<uint32_t>(n));
-    for (int a = 0; a < 3; ++a) {
-        boundsLo_[a] = root.lo[a];
-        boundsHi_[a] = root.hi[a];
-    }
-    auto partition = [&](auto& self, uint32_t id, const Box& box) -> void {
-        Node& node = nodes_[id];
-        const Range r = ranges[id];
-        if (r.count <= kLeafSize) return;
-        BuildRecord* p = work.data() + r.begin;
-        const V4 extent = box.hi - box.lo;
-        const float d0 = extent[0], d1 = extent[1], d2 = extent[2];
-        const int axis = d0 >= d1 ? (d0 >= d2 ? 0 : 2) : (d1 >= d2 ? 1 : 2);
-        const uint32_t nLeft = r.count / 2;
-        if (axis == 0)
-            selectMedian<0>(p, nLeft, r.count);
-        else if (axis == 1)
-            selectMedian<1>(p, nLeft, r.count);
-        else
-            selectMedian<2>(p, nLeft, r.count);
-        const Box left = recordBounds(p, nLeft);
-        const uint32_t nRight = r.count - nLeft;
-        const Box right = nRight > kLeafSize ? recordBounds(p + nLeft, nRight) : Box{};
-        node.leftMax = left.hi[axis];
-        node.rightMin = p[nLeft].pos[axis];
-        node.axisInfo = static_cast<uint32_t>(axis);
-        if (parallel && r.count > kParallelGrain) {
-            tbb::task_group group;
-            group.run([&] { self(self, id + 1, left); });
-            self(self, node.link, right);
-            group.wait();
-        } else {
-            self(self, id + 1, left);
-            self(self, node.link, right);
-        }
-    };
-    partition(partition, 0, root);
-
-    // Pass 3: the leaves' blocks, written leaf by leaf (in parallel; each leaf writes only
-    // its own slots, including its padding, which is zeroed and never used).
-    pos_.resize(3 * numSlots);
-    nrm_.resize(3 * numSlots);
-    flux_.resize(numSlots);
-    index_.resize(numSlots);
-    forChunks(parallel, nodes_.size(), [&](size_t b, size_t e) {
-        for (size_t id = b; id < e; ++id) {
-            const Node& node = nodes_[id];
-            if ((node.axisInfo & 3) != kLeafTag) continue;
-            const uint32_t first = node.link, count = node.axisInfo >> 2;
-            const uint32_t c4 = (count + 3) & ~3u;
-            float* pos = pos_.data() + 3 * size_t{first};
-            int8_t* nrm = nrm_.data() + 3 * size_t{first};
-            const BuildRecord* rec = work.data() + ranges[id].begin;
-            for (uint32_t i = 0; i < c4; ++i) {
-                if (i < count) {
-                    const Photon& ph = photons[rec[i].index];
-                    for (int a = 0; a < 3; ++a) {
-                        pos[a * c4 + i] = rec[i].pos[a];
-                        nrm[a * c4 + i] = ph.norm[a];
-                    }
-                    flux_[first + i] = ph.flux;
-                    index_[first + i] = rec[i].index;
-                } else {
-                    for (int a = 0; a < 3; ++a) {
-                        pos[a * c4 + i] = 0;
-                        nrm[a * c4 + i] = 0;
-                    }
-                    flux_[first + i] = {0, 0, 0, 0};
-                    index_[first + i] = 0;
-                }
-            }
-        }
-    });
-}
-
 size_t PhotonIndex::memoryBytes() const {
-    return nodes_.capacity() * sizeof(Node) + pos_.capacity() * sizeof(float) +
-           nrm_.capacity() + flux_.capacity() * sizeof(Colr) +
+    return nodes_.capacity() * sizeof(Node) + leaves_.capacity() + flux_.capacity() * sizeof(Colr) +
            index_.capacity() * sizeof(uint32_t);
 }
 
@@ -255,21 +89,20 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
         float rd;  // cell distance (squared) of the far child
         float off[3];
     };
-    // Depth <= 32: each level halves the count (kMaxTreePhotons < 2^32).
-    Pending stack[40];
+    // Depth <= 96 (lookup_index_build.cpp: 63 code bits plus 32 count splits).
+    Pending stack[100];
     int top = 0;
     const float q0 = s.q[0], q1 = s.q[1], q2 = s.q[2];
     const V4 qx = splat(q0), qy = splat(q1), qz = splat(q2);
     [[maybe_unused]] const V4 n0 = splat(s.n[0]), n1 = splat(s.n[1]), n2 = splat(s.n[2]);
     [[maybe_unused]] const V4 tol = splat(kNormalTolerance);
     const float q[3] = {q0, q1, q2};
-    PhotonHit* const heap = s.heap;
-    const size_t k = s.k;
+    PhotonHit* const buf = s.buf;
+    const size_t k = s.k, cap = s.cap;
     size_t found = s.found;
     float maxDist2 = s.maxDist2;
     const Node* const nodes = nodes_.data();
-    const float* const positions = pos_.data();
-    const int8_t* const normals = nrm_.data();
+    const unsigned char* const leaves = leaves_.data();
     float off[3] = {rootOff[0], rootOff[1], rootOff[2]};
     uint32_t id = root;
     for (;;) {
@@ -290,7 +123,7 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
                 farId = id + 1;
                 cut = below;
             }
-            Pending& far = stack[top++];
+            Pending& far = stack[top];
             far.node = farId;
             far.off[0] = off[0];
             far.off[1] = off[1];
@@ -300,6 +133,7 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
             // cells that lie inside the search radius and loses near photons once k spans
             // several leaves.
             far.rd = far.off[0] * far.off[0] + far.off[1] * far.off[1] + far.off[2] * far.off[2];
+            top += far.rd < maxDist2;  // the radius only shrinks: a cell outside stays out
             id = nearId;
             node = nodes + id;
         }
@@ -312,31 +146,60 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
         // shrinks, so the heap sees exactly the offers of a plain loop over the leaf
         // (without its unpredictable branch per photon).
         const uint32_t b = node->link, count = node->axisInfo >> 2;
-        const uint32_t c4 = (count + 3) & ~3u;
-        const float* px = positions + 3 * size_t{b};
-        [[maybe_unused]] const int8_t* pn = normals + 3 * size_t{b};
+        uint32_t c4 = (count + 3) & ~3u;
+        const unsigned char* block = leaves + kLeafBytesPerSlot * size_t{b};
+        const float* px = reinterpret_cast<const float*>(block);
+        [[maybe_unused]] const int8_t* pn =
+            reinterpret_cast<const int8_t*>(block + 3 * c4 * sizeof(float));
         alignas(16) float d2[kLeafSize];
         const V4 limit = splat(maxDist2);
         uint32_t mask = 0;
-        for (uint32_t i = 0; i < c4; i += 4) {
-            const V4 dx = qx - load4(px + i), dy = qy - load4(px + c4 + i),
-                     dz = qz - load4(px + 2 * c4 + i);
-            const V4 r = dx * dx + dy * dy + dz * dz;
-            std::memcpy(d2 + i, &r, sizeof r);
-            V4i m = r < limit;
-            if constexpr (kFilter) {
+        // A leaf whose photons share one normal (most leaves: photons on flat surfaces)
+        // takes the filter once, with the same float expression as the lanes below.
+        bool testNormals = kFilter;
+        if constexpr (kFilter) {
+            int8_t common[3];
+            if (leafCommonNormal(*node, common)) {
+                const float dot = s.n[0] * float(common[0]) + s.n[1] * float(common[1]) +
+                                  s.n[2] * float(common[2]);
+                if (!(dot > kNormalTolerance)) c4 = 0;  // no photon passes
+                testNormals = false;
+            }
+        }
+        if (testNormals) {
+            for (uint32_t i = 0; i < c4; i += 4) {
+                const V4 dx = qx - load4(px + i), dy = qy - load4(px + c4 + i),
+                         dz = qz - load4(px + 2 * c4 + i);
+                const V4 r = dx * dx + dy * dy + dz * dz;
+                std::memcpy(d2 + i, &r, sizeof r);
                 const V4 dot = n0 * load4(pn + i) + n1 * load4(pn + c4 + i) +
                                n2 * load4(pn + 2 * c4 + i);
-                m &= dot > tol;
+                const V4i m = (r < limit) & (dot > tol);
+                mask |= laneMask(m) << i;
             }
-            mask |= laneMask(m) << i;
+        } else {
+            for (uint32_t i = 0; i < c4; i += 4) {
+                const V4 dx = qx - load4(px + i), dy = qy - load4(px + c4 + i),
+                         dz = qz - load4(px + 2 * c4 + i);
+                const V4 r = dx * dx + dy * dy + dz * dz;
+                std::memcpy(d2 + i, &r, sizeof r);
+                mask |= laneMask(r < limit) << i;
+            }
         }
         static_assert(kLeafSize == 32, "the lane mask is one 32-bit word");
         if (count < 32) mask &= (1u << count) - 1;
         while (mask) {
             const uint32_t i = static_cast<uint32_t>(__builtin_ctz(mask));
             mask &= mask - 1;
-            if (d2[i] < maxDist2) offerPhoton(heap, k, found, maxDist2, d2[i], b + i);
+            buf[found++] = {d2[i], b + i};
+        }
+        if (found + kLeafSize > cap) {
+            // Full (the radius was generous): keep the k nearest and shrink the radius to
+            // the k-th, as a heap would have. Exact: every photon dropped, and every one
+            // pruned from now on, is at least as far as k photons kept.
+            std::nth_element(buf, buf + (k - 1), buf + found, Nearer{});
+            found = k;
+            maxDist2 = buf[k - 1].dist2;
         }
 
         // Next: the most recently deferred far child whose cell is still within the radius.
@@ -358,31 +221,80 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
     }
 }
 
+// The expected squared radius holding k photons around q, from the density of the leaf the
+// query falls in (its photons per unit area, stored at build time); 0 if unknown.
+float PhotonIndex::guessRadius2(const float q[3], size_t k) const {
+    const Node* node = nodes_.data();
+    while ((node->axisInfo & 3) != kLeafTag) {
+        const int axis = static_cast<int>(node->axisInfo);
+        const bool left = q[axis] - node->leftMax < node->rightMin - q[axis];
+        node = left ? node + 1 : nodes_.data() + node->link;
+    }
+    return node->rightMin * static_cast<float>(k) * (kGuessMargin / static_cast<float>(kPi));
+}
+
 size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float maxDist2,
-                                     std::span<PhotonHit> out) const {
-    if (out.empty() || nodes_.empty()) return 0;
+                                     size_t k, std::vector<PhotonHit>& scratch) const {
+    if (k == 0 || nodes_.empty()) return 0;
+    const size_t cap = 4 * k + 2 * kLeafSize;
+    if (scratch.size() < cap) scratch.resize(cap);
     // RADIANCE compat: the query point and normal are compared in single precision.
     Search s{{static_cast<float>(pos.x), static_cast<float>(pos.y), static_cast<float>(pos.z)},
              {0, 0, 0},
-             out.data(),
-             out.size(),
+             scratch.data(),
+             cap,
+             k,
              0,
              maxDist2};
-    float off[3];
+    float rootOff[3];
     for (int a = 0; a < 3; ++a) {
         const float q = s.q[a];
-        off[a] = q < boundsLo_[a] ? boundsLo_[a] - q : (q > boundsHi_[a] ? q - boundsHi_[a] : 0);
+        rootOff[a] =
+            q < boundsLo_[a] ? boundsLo_[a] - q : (q > boundsHi_[a] ? q - boundsHi_[a] : 0);
     }
-    if (!(off[0] * off[0] + off[1] * off[1] + off[2] * off[2] < maxDist2)) return 0;
+    if (!(rootOff[0] * rootOff[0] + rootOff[1] * rootOff[1] + rootOff[2] * rootOff[2] <
+          maxDist2))
+        return 0;
     if (normal) {
         s.n[0] = static_cast<float>(normal->x);
         s.n[1] = static_cast<float>(normal->y);
         s.n[2] = static_cast<float>(normal->z);
-        searchNode<true>(0, off, s);
-    } else {
-        searchNode<false>(0, off, s);
     }
-    return s.found;
+    // Collect every photon within a guessed radius, larger passes until k are found or the
+    // radius reaches maxDist2; then select the k nearest. The k nearest within maxDist2
+    // are exactly the k nearest of a pass that found at least k (all photons nearer than
+    // its radius were collected), so the guess changes the cost, never the result.
+    const float guess = guessRadius2(s.q, k);
+    float bound = guess > 0 && guess < maxDist2 ? guess : maxDist2;
+    for (;;) {
+        s.found = 0;
+        s.maxDist2 = bound;
+        float off[3] = {rootOff[0], rootOff[1], rootOff[2]};
+        if (normal)
+            searchNode<true>(0, off, s);
+        else
+            searchNode<false>(0, off, s);
+        if (s.found >= k || !(bound < maxDist2)) break;
+        bound = std::min(maxDist2, bound * kGuessGrowth);
+    }
+    size_t n = s.found;
+    if (n >= k) {
+        std::nth_element(s.buf, s.buf + (k - 1), s.buf + n, Nearer{});
+        n = k;
+        std::swap(s.buf[0], s.buf[k - 1]);
+    } else if (n > 1) {
+        std::swap(s.buf[0], *std::max_element(s.buf, s.buf + n, Nearer{}));
+    }
+    return n;
+}
+
+size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float maxDist2,
+                                     std::span<PhotonHit> out) const {
+    thread_local std::vector<PhotonHit> scratch;
+    const size_t n = findNearestSlots(pos, normal, maxDist2, out.size(), scratch);
+    std::copy(scratch.begin(), scratch.begin() + static_cast<std::ptrdiff_t>(n), out.begin());
+    std::make_heap(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n), Nearer{});
+    return n;
 }
 
 size_t PhotonIndex::findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,

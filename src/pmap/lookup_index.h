@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -44,11 +45,10 @@ public:
     static constexpr uint32_t kLeafSize = 32;
 
     // Builds the index over `photons` (any order; results index into this span, which must
-    // outlive nothing: positions, normals and flux are copied). Median splits by count
-    // along the axis of largest extent of the photons in each node, so the tree shape
-    // depends only on the photon count; with `parallel`, large subtrees are built as TBB
-    // tasks and the result does not depend on the number of threads. Requires
-    // size() <= kMaxTreePhotons.
+    // outlive nothing: positions, normals and flux are copied): photons sorted by Morton
+    // code, a radix tree over the codes (lookup_index_build.cpp). The tree depends only on
+    // the photons; `parallel` runs the per-photon and per-leaf passes as TBB tasks, with
+    // the same result for any number of threads. Requires size() <= kMaxTreePhotons.
     explicit PhotonIndex(std::span<const Photon> photons, bool parallel = true);
 
     // As findNearestPhotons (kdtree.h): up to out.size() nearest photons with squared
@@ -65,6 +65,11 @@ public:
     // slotFlux() gives its flux without touching the map (same values as fluxRgb()).
     size_t findNearestSlots(const Vec3& pos, const Vec3* normal, float maxDist2,
                             std::span<PhotonHit> out) const;
+    // The same search without the heap: the k nearest (fewer if the radius holds fewer) in
+    // scratch[0..n), the furthest at [0] and the others in no particular order; scratch
+    // grows as needed (no allocation once large enough). Density estimates need no more.
+    size_t findNearestSlots(const Vec3& pos, const Vec3* normal, float maxDist2, size_t k,
+                            std::vector<PhotonHit>& scratch) const;
     uint32_t photonIndex(uint32_t slot) const { return index_[slot]; }
     std::array<float, 3> slotFlux(uint32_t slot) const { return colrToRgb(flux_[slot]); }
 
@@ -74,25 +79,40 @@ public:
 
     struct Node {
         float leftMax;      // inner: largest coordinate along the split axis in the left child
+                            // leaf: the photons' common normal, if any (leafCommonNormal)
         float rightMin;     // inner: smallest in the right child (leftMax <= rightMin)
+                            // leaf: area per photon (guessRadius2), 0 if unknown
         uint32_t axisInfo;  // inner: split axis 0..2; leaf: 3 | (photon count << 2)
         uint32_t link;      // inner: node index of the right child; leaf: first slot
     };
+    // A leaf's normal filter can be tested once when all its photons have the same
+    // (quantised) normal; the build records it in the leaf's otherwise unused leftMax as
+    // bytes x, y, z and a flag byte.
+    static constexpr uint8_t kCommonNormalFlag = 1;
+    static bool leafCommonNormal(const Node& leaf, int8_t normal[3]) {
+        unsigned char b[4];
+        std::memcpy(b, &leaf.leftMax, 4);
+        std::memcpy(normal, b, 3);
+        return b[3] == kCommonNormalFlag;
+    }
     struct Search;  // per-query state (lookup_index.cpp)
 
 private:
     void build(std::span<const Photon> photons, bool parallel);
     template <bool kFilter>
     void searchNode(uint32_t node, float off[3], Search& s) const;
+    float guessRadius2(const float q[3], size_t k) const;
 
     size_t size_ = 0;
     std::vector<Node> nodes_;
     // Slots: each leaf's photons get slots first .. first + count, with `first` a multiple
     // of 4 and the count padded to one (the leaf loops take 4 lanes at a time). A leaf's
-    // positions are one block pos_[3 first ..] = x[c4] y[c4] z[c4] (c4 = padded count),
-    // its normals (x 127) likewise in nrm_, so a leaf test reads two contiguous runs.
-    BulkVector<float> pos_;
-    BulkVector<int8_t> nrm_;
+    // data is one contiguous block at leaves_[15 first ..]: positions x[c4] y[c4] z[c4]
+    // (floats, c4 = padded count), then normals (x 127) likewise as int8, so a leaf test
+    // reads one run of memory (the hardware prefetcher follows it; two separate arrays
+    // cost a second cache miss per leaf, and a lookup visits about 8 leaves).
+    static constexpr size_t kLeafBytesPerSlot = 3 * sizeof(float) + 3;
+    BulkVector<unsigned char> leaves_;
     BulkVector<Colr> flux_;        // RGBE flux, by slot
     BulkVector<uint32_t> index_;   // slot -> photon index in the constructor's span
     float boundsLo_[3] = {0, 0, 0}, boundsHi_[3] = {0, 0, 0};
