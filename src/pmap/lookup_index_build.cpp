@@ -18,6 +18,9 @@
 #include <array>
 #include <cstring>
 #include <limits>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "pmap/lookup_index.h"
 #include "util/error.h"
@@ -40,31 +43,37 @@ void forChunks(bool parallel, size_t n, F&& f) {
         f(0, n);
 }
 
-// Spreads the low 21 bits of v to every third bit (bit i goes to bit 3i).
-uint64_t spreadBits(uint64_t v) {
-    v &= 0x1fffff;
-    v = (v | v << 32) & 0x1f00000000ffffULL;
-    v = (v | v << 16) & 0x1f0000ff0000ffULL;
-    v = (v | v << 8) & 0x100f00f00f00f00fULL;
-    v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-    v = (v | v << 2) & 0x1249249249249249ULL;
-    return v;
+// kSpread8[b]: bit i of byte b moved to bit 3i.
+constexpr std::array<uint32_t, 256> makeSpread8() {
+    std::array<uint32_t, 256> t{};
+    for (uint32_t v = 0; v < 256; ++v)
+        for (int i = 0; i < 8; ++i) t[v] |= ((v >> i) & 1u) << (3 * i);
+    return t;
+}
+constexpr std::array<uint32_t, 256> kSpread8 = makeSpread8();
+
+// Spreads the 21 bits of a cell number to every third bit (bit i goes to bit 3i).
+inline uint64_t spreadBits(uint32_t v) {
+    return uint64_t{kSpread8[v & 255]} | uint64_t{kSpread8[(v >> 8) & 255]} << 24 |
+           uint64_t{kSpread8[(v >> 16) & 31]} << 48;
 }
 
 // Code bit 3i + 2 - a holds bit i of axis a's cell number (x highest within each triple).
 int axisOfBit(int bit) { return 2 - bit % 3; }
 
-// Stable LSD radix sort of (code, index) pairs by code, 11 bits per pass; passes whose
-// digit is the same for every code are skipped. Stable, so equal codes stay in index
-// order and the result depends only on the input.
+// Sorts (code, index) pairs by code, equal codes by index, so the result depends only on
+// the input. A stable LSD radix sort on the top 33 of the 63 code bits (3 passes of 11
+// bits; a pass whose digit is the same for every code is skipped), then each run of
+// codes equal in those bits (photons within about 1/2000 of the map's extent of each
+// other, rare except in a caustic's focus) sorted on the full code.
 void sortByCode(BulkVector<uint64_t>& codes, BulkVector<uint32_t>& index) {
-    constexpr int kDigitBits = 11, kPasses = 6;  // 66 >= 63 bits
+    constexpr int kDigitBits = 11, kPasses = 3, kLowBits = 63 - kDigitBits * kPasses;
     constexpr size_t kBuckets = size_t{1} << kDigitBits;
     const size_t n = codes.size();
     std::vector<uint32_t> hist(kPasses * kBuckets, 0);
     for (uint64_t c : codes)
         for (int p = 0; p < kPasses; ++p)
-            ++hist[p * kBuckets + ((c >> (p * kDigitBits)) & (kBuckets - 1))];
+            ++hist[p * kBuckets + ((c >> (kLowBits + p * kDigitBits)) & (kBuckets - 1))];
     BulkVector<uint64_t> codes2(n);
     BulkVector<uint32_t> index2(n);
     for (int p = 0; p < kPasses; ++p) {
@@ -76,7 +85,7 @@ void sortByCode(BulkVector<uint64_t>& codes, BulkVector<uint32_t>& index) {
             h[b] = sum;
             sum += c;
         }
-        const int shift = p * kDigitBits;
+        const int shift = kLowBits + p * kDigitBits;
         for (size_t i = 0; i < n; ++i) {
             const uint32_t dst = h[(codes[i] >> shift) & (kBuckets - 1)]++;
             codes2[dst] = codes[i];
@@ -84,6 +93,18 @@ void sortByCode(BulkVector<uint64_t>& codes, BulkVector<uint32_t>& index) {
         }
         codes.swap(codes2);
         index.swap(index2);
+    }
+    std::vector<std::pair<uint64_t, uint32_t>> run;
+    for (size_t b = 0; b < n;) {
+        size_t e = b + 1;
+        while (e < n && (codes[e] >> kLowBits) == (codes[b] >> kLowBits)) ++e;
+        if (e - b > 1) {
+            run.clear();
+            for (size_t i = b; i < e; ++i) run.emplace_back(codes[i], index[i]);
+            std::sort(run.begin(), run.end());
+            for (size_t i = b; i < e; ++i) std::tie(codes[i], index[i]) = run[i - b];
+        }
+        b = e;
     }
 }
 
@@ -117,10 +138,10 @@ void PhotonIndex::build(std::span<const Photon> photons, bool parallel) {
     // Morton codes of the photons' cells in a 2^21 grid per axis over the bounds. The cell
     // number is a non-decreasing function of the coordinate, so photons on the low side of
     // a code bit never lie above those on its high side: each split is a true plane.
-    double scale[3];
+    float scale[3];
     for (int a = 0; a < 3; ++a) {
-        const double extent = double(boundsHi_[a]) - double(boundsLo_[a]);
-        scale[a] = extent > 0 ? double(kMaxCell + 1) / extent : 0;
+        const float extent = boundsHi_[a] - boundsLo_[a];
+        scale[a] = extent > 0 ? static_cast<float>(kMaxCell + 1) / extent : 0.f;
     }
     BulkVector<uint64_t> codes(n);
     BulkVector<uint32_t> order(n);
@@ -128,8 +149,10 @@ void PhotonIndex::build(std::span<const Photon> photons, bool parallel) {
         for (size_t i = b; i < e; ++i) {
             uint64_t code = 0;
             for (int a = 0; a < 3; ++a) {
-                const double c = (double(photons[i].pos[a]) - double(boundsLo_[a])) * scale[a];
-                const uint32_t cell = std::min(kMaxCell, static_cast<uint32_t>(c > 0 ? c : 0.0));
+                // Float arithmetic is monotonic too: a larger coordinate never gets a
+                // smaller cell. (NaN coordinates, which loaded maps never have, go to 0.)
+                const float c = (photons[i].pos[a] - boundsLo_[a]) * scale[a];
+                const uint32_t cell = c > 0 ? std::min(kMaxCell, static_cast<uint32_t>(c)) : 0;
                 code |= spreadBits(cell) << (2 - a);
             }
             codes[i] = code;
@@ -195,36 +218,40 @@ void PhotonIndex::build(std::span<const Photon> photons, bool parallel) {
             const uint32_t c4 = (count + 3) & ~3u;
             const uint32_t* rec = order.data() + ranges[id].begin;
             Bounds& box = bounds[id];
-            for (int a = 0; a < 3; ++a) {
-                box.lo[a] = std::numeric_limits<float>::infinity();
-                box.hi[a] = -std::numeric_limits<float>::infinity();
-            }
-            for (uint32_t i = 0; i < c4; ++i) {
-                const bool real = i < count;
-                const Photon& ph = photons[real ? rec[i] : rec[0]];
+            const Photon& p0 = photons[rec[0]];
+            for (int a = 0; a < 3; ++a) box.lo[a] = box.hi[a] = p0.pos[a];
+            bool common = true;  // all photons have p0's normal
+            for (uint32_t i = 0; i < count; ++i) {
+                const Photon& ph = photons[rec[i]];
                 for (int a = 0; a < 3; ++a) {
-                    pos[a * c4 + i] = real ? ph.pos[a] : 0.f;
-                    nrm[a * c4 + i] = real ? ph.norm[a] : int8_t{0};
-                    if (real) {
-                        box.lo[a] = std::min(box.lo[a], ph.pos[a]);
-                        box.hi[a] = std::max(box.hi[a], ph.pos[a]);
-                    }
+                    const float v = ph.pos[a];
+                    pos[a * c4 + i] = v;
+                    nrm[a * c4 + i] = ph.norm[a];
+                    box.lo[a] = std::min(box.lo[a], v);
+                    box.hi[a] = std::max(box.hi[a], v);
                 }
-                flux_[first + i] = real ? ph.flux : Colr{0, 0, 0, 0};
-                index_[first + i] = real ? rec[i] : 0;
+                common = common && ph.norm[0] == p0.norm[0] && ph.norm[1] == p0.norm[1] &&
+                         ph.norm[2] == p0.norm[2];
+                flux_[first + i] = ph.flux;
+                index_[first + i] = rec[i];
+            }
+            for (uint32_t i = count; i < c4; ++i) {
+                for (int a = 0; a < 3; ++a) {
+                    pos[a * c4 + i] = 0.f;
+                    nrm[a * c4 + i] = 0;
+                }
+                flux_[first + i] = Colr{0, 0, 0, 0};
+                index_[first + i] = 0;
             }
             // Area per photon for guessRadius2: the two largest extents of the leaf's box
             // (photons lie on surfaces); unknown for a single point.
             float ext[3] = {box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]};
             std::sort(ext, ext + 3);
             nodes_[id].rightMin = count > 1 ? ext[2] * ext[1] / static_cast<float>(count) : 0.f;
-            bool common = true;
-            for (uint32_t i = 1; i < count; ++i)
-                for (int a = 0; a < 3; ++a) common = common && nrm[a * c4 + i] == nrm[a * c4];
             if (common) {
-                const unsigned char b[4] = {static_cast<unsigned char>(nrm[0]),
-                                            static_cast<unsigned char>(nrm[c4]),
-                                            static_cast<unsigned char>(nrm[2 * c4]),
+                const unsigned char b[4] = {static_cast<unsigned char>(p0.norm[0]),
+                                            static_cast<unsigned char>(p0.norm[1]),
+                                            static_cast<unsigned char>(p0.norm[2]),
                                             kCommonNormalFlag};
                 std::memcpy(&nodes_[id].leftMax, b, 4);
             }
