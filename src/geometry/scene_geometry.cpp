@@ -12,10 +12,11 @@ SceneGeometry::~SceneGeometry() = default;
 SceneGeometry::SceneGeometry(SceneGeometry&&) noexcept = default;
 SceneGeometry& SceneGeometry::operator=(SceneGeometry&&) noexcept = default;
 
-std::optional<Hit> SceneGeometry::closestHit(const Ray& ray, const ModifierSet* skip) const {
+std::optional<Hit> SceneGeometry::closestHit(const Ray& ray, const ModifierSet* skip,
+                                             bool surfaceCoords) const {
     AccelHit a;
     if (!accel_->intersect(ray, skip, a)) return std::nullopt;
-    return completeHit(ray, a);
+    return completeHit(ray, a, surfaceCoords);
 }
 
 bool SceneGeometry::occluded(const Vec3& origin, const Vec3& dir, double tmax,
@@ -24,6 +25,14 @@ bool SceneGeometry::occluded(const Vec3& origin, const Vec3& dir, double tmax,
 }
 
 namespace {
+
+// std::fmax without the libm call it compiles to at -O2 (a visible cost per photon/ray);
+// the same result for every input but +-0 ties, which do not arise here.
+inline double fastMax(double a, double b) { return a > b ? a : (b != b ? a : b); }
+// maxAbs (geometry/ray.h) on fastMax: fabs gives no -0, so the same bits.
+inline double fastMaxAbs(const Vec3& p) {
+    return fastMax(std::fabs(p.x), fastMax(std::fabs(p.y), std::fabs(p.z)));
+}
 
 // Embree's float edge test can accept a hit up to a few float ulps outside the
 // triangle. Near a corner that puts the hit point (and then a spawned origin) on the
@@ -84,35 +93,40 @@ SceneGeometry::SceneGeometry(const Scene& scene)
     }
 }
 
-Hit SceneGeometry::completeHit(const Ray& ray, const AccelHit& a) const {
+Hit SceneGeometry::completeHit(const Ray& ray, const AccelHit& a, bool surfaceCoords) const {
     Hit h;
     h.t = a.t;
     h.point = ray.origin + ray.dir * a.t;
-    double scale = maxAbs(h.point);
+    double scale = fastMaxAbs(h.point);
     SurfacePoint sp;
     uint32_t index = a.index;
     switch (a.kind) {
     case ShapeKind::Polygon: {
         const PolygonShape& p = shapes_->polygons[index];
         // Float triangles: the offset must clear their rounding (ray.h).
-        h.offset = kFloatOffsetRel * std::fmax(scale, p.scale);
+        h.offset = kFloatOffsetRel * fastMax(scale, p.scale);
         const TriIndices& tri = shapes_->triangles[a.triangle];
         insetIntoTriangle(h.point, shapes_->vertices[tri[0]], shapes_->vertices[tri[1]],
                           shapes_->vertices[tri[2]], insets_[a.triangle], h.offset);
-        Vec3 rel = h.point - p.origin;
         sp.normal = p.normal;
-        sp.u = dot(rel, p.uAxis);
-        sp.v = dot(rel, cross(p.normal, p.uAxis));
+        if (surfaceCoords) {
+            Vec3 rel = h.point - p.origin;
+            sp.u = dot(rel, p.uAxis);
+            sp.v = dot(rel, cross(p.normal, p.uAxis));
+        }
         h.prim = p.prim;
         h.modifier = p.modifier;
         break;
     }
     case ShapeKind::Sphere: {
         const SphereShape& s = shapes_->spheres[index];
-        sp = sphereSurface(s, h.point);
+        if (surfaceCoords)
+            sp = sphereSurface(s, h.point);
+        else
+            sp.normal = sphereNormal(s, h.point);
         h.prim = s.prim;
         h.modifier = s.modifier;
-        h.offset = kDoubleOffsetRel * std::fmax(scale, s.radius);
+        h.offset = kDoubleOffsetRel * fastMax(scale, s.radius);
         break;
     }
     case ShapeKind::Cone: {
@@ -128,7 +142,7 @@ Hit SceneGeometry::completeHit(const Ray& ray, const AccelHit& a) const {
         sp = ringSurface(r, h.point);
         h.prim = r.prim;
         h.modifier = r.modifier;
-        h.offset = kDoubleOffsetRel * std::fmax(scale, r.r1);
+        h.offset = kDoubleOffsetRel * fastMax(scale, r.r1);
         break;
     }
     }

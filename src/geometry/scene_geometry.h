@@ -35,8 +35,11 @@ public:
 
     // Nearest surface with t in (0, ray.tmax), ignoring surfaces whose modifier is in
     // `skip` (they are passed through, e.g. antimatter). Origins on a surface must be
-    // offset first (spawnRay).
-    std::optional<Hit> closestHit(const Ray& ray, const ModifierSet* skip = nullptr) const;
+    // offset first (spawnRay). Without `surfaceCoords`, Hit::u and Hit::v are left 0 where
+    // they cost extra work (sphere: atan2 and acos; polygon: two dot products); the
+    // photon tracer never reads them. Everything else is the same bits either way.
+    std::optional<Hit> closestHit(const Ray& ray, const ModifierSet* skip = nullptr,
+                                  bool surfaceCoords = true) const;
 
     // Whether anything (modifier not in `skip`) lies on the ray with t in (0, tmax).
     bool occluded(const Vec3& origin, const Vec3& dir, double tmax,
@@ -54,7 +57,7 @@ public:
     size_t triangleCount() const { return shapes_->triangles.size(); }
 
 private:
-    Hit completeHit(const Ray& ray, const AccelHit& a) const;
+    Hit completeHit(const Ray& ray, const AccelHit& a, bool surfaceCoords) const;
 
     // Per triangle, what moving a hit point inside it needs (scene_geometry.cpp
     // insetIntoTriangle): the in-plane unit inward normal of each edge and the smallest

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "geometry/test_scenes.h"
+#include "util/rng.h"
 
 namespace rp {
 namespace {
@@ -154,6 +155,38 @@ TEST(Polygon, RayThroughHoleMisses) {
     // Along the seam itself (x = y, between the outline and the hole): surface on both
     // sides, so the ray must not leak.
     EXPECT_TRUE(g.closestHit({{0.5, 0.5, 1}, {0, 0, -1}}));
+}
+
+TEST(SceneGeometry, WithoutSurfaceCoordsSameHitButUv) {
+    // The photon tracer's closestHit(..., surfaceCoords = false): every field but u, v the
+    // same bits as the full hit, for polygons, spheres and bubbles.
+    SceneBuilder b;
+    b.surface(PrimType::Polygon, square(-5, -5, 5, 5, -3));
+    b.surface(PrimType::Polygon, square(-5, -5, 5, 5, 4, true));
+    b.surface(PrimType::Sphere, {0.5, 0.25, 0, 1.5});
+    b.surface(PrimType::Bubble, {-2, 1, 1, 0.75});
+    SceneGeometry g(b.scene());
+    Rng rng(3, RngDomain::Test, 0);
+    int spheres = 0;
+    for (int i = 0; i < 2000; ++i) {
+        Vec3 o{4 * rng.uniform() - 2, 4 * rng.uniform() - 2, 6 * rng.uniform() - 2.9};
+        double z = 2 * rng.uniform() - 1, phi = 2 * kPi * rng.uniform();
+        double r = std::sqrt(1 - z * z);
+        Ray ray{o, {r * std::cos(phi), r * std::sin(phi), z}, HUGE_VAL};
+        auto full = g.closestHit(ray);
+        auto lean = g.closestHit(ray, nullptr, false);
+        ASSERT_EQ(bool(full), bool(lean));
+        if (!full) continue;
+        spheres += full->prim >= 2;
+        EXPECT_EQ(full->t, lean->t);
+        EXPECT_EQ(full->point, lean->point);
+        EXPECT_EQ(full->normal, lean->normal);
+        EXPECT_EQ(full->front, lean->front);
+        EXPECT_EQ(full->prim, lean->prim);
+        EXPECT_EQ(full->modifier, lean->modifier);
+        EXPECT_EQ(full->offset, lean->offset);
+    }
+    EXPECT_GT(spheres, 100);
 }
 
 TEST(Sphere, OutsideInsideTangent) {

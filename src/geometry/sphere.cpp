@@ -59,6 +59,11 @@ bool intersectSphere(const SphereShape& s, const Vec3& o, const Vec3& d, double 
     return false;
 }
 
+Vec3 sphereNormal(const SphereShape& s, const Vec3& p) {
+    Vec3 n = normalize((p - s.center) / s.radius);
+    return s.inward ? -n : n;
+}
+
 SurfacePoint sphereSurface(const SphereShape& s, const Vec3& p) {
     Vec3 n = (p - s.center) / s.radius;
     n = normalize(n);

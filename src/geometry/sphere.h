@@ -26,6 +26,9 @@ bool intersectSphere(const SphereShape& s, const Vec3& o, const Vec3& d, double 
                      double tmax, double& t);
 
 SurfacePoint sphereSurface(const SphereShape& s, const Vec3& p);
+// sphereSurface's normal alone (the same bits), for callers that need no (u, v): the
+// photon tracer, which would otherwise pay an atan2 and an acos per sphere hit.
+Vec3 sphereNormal(const SphereShape& s, const Vec3& p);
 
 Bounds3 sphereBounds(const SphereShape& s);
 

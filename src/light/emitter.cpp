@@ -59,6 +59,7 @@ struct EmissionPlan::Impl {
     // binary search over all partitions, with a mispredicted branch per level, was most
     // of emitPhoton's time.
     std::vector<uint32_t> guide;
+    double bucketScale = 0;  // K / cdf.back(): a multiply per draw instead of a division
 
     void buildGuide() {
         const size_t n = cdf.size();
@@ -68,19 +69,26 @@ struct EmissionPlan::Impl {
             guide[b] = uint32_t(std::upper_bound(cdf.begin(), cdf.end(),
                                                  cdf.back() * double(b) / double(n)) -
                                 cdf.begin());
+        bucketScale = double(n) / cdf.back();
     }
     // Index of the first cdf entry in [first, end) above `target` (end if none), as
     // std::upper_bound. The guided search is checked against that definition, so
     // rounding in the bucket arithmetic can only cost a fallback, never change a result.
+    // From the bucket's first entry a short forward scan usually finds it: partitions of
+    // nearly equal flux put one or two in a bucket (a binary search over the bucket
+    // mispredicted a branch per level); crowded buckets fall back to a binary search.
     size_t upperBound(double target, size_t first, size_t end) const {
         if (first == 0 && end == cdf.size() && !guide.empty()) {
             const size_t k = guide.size() - 1;
-            const double x = target / cdf.back() * double(k);
+            const double x = target * bucketScale;
             const size_t b = x >= 0 ? std::min(size_t(x), k - 1) : 0;
-            const size_t lo = guide[b], hi = std::min<size_t>(end, size_t(guide[b + 1]) + 1);
-            const size_t i =
-                size_t(std::upper_bound(cdf.begin() + long(lo), cdf.begin() + long(hi), target) -
-                       cdf.begin());
+            size_t i = guide[b];
+            for (int step = 0; step < 4 && i < end && cdf[i] <= target; ++step) ++i;
+            if (i < end && cdf[i] <= target) {  // a crowded bucket: binary search the rest
+                const size_t hi = std::min<size_t>(end, size_t(guide[b + 1]) + 1);
+                i = size_t(std::upper_bound(cdf.begin() + long(i), cdf.begin() + long(std::max(i, hi)),
+                                            target) - cdf.begin());
+            }
             if ((i == 0 || cdf[i - 1] <= target) && (i == end || cdf[i] > target)) return i;
         }
         return size_t(std::upper_bound(cdf.begin() + long(first), cdf.begin() + long(end), target) -

@@ -79,6 +79,9 @@ inline double extinctionOf(double t) {
 Color evaluateNormal(const NormalParams&, const SurfacePoint&, const Vec3&, double);
 BackwardResult shadeNormal(const NormalParams&, const SurfacePoint&, const ShadeOptions&, Rng&);
 PhotonScatter scatterNormal(const NormalParams&, const SurfacePoint&, Rng&);
+// scatterNormal without its fast path for per-material coefficients (the per-hit setup
+// every case can take): tests check that both give the same bits.
+PhotonScatter scatterNormalPerHit(const NormalParams&, const SurfacePoint&, Rng&);
 
 Color evaluateAniso(const AnisoParams&, const SurfacePoint&, const Vec3&, double);
 BackwardResult shadeAniso(const AnisoParams&, const SurfacePoint&, const ShadeOptions&, Rng&);

@@ -64,7 +64,10 @@ int roulette(const Component* c, int n, Rng& rng, Color& factor) {
     double prob[kMaxComponents];
     double total = 0;
     for (int i = 0; i < n; ++i) {
-        prob[i] = std::max(c[i].coef.average(), 0.0);
+        // Absent components (black, e.g. the specular parts of a plain plastic) skip the
+        // division in average(); their probability is 0 either way.
+        const Color& k = c[i].coef;
+        prob[i] = k.r == 0 && k.g == 0 && k.b == 0 ? 0.0 : std::max(k.average(), 0.0);
         total += prob[i];
     }
     // Probabilities avg(C_i) as pmapmat.c; normalised only if they exceed 1 in sum

@@ -136,6 +136,37 @@ BackwardResult shadeWard(const WardHit& h, bool pure, const SurfacePoint& sp,
     return r;
 }
 
+// The outgoing direction for the roulette's choice `kind` (second half of pmapmat.c
+// normalPhotonScatter/anisoPhotonScatter); false where RADIANCE absorbs the photon.
+bool wardDirection(const WardHit& h, bool pure, const SurfacePoint& sp, ScatterKind kind,
+                   Rng& rng, Vec3& dir) {
+    switch (kind) {
+    case ScatterKind::DiffuseReflection:
+        dir = sampleCosine(sp.normal, rng);
+        return true;
+    case ScatterKind::DiffuseTransmission:
+        dir = sampleCosine(-sp.normal, rng);
+        return true;
+    case ScatterKind::SpecularReflection:
+        if (pure) {
+            dir = sp.dir + sp.normal * (2 * h.pdot);
+            if (perturbed(sp) && dot(dir, sp.geomNormal) <= kFtiny)
+                dir = reflect(sp.dir, sp.geomNormal);
+            dir = normalize(dir);
+            return true;
+        }
+        // RADIANCE: no valid sample in MAXITER tries -> absorbed
+        return sampleWardReflection(sp.dir, sp.normal, h.u, h.v, h.au, h.av, sp.geomNormal,
+                                    rng, dir);
+    default:  // SpecularTransmission
+        if (pure) {
+            dir = h.prdir;
+            return true;
+        }
+        return sampleWardTransmission(h.prdir, h.u, h.v, h.au, h.av, sp.geomNormal, rng, dir);
+    }
+}
+
 // pmapmat.c normalPhotonScatter/anisoPhotonScatter.
 PhotonScatter scatterWard(const WardHit& h, bool pure, const SurfacePoint& sp, Rng& rng) {
     PhotonScatter s;
@@ -146,33 +177,31 @@ PhotonScatter scatterWard(const WardHit& h, bool pure, const SurfacePoint& sp, R
     s.store = c[0].coef.average() > kFtiny || c[1].coef.average() > kFtiny;
     Color factor;
     int i = roulette(c, 4, rng, factor);
+    if (i < 0 || !wardDirection(h, pure, sp, c[i].kind, rng, s.dir)) return s;
+    s.kind = c[i].kind;
+    s.fluxFactor = factor;
+    return s;
+}
+
+// scatterWard for plastic/metal/trans without a pattern and without the roughness-0
+// Fresnel term, where the per-hit coefficients equal the ones makeMaterial derived once
+// (same arithmetic, same bits). Why: setting up the full WardHit per photon hit was a
+// visible part of mkpmap's time; only the non-diffuse choices need it, and they are rare.
+PhotonScatter scatterNormalFixed(const NormalParams& m, const SurfacePoint& sp, Rng& rng) {
+    PhotonScatter s;
+    Component c[4] = {
+        {ScatterKind::DiffuseReflection, m.diffuseReflectance},
+        {ScatterKind::DiffuseTransmission, m.diffuseTransmittance},
+        {ScatterKind::SpecularReflection, m.specularColor * (m.rspec > kFtiny ? 1.0 : 0.0)},
+        {ScatterKind::SpecularTransmission, m.specularTransmittance}};
+    s.store = c[0].coef.average() > kFtiny || c[1].coef.average() > kFtiny;
+    Color factor;
+    int i = roulette(c, 4, rng, factor);
     if (i < 0) return s;
-    switch (c[i].kind) {
-    case ScatterKind::DiffuseReflection:
+    if (c[i].kind == ScatterKind::DiffuseReflection)
         s.dir = sampleCosine(sp.normal, rng);
-        break;
-    case ScatterKind::DiffuseTransmission:
-        s.dir = sampleCosine(-sp.normal, rng);
-        break;
-    case ScatterKind::SpecularReflection:
-        if (pure) {
-            s.dir = sp.dir + sp.normal * (2 * h.pdot);
-            if (perturbed(sp) && dot(s.dir, sp.geomNormal) <= kFtiny)
-                s.dir = reflect(sp.dir, sp.geomNormal);
-            s.dir = normalize(s.dir);
-        } else if (!sampleWardReflection(sp.dir, sp.normal, h.u, h.v, h.au, h.av,
-                                         sp.geomNormal, rng, s.dir)) {
-            return s;  // RADIANCE: no valid sample in MAXITER tries -> absorbed
-        }
-        break;
-    default:  // SpecularTransmission
-        if (pure)
-            s.dir = h.prdir;
-        else if (!sampleWardTransmission(h.prdir, h.u, h.v, h.au, h.av, sp.geomNormal, rng,
-                                         s.dir))
-            return s;
-        break;
-    }
+    else if (!wardDirection(setupNormal(m, sp), m.pureSpecular, sp, c[i].kind, rng, s.dir))
+        return s;
     s.kind = c[i].kind;
     s.fluxFactor = factor;
     return s;
@@ -223,6 +252,12 @@ BackwardResult shadeNormal(const NormalParams& m, const SurfacePoint& sp,
 }
 
 PhotonScatter scatterNormal(const NormalParams& m, const SurfacePoint& sp, Rng& rng) {
+    if (sp.pattern == Color{1, 1, 1} && !(m.pureSpecular && m.specularity >= kFresThresh))
+        return scatterNormalFixed(m, sp, rng);
+    return scatterNormalPerHit(m, sp, rng);
+}
+
+PhotonScatter scatterNormalPerHit(const NormalParams& m, const SurfacePoint& sp, Rng& rng) {
     return scatterWard(setupNormal(m, sp), m.pureSpecular, sp, rng);
 }
 

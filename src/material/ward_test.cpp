@@ -4,6 +4,7 @@
 // of the sample mean (computed from the samples) unless stated.
 #include <gtest/gtest.h>
 
+#include "material/detail.h"
 #include "material/test_util.h"
 
 namespace rp::material {
@@ -203,6 +204,38 @@ TEST(WardAniso, PhotonEnergyAndHighlightShape) {
     Color alongU = evaluate(p, sp, normalize({std::sin(a), 0, std::cos(a)}));
     Color alongV = evaluate(p, sp, normalize({0, std::sin(a), std::cos(a)}));
     EXPECT_GT(alongV.r, 2 * alongU.r);
+}
+
+// scatterNormal's fast path (per-material coefficients, no pattern, no Fresnel term)
+// must give the same bits as the per-hit setup, for every component it can choose.
+TEST(WardPhoton, FastPathMatchesPerHitSetup) {
+    const std::vector<Primitive> mats = {
+        prim(PrimType::Plastic, {.75, .6, .4, 0, 0}),
+        prim(PrimType::Plastic, {.5, .6, .7, .01, 0}),
+        prim(PrimType::Plastic, {.5, .6, .7, .05, .1}),
+        prim(PrimType::Metal, {.8, .6, .4, .9, .05}),
+        prim(PrimType::Metal, {.8, .6, .4, .01, 0}),
+        prim(PrimType::Trans, {.7, .7, .7, .03, .05, .5, .3}),
+        prim(PrimType::Trans, {.6, .7, .8, .01, 0, .6, .5}),
+    };
+    Rng dirs(11, RngDomain::Test, 0);
+    for (const Primitive& p : mats) {
+        MaterialParams params = makeMaterial(p);
+        const auto& m = std::get<NormalParams>(params);
+        for (int i = 0; i < 4000; ++i) {
+            Vec3 d = test::uniformSphere(dirs);
+            const bool front = d.z < 0;
+            SurfacePoint sp = makeSurfacePoint(d, front ? kUp : -kUp, front);
+            Rng a(5, RngDomain::Test, uint64_t(i)), b(5, RngDomain::Test, uint64_t(i));
+            PhotonScatter fast = scatterPhoton(params, sp, a);
+            PhotonScatter ref = detail::scatterNormalPerHit(m, sp, b);
+            ASSERT_EQ(fast.kind, ref.kind) << primTypeName(p.type) << " " << i;
+            EXPECT_EQ(fast.store, ref.store);
+            EXPECT_EQ(fast.dir, ref.dir);
+            EXPECT_EQ(fast.fluxFactor, ref.fluxFactor);
+            EXPECT_EQ(a.next(), b.next()) << "same number of draws";
+        }
+    }
 }
 
 }  // namespace

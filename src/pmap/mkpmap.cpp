@@ -2,6 +2,7 @@
 // savePmaps), see mkpmap.h.
 #include "pmap/mkpmap.h"
 
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <set>
 
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include "geometry/scene_geometry.h"
 #include "light/emitter.h"
@@ -139,38 +141,59 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         warn(std::to_string(dist.runaways) + " runaway photons terminated after " +
              std::to_string(o.maxBounce) + " bounces (manual 4.3)");
 
+    // Precomputation (its own parallel loops), then the kd-trees, then the files in map
+    // order. With -n 2 or more the trees of all maps are built at once: the top splits of
+    // a tree are serial, so the global and caustic trees keep each other's threads busy.
+    // With -n 1 each tree is freed once written, as before (less peak memory). Each tree
+    // and file is the same either way.
     tbb::task_arena arena(std::max(1, o.nproc));
+    auto tb = Clock::now();
+    std::array<std::vector<Photon>, kNumPhotonMapTypes> input;
     for (size_t t = 0; t < o.maps.size(); ++t) {
         if (!o.maps[t]) continue;
-        auto tb = Clock::now();
-        std::vector<Photon> photons = std::move(dist.photons[t]);
-        if (PhotonMapType(t) == PhotonMapType::PreComp) {
-            PrecompSettings ps;
-            ps.fraction = o.precompFraction;
-            ps.bandwidth = o.maps[t]->bandwidth;
-            ps.seed = uint64_t(o.seed);
-            ps.threads = o.nproc;
-            ps.reportSeconds = o.reportSeconds;
-            ps.progress = &diag;
-            const size_t globalCount = photons.size();
-            photons = precomputeGlobal(std::move(photons), ps);
-            if (photons.empty())
-                throw InputError("no precomputed global photons (-apP " +
-                                 std::to_string(o.precompFraction) + " of " +
-                                 std::to_string(globalCount) + " global photons)");
-        }
-        PhotonMap map;
-        arena.execute([&] {
-            map = PhotonMap(PhotonMapType(t), std::move(photons),
+        input[t] = std::move(dist.photons[t]);
+        if (PhotonMapType(t) != PhotonMapType::PreComp) continue;
+        PrecompSettings ps;
+        ps.fraction = o.precompFraction;
+        ps.bandwidth = o.maps[t]->bandwidth;
+        ps.seed = uint64_t(o.seed);
+        ps.threads = o.nproc;
+        ps.reportSeconds = o.reportSeconds;
+        ps.progress = &diag;
+        const size_t globalCount = input[t].size();
+        input[t] = precomputeGlobal(std::move(input[t]), ps);
+        if (input[t].empty())
+            throw InputError("no precomputed global photons (-apP " +
+                             std::to_string(o.precompFraction) + " of " +
+                             std::to_string(globalCount) + " global photons)");
+    }
+    std::array<PhotonMap, kNumPhotonMapTypes> maps;
+    auto build = [&](size_t t) {
+        maps[t] = PhotonMap(PhotonMapType(t), std::move(input[t]),
                             PhotonMapType(t) == PhotonMapType::Contrib ? std::move(primaries)
                                                                        : std::vector<PhotonPrimary>{},
                             o.nproc > 1);
+    };
+    if (o.nproc > 1)
+        arena.execute([&] {
+            tbb::task_group group;
+            for (size_t t = 0; t < o.maps.size(); ++t)
+                if (o.maps[t]) group.run([&build, t] { build(t); });
+            group.wait();
         });
-        report.buildSeconds += secondsSince(tb);
+    report.buildSeconds = secondsSince(tb);
+    for (size_t t = 0; t < o.maps.size(); ++t) {
+        if (!o.maps[t]) continue;
+        if (o.nproc <= 1) {
+            auto tb1 = Clock::now();
+            arena.execute([&] { build(t); });
+            report.buildSeconds += secondsSince(tb1);
+        }
         auto tsave = Clock::now();
-        arena.execute([&] { map.save(o.maps[t]->file, commandLine, o.overwrite); });  // -n
+        arena.execute([&] { maps[t].save(o.maps[t]->file, commandLine, o.overwrite); });  // -n
         report.saveSeconds += secondsSince(tsave);
-        report.stored[t] = map.size();
+        report.stored[t] = maps[t].size();
+        maps[t] = PhotonMap();  // free the tree once written
     }
 
     char line[160];

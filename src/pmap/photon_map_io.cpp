@@ -42,12 +42,14 @@ std::string cFormat(const char* format, auto... args) {
     return buf;
 }
 
-void encodePhoton(std::string& out, const Photon& p) {
-    for (int a = 0; a < 3; ++a) putFlt(out, p.pos[a]);
-    for (int a = 0; a < 3; ++a) putInt(out, p.norm[a], 1);
-    for (int a = 0; a < 4; ++a) putInt(out, p.flux[a], 1);
-    putInt(out, p.primary, 4);
-    putInt(out, p.flags, 1);
+// Writes the kPhotonRecordSize bytes of p at out.
+void encodePhoton(unsigned char* out, const Photon& p) {
+    for (int a = 0; a < 3; ++a) putFlt(out + a * kPortableFloatSize, p.pos[a]);
+    out += 3 * kPortableFloatSize;
+    for (int a = 0; a < 3; ++a) out[a] = static_cast<unsigned char>(p.norm[a]);
+    for (int a = 0; a < 4; ++a) out[3 + a] = p.flux[a];
+    putInt(out + 7, p.primary, 4);
+    out[11] = p.flags;
 }
 
 Photon decodePhoton(const unsigned char* b) {
@@ -155,11 +157,12 @@ void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
         const size_t chunks = std::min(kBatch, (n - i + kChunkPhotons - 1) / kChunkPhotons);
         tbb::parallel_for(size_t{0}, chunks, [&](size_t k) {
             std::string& buf = bufs[k];
-            buf.clear();
-            buf.reserve(kChunkPhotons * kPhotonRecordSize);
             const size_t begin = i + k * kChunkPhotons;
             const size_t end = std::min(n, begin + kChunkPhotons);
-            for (size_t j = begin; j < end; ++j) encodePhoton(buf, photons_[j]);
+            buf.resize((end - begin) * kPhotonRecordSize);
+            auto* b = reinterpret_cast<unsigned char*>(buf.data());
+            for (size_t j = begin; j < end; ++j, b += kPhotonRecordSize)
+                encodePhoton(b, photons_[j]);
         });
         for (size_t k = 0; k < chunks; ++k)
             out.write(bufs[k].data(), static_cast<std::streamsize>(bufs[k].size()));

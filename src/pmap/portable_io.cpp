@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 
 namespace rp::pmap {
 
@@ -30,10 +31,40 @@ void putInt(std::string& out, int64_t value, int size) {
     while (size--) out.push_back(static_cast<char>((u >> (size * 8)) & 0xff));
 }
 
+void putInt(unsigned char* out, int64_t value, int size) {
+    const uint64_t u = static_cast<uint64_t>(value);
+    for (int i = 0; i < size; ++i) out[i] = static_cast<unsigned char>(u >> ((size - 1 - i) * 8));
+}
+
 void putFlt(std::string& out, double value) {
+    unsigned char b[kPortableFloatSize];
+    putFlt(b, value);
+    out.append(reinterpret_cast<const char*>(b), kPortableFloatSize);
+}
+
+void putFlt(unsigned char* out, double value) {
     int64_t m = 0;
     int e = 0;
-    if (std::isnan(value)) {
+    uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    const int biased = int((bits >> 52) & 0x7ff);
+    if (biased != 0 && biased != 0x7ff) {
+        // Normal numbers (every float position is one, or zero): frexp by moving the
+        // exponent field to that of [0.5, 1), exact and the same bits as std::frexp, which
+        // was a visible part of writing a map (three calls per photon).
+        e = biased - 1022;
+        const uint64_t fracBits = (bits & ~(uint64_t{0x7ff} << 52)) | (uint64_t{1022} << 52);
+        double frac;
+        std::memcpy(&frac, &fracBits, sizeof frac);
+        m = static_cast<int64_t>(frac * kMantissaScale);
+        if (e > 127) {
+            m = m > 0 ? 0x7fffffff : -0x7fffffff;
+            e = 127;
+        } else if (e < -128) {
+            m = 0;
+            e = 0;
+        }
+    } else if (std::isnan(value)) {
         m = 0;
         e = 0;
     } else if (std::isinf(value)) {
@@ -51,7 +82,7 @@ void putFlt(std::string& out, double value) {
         }
     }
     putInt(out, m, 4);
-    putInt(out, e, 1);
+    putInt(out + 4, e, 1);
 }
 
 void putStr(std::string& out, std::string_view s) {

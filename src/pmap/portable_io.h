@@ -21,6 +21,11 @@ void putInt(std::string& out, int64_t value, int size);
 // NaN is written as 0 and +-infinity as the overflow clamp.
 void putFlt(std::string& out, double value);
 
+// The same encodings written to out[0..size) and out[0..kPortableFloatSize) (no string
+// growth checks per byte: photon records are written by these).
+void putInt(unsigned char* out, int64_t value, int size);
+void putFlt(unsigned char* out, double value);
+
 // putstr: the bytes of s followed by a NUL.
 void putStr(std::string& out, std::string_view s);
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -63,6 +64,53 @@ TEST(PortableIo, PutFltExactBytes) {
     EXPECT_EQ(flt(3.14159), (std::vector<int>{0x64, 0x87, 0xe7, 0xbf, 0x02}));
     // -3.14159: -1686628287 = 0x9b781841.
     EXPECT_EQ(flt(-3.14159), (std::vector<int>{0x9b, 0x78, 0x18, 0x41, 0x02}));
+}
+
+TEST(PortableIo, PutFltFastPathMatchesFrexpDefinition) {
+    // putFlt's bit-level frexp against the definition written with std::frexp, over
+    // random doubles of every exponent, float positions, zeros, subnormals and specials.
+    auto reference = [](double x) {
+        int64_t m = 0;
+        int e = 0;
+        if (std::isinf(x)) {
+            m = x > 0 ? 0x7fffffff : -0x7fffffff;
+            e = 127;
+        } else if (!std::isnan(x)) {
+            m = static_cast<int64_t>(std::frexp(x, &e) * double(0x7fffffff));
+            if (e > 127) {
+                m = m > 0 ? 0x7fffffff : -0x7fffffff;
+                e = 127;
+            } else if (e < -128) {
+                m = 0;
+                e = 0;
+            }
+        }
+        std::string s;
+        putInt(s, m, 4);
+        putInt(s, e, 1);
+        return s;
+    };
+    std::mt19937_64 gen(7);
+    std::vector<double> xs = {0.0, -0.0, 1.0, -1.0, 0.5, 5.5, 1e-300, 4.9e-324, -2.2e-308,
+                              1e300, HUGE_VAL, -HUGE_VAL, std::nan(""), 0x1p127, 0x1p-128,
+                              0x1p-129, -0x1p128};
+    for (int i = 0; i < 200000; ++i) {
+        uint64_t bits = gen();
+        double d;
+        std::memcpy(&d, &bits, sizeof d);
+        xs.push_back(d);
+        xs.push_back(double(float(std::ldexp(double(gen() >> 11), -50))));  // positions
+    }
+    for (double x : xs) {
+        std::string viaString;
+        putFlt(viaString, x);
+        unsigned char direct[kPortableFloatSize];
+        putFlt(direct, x);
+        const std::string expect = reference(x);
+        ASSERT_EQ(viaString, expect) << x;
+        ASSERT_EQ(std::string(reinterpret_cast<const char*>(direct), kPortableFloatSize), expect)
+            << x;
+    }
 }
 
 TEST(PortableIo, PutFltClampsExponent) {

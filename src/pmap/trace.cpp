@@ -201,7 +201,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         }
         ray.tmax = pathLimit - travelled;
         if (!(ray.tmax > 0)) return;
-        std::optional<Hit> hit = geometry_.closestHit(ray);
+        std::optional<Hit> hit = geometry_.closestHit(ray, nullptr, /*surfaceCoords=*/false);
         if (!hit) return;
         travelled += hit->t;
 
