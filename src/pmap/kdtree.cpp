@@ -156,46 +156,52 @@ std::vector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel) {
     return out;
 }
 
+namespace {
+// Depth-first over the implicit tree with the cell's bounds changed in place and restored
+// on the way back (no per-node copies: a map load checks every photon). Returns the
+// 1-based node of the first photon outside its ancestors' splits, or 0.
+size_t firstMisplaced(const Photon* tree, size_t n, size_t node, float lo[3], float hi[3]) {
+    const Photon& p = tree[node - 1];
+    for (int a = 0; a < 3; ++a)
+        if (!(p.pos[a] >= lo[a] && p.pos[a] <= hi[a])) return node;
+    const int axis = p.discr();
+    const float v = p.pos[axis];
+    if (2 * node <= n) {
+        const float old = hi[axis];
+        hi[axis] = v;
+        const size_t bad = firstMisplaced(tree, n, 2 * node, lo, hi);
+        hi[axis] = old;
+        if (bad) return bad;
+    }
+    if (2 * node + 1 <= n) {
+        const float old = lo[axis];
+        lo[axis] = v;
+        const size_t bad = firstMisplaced(tree, n, 2 * node + 1, lo, hi);
+        lo[axis] = old;
+        if (bad) return bad;
+    }
+    return 0;
+}
+}  // namespace
+
 std::string checkKdTree(std::span<const Photon> tree) {
     const size_t n = tree.size();
     if (n == 0) return {};
-    struct Cell {
-        size_t node;
-        float lo[3], hi[3];
-    };
-    std::vector<Cell> stack;
-    Cell rootCell{1, {}, {}};
+    // Per photon first (a flat loop): split axis and finite position, so that the walk
+    // below only compares ordered floats.
+    for (size_t i = 0; i < n; ++i) {
+        const Photon& p = tree[i];
+        if (p.discr() > 2) return fmt::format("photon {} has split axis 3", i);
+        if (!(std::isfinite(p.pos[0]) && std::isfinite(p.pos[1]) && std::isfinite(p.pos[2])))
+            return fmt::format("photon {} has a non-finite position", i);
+    }
+    float lo[3], hi[3];
     for (int a = 0; a < 3; ++a) {
-        rootCell.lo[a] = -std::numeric_limits<float>::infinity();
-        rootCell.hi[a] = std::numeric_limits<float>::infinity();
+        lo[a] = -std::numeric_limits<float>::infinity();
+        hi[a] = std::numeric_limits<float>::infinity();
     }
-    stack.push_back(rootCell);
-    while (!stack.empty()) {
-        Cell c = stack.back();
-        stack.pop_back();
-        const Photon& p = tree[c.node - 1];
-        if (p.discr() > 2) return fmt::format("photon {} has split axis 3", c.node - 1);
-        for (int a = 0; a < 3; ++a) {
-            if (!std::isfinite(p.pos[a]))
-                return fmt::format("photon {} has a non-finite position", c.node - 1);
-            if (!(p.pos[a] >= c.lo[a] && p.pos[a] <= c.hi[a]))
-                return fmt::format("photon {} lies on the wrong side of an ancestor's split",
-                                   c.node - 1);
-        }
-        const int axis = p.discr();
-        if (2 * c.node <= n) {
-            Cell left = c;
-            left.node = 2 * c.node;
-            left.hi[axis] = p.pos[axis];
-            stack.push_back(left);
-        }
-        if (2 * c.node + 1 <= n) {
-            Cell right = c;
-            right.node = 2 * c.node + 1;
-            right.lo[axis] = p.pos[axis];
-            stack.push_back(right);
-        }
-    }
+    if (const size_t bad = firstMisplaced(tree.data(), n, 1, lo, hi))
+        return fmt::format("photon {} lies on the wrong side of an ancestor's split", bad - 1);
     return {};
 }
 

@@ -59,7 +59,7 @@ Photon decodePhoton(const unsigned char* b) {
     b += 3 * kPortableFloatSize;
     for (int a = 0; a < 3; ++a) p.norm[a] = static_cast<int8_t>(b[a]);
     for (int a = 0; a < 4; ++a) p.flux[a] = b[3 + a];
-    p.primary = static_cast<uint32_t>(getInt(b + 7, 4));
+    p.primary = static_cast<uint32_t>(getInt32(b + 7));
     p.flags = b[11];
     return p;
 }

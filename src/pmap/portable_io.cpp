@@ -99,7 +99,7 @@ int64_t getInt(const unsigned char* in, int size) {
 }
 
 double getFlt(const unsigned char* in) {
-    const int64_t m = getInt(in, 4);
+    const int32_t m = getInt32(in);
     if (m == 0) return 0.0;
     const int e = static_cast<int8_t>(in[4]);
     const double d = (static_cast<double>(m) + (m > 0 ? 0.5 : -0.5)) / kMantissaScale;

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -31,6 +32,12 @@ void putStr(std::string& out, std::string_view s);
 
 // getint: `size` bytes MSB first, sign-extended from the top byte.
 int64_t getInt(const unsigned char* in, int size);
+// getint(in, 4), inline: photon records hold four of these (three in floats).
+inline int32_t getInt32(const unsigned char* in) {
+    uint32_t u;
+    std::memcpy(&u, in, 4);
+    return static_cast<int32_t>(__builtin_bswap32(u));
+}
 
 // getflt: ldexp((m + 0.5 - (m < 0)) / 0x7fffffff, e); m == 0 gives exactly 0 (the exponent
 // byte is still consumed). Reads kPortableFloatSize bytes.
