@@ -53,6 +53,49 @@ namespace {
 struct Nearer {
     bool operator()(const PhotonHit& a, const PhotonHit& b) const { return a.dist2 < b.dist2; }
 };
+// Moves the k nearest of a[0..n) (0 < k <= n) to a[0..k), the k-th nearest to a[k-1];
+// tmp has room for n. Quickselect whose partitions write every candidate to both ends of
+// tmp and advance one end: no branch on the coin-toss comparison (std::nth_element
+// mispredicted about half of them) and, unlike an in-place branch-free swap, no store
+// that the next step must wait for. Deterministic: the pivots depend only on the input.
+void selectNearest(PhotonHit* a, PhotonHit* tmp, size_t n, size_t k) {
+    size_t lo = 0, hi = n;
+    const size_t target = k - 1;
+    while (hi - lo > 16) {
+        const float x = a[lo].dist2, y = a[lo + (hi - lo) / 2].dist2, z = a[hi - 1].dist2;
+        const float pivot = std::max(std::min(x, y), std::min(std::max(x, y), z));
+        // Nearer than the pivot to the front of tmp[lo, hi), the others to the back; if
+        // nothing is nearer, split off the candidates at the pivot's distance instead, so
+        // every pass makes progress.
+        for (int pass = 0; pass < 2; ++pass) {
+            size_t front = lo, back = hi;
+            for (size_t i = lo; i < hi; ++i) {
+                const PhotonHit t = a[i];
+                const bool near = pass == 0 ? t.dist2 < pivot : t.dist2 <= pivot;
+                tmp[front] = t;
+                tmp[back - 1] = t;
+                front += near;
+                back -= !near;
+            }
+            std::copy(tmp + lo, tmp + hi, a + lo);
+            if (front > lo || pass == 1) {
+                if (front == hi) return;  // pass 1: every candidate is at the pivot's distance
+                if (target < front)
+                    hi = front;
+                else
+                    lo = front;
+                break;
+            }
+        }
+    }
+    for (size_t i = lo + 1; i < hi; ++i) {  // few left: insertion sort
+        const PhotonHit t = a[i];
+        size_t j = i;
+        for (; j > lo && t.dist2 < a[j - 1].dist2; --j) a[j] = a[j - 1];
+        a[j] = t;
+    }
+}
+
 // A guessed radius holds about this many times k photons on a uniformly lit surface
 // (squared radius x 1.6): enough margin for the leaf-box density estimate's error, while
 // the selection stays short. Queries near a surface's edge see about half the density
@@ -197,7 +240,7 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
             // Full (the radius was generous): keep the k nearest and shrink the radius to
             // the k-th, as a heap would have. Exact: every photon dropped, and every one
             // pruned from now on, is at least as far as k photons kept.
-            std::nth_element(buf, buf + (k - 1), buf + found, Nearer{});
+            selectNearest(buf, buf + cap, found, k);
             found = k;
             maxDist2 = buf[k - 1].dist2;
         }
@@ -237,7 +280,7 @@ size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float 
                                      size_t k, std::vector<PhotonHit>& scratch) const {
     if (k == 0 || nodes_.empty()) return 0;
     const size_t cap = 4 * k + 2 * kLeafSize;
-    if (scratch.size() < cap) scratch.resize(cap);
+    if (scratch.size() < 2 * cap) scratch.resize(2 * cap);  // candidates, then selection room
     // RADIANCE compat: the query point and normal are compared in single precision.
     Search s{{static_cast<float>(pos.x), static_cast<float>(pos.y), static_cast<float>(pos.z)},
              {0, 0, 0},
@@ -279,7 +322,7 @@ size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float 
     }
     size_t n = s.found;
     if (n >= k) {
-        std::nth_element(s.buf, s.buf + (k - 1), s.buf + n, Nearer{});
+        selectNearest(s.buf, s.buf + cap, n, k);
         n = k;
         std::swap(s.buf[0], s.buf[k - 1]);
     } else if (n > 1) {
