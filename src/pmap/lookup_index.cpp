@@ -5,10 +5,9 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <cstring>
 #include <cstdint>
+#include <cstring>
 #include <vector>
-
 
 namespace rp::pmap {
 
@@ -119,12 +118,11 @@ size_t PhotonIndex::memoryBytes() const {
 // dist2 is never larger than that of any photon in the cell: skipping cells with
 // distance >= maxDist2 never skips a photon the old search would accept.
 //
-// The walk is depth-first, nearer child first, as a loop with an explicit stack of far
-// children (the recursion of earlier versions, unrolled so that the query, the radius and
-// the heap count stay in registers). A far child's cell distance is computed when it is
-// pushed and compared with the radius when it is popped, i.e. after the near subtree, as
-// the recursion did: the same cells are visited in the same order, so the heap receives
-// the same offers.
+// The walk collects every photon within the radius s.maxDist2 into s.buf (see
+// findNearestSlots), depth-first, nearer child first, as a loop with an explicit stack of
+// far children so that the query, the radius and the count stay in registers. A far
+// child is pushed only if its cell is within the radius, and tested again when popped
+// (the radius shrinks when a full buffer is cut down to the k nearest).
 template <bool kFilter>
 void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
     struct Pending {
@@ -184,10 +182,8 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
         // Leaf. GCC/Clang vector extensions, 4 lanes: -O2's cheap vectoriser leaves these
         // loops scalar. Each lane computes exactly the scalar expression (no reassociation,
         // no FMA), in the same order as kdtree.cpp, so distances are bit-identical. The
-        // lanes that pass both tests against the radius at leaf entry form a bit mask; only
-        // those are offered, in slot order, each rechecked against the radius as it
-        // shrinks, so the heap sees exactly the offers of a plain loop over the leaf
-        // (without its unpredictable branch per photon).
+        // lanes that pass both tests against the radius form a bit mask, and those photons
+        // are appended in slot order (no unpredictable branch per photon).
         const uint32_t b = node->link, count = node->axisInfo >> 2;
         uint32_t c4 = (count + 3) & ~3u;
         const unsigned char* block = leaves + kLeafBytesPerSlot * size_t{b};
@@ -215,8 +211,8 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
                          dz = qz - load4(px + 2 * c4 + i);
                 const V4 r = dx * dx + dy * dy + dz * dz;
                 std::memcpy(d2 + i, &r, sizeof r);
-                const V4 dot = n0 * load4(pn + i) + n1 * load4(pn + c4 + i) +
-                               n2 * load4(pn + 2 * c4 + i);
+                const V4 dot =
+                    n0 * load4(pn + i) + n1 * load4(pn + c4 + i) + n2 * load4(pn + 2 * c4 + i);
                 const V4i m = (r < limit) & (dot > tol);
                 mask |= laneMask(m) << i;
             }
@@ -276,8 +272,8 @@ float PhotonIndex::guessRadius2(const float q[3], size_t k) const {
     return node->rightMin * static_cast<float>(k) * (kGuessMargin / static_cast<float>(kPi));
 }
 
-size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float maxDist2,
-                                     size_t k, std::vector<PhotonHit>& scratch) const {
+size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float maxDist2, size_t k,
+                                     std::vector<PhotonHit>& scratch) const {
     if (k == 0 || nodes_.empty()) return 0;
     const size_t cap = 4 * k + 2 * kLeafSize;
     if (scratch.size() < 2 * cap) scratch.resize(2 * cap);  // candidates, then selection room
@@ -295,8 +291,7 @@ size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float 
         rootOff[a] =
             q < boundsLo_[a] ? boundsLo_[a] - q : (q > boundsHi_[a] ? q - boundsHi_[a] : 0);
     }
-    if (!(rootOff[0] * rootOff[0] + rootOff[1] * rootOff[1] + rootOff[2] * rootOff[2] <
-          maxDist2))
+    if (!(rootOff[0] * rootOff[0] + rootOff[1] * rootOff[1] + rootOff[2] * rootOff[2] < maxDist2))
         return 0;
     if (normal) {
         s.n[0] = static_cast<float>(normal->x);

@@ -1,7 +1,8 @@
 // A cache-friendly search index over a photon map's photons for k-nearest lookups at
-// render time: a kd-tree over leaf buckets with positions and normals in contiguous
-// arrays. The map itself (kdtree.h, RADIANCE's heap order = file order) is not touched;
-// the index only adds arrays next to it. Density estimates live in density.h.
+// render time: a radix tree over Morton-ordered leaf buckets, with each leaf's positions
+// and normals in one contiguous block. The map itself (kdtree.h, RADIANCE's heap order =
+// file order) is not touched; the index only adds arrays next to it. Density estimates
+// live in density.h.
 #pragma once
 
 #include <array>
@@ -29,15 +30,20 @@ namespace rp::pmap {
 // leaf (at most kLeafSize) lie next to each other, nodes are in depth-first order (left
 // child follows its parent), and whole leaves are tested with vectorisable loops. Searches
 // return exactly the photons (and float distances) that findNearestPhotons returns on the
-// map's tree, except for ties.
+// map's tree, except for ties at the k-th distance.
+//
+// How a search runs (lookup_index.cpp): the leaf the query falls in gives a photon density
+// and so a radius expected to hold about 1.6 k photons; every photon within it is
+// collected (no heap: candidates are appended), larger radii follow if fewer than k were
+// found, and the k nearest are selected at the end. On the Cornell box's final gather this
+// needs about 10 leaves and 1.1 passes per k = 51 lookup.
 //
 // Memory: per photon 12 bytes of position, 3 bytes of normal, 4 bytes of RGBE flux and a
-// 4-byte index into the map's photon array (results name photons in file order, as the old
-// search did), slots padded to multiples of 4 per leaf, plus one 16-byte node per leaf of
-// kLeafSize/2 .. kLeafSize photons and as many inner nodes: about 24 bytes/photon with
-// kLeafSize 32 (memoryBytes(); 16 measured no faster). The flux copy lets density
-// estimates sum the photons found from leaf-ordered memory instead of one cache miss per
-// photon in the map (findNearestSlots). The map's own 24 bytes/photon are unchanged. Reordering the map's
+// 4-byte index into the map's photon array (results name photons in file order), slots
+// padded to multiples of 4 per leaf, plus 16-byte nodes: about 25 bytes/photon with
+// kLeafSize 32 (memoryBytes()). The flux copy lets density estimates sum the photons found
+// from leaf-ordered memory instead of one cache miss per photon in the map
+// (findNearestSlots). The map's own 24 bytes/photon are unchanged. Reordering the map's
 // photons into leaf order would save the index and copies but change what photons()
 // returns and how files are written (a permutation on save); not done.
 class PhotonIndex {
@@ -55,7 +61,8 @@ public:
     // distance < maxDist2 and passing the normal filter (kNormalTolerance; none when
     // `normal` is null), the radius shrinking to the furthest kept once `out` is full.
     // Returns the number found; out[0..n) is a max-heap on dist2 (out[0] furthest), with
-    // indices into the photon span given to the constructor. Thread-safe, no allocation.
+    // indices into the photon span given to the constructor. Thread-safe; allocates only a
+    // per-thread scratch buffer, once, for the largest k used on that thread.
     size_t findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,
                        std::span<PhotonHit> out) const;
 

@@ -188,8 +188,7 @@ void PhotonIndex::build(std::span<const Photon> photons, bool parallel) {
             const uint64_t mask = uint64_t{1} << bit;
             const uint64_t* lo = codes.data() + begin;
             nLeft = static_cast<uint32_t>(
-                std::partition_point(lo, lo + count, [&](uint64_t c) { return !(c & mask); }) -
-                lo);
+                std::partition_point(lo, lo + count, [&](uint64_t c) { return !(c & mask); }) - lo);
             axis = axisOfBit(bit);
         }
         nodes_.push_back({0, 0, static_cast<uint32_t>(axis), 0});
@@ -249,10 +248,9 @@ void PhotonIndex::build(std::span<const Photon> photons, bool parallel) {
             std::sort(ext, ext + 3);
             nodes_[id].rightMin = count > 1 ? ext[2] * ext[1] / static_cast<float>(count) : 0.f;
             if (common) {
-                const unsigned char b[4] = {static_cast<unsigned char>(p0.norm[0]),
-                                            static_cast<unsigned char>(p0.norm[1]),
-                                            static_cast<unsigned char>(p0.norm[2]),
-                                            kCommonNormalFlag};
+                const unsigned char b[4] = {
+                    static_cast<unsigned char>(p0.norm[0]), static_cast<unsigned char>(p0.norm[1]),
+                    static_cast<unsigned char>(p0.norm[2]), kCommonNormalFlag};
                 std::memcpy(&nodes_[id].leftMax, b, 4);
             }
             unsigned char* block = leaves_.data() + kLeafBytesPerSlot * size_t{first};

@@ -150,10 +150,9 @@ TEST(PhotonLookupIndex, KNearestEqualsBruteForceAndKdTree) {
                         if (trial % 2) q = map.photons()[rng() % n].position();
                         const Vec3 nrm = normalize(Vec3(u(rng), u(rng), u(rng)));
                         const Vec3* np = trial % 4 < 2 ? &nrm : nullptr;
-                        const std::string what = "layout=" + std::to_string(int(layout)) +
-                                                 " n=" + std::to_string(n) +
-                                                 " k=" + std::to_string(k) +
-                                                 " trial=" + std::to_string(trial);
+                        const std::string what =
+                            "layout=" + std::to_string(int(layout)) + " n=" + std::to_string(n) +
+                            " k=" + std::to_string(k) + " trial=" + std::to_string(trial);
                         const size_t fa = index.findNearest(q, np, maxDist2, a);
                         const size_t fb = findNearestPhotons(map.photons(), q, np, maxDist2, b);
                         const auto want = bruteForce(map.photons(), q, np, maxDist2, k);
@@ -305,8 +304,8 @@ TEST(PhotonLookupIndex, PlanarSetsEqualBruteForce) {
             c[(flatAxis + 2) % 3] = t;
             double nn[3] = {0, 0, 0};
             nn[flatAxis] = 1;
-            photons.push_back(makePhoton({c[0], c[1], c[2]}, {nn[0], nn[1], nn[2]},
-                                         {1e-4, 1e-4, 1e-4}));
+            photons.push_back(
+                makePhoton({c[0], c[1], c[2]}, {nn[0], nn[1], nn[2]}, {1e-4, 1e-4, 1e-4}));
         }
         const PhotonMap map(PhotonMapType::Global, std::move(photons));
         const auto ph = map.photons();
@@ -320,22 +319,35 @@ TEST(PhotonLookupIndex, PlanarSetsEqualBruteForce) {
                     const Photon& r = ph[rng.below(n)];
                     Vec3 q;
                     switch (trial % 6) {
-                        case 0: q = p.position(); break;
-                        case 1: q = Vec3(0.5, 0.5, 0.5); break;
-                        case 2: q = Vec3(rng.uniform(), rng.uniform(), rng.uniform()); break;
-                        case 3: q = Vec3(p.pos[0], r.pos[1], p.pos[2]); break;
-                        case 4: q = Vec3(0.5, p.pos[1], 0.5); break;
-                        default: q = Vec3(p.pos[0], 0.5, r.pos[2]); break;
+                        case 0:
+                            q = p.position();
+                            break;
+                        case 1:
+                            q = Vec3(0.5, 0.5, 0.5);
+                            break;
+                        case 2:
+                            q = Vec3(rng.uniform(), rng.uniform(), rng.uniform());
+                            break;
+                        case 3:
+                            q = Vec3(p.pos[0], r.pos[1], p.pos[2]);
+                            break;
+                        case 4:
+                            q = Vec3(0.5, p.pos[1], 0.5);
+                            break;
+                        default:
+                            q = Vec3(p.pos[0], 0.5, r.pos[2]);
+                            break;
                     }
                     if (trial % 12 < 6) {  // on the plane, as surface lookups are
                         double c[3] = {q.x, q.y, q.z};
                         c[flatAxis] = ph[0].pos[flatAxis];
                         q = Vec3(c[0], c[1], c[2]);
                     }
-                    const std::string what =
-                        "variant=" + std::to_string(variant) + " k=" + std::to_string(k) +
-                        " trial=" + std::to_string(trial) + " maxDist2=" +
-                        std::to_string(maxDist2) + " parallel=" + std::to_string(parallel);
+                    const std::string what = "variant=" + std::to_string(variant) +
+                                             " k=" + std::to_string(k) +
+                                             " trial=" + std::to_string(trial) +
+                                             " maxDist2=" + std::to_string(maxDist2) +
+                                             " parallel=" + std::to_string(parallel);
                     const size_t fa = index.findNearest(q, nullptr, maxDist2, a);
                     const size_t fb = findNearestPhotons(ph, q, nullptr, maxDist2, b);
                     const auto want = bruteForce(ph, q, nullptr, maxDist2, k);
@@ -343,6 +355,36 @@ TEST(PhotonLookupIndex, PlanarSetsEqualBruteForce) {
                     expectSameUpToTies(sortedHits({b.data(), fb}), want, what + " kdtree");
                 }
             }
+        }
+    }
+}
+
+// Photons stacked on a few identical positions (as in a caustic's focus, where Morton codes
+// coincide and the index splits by count) and a dense cluster a million times smaller than
+// the map: equal to brute force up to ties, for k within one stack, across stacks and
+// across everything; the selection handles runs of equal distances.
+TEST(PhotonLookupIndex, StackedAndTinyClustersEqualBruteForce) {
+    std::vector<Photon> photons;
+    Rng rng(77, RngDomain::Test, 0);
+    const Vec3 stacks[3] = {Vec3(0.1, 0.2, 0), Vec3(0.1, 0.2000001, 0), Vec3(0.9, 0.9, 0)};
+    for (int i = 0; i < 3000; ++i)
+        photons.push_back(makePhoton(stacks[i % 3], {0, 0, 1}, {1, 1, 1}));
+    for (int i = 0; i < 3000; ++i)  // a cluster 1e-6 wide, and a sparse background
+        photons.push_back(makePhoton(
+            Vec3(0.5 + 1e-6 * rng.uniform(), 0.5 + 1e-6 * rng.uniform(), 0), {0, 0, 1}, {1, 1, 1}));
+    for (int i = 0; i < 2000; ++i)
+        photons.push_back(makePhoton(Vec3(rng.uniform(), rng.uniform(), 0), {0, 0, 1}, {1, 1, 1}));
+    const PhotonMap map(PhotonMapType::Global, photons);
+    const PhotonIndex index(map.photons(), false);
+    const Vec3 up(0, 0, 1);
+    for (const Vec3& q :
+         {stacks[0], stacks[2], Vec3(0.5, 0.5, 0), Vec3(0.5000005, 0.5, 0), Vec3(0.3, 0.3, 0)}) {
+        for (size_t k : {1u, 51u, 999u, 1001u, 2500u, 9000u}) {
+            std::vector<PhotonHit> a(k);
+            const size_t fa = index.findNearest(q, &up, 10.f, a);
+            const auto want = bruteForce(map.photons(), q, &up, 10.f, k);
+            expectSameUpToTies(sortedHits({a.data(), fa}), want,
+                               "k=" + std::to_string(k) + " q=" + std::to_string(q.x));
         }
     }
 }
