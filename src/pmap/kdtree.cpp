@@ -184,17 +184,21 @@ size_t firstMisplaced(const Photon* tree, size_t n, size_t node, float lo[3], fl
 }
 }  // namespace
 
-std::string checkKdTree(std::span<const Photon> tree) {
-    const size_t n = tree.size();
-    if (n == 0) return {};
-    // Per photon first (a flat loop): split axis and finite position, so that the walk
-    // below only compares ordered floats.
-    for (size_t i = 0; i < n; ++i) {
+std::string checkPhotonRecords(std::span<const Photon> tree) {
+    for (size_t i = 0; i < tree.size(); ++i) {
         const Photon& p = tree[i];
         if (p.discr() > 2) return fmt::format("photon {} has split axis 3", i);
         if (!(std::isfinite(p.pos[0]) && std::isfinite(p.pos[1]) && std::isfinite(p.pos[2])))
             return fmt::format("photon {} has a non-finite position", i);
     }
+    return {};
+}
+
+std::string checkKdTree(std::span<const Photon> tree) {
+    const size_t n = tree.size();
+    if (n == 0) return {};
+    // Per photon first (a flat loop), so that the walk below only compares ordered floats.
+    if (std::string problem = checkPhotonRecords(tree); !problem.empty()) return problem;
     float lo[3], hi[3];
     for (int a = 0; a < 3; ++a) {
         lo[a] = -std::numeric_limits<float>::infinity();

@@ -43,6 +43,8 @@ std::vector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel = tru
 // every photon in the left subtree of node i has pos[axis] <= node i's, every photon in the
 // right subtree >=. Returns "" if valid, else a short description of the first violation.
 std::string checkKdTree(std::span<const Photon> tree);
+// The per-photon part of checkKdTree (split axis and finite position), without the order.
+std::string checkPhotonRecords(std::span<const Photon> tree);
 
 // Finds up to out.size() nearest photons to `pos` with squared distance < maxDist2,
 // skipping photons facing away from `normal` (no filter when normal is null, as for volume

@@ -76,10 +76,16 @@ public:
 
     // Reads a map from `in`, naming `what` (the file name) in errors. Validates header
     // FORMAT and VERSION, the binary version, that the photon count matches the number of
-    // bytes that follow, split axes, kd-tree order and primary indices. Every problem is an
-    // InputError; no allocation is made before the size has been checked.
-    static PhotonMap read(std::istream& in, const std::string& what);
-    static PhotonMap load(const std::string& path);
+    // bytes that follow, split axes, finite positions, kd-tree order (unless
+    // TreeOrder::Unchecked) and primary indices. Every problem is an InputError; no
+    // allocation is made before the size has been checked.
+    // Unchecked is for callers that search the photons only through a PhotonIndex, which
+    // does not depend on the file's order (the renderer): the order check is a walk over
+    // every photon, a visible part of loading a map with one thread.
+    enum class TreeOrder { Checked, Unchecked };
+    static PhotonMap read(std::istream& in, const std::string& what,
+                          TreeOrder order = TreeOrder::Checked);
+    static PhotonMap load(const std::string& path, TreeOrder order = TreeOrder::Checked);
 
 private:
     PhotonMapType type_ = PhotonMapType::Global;

@@ -33,7 +33,7 @@ constexpr size_t kPrimaryRecordSize = 2;
 // Bytes after the version string up to and including numPrimary.
 constexpr size_t kFixedBinarySize = 8 + (3 + 6 + 3 + 1) * kPortableFloatSize + 4;  // 77
 constexpr size_t kMaxVersionLength = 32;
-constexpr size_t kChunkPhotons = size_t{1} << 16;  // photons encoded per chunk
+constexpr size_t kChunkPhotons = size_t{1} << 16;      // photons encoded per chunk
 constexpr size_t kReadChunkPhotons = size_t{1} << 18;  // photons read per chunk (7 MB)
 
 std::string cFormat(const char* format, auto... args) {
@@ -215,7 +215,7 @@ void PhotonMap::save(const std::string& path, const std::string& commandLine,
     guard.armed = false;
 }
 
-PhotonMap PhotonMap::read(std::istream& in, const std::string& what) {
+PhotonMap PhotonMap::read(std::istream& in, const std::string& what, TreeOrder order) {
     const SourceLoc loc{what, 0};
     const Header h = readHeader(in, what);
     PhotonMap map;
@@ -311,7 +311,9 @@ PhotonMap PhotonMap::read(std::istream& in, const std::string& what) {
                           });
     }
 
-    if (std::string problem = checkKdTree(map.photons_); !problem.empty())
+    const std::string problem =
+        order == TreeOrder::Checked ? checkKdTree(map.photons_) : checkPhotonRecords(map.photons_);
+    if (!problem.empty())
         throw InputError(loc, "photons are not a valid kd-tree (" + problem + "); corrupt file?");
     if (numPrimary)
         for (const Photon& p : map.photons_)
@@ -321,12 +323,12 @@ PhotonMap PhotonMap::read(std::istream& in, const std::string& what) {
     return map;
 }
 
-PhotonMap PhotonMap::load(const std::string& path) {
+PhotonMap PhotonMap::load(const std::string& path, TreeOrder order) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw InputError(SourceLoc{path, 0},
                          fmt::format("can't open photon map file: {}", std::strerror(errno)));
-    return read(in, path);
+    return read(in, path, order);
 }
 
 }  // namespace rp::pmap

@@ -64,7 +64,11 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
     std::vector<std::exception_ptr> failed(uses.size());
     tbb::parallel_for(size_t(0), uses.size(), [&](size_t i) {
         try {
-            loaded[i] = pmap::PhotonMap::load(uses[i].file);
+            // Searched through PhotonIndex only (below), so the file's kd-tree order
+            // need not be verified.
+            loaded[i] = pmap::PhotonMap::load(
+                uses[i].file, kUseSearchIndex ? pmap::PhotonMap::TreeOrder::Unchecked
+                                              : pmap::PhotonMap::TreeOrder::Checked);
         } catch (...) {
             failed[i] = std::current_exception();
         }
@@ -81,8 +85,9 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         T type = m.map.type();
         const char* name = pmap::photonMapTypeName(type);
         if (type == T::Contrib)
-            throw InputError(use.file + ": contribution photon maps are used by rcontrib, "
-                                        "not by the renderer");
+            throw InputError(use.file +
+                             ": contribution photon maps are used by rcontrib, "
+                             "not by the renderer");
         if (type == T::Volume)
             throw notSupportedYet(SourceLoc{use.file, 0}, "volume photon maps in the renderer");
         int* slot = type == T::Caustic ? &caustic_ : type == T::Direct ? &direct_ : &global_;
@@ -92,8 +97,8 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         if (m.use.bandwidth <= 0) {
             m.use.bandwidth = type == T::PreComp ? 1 : kDefaultBandwidth;
             if (type != T::PreComp)
-                warn("no bandwidth given for " + std::string(name) + " photon map " +
-                     use.file + ", using " + std::to_string(kDefaultBandwidth));
+                warn("no bandwidth given for " + std::string(name) + " photon map " + use.file +
+                     ", using " + std::to_string(kDefaultBandwidth));
         }
         if (m.use.bandwidth2 > 0 && m.use.bandwidth2 <= m.use.bandwidth)
             throw InputError(use.file + ": bias compensation needs bwidth2 > bwidth1 (" +
@@ -134,8 +139,7 @@ std::unique_ptr<PhotonLighting::Lookups> PhotonLighting::makeLookups() const {
     return std::make_unique<Lookups>(*this);
 }
 
-Color PhotonLighting::density(Lookups& l, int index, const Vec3& pos,
-                              const Vec3& normal) const {
+Color PhotonLighting::density(Lookups& l, int index, const Vec3& pos, const Vec3& normal) const {
     if (index < 0) return {};
     pmap::PhotonLookup& lookup = l.lookups[size_t(index)];
     const Map& m = maps_[size_t(index)];
