@@ -19,7 +19,7 @@ void adviseHugePages(void* p, size_t bytes);
 
 // An allocator for the large arrays of photon maps and their indices: resize() leaves
 // elements uninitialised (each is written once by a parallel loop, so a zero fill would only
-// add a serial pass over the memory), and blocks of 4 MiB or more are 2 MiB-aligned and
+// add a serial pass over the memory), and blocks of 2 MiB or more are 2 MiB-aligned and
 // advised for huge pages (adviseHugePages).
 template <class T>
 struct BulkAllocator {
@@ -27,7 +27,7 @@ struct BulkAllocator {
     BulkAllocator() = default;
     template <class U>
     BulkAllocator(const BulkAllocator<U>&) {}
-    static constexpr size_t kHugeThreshold = size_t{4} << 20;
+    static constexpr size_t kHugeThreshold = size_t{2} << 20;
     static constexpr std::align_val_t kHugeAlign{size_t{2} << 20};
     T* allocate(size_t n) {
         const size_t bytes = n * sizeof(T);
