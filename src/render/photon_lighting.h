@@ -51,6 +51,10 @@ public:
         ~Lookups();
         std::vector<pmap::PhotonLookup> lookups;  // one per map, in maps_ order
         std::vector<pmap::BiasCompStats> biasStats;  // one per map
+        // Called at the start of every primary ray (PhotonLookup::restartAdaptiveRadius).
+        void startRay() {
+            for (pmap::PhotonLookup& l : lookups) l.restartAdaptiveRadius();
+        }
 
     private:
         const PhotonLighting& owner_;

@@ -32,4 +32,13 @@ awk -v m="$m" 'BEGIN { exit !(m <= 4) }' || bad "classic MARE $m % > 4 %"
 m=$(mare pmap.txt "$VAL/ref_pmap_global_ab1.txt")
 echo "photon map -ab 1: MARE $m %"
 awk -v m="$m" 'BEGIN { exit !(m <= 4) }' || bad "photon-map MARE $m % > 4 %"
+
+# Without the irradiance cache (-aa 0) a photon-map result depends only on its ray: the
+# lookups' adaptive search radius restarts with every primary ray, so -n 1 and -n 2 agree
+# to the bit (-u-). Before, each thread carried its radius from ray to ray.
+for n in 1 2; do
+    "$BIN/rtrace" -h -I -ov -u- -ab 1 -ad 256 -aa 0 -ap g.pm 50 -n $n "$VAL/scene.rad" \
+        < "$VAL/points.txt" > nocache$n.txt 2> /dev/null || bad "rtrace -aa 0 -n $n"
+done
+cmp -s nocache1.txt nocache2.txt || bad "photon-map results differ between -n 1 and -n 2"
 exit $fail
