@@ -389,5 +389,50 @@ TEST(PhotonLookupIndex, StackedAndTinyClustersEqualBruteForce) {
     }
 }
 
+// Sets where the radius guessed from a leaf's box is far off: photons on a line (the box
+// has no area, so the guess starts tiny and grows pass by pass), on two perpendicular
+// faces meeting at an edge (boxes across the edge overstate the area), and a dense patch
+// beside a sparse one. Equal to brute force up to ties, with and without the normal filter
+// and a radius limit.
+TEST(PhotonLookupIndex, GuessUnfriendlySetsEqualBruteForce) {
+    Rng rng(91, RngDomain::Test, 0);
+    for (int variant = 0; variant < 3; ++variant) {
+        std::vector<Photon> photons;
+        for (int i = 0; i < 12000; ++i) {
+            const double s = rng.uniform(), t = rng.uniform();
+            if (variant == 0) {
+                photons.push_back(makePhoton(Vec3(s, 0.3, 0.7), {0, 0, 1}, {1, 1, 1}));
+            } else if (variant == 1) {
+                const bool floor = i % 2 == 0;
+                photons.push_back(floor ? makePhoton(Vec3(s, t, 0), {0, 0, 1}, {1, 1, 1})
+                                        : makePhoton(Vec3(s, 0, t), {0, 1, 0}, {1, 1, 1}));
+            } else {
+                const bool dense = i % 4 != 0;
+                photons.push_back(
+                    makePhoton(dense ? Vec3(0.5 + 0.01 * s, 0.5 + 0.01 * t, 0) : Vec3(s, t, 0),
+                               {0, 0, 1}, {1, 1, 1}));
+            }
+        }
+        const PhotonMap map(PhotonMapType::Global, photons);
+        const PhotonIndex index(map.photons(), false);
+        const Vec3 up(0, 0, 1);
+        for (int trial = 0; trial < 40; ++trial) {
+            Vec3 q = map.photons()[rng.below(map.size())].position();
+            if (trial % 3 == 0) q = q + Vec3(0.01 * rng.uniform(), 0.01 * rng.uniform(), 0.002);
+            for (size_t k : {1u, 51u, 501u}) {
+                for (float maxDist2 : {std::numeric_limits<float>::infinity(), 0.001f}) {
+                    const Vec3* np = trial % 2 ? &up : nullptr;
+                    std::vector<PhotonHit> a(k);
+                    const size_t fa = index.findNearest(q, np, maxDist2, a);
+                    const auto want = bruteForce(map.photons(), q, np, maxDist2, k);
+                    expectSameUpToTies(sortedHits({a.data(), fa}), want,
+                                       "variant=" + std::to_string(variant) + " trial=" +
+                                           std::to_string(trial) + " k=" + std::to_string(k));
+                }
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace rp::pmap
