@@ -1,6 +1,7 @@
-// The bounded max-heap of nearest-photon results shared by the kd-tree search (kdtree.cpp)
-// and the bucket index (lookup_index.cpp), so both keep exactly the same photons.
-// RADIANCE compat: pmapkdt.c keeps a queue of maxGather+1 entries the same way.
+// The bounded max-heap of nearest-photon results of the kd-tree walk (kdtree.cpp).
+// RADIANCE compat: pmapkdt.c keeps a queue of maxGather+1 entries the same way. (The
+// bucket index, lookup_index.cpp, collects candidates and selects instead; it keeps the
+// same photons up to ties at the k-th distance.)
 #pragma once
 
 #include <cstddef>
