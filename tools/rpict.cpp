@@ -9,8 +9,6 @@
 #include <memory>
 #include <vector>
 
-#include <tbb/global_control.h>
-
 #include "calc/search_path.h"
 #include "gen/builtin_commands.h"
 #include "geometry/scene_geometry.h"
@@ -70,11 +68,7 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
     // Check the view before the (slow) scene load, as RADIANCE's setview does.
     rp::ViewRays checkView(o.view);
 
-    // -n bounds every phase, map loading and indexing included, not only the rendering:
-    // -n 1 uses one core, as RADIANCE's single process does (and as batch scripts that
-    // run one rtrace per core expect).
-    const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
-                                          size_t(std::max(1, o.render.threads)));
+    const auto threads = threadLimit(o.render);  // for the whole run, loading included
     rp::Scene scene = rp::loadScene(cmd.sceneFiles, rp::gen::builtinLoadOptions());
     rp::SceneGeometry geometry(scene);
     Renderer renderer(scene, geometry, o.render, rp::calc::defaultSearchPath(rp::projectLibDir()));

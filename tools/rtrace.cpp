@@ -1,14 +1,11 @@
 // rtrace: trace rays from standard input through a scene (RADIANCE rtrace.1). Options in
 // src/render/rtrace_options.h, input/output in rtrace_io.h, the loop in rtrace_run.h.
-#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <vector>
-
-#include <tbb/global_control.h>
 
 #include "calc/search_path.h"
 #include "gen/builtin_commands.h"
@@ -52,11 +49,7 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     if (o.render.mist.any()) throw rp::notSupportedYet({}, "global participating medium (-me/-ma/-mg/-ms)");
     OutputSpec spec = parseOutputSpec(o.outputSpec, o.outputFormat);
 
-    // -n bounds every phase, map loading and indexing included, not only the rendering:
-    // -n 1 uses one core, as RADIANCE's single process does (and as batch scripts that
-    // run one rtrace per core expect).
-    const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
-                                          size_t(std::max(1, o.render.threads)));
+    const auto threads = threadLimit(o.render);  // for the whole run, loading included
     rp::Scene scene = rp::loadScene({o.sceneFile}, rp::gen::builtinLoadOptions());
     rp::SceneGeometry geometry(scene);
     Renderer renderer(scene, geometry, o.render, rp::calc::defaultSearchPath(rp::projectLibDir()));

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/accel/embree_accel.h"
+#include "util/fast_minmax.h"
 
 namespace rp {
 
@@ -25,14 +26,6 @@ bool SceneGeometry::occluded(const Vec3& origin, const Vec3& dir, double tmax,
 }
 
 namespace {
-
-// std::fmax without the libm call it compiles to at -O2 (a visible cost per photon/ray);
-// the same result for every input but +-0 ties, which do not arise here.
-inline double fastMax(double a, double b) { return a > b ? a : (b != b ? a : b); }
-// maxAbs (geometry/ray.h) on fastMax: fabs gives no -0, so the same bits.
-inline double fastMaxAbs(const Vec3& p) {
-    return fastMax(std::fabs(p.x), fastMax(std::fabs(p.y), std::fabs(p.z)));
-}
 
 // Embree's float edge test can accept a hit up to a few float ulps outside the
 // triangle. Near a corner that puts the hit point (and then a spawned origin) on the
@@ -97,7 +90,7 @@ Hit SceneGeometry::completeHit(const Ray& ray, const AccelHit& a, bool surfaceCo
     Hit h;
     h.t = a.t;
     h.point = ray.origin + ray.dir * a.t;
-    double scale = fastMaxAbs(h.point);
+    double scale = maxAbs(h.point);
     SurfacePoint sp;
     uint32_t index = a.index;
     switch (a.kind) {

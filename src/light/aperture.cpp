@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geometry/surface.h"
+#include "util/fast_minmax.h"
 
 namespace rp::light {
 
@@ -63,10 +64,6 @@ double projectedSolidAngle(const Vec3& a, double cosHalf, const Vec3& n) {
 void coneFrame(const Vec3& w, Vec3& u, Vec3& v) { orthonormalFrame(w, u, v); }
 
 namespace {
-
-// std::fmax without the libm call it compiles to at -O2 (a visible cost per photon/ray);
-// the same result for every input but +-0 ties, which do not arise here.
-inline double fastMax(double a, double b) { return a > b ? a : (b != b ? a : b); }
 
 Vec3 fromCone(const Vec3& axis, double cosTheta, double phi) {
     Vec3 u, v;

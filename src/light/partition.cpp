@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "util/fast_minmax.h"
 #include "util/warnings.h"
 
 namespace rp::light {
@@ -185,14 +186,6 @@ std::vector<Partition> partitionCube(double ds) {
 
 namespace {
 
-// std::fmax without the libm call it compiles to at -O2 (a visible cost per photon/ray);
-// the same result for every input but +-0 ties, which do not arise here.
-inline double fastMax(double a, double b) { return a > b ? a : (b != b ? a : b); }
-// maxAbs (geometry/ray.h) on fastMax: fabs gives no -0, so the same bits.
-inline double fastMaxAbs(const Vec3& p) {
-    return fastMax(std::fabs(p.x), fastMax(std::fabs(p.y), std::fabs(p.z)));
-}
-
 // Point at parameters (su, sv) in [0,1]^2, mapped so that uniform (su, sv) is uniform
 // in area.
 EmissionPoint pointAt(const ShapeSet& s, const SceneCube& cube, const Partition& q, double su,
@@ -205,7 +198,7 @@ EmissionPoint pointAt(const ShapeSet& s, const SceneCube& cube, const Partition&
         e.point = q.a * (1 - r) + q.b * (r * (1 - sv)) + q.c * (r * sv);
         const PolygonShape& poly = s.polygons[size_t(q.shapeIndex)];
         e.normal = poly.normal;
-        e.offset = kFloatOffsetRel * fastMax(fastMaxAbs(e.point), poly.scale);
+        e.offset = kFloatOffsetRel * fastMax(maxAbs(e.point), poly.scale);
         break;
     }
     case PartitionShape::SphereCell: {
@@ -215,7 +208,7 @@ EmissionPoint pointAt(const ShapeSet& s, const SceneCube& cube, const Partition&
         Vec3 d{std::cos(phi) * sinT, std::sin(phi) * sinT, cosT};
         e.point = sp.center + d * sp.radius;
         e.normal = sp.inward ? -d : d;
-        e.offset = kDoubleOffsetRel * fastMax(fastMaxAbs(e.point), sp.radius);
+        e.offset = kDoubleOffsetRel * fastMax(maxAbs(e.point), sp.radius);
         break;
     }
     case PartitionShape::RingCell: {

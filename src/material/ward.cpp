@@ -167,20 +167,31 @@ bool wardDirection(const WardHit& h, bool pure, const SurfacePoint& sp, ScatterK
     }
 }
 
-// pmapmat.c normalPhotonScatter/anisoPhotonScatter.
-PhotonScatter scatterWard(const WardHit& h, bool pure, const SurfacePoint& sp, Rng& rng) {
+// pmapmat.c normalPhotonScatter/anisoPhotonScatter with the components c (diffuse
+// reflection, diffuse transmission, specular reflection, specular transmission): stored
+// where diffuse; Russian roulette picks one, and `direction(kind, dir)` samples it (false
+// where RADIANCE absorbs the photon).
+template <class Direction>
+PhotonScatter rouletteScatter(const Component (&c)[4], Rng& rng, Direction&& direction) {
     PhotonScatter s;
-    Component c[4] = {{ScatterKind::DiffuseReflection, h.mcolor * h.rdiff},
-                      {ScatterKind::DiffuseTransmission, h.mcolor * h.tdiff},
-                      {ScatterKind::SpecularReflection, h.scolor * (h.rspec > kFtiny ? 1.0 : 0.0)},
-                      {ScatterKind::SpecularTransmission, h.mcolor * h.tspec}};
     s.store = c[0].coef.average() > kFtiny || c[1].coef.average() > kFtiny;
     Color factor;
     int i = roulette(c, 4, rng, factor);
-    if (i < 0 || !wardDirection(h, pure, sp, c[i].kind, rng, s.dir)) return s;
+    if (i < 0 || !direction(c[i].kind, s.dir)) return s;
     s.kind = c[i].kind;
     s.fluxFactor = factor;
     return s;
+}
+
+PhotonScatter scatterWard(const WardHit& h, bool pure, const SurfacePoint& sp, Rng& rng) {
+    const Component c[4] = {
+        {ScatterKind::DiffuseReflection, h.mcolor * h.rdiff},
+        {ScatterKind::DiffuseTransmission, h.mcolor * h.tdiff},
+        {ScatterKind::SpecularReflection, h.scolor * (h.rspec > kFtiny ? 1.0 : 0.0)},
+        {ScatterKind::SpecularTransmission, h.mcolor * h.tspec}};
+    return rouletteScatter(c, rng, [&](ScatterKind kind, Vec3& dir) {
+        return wardDirection(h, pure, sp, kind, rng, dir);
+    });
 }
 
 // scatterWard for plastic/metal/trans without a pattern and without the roughness-0
@@ -188,23 +199,18 @@ PhotonScatter scatterWard(const WardHit& h, bool pure, const SurfacePoint& sp, R
 // (same arithmetic, same bits). Why: setting up the full WardHit per photon hit was a
 // visible part of mkpmap's time; only the non-diffuse choices need it, and they are rare.
 PhotonScatter scatterNormalFixed(const NormalParams& m, const SurfacePoint& sp, Rng& rng) {
-    PhotonScatter s;
-    Component c[4] = {
+    const Component c[4] = {
         {ScatterKind::DiffuseReflection, m.diffuseReflectance},
         {ScatterKind::DiffuseTransmission, m.diffuseTransmittance},
         {ScatterKind::SpecularReflection, m.specularColor * (m.rspec > kFtiny ? 1.0 : 0.0)},
         {ScatterKind::SpecularTransmission, m.specularTransmittance}};
-    s.store = c[0].coef.average() > kFtiny || c[1].coef.average() > kFtiny;
-    Color factor;
-    int i = roulette(c, 4, rng, factor);
-    if (i < 0) return s;
-    if (c[i].kind == ScatterKind::DiffuseReflection)
-        s.dir = sampleCosine(sp.normal, rng);
-    else if (!wardDirection(setupNormal(m, sp), m.pureSpecular, sp, c[i].kind, rng, s.dir))
-        return s;
-    s.kind = c[i].kind;
-    s.fluxFactor = factor;
-    return s;
+    return rouletteScatter(c, rng, [&](ScatterKind kind, Vec3& dir) {
+        if (kind == ScatterKind::DiffuseReflection) {
+            dir = sampleCosine(sp.normal, rng);
+            return true;
+        }
+        return wardDirection(setupNormal(m, sp), m.pureSpecular, sp, kind, rng, dir);
+    });
 }
 
 }  // namespace

@@ -143,15 +143,7 @@ std::vector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel) {
     out.resize(n);
     if (n == 0) return out;
     float lo[3], hi[3];
-    for (int a = 0; a < 3; ++a) {
-        lo[a] = std::numeric_limits<float>::infinity();
-        hi[a] = -std::numeric_limits<float>::infinity();
-    }
-    for (const Photon& p : photons)
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], p.pos[a]);
-            hi[a] = std::max(hi[a], p.pos[a]);
-        }
+    photonBounds(photons, lo, hi);
     buildSubtree(photons.data(), n, lo, hi, 1, out.data(), parallel);
     return out;
 }
@@ -183,6 +175,18 @@ size_t firstMisplaced(const Photon* tree, size_t n, size_t node, float lo[3], fl
     return 0;
 }
 }  // namespace
+
+void photonBounds(std::span<const Photon> photons, float lo[3], float hi[3]) {
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::numeric_limits<float>::infinity();
+        hi[a] = -std::numeric_limits<float>::infinity();
+    }
+    for (const Photon& p : photons)
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], p.pos[a]);
+            hi[a] = std::max(hi[a], p.pos[a]);
+        }
+}
 
 std::string checkPhotonRecords(std::span<const Photon> tree) {
     for (size_t i = 0; i < tree.size(); ++i) {

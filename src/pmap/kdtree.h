@@ -39,6 +39,9 @@ constexpr uint64_t kMaxTreePhotons = 0xfffffffful;
 // depend on the number of threads. Requires size() <= kMaxTreePhotons.
 std::vector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel = true);
 
+// The lowest and highest coordinate per axis of the photons (+inf / -inf when empty).
+void photonBounds(std::span<const Photon> photons, float lo[3], float hi[3]);
+
 // Checks that `tree` is a valid kd-tree in heap order: split axes 0..2, finite positions,
 // every photon in the left subtree of node i has pos[axis] <= node i's, every photon in the
 // right subtree >=. Returns "" if valid, else a short description of the first violation.

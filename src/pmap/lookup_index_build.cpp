@@ -124,16 +124,7 @@ void PhotonIndex::build(std::span<const Photon> photons, bool parallel) {
     if (n == 0) return;
     size_ = n;
 
-    // Root bounds (min/max are exact, so the order of accumulation does not matter).
-    for (int a = 0; a < 3; ++a) {
-        boundsLo_[a] = std::numeric_limits<float>::infinity();
-        boundsHi_[a] = -std::numeric_limits<float>::infinity();
-    }
-    for (const Photon& p : photons)
-        for (int a = 0; a < 3; ++a) {
-            boundsLo_[a] = std::min(boundsLo_[a], p.pos[a]);
-            boundsHi_[a] = std::max(boundsHi_[a], p.pos[a]);
-        }
+    photonBounds(photons, boundsLo_, boundsHi_);
 
     // Morton codes of the photons' cells in a 2^21 grid per axis over the bounds. The cell
     // number is a non-decreasing function of the coordinate, so photons on the low side of

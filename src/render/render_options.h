@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <tbb/global_control.h>
+
 #include "util/bool_option.h"  // boolSuffix, used by the rtrace/rpict parsers
 #include "util/color.h"
 
@@ -101,5 +103,13 @@ bool parseRenderOption(const std::vector<std::string>& args, size_t& i, RenderOp
 // RADIANCE's rtmain/rpmain), e.g. "-dt 0.030000\t\t\t# direct threshold", in the same
 // order, reflecting `opt`.
 std::string formatRenderDefaults(const RenderOptions& opt);
+
+// -n bounds every phase of a renderer, map loading and indexing included, not only the
+// rendering: -n 1 uses one core, as RADIANCE's single process does (and as batch scripts
+// that run one rtrace per core expect). Keep the result alive for the whole run.
+inline tbb::global_control threadLimit(const RenderOptions& o) {
+    return tbb::global_control(tbb::global_control::max_allowed_parallelism,
+                               static_cast<size_t>(o.threads > 1 ? o.threads : 1));
+}
 
 }  // namespace rp::render

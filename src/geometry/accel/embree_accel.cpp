@@ -11,6 +11,7 @@
 // Modifier skipping uses the same context filter (triangles) and the user intersectors
 // (quadrics) reading the context: no per-geometry filter, so no cost when unused.
 #include "geometry/accel/embree_accel.h"
+#include "util/fast_minmax.h"
 
 #include <embree3/rtcore.h>
 
@@ -32,10 +33,6 @@ struct QueryContext {
     bool checkTriangles;      // filter applies the double-precision plane test
     double userT;             // double t of the last user-geometry hit accepted
 };
-
-// std::fmin without the libm call it compiles to at -O2 (a visible cost per ray); the
-// same result for every input but +-0 ties, which do not arise here (t > 0).
-inline double fastMin(double a, double b) { return a < b ? a : (b != b ? a : b); }
 
 QueryContext* queryContext(RTCIntersectContext* c) { return reinterpret_cast<QueryContext*>(c); }
 
