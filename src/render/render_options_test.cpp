@@ -128,6 +128,25 @@ TEST(RenderOptions, PhotonMaps) {
     EXPECT_EQ(errorOf({"-ap"}), "missing value for option '-ap'");
 }
 
+// -n bounds all of TBB's parallelism while the limit lives (map loading included), and
+// -n 0 or less counts as 1.
+TEST(RenderOptions, ThreadLimitBoundsParallelism) {
+    using tbb::global_control;
+    const size_t before = global_control::active_value(global_control::max_allowed_parallelism);
+    RenderOptions o;
+    o.threads = 1;
+    {
+        const auto limit = threadLimit(o);
+        EXPECT_EQ(global_control::active_value(global_control::max_allowed_parallelism), 1u);
+    }
+    EXPECT_EQ(global_control::active_value(global_control::max_allowed_parallelism), before);
+    o.threads = 0;
+    {
+        const auto limit = threadLimit(o);
+        EXPECT_EQ(global_control::active_value(global_control::max_allowed_parallelism), 1u);
+    }
+}
+
 TEST(RenderOptions, ThreadsErrorFileMist) {
     RenderOptions o = parse({"-n", "4", "-e", "err.txt", "-me", "0.1", "0.1", "0.1", "-ma",
                              "0.5", "0.5", "0.5", "-mg", "0.3", "-ms", "0.2"});
