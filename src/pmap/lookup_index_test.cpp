@@ -165,6 +165,35 @@ TEST(PhotonLookupIndex, KNearestEqualsBruteForceAndKdTree) {
     }
 }
 
+// The scratch overload (density estimates): the k nearest with the furthest at [0], the
+// others in any order. Covers the bucketed selection's normal, crowded-step (clusters)
+// and unbounded-radius paths.
+TEST(PhotonLookupIndex, ScratchOverloadPutsFurthestFirst) {
+    for (Layout layout : {Layout::Uniform, Layout::Clustered, Layout::Planes}) {
+        const auto photons = makePhotons(layout, 20000, 77);
+        const PhotonIndex index(photons, false);
+        std::mt19937 rng(6);
+        std::vector<PhotonHit> scratch;
+        for (size_t k : {1u, 2u, 51u, 501u}) {
+            for (float maxDist2 : {std::numeric_limits<float>::infinity(), 0.02f}) {
+                for (int trial = 0; trial < 40; ++trial) {
+                    const Vec3 q = photons[rng() % photons.size()].position();
+                    const size_t n = index.findNearestSlots(q, nullptr, maxDist2, k, scratch);
+                    const auto want = bruteForce(photons, q, nullptr, maxDist2, k);
+                    ASSERT_EQ(n, want.size());
+                    std::vector<float> got;
+                    for (size_t i = 0; i < n; ++i) {
+                        got.push_back(scratch[i].dist2);
+                        ASSERT_LE(scratch[i].dist2, scratch[0].dist2);
+                    }
+                    std::sort(got.begin(), got.end());
+                    for (size_t i = 0; i < n; ++i) ASSERT_EQ(got[i], want[i].dist2) << i;
+                }
+            }
+        }
+    }
+}
+
 TEST(PhotonLookupIndex, EmptyAndOutsideBounds) {
     const PhotonIndex empty(std::span<const Photon>{});
     std::vector<PhotonHit> out(5);
