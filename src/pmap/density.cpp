@@ -40,6 +40,11 @@ PhotonLookup::PhotonLookup(const PhotonMap& map, const LookupParams& params,
     maxDist2_ = maxDist2Limit_;
 }
 
+void PhotonLookup::useIndex(const PhotonIndex* index) {
+    RP_CHECK(!index || index->size() == map_->size());
+    index_ = index;
+}
+
 std::span<const PhotonHit> PhotonLookup::findPhotons(const Vec3& pos, const Vec3* normal) {
     auto hits = search(pos, normal, static_cast<size_t>(bandwidth_) + 1);
     if (index_) {

@@ -86,6 +86,9 @@ public:
     static PhotonMap read(std::istream& in, const std::string& what,
                           TreeOrder order = TreeOrder::Checked);
     static PhotonMap load(const std::string& path, TreeOrder order = TreeOrder::Checked);
+    // The kd-tree order check that read() skips with TreeOrder::Unchecked, for a map that
+    // turns out to need it after all; throws the same InputError naming `what`.
+    void checkTreeOrder(const std::string& what) const;
 
 private:
     PhotonMapType type_ = PhotonMapType::Global;

@@ -215,6 +215,17 @@ void PhotonMap::save(const std::string& path, const std::string& commandLine,
     guard.armed = false;
 }
 
+namespace {
+std::string treeProblem(const std::string& problem) {
+    return "photons are not a valid kd-tree (" + problem + "); corrupt file?";
+}
+}  // namespace
+
+void PhotonMap::checkTreeOrder(const std::string& what) const {
+    const std::string problem = checkKdTree(photons_);
+    if (!problem.empty()) throw InputError(SourceLoc{what, 0}, treeProblem(problem));
+}
+
 PhotonMap PhotonMap::read(std::istream& in, const std::string& what, TreeOrder order) {
     const SourceLoc loc{what, 0};
     const Header h = readHeader(in, what);
@@ -311,10 +322,12 @@ PhotonMap PhotonMap::read(std::istream& in, const std::string& what, TreeOrder o
                           });
     }
 
-    const std::string problem =
-        order == TreeOrder::Checked ? checkKdTree(map.photons_) : checkPhotonRecords(map.photons_);
-    if (!problem.empty())
-        throw InputError(loc, "photons are not a valid kd-tree (" + problem + "); corrupt file?");
+    if (order == TreeOrder::Checked) {
+        map.checkTreeOrder(what);
+    } else {
+        const std::string problem = checkPhotonRecords(map.photons_);
+        if (!problem.empty()) throw InputError(loc, treeProblem(problem));
+    }
     if (numPrimary)
         for (const Photon& p : map.photons_)
             if (p.primary >= numPrimary)

@@ -308,7 +308,16 @@ TEST_F(BadFile, CorruptTreeOrder) {
     EXPECT_NE(load(d).find("not a valid kd-tree"), std::string::npos);
     // The renderer, which searches through its own index, skips the order check only.
     std::istringstream in(d);
-    EXPECT_EQ(PhotonMap::read(in, "swapped.pm", PhotonMap::TreeOrder::Unchecked).size(), 1000u);
+    const PhotonMap unchecked = PhotonMap::read(in, "swapped.pm", PhotonMap::TreeOrder::Unchecked);
+    EXPECT_EQ(unchecked.size(), 1000u);
+    // ... and checks it later for a map it will walk after all (caustic maps).
+    try {
+        unchecked.checkTreeOrder("swapped.pm");
+        FAIL() << "bad order accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("swapped.pm"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("not a valid kd-tree"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace

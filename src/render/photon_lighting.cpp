@@ -18,7 +18,9 @@ PhotonLighting::Lookups::Lookups(const PhotonLighting& owner) : owner_(owner) {
         // With bias compensation the search radius is sized for the upper bandwidth.
         p.bandwidth = m.use.bandwidth2 > 0 ? m.use.bandwidth2 : m.use.bandwidth;
         p.maxSearchRadius = owner.maxSearchRadius_;
-        lookups.emplace_back(m.map, p, m.index.get());  // index: see lookup_index.h
+        // Eager indexes exist already (get() returns at once); lazy ones are chosen per
+        // lookup (PhotonLighting::density).
+        lookups.emplace_back(m.map, p, m.lazyIndex ? nullptr : &m.index.get(m.map.photons()));
     }
     biasStats.resize(owner.maps_.size());
 }
@@ -33,10 +35,6 @@ PhotonLighting::Lookups::~Lookups() {
 }
 
 namespace {
-
-// Lookups go through the cache-friendly bucket index (pmap/lookup_index.h, 20 bytes per
-// photon on top of the map's 24; same photons as the kd-tree walk, about 1.7x faster).
-constexpr bool kUseSearchIndex = true;
 
 int64_t fileMtime(const std::string& path) {
     std::error_code ec;
@@ -64,11 +62,13 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
     std::vector<std::exception_ptr> failed(uses.size());
     tbb::parallel_for(size_t(0), uses.size(), [&](size_t i) {
         try {
-            // Searched through PhotonIndex only (below), so the file's kd-tree order
-            // need not be verified.
-            loaded[i] = pmap::PhotonMap::load(
-                uses[i].file, kUseSearchIndex ? pmap::PhotonMap::TreeOrder::Unchecked
-                                              : pmap::PhotonMap::TreeOrder::Checked);
+            // Searched through a PhotonIndex (pmap/lookup_index.h: same photons as the
+            // kd-tree walk, about 1.7x faster), so the file's kd-tree order is checked
+            // only for caustic maps, whose first rays walk it (Lookups::kKdTreeRays).
+            pmap::PhotonMap map =
+                pmap::PhotonMap::load(uses[i].file, pmap::PhotonMap::TreeOrder::Unchecked);
+            if (map.type() == pmap::PhotonMapType::Caustic) map.checkTreeOrder(uses[i].file);
+            loaded[i] = std::move(map);
         } catch (...) {
             failed[i] = std::current_exception();
         }
@@ -112,10 +112,10 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         *slot = int(maps_.size());
         maps_.push_back(std::move(m));
     }
-    if (kUseSearchIndex)
-        tbb::parallel_for(size_t(0), maps_.size(), [&](size_t i) {
-            maps_[i].index = std::make_unique<pmap::PhotonIndex>(maps_[i].map.photons());
-        });
+    for (Map& m : maps_) m.lazyIndex = m.map.type() == pmap::PhotonMapType::Caustic;
+    tbb::parallel_for(size_t(0), maps_.size(), [&](size_t i) {
+        if (!maps_[i].lazyIndex) maps_[i].index.get(maps_[i].map.photons());
+    });
     biasStats_.resize(maps_.size());
 }
 
@@ -143,6 +143,7 @@ Color PhotonLighting::density(Lookups& l, int index, const Vec3& pos, const Vec3
     if (index < 0) return {};
     pmap::PhotonLookup& lookup = l.lookups[size_t(index)];
     const Map& m = maps_[size_t(index)];
+    if (m.lazyIndex) lookup.useIndex(l.earlyRay ? nullptr : &m.index.get(m.map.photons()));
     std::array<double, 3> d;
     if (m.map.type() == pmap::PhotonMapType::PreComp)
         d = lookup.precompDensity(pos, normal);

@@ -53,6 +53,51 @@ TEST(PhotonLighting, GlobalAndCausticDensityOfUniformMaps) {
     EXPECT_EQ(pl.globalDensity(*l, {0.5, 0.5, 0}, {0, 0, -1}).g, 0);
 }
 
+// Caustic maps: the first Lookups::kKdTreeRays primary rays walk the file's kd-tree, later
+// ones build and use the search index; both give the same photons (no ties here), so the
+// same density, and a caustic map's kd-tree order is checked at load for the walk.
+TEST(PhotonLighting, CausticMapWalkedForEarlyRaysThenIndexed) {
+    TempDir tmp;
+    Scene scene = emptyScene();
+    const std::string c = writeMap(tmp.path(), "c.pm", pmap::PhotonMapType::Caustic, 20000, 1.0);
+    PhotonLighting pl({{c, 50, 0}}, 0, scene);
+    auto l = pl.makeLookups();
+    Rng rng(3, RngDomain::Test, 0);
+    for (int i = 0; i < 50; ++i) {
+        const Vec3 q(rng.uniform(), rng.uniform(), 0);
+        l->startRay(uint64_t(i));
+        ASSERT_TRUE(l->earlyRay);
+        const Color walked = pl.causticDensity(*l, q, {0, 0, 1});
+        l->startRay(PhotonLighting::Lookups::kKdTreeRays + uint64_t(i));
+        ASSERT_FALSE(l->earlyRay);
+        const Color indexed = pl.causticDensity(*l, q, {0, 0, 1});
+        EXPECT_GT(walked.g, 0);
+        EXPECT_EQ(walked.r, indexed.r);
+        EXPECT_EQ(walked.g, indexed.g);
+        EXPECT_EQ(walked.b, indexed.b);
+    }
+
+    // Exchange the first two photon records (the root no longer splits its subtrees): a
+    // caustic map is refused, a global map (searched only through its index) is not.
+    auto corrupt = [&](const std::string& path) {
+        std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekg(0, std::ios::end);
+        const std::streamoff rec = std::streamoff(f.tellg()) - 20000 * 27;
+        char a[27], b[27];
+        f.seekg(rec);
+        f.read(a, 27);
+        f.read(b, 27);
+        f.seekp(rec);
+        f.write(b, 27);
+        f.write(a, 27);
+    };
+    corrupt(c);
+    EXPECT_THROW(PhotonLighting({{c, 50, 0}}, 0, scene), InputError);
+    const std::string g = writeMap(tmp.path(), "g.pm", pmap::PhotonMapType::Global, 20000, 1.0);
+    corrupt(g);
+    EXPECT_NO_THROW(PhotonLighting({{g, 50, 0}}, 0, scene));
+}
+
 TEST(PhotonLighting, DefaultBandwidthWarns) {
     TempDir tmp;
     std::vector<std::string> warnings;

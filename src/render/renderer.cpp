@@ -128,7 +128,7 @@ RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
                           uint64_t rayIndex, std::vector<TracedRay>* tree,
                           double maxDistance) const {
     ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);
-    if (ctx.photonLookups) ctx.photonLookups->startRay();  // per-ray, like the random numbers
+    if (ctx.photonLookups) ctx.photonLookups->startRay(rayIndex);  // like the random numbers
     ctx.tree = tree;
     ctx.treeDepth = 0;
     RayResult result;
@@ -145,7 +145,7 @@ RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
 RayResult Renderer::irradiance(Context& ctx, const Vec3& point, const Vec3& normal,
                                uint64_t rayIndex) const {
     ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);
-    if (ctx.photonLookups) ctx.photonLookups->startRay();
+    if (ctx.photonLookups) ctx.photonLookups->startRay(rayIndex);
     RayResult result;
     result.origin = point;
     result.direction = normal;
