@@ -218,7 +218,7 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
             reinterpret_cast<const int8_t*>(block + 3 * c4 * sizeof(float));
         alignas(16) float d2[kLeafSize];
         const V4 limit = splat(maxDist2);
-        uint32_t mask = 0;
+        uint64_t mask = 0;
         // A leaf whose photons share one normal (most leaves: photons on flat surfaces)
         // takes the filter once, with the same float expression as the lanes below.
         bool testNormals = kFilter;
@@ -240,7 +240,7 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
                 const V4 dot =
                     n0 * load4(pn + i) + n1 * load4(pn + c4 + i) + n2 * load4(pn + 2 * c4 + i);
                 const V4i m = (r < limit) & (dot > tol);
-                mask |= laneMask(m) << i;
+                mask |= uint64_t{laneMask(m)} << i;
             }
         } else {
             for (uint32_t i = 0; i < c4; i += 4) {
@@ -248,20 +248,20 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
                          dz = qz - load4(px + 2 * c4 + i);
                 const V4 r = dx * dx + dy * dy + dz * dz;
                 std::memcpy(d2 + i, &r, sizeof r);
-                mask |= laneMask(r < limit) << i;
+                mask |= uint64_t{laneMask(r < limit)} << i;
             }
         }
-        static_assert(kLeafSize == 32, "the lane mask is one 32-bit word");
-        if (count < 32) mask &= (1u << count) - 1;
+        static_assert(kLeafSize <= 64, "the lane mask is one 64-bit word");
+        if (count < 64) mask &= (uint64_t{1} << count) - 1;
         if (mask) {
             // Density estimates read the flux of the photons found (flux_, by slot) right
             // after the search: fetch this leaf's now, overlapped with the rest of the
             // walk (those loads were half of surfaceDensity's time as cache misses).
             __builtin_prefetch(flux + b);
-            __builtin_prefetch(flux + b + kLeafSize / 2);
+            for (uint32_t o = 16; o < kLeafSize; o += 16) __builtin_prefetch(flux + b + o);
         }
         while (mask) {
-            const uint32_t i = static_cast<uint32_t>(__builtin_ctz(mask));
+            const uint32_t i = static_cast<uint32_t>(__builtin_ctzll(mask));
             mask &= mask - 1;
             buf[found++] = {d2[i], b + i};
         }
