@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "pmap/kdtree_select.h"
 #include "pmap/lookup_heap.h"
 #include "util/bulk_memory.h"
 #include "util/error.h"
@@ -37,39 +38,74 @@ int splitAxis(const float lo[3], const float hi[3]) {
     return d0 > d1 ? (d0 > d2 ? 0 : 2) : (d1 > d2 ? 1 : 2);
 }
 
-// Builds the subtree rooted at heap node `root` (1-based) from src[0..n) into out. The cell
-// bounds lo/hi are narrowed at each split, as RADIANCE does, rather than recomputed from
-// the photons, so the split axes are the ones RADIANCE would choose for the same medians.
-void buildSubtree(Photon* src, size_t n, const float lo[3], const float hi[3], size_t root,
-                  Photon* out, bool parallel) {
+// The build's two photon buffers: `a` (the input) and `b` (the output array, scratch until
+// the end), and 2 bytes of selection scratch per photon. Why this layout: the median
+// selection (kdtree_select.h) scatters a range from one buffer to the other, so it needs a
+// second buffer of n photons; rather than a third array for the heap order, every node's
+// median is left at its in-order position (s + its left subtree's size) in `a`, and one
+// final pass (gatherHeap) copies `a` into heap order in `b`. Peak memory stays the input
+// plus the output, as with the in-place std::nth_element this replaced.
+struct BuildBuffers {
+    Photon* a;
+    Photon* b;
+    uint16_t* bins;
+};
+
+// Builds the subtree of range [s, s + n), whose photons are in `cur` (bufs.a or bufs.b), into
+// bufs.a in in-order layout, each median with its split axis set. The cell bounds lo/hi
+// are narrowed at each split, as RADIANCE does, rather than recomputed from the photons,
+// so the split axes are the ones RADIANCE would choose for the same medians. The children
+// never touch the median's position, and a range's positions in the buffer its photons
+// are not in hold nothing needed any more, so writes never collide.
+void buildSubtree(const BuildBuffers& bufs, Photon* cur, size_t s, size_t n, const float lo[3],
+                  const float hi[3], bool parallel) {
     if (n == 0) return;
     const int axis = splitAxis(lo, hi);
     const size_t nLeft = leftSubtreeSize(n);
-    if (n > 1)
-        std::nth_element(src, src + nLeft, src + n, [axis](const Photon& a, const Photon& b) {
-            return a.pos[axis] < b.pos[axis];
-        });
-    Photon median = src[nLeft];
+    Photon* data = cur;
+    if (n > 1) {
+        Photon* other = cur == bufs.a ? bufs.b : bufs.a;
+        data = selectRank(cur + s, other + s, bufs.bins + s, n, nLeft, axis, lo[axis],
+                          hi[axis]) - s;
+    }
+    Photon& median = bufs.a[s + nLeft];
+    if (data != bufs.a) median = data[s + nLeft];
     median.setDiscr(axis);
-    out[root - 1] = median;
 
     // Children cells: the split plane bounds the left cell above and the right one below.
     const float split = median.pos[axis];
     float leftHi[3] = {hi[0], hi[1], hi[2]}, rightLo[3] = {lo[0], lo[1], lo[2]};
     leftHi[axis] = split;
     rightLo[axis] = split;
-    Photon* rightSrc = src + nLeft + 1;
     const size_t nRight = n - nLeft - 1;
 
     if (parallel && n > kParallelGrain) {
         tbb::task_group group;
-        group.run([&] { buildSubtree(src, nLeft, lo, leftHi, 2 * root, out, true); });
-        buildSubtree(rightSrc, nRight, rightLo, hi, 2 * root + 1, out, true);
+        group.run([&] { buildSubtree(bufs, data, s, nLeft, lo, leftHi, true); });
+        buildSubtree(bufs, data, s + nLeft + 1, nRight, rightLo, hi, true);
         group.wait();
     } else {
         // Recursion depth is the tree height (<= 33 for kMaxTreePhotons).
-        buildSubtree(src, nLeft, lo, leftHi, 2 * root, out, false);
-        buildSubtree(rightSrc, nRight, rightLo, hi, 2 * root + 1, out, false);
+        buildSubtree(bufs, data, s, nLeft, lo, leftHi, false);
+        buildSubtree(bufs, data, s + nLeft + 1, nRight, rightLo, hi, false);
+    }
+}
+
+// Copies the in-order layout of buildSubtree (range [s, s + n) of inOrder) into heap order:
+// node `root` (1-based) of the subtree gets the median at s + leftSubtreeSize(n).
+void gatherHeap(const Photon* inOrder, size_t s, size_t n, size_t root, Photon* out,
+                bool parallel) {
+    if (n == 0) return;
+    const size_t nLeft = leftSubtreeSize(n);
+    out[root - 1] = inOrder[s + nLeft];
+    if (parallel && n > kParallelGrain) {
+        tbb::task_group group;
+        group.run([&] { gatherHeap(inOrder, s, nLeft, 2 * root, out, true); });
+        gatherHeap(inOrder, s + nLeft + 1, n - nLeft - 1, 2 * root + 1, out, true);
+        group.wait();
+    } else {
+        gatherHeap(inOrder, s, nLeft, 2 * root, out, false);
+        gatherHeap(inOrder, s + nLeft + 1, n - nLeft - 1, 2 * root + 1, out, false);
     }
 }
 
@@ -144,7 +180,11 @@ std::vector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel) {
     if (n == 0) return out;
     float lo[3], hi[3];
     photonBounds(photons, lo, hi);
-    buildSubtree(photons.data(), n, lo, hi, 1, out.data(), parallel);
+    BulkVector<uint16_t> bins;  // selection scratch, at the same offsets as the photons
+    bins.resize(n);
+    const BuildBuffers bufs{photons.data(), out.data(), bins.data()};
+    buildSubtree(bufs, photons.data(), 0, n, lo, hi, parallel);
+    gatherHeap(photons.data(), 0, n, 1, out.data(), parallel);
     return out;
 }
 

@@ -1,0 +1,130 @@
+// Histogram median selection: the rank-k coordinate equals std::sort's, the partition
+// holds, the photons are kept, on random sets with many ties, signed zeros, negative,
+// huge and subnormal values.
+#include "pmap/kdtree_select.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "pmap/kdtree.h"
+
+namespace rp::pmap {
+namespace {
+
+// n photons whose coordinates come from `pick` (primary = input index, to check the set).
+template <class Pick>
+std::vector<Photon> photonsFrom(size_t n, Pick pick) {
+    std::vector<Photon> v(n);
+    for (size_t i = 0; i < n; ++i) {
+        for (int a = 0; a < 3; ++a) v[i].pos[a] = pick();
+        v[i].primary = static_cast<uint32_t>(i);
+    }
+    return v;
+}
+
+// Selects rank k on `axis` and checks the result against a sorted copy of the coordinates.
+void checkSelect(const std::vector<Photon>& in, size_t k, int axis) {
+    std::vector<Photon> src = in, dst(in.size());
+    std::vector<uint16_t> bins(in.size());
+    float lo[3], hi[3];
+    photonBounds(in, lo, hi);
+    const Photon* r = selectRank(src.data(), dst.data(), bins.data(), in.size(), k, axis,
+                                 lo[axis], hi[axis]);
+    ASSERT_TRUE(r == src.data() || r == dst.data());
+    std::vector<float> sorted;
+    for (const Photon& p : in) sorted.push_back(p.pos[axis]);
+    std::sort(sorted.begin(), sorted.end());
+    const float m = r[k].pos[axis];
+    ASSERT_EQ(m, sorted[k]) << "n=" << in.size() << " k=" << k;
+    for (size_t i = 0; i < k; ++i) ASSERT_LE(r[i].pos[axis], m) << i;
+    for (size_t i = k + 1; i < in.size(); ++i) ASSERT_GE(r[i].pos[axis], m) << i;
+    std::vector<uint32_t> ids;
+    for (size_t i = 0; i < in.size(); ++i) ids.push_back(r[i].primary);
+    std::sort(ids.begin(), ids.end());
+    for (size_t i = 0; i < ids.size(); ++i) ASSERT_EQ(ids[i], i);
+}
+
+TEST(KdTreeSelect, RandomSetsWithManyTiesMatchSort) {
+    std::mt19937 rng(7);
+    for (size_t n : {2u, 3u, 7u, 24u, 25u, 100u, 1000u, 5000u, 70000u}) {
+        // Few distinct values (walls: photons sharing a coordinate), with signed zeros.
+        std::uniform_int_distribution<int> few(-3, 3);
+        auto ties = photonsFrom(n, [&] { return few(rng) == 0 ? -0.0f : few(rng) * 0.5f; });
+        // Continuous values plus a big block of one value.
+        std::uniform_real_distribution<float> u(-2.0f, 6.0f);
+        auto mixed = photonsFrom(n, [&] { return u(rng) < 2.0f ? 5.5f : u(rng); });
+        // All equal.
+        auto same = photonsFrom(n, [] { return 1.25f; });
+        for (size_t k : {size_t{0}, n / 2, n - 1, n / 3}) {
+            checkSelect(ties, k, 0);
+            checkSelect(mixed, k, 1);
+            checkSelect(same, k, 2);
+        }
+    }
+}
+
+TEST(KdTreeSelect, WideRangeAndTinyValues) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> e(-30.0f, 30.0f), s(-1.0f, 1.0f);
+    auto wide = photonsFrom(20000, [&] { return s(rng) * std::pow(10.0f, e(rng)); });
+    for (size_t k : {size_t{0}, size_t{9999}, size_t{19999}}) checkSelect(wide, k, 0);
+    // Ranges that overflow float (falls back to nth_element) and subnormal values.
+    auto huge = photonsFrom(5000, [&] { return s(rng) * 3e38f; });
+    checkSelect(huge, 2500, 1);
+    auto tiny = photonsFrom(5000, [&] { return s(rng) * 1e-43f; });
+    checkSelect(tiny, 2500, 2);
+}
+
+TEST(KdTreeSelect, TwoValuesAndSortedInputs) {
+    // Two distinct values (the pivots can bracket every photon) and sorted / reversed
+    // input (the strided sample sees the extremes only at its ends).
+    for (size_t n : {33u, 1000u, 50000u}) {
+        size_t i = 0;
+        auto two = photonsFrom(n, [&] { return (i++ % 5) < 2 ? 1.0f : 2.0f; });
+        auto up = photonsFrom(n, [&] { return static_cast<float>(i++ / 3); });
+        auto down = photonsFrom(n, [&] { return -static_cast<float>(i++ / 3); });
+        for (size_t k : {size_t{0}, n / 2, n - 1, 2 * n / 5, 2 * n / 5 - 1}) {
+            checkSelect(two, k, 0);
+            checkSelect(up, k, 1);
+            checkSelect(down, k, 2);
+        }
+    }
+}
+
+TEST(KdTreeSelect, LooseBoundsStillSplit) {
+    // Bounds far wider than the photons (a narrowed cell can be much larger than its
+    // photons' extent): the first histogram puts everything in one bucket.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(1.0f, 1.0001f);
+    auto in = photonsFrom(3000, [&] { return u(rng); });
+    std::vector<Photon> src = in, dst(in.size());
+    std::vector<uint16_t> bins(in.size());
+    const Photon* r =
+        selectRank(src.data(), dst.data(), bins.data(), in.size(), 1500, 0, -1e6f, 1e6f);
+    std::vector<float> sorted;
+    for (const Photon& p : in) sorted.push_back(p.pos[0]);
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(r[1500].pos[0], sorted[1500]);
+    for (size_t i = 0; i < 1500; ++i) ASSERT_LE(r[i].pos[0], r[1500].pos[0]);
+    for (size_t i = 1501; i < in.size(); ++i) ASSERT_GE(r[i].pos[0], r[1500].pos[0]);
+}
+
+TEST(KdTreeSelect, TreeWithManyTiesIsValid) {
+    std::mt19937 rng(3);
+    std::uniform_int_distribution<int> few(0, 4);
+    std::uniform_real_distribution<float> u(0.0f, 5.5f);
+    // Photons on the six walls of a box: one coordinate 0 or 5.5, the others continuous.
+    auto box = photonsFrom(50000, [&] { return u(rng); });
+    for (size_t i = 0; i < box.size(); ++i) box[i].pos[i % 3] = few(rng) < 2 ? 0.0f : 5.5f;
+    auto tree = buildKdTree(box, false);
+    EXPECT_EQ(checkKdTree(tree), "");
+    EXPECT_EQ(tree, buildKdTree(box, true));
+}
+
+}  // namespace
+}  // namespace rp::pmap
