@@ -56,9 +56,13 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
             newestInput = in.mtime;
             newestName = in.path;
         }
-    // The maps load (and below, get their search indexes) concurrently; errors are
-    // reported in command-line order whatever the threads did.
+    // The maps load and get their search indexes concurrently, each index as soon as its
+    // map is loaded (with two threads, the global map's index is built while the larger
+    // caustic map still loads); errors are reported in command-line order whatever the
+    // threads did.
+    using T = pmap::PhotonMapType;
     std::vector<pmap::PhotonMap> loaded(uses.size());
+    std::vector<pmap::LazyPhotonIndex> indexes(uses.size());
     std::vector<std::exception_ptr> failed(uses.size());
     tbb::parallel_for(size_t(0), uses.size(), [&](size_t i) {
         try {
@@ -67,7 +71,11 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
             // only for caustic maps, whose first rays walk it (Lookups::kKdTreeRays).
             pmap::PhotonMap map =
                 pmap::PhotonMap::load(uses[i].file, pmap::PhotonMap::TreeOrder::Unchecked);
-            if (map.type() == pmap::PhotonMapType::Caustic) map.checkTreeOrder(uses[i].file);
+            const T type = map.type();
+            if (type == T::Caustic)
+                map.checkTreeOrder(uses[i].file);
+            else if (type != T::Contrib && type != T::Volume)  // those are refused below
+                indexes[i].get(map.photons());  // copies what it needs: map may move
             loaded[i] = std::move(map);
         } catch (...) {
             failed[i] = std::current_exception();
@@ -81,7 +89,8 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         m.use = use;
         m.file = use.file;
         m.map = std::move(loaded[i]);
-        using T = pmap::PhotonMapType;
+        m.index = std::move(indexes[i]);
+        m.lazyIndex = m.map.type() == T::Caustic;
         T type = m.map.type();
         const char* name = pmap::photonMapTypeName(type);
         if (type == T::Contrib)
@@ -112,10 +121,6 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         *slot = int(maps_.size());
         maps_.push_back(std::move(m));
     }
-    for (Map& m : maps_) m.lazyIndex = m.map.type() == pmap::PhotonMapType::Caustic;
-    tbb::parallel_for(size_t(0), maps_.size(), [&](size_t i) {
-        if (!maps_[i].lazyIndex) maps_[i].index.get(maps_[i].map.photons());
-    });
     biasStats_.resize(maps_.size());
 }
 
