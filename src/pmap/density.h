@@ -75,16 +75,16 @@ public:
     std::array<double, 3> biasCompensatedDensity(const Vec3& pos, const Vec3& normal, int bwMin,
                                                  int bwMax, BiasCompStats* stats = nullptr);
 
-    // Starts the adaptive radius afresh (the limit, no run of good lookups), as for a new
-    // lookup object. RADIANCE keeps this state for a whole run, so its results depend on
-    // the order of all lookups before; the renderer restarts it with every primary ray
-    // (render/renderer.cpp), so that each ray's result depends only on that ray, whatever
-    // the number of threads and whichever thread traced it.
     // Searches through `index` from now on (nullptr: the map's kd-tree, whose order must
     // have been checked). The photons found are the same either way except among ties at
     // the furthest distance, so callers must choose by something deterministic.
     void useIndex(const PhotonIndex* index);
 
+    // Starts the adaptive radius afresh (the limit, no run of good lookups), as for a new
+    // lookup object. RADIANCE keeps this state for a whole run, so its results depend on
+    // the order of all lookups before; the renderer restarts it with every primary ray
+    // (render/renderer.cpp), so that each ray's result depends only on that ray, whatever
+    // the number of threads and whichever thread traced it.
     void restartAdaptiveRadius() {
         maxDist2_ = maxDist2Limit_;
         goodRun_ = 0;
