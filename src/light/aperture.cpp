@@ -83,10 +83,19 @@ Vec3 sampleUniformCone(const Cone& c, Rng& rng) {
 Vec3 sampleProjectedCone(const Cone& c, const Vec3& n, Rng& rng) {
     double an = std::clamp(dot(c.axis, n), -1.0, 1.0);
     if (an > 1 - 1e-12) {
-        // Centred on the normal: cos^2 uniform in [max(cosHalf,0)^2, 1].
-        double cmin = std::fmax(c.cosHalf, 0.0);
-        double cos2 = 1 - rng.uniform() * (1 - cmin * cmin);
-        return fromCone(n, std::sqrt(cos2), 2 * kPi * rng.uniform());
+        // Centred on the normal: sin^2 uniform in [0, 1 - max(cosHalf,0)^2], i.e. a point
+        // uniform in the disc of that radius, projected up onto the hemisphere (Malley's
+        // method; no trigonometry: the disc point is drawn by rejection from its square).
+        const double cmin = std::fmax(c.cosHalf, 0.0), radius = std::sqrt(1 - cmin * cmin);
+        double x, y, r2;
+        do {
+            x = radius * (2 * rng.uniform() - 1);
+            y = radius * (2 * rng.uniform() - 1);
+            r2 = x * x + y * y;
+        } while (r2 >= radius * radius);
+        Vec3 u, v;
+        coneFrame(n, u, v);
+        return u * x + v * y + n * std::sqrt(fastMax(0.0, 1 - r2));
     }
     // Largest w.n in the cone bounds the rejection ratio of a uniform-cone proposal.
     double alpha = std::acos(an), half = std::acos(std::clamp(c.cosHalf, -1.0, 1.0));

@@ -144,6 +144,20 @@ TEST(Aperture, ProjectedConeSamplerHasCosineDensity) {
                                                                      den.sigmaOfMean() / den.mean()));
         EXPECT_NEAR(sampled.mean(), expected, 4 * sigma);
     }
+    // A narrow cone about the normal (Malley's method in a disc of radius sin 30 deg):
+    // sin^2 uniform in [0, 1/4], so its mean is 1/8; unit directions inside the cone.
+    {
+        Rng r(6, RngDomain::Test, 4);
+        Stats sin2;
+        const Cone narrow{z, std::cos(kPi / 6)};
+        for (int i = 0; i < 400000; ++i) {
+            const Vec3 w = sampleProjectedCone(narrow, z, r);
+            ASSERT_NEAR(length(w), 1.0, 1e-12);
+            ASSERT_GE(w.z, narrow.cosHalf - 1e-12);
+            sin2.add(1 - w.z * w.z);
+        }
+        EXPECT_NEAR(sin2.mean(), 0.125, 4 * sin2.sigmaOfMean());
+    }
     // Hemisphere: mean cos = 2/3 exactly.
     Rng rng(5, RngDomain::Test, 3);
     Stats st;

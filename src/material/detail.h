@@ -33,9 +33,13 @@ inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - n * (2 * dot(d, n
 inline Vec3 sampleCosine(const Vec3& n, Rng& rng) {
     Vec3 u, v;
     perpendicularFrame(n, u, v);
-    double cos2 = rng.uniform(), c = std::sqrt(cos2), s = std::sqrt(1 - cos2);
-    double phi = 2 * kPi * rng.uniform();
-    return normalize(u * (std::cos(phi) * s) + v * (std::sin(phi) * s) + n * c);
+    double x, y, r2;
+    do {
+        x = 2 * rng.uniform() - 1;
+        y = 2 * rng.uniform() - 1;
+        r2 = x * x + y * y;
+    } while (r2 >= 1);
+    return u * x + v * y + n * std::sqrt(1 - r2);
 }
 
 // Ward half-vector sampling (Ward 1992 sec. 4; Walter 2005 note), as RADIANCE's

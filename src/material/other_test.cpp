@@ -2,6 +2,7 @@
 // (material.cpp, func.cpp). Photon tolerances: 4 standard errors of the sample mean.
 #include <gtest/gtest.h>
 
+#include "material/detail.h"
 #include "material/test_util.h"
 
 namespace rp::material {
@@ -9,6 +10,29 @@ namespace {
 
 using test::prim;
 const Vec3 kUp{0, 0, 1};
+
+// Malley's method (detail.h): unit directions, cosine-weighted about n (E[cos] = 2/3,
+// E[cos^2] = 1/2) and with no preferred azimuth (the tangential part averages to 0).
+TEST(DiffuseSampling, SampleCosineIsCosineWeighted) {
+    const Vec3 n = normalize(Vec3{0.3, -0.5, 0.8});
+    Rng rng(11, RngDomain::Test, 0);
+    constexpr int kSamples = 400000;
+    double c1 = 0, c2 = 0;
+    Vec3 tangential;
+    for (int i = 0; i < kSamples; ++i) {
+        const Vec3 w = detail::sampleCosine(n, rng);
+        ASSERT_NEAR(length(w), 1.0, 1e-12);
+        const double c = dot(w, n);
+        ASSERT_GE(c, 0.0);
+        c1 += c;
+        c2 += c * c;
+        tangential += w - n * c;
+    }
+    // sigma of the mean: sqrt(1/18 / N) for cos, sqrt(1/12 / N) for cos^2.
+    EXPECT_NEAR(c1 / kSamples, 2.0 / 3, 4 * std::sqrt(1.0 / 18 / kSamples));
+    EXPECT_NEAR(c2 / kSamples, 0.5, 4 * std::sqrt(1.0 / 12 / kSamples));
+    EXPECT_LT(length(tangential) / kSamples, 4 * std::sqrt(0.5 / kSamples));
+}
 
 TEST(Lights, AbsorbPhotonsAndEmit) {
     Rng rng(1, RngDomain::Test, 0);

@@ -56,7 +56,14 @@ TEST(TraceStorage, RegionOfInterestKeepsPhotonsInside) {
     TraceSettings ts = mapsFor(true, false, false);
     ts.rois.push_back({{-1, -1, -1}, {2, 5, 5}});
     auto run = makeRun(sceneFromText(boxRoom()), ts);
-    DistributionResult r = distribute(*run, 20000, 0, 0);
+    // A prepass as large as the target (-apD 1): the default quarter stores only ~2.5k
+    // photons inside the region here, and predicts the total with a spread (about 2.3 %
+    // over seeds) too wide for a 5 % check on one seed.
+    DistributionSettings ds;
+    ds.targets[size_t(PhotonMapType::Global)] = 20000;
+    ds.preDistrib = 1.0;
+    ds.seed = 1;
+    DistributionResult r = distributePhotons(*run->tracer, ds);
     const auto& g = mapOf(r, PhotonMapType::Global);
     EXPECT_NEAR(double(g.size()), 20000, 0.05 * 20000);
     for (const Photon& p : g) ASSERT_LE(p.pos[0], 2.0f);
