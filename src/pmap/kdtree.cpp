@@ -38,6 +38,20 @@ int splitAxis(const float lo[3], const float hi[3]) {
     return d0 > d1 ? (d0 > d2 ? 0 : 2) : (d1 > d2 ? 1 : 2);
 }
 
+// Runs left() and right(): as two TBB tasks when `fork`, else one after the other.
+template <class Left, class Right>
+void forkJoin(bool fork, Left&& left, Right&& right) {
+    if (fork) {
+        tbb::task_group group;
+        group.run(left);
+        right();
+        group.wait();
+    } else {
+        left();
+        right();
+    }
+}
+
 // The build's two photon buffers: `a` (the input) and `b` (the output array, scratch until
 // the end), and 2 bytes of selection scratch per photon. Why this layout: the median
 // selection (kdtree_select.h) scatters a range from one buffer to the other, so it needs a
@@ -78,17 +92,11 @@ void buildSubtree(const BuildBuffers& bufs, Photon* cur, size_t s, size_t n, con
     leftHi[axis] = split;
     rightLo[axis] = split;
     const size_t nRight = n - nLeft - 1;
-
-    if (parallel && n > kParallelGrain) {
-        tbb::task_group group;
-        group.run([&] { buildSubtree(bufs, data, s, nLeft, lo, leftHi, true); });
-        buildSubtree(bufs, data, s + nLeft + 1, nRight, rightLo, hi, true);
-        group.wait();
-    } else {
-        // Recursion depth is the tree height (<= 33 for kMaxTreePhotons).
-        buildSubtree(bufs, data, s, nLeft, lo, leftHi, false);
-        buildSubtree(bufs, data, s + nLeft + 1, nRight, rightLo, hi, false);
-    }
+    // Recursion depth is the tree height (<= 33 for kMaxTreePhotons).
+    const bool fork = parallel && n > kParallelGrain;
+    forkJoin(
+        fork, [&] { buildSubtree(bufs, data, s, nLeft, lo, leftHi, fork); },
+        [&] { buildSubtree(bufs, data, s + nLeft + 1, nRight, rightLo, hi, fork); });
 }
 
 // Copies the in-order layout of buildSubtree (range [s, s + n) of inOrder) into heap order:
@@ -98,15 +106,10 @@ void gatherHeap(const Photon* inOrder, size_t s, size_t n, size_t root, Photon* 
     if (n == 0) return;
     const size_t nLeft = leftSubtreeSize(n);
     out[root - 1] = inOrder[s + nLeft];
-    if (parallel && n > kParallelGrain) {
-        tbb::task_group group;
-        group.run([&] { gatherHeap(inOrder, s, nLeft, 2 * root, out, true); });
-        gatherHeap(inOrder, s + nLeft + 1, n - nLeft - 1, 2 * root + 1, out, true);
-        group.wait();
-    } else {
-        gatherHeap(inOrder, s, nLeft, 2 * root, out, false);
-        gatherHeap(inOrder, s + nLeft + 1, n - nLeft - 1, 2 * root + 1, out, false);
-    }
+    const bool fork = parallel && n > kParallelGrain;
+    forkJoin(
+        fork, [&] { gatherHeap(inOrder, s, nLeft, 2 * root, out, fork); },
+        [&] { gatherHeap(inOrder, s + nLeft + 1, n - nLeft - 1, 2 * root + 1, out, fork); });
 }
 
 // Query normal scaled for comparison with the int8 photon normals.

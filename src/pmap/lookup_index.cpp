@@ -211,7 +211,7 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
     // in slot order (no unpredictable branch per photon).
     auto testLeaf = [&](const Node* node) {
         const uint32_t b = node->link, count = node->axisInfo >> 2;
-        uint32_t c4 = (count + 3) & ~3u;
+        uint32_t c4 = paddedCount(count);
         const unsigned char* block = leaves + kLeafBytesPerSlot * size_t{b};
         const float* px = reinterpret_cast<const float*>(block);
         [[maybe_unused]] const int8_t* pn =
@@ -341,7 +341,7 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
         }
         for (int i = 0; i < nb; ++i) {
             const Node& leaf = nodes[batch[i].node];
-            const uint32_t c4 = ((leaf.axisInfo >> 2) + 3) & ~3u;
+            const uint32_t c4 = paddedCount(leaf.axisInfo >> 2);
             const unsigned char* block = leaves + kLeafBytesPerSlot * size_t{leaf.link};
             size_t bytes = 3 * sizeof(float) * c4;
             if constexpr (kFilter) {

@@ -98,6 +98,8 @@ public:
     // (quantised) normal; the build records it in the leaf's otherwise unused leftMax as
     // bytes x, y, z and a flag byte.
     static constexpr uint8_t kCommonNormalFlag = 1;
+    // Slots a leaf of `count` photons occupies: padded to the 4 lanes of the leaf loops.
+    static uint32_t paddedCount(uint32_t count) { return (count + 3) & ~3u; }
     static bool leafCommonNormal(const Node& leaf, int8_t normal[3]) {
         unsigned char b[4];
         std::memcpy(b, &leaf.leftMax, 4);

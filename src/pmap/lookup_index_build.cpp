@@ -166,7 +166,7 @@ void PhotonIndex::build(std::span<const Photon> photons, bool parallel) {
         ranges.push_back({begin, count});
         if (count <= kLeafSize) {
             nodes_.push_back({0, 0, kLeafTag | (count << 2), static_cast<uint32_t>(numSlots)});
-            numSlots += (count + 3) & ~3u;
+            numSlots += paddedCount(count);
             return;
         }
         const uint64_t first = codes[begin], last = codes[begin + count - 1];
@@ -205,7 +205,7 @@ void PhotonIndex::build(std::span<const Photon> photons, bool parallel) {
             const Node node = nodes_[id];
             if ((node.axisInfo & 3) != kLeafTag) continue;
             const uint32_t first = node.link, count = node.axisInfo >> 2;
-            const uint32_t c4 = (count + 3) & ~3u;
+            const uint32_t c4 = paddedCount(count);
             const uint32_t* rec = order.data() + ranges[id].begin;
             Bounds& box = bounds[id];
             const Photon& p0 = photons[rec[0]];

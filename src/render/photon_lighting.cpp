@@ -20,7 +20,8 @@ PhotonLighting::Lookups::Lookups(const PhotonLighting& owner) : owner_(owner) {
         p.maxSearchRadius = owner.maxSearchRadius_;
         // Eager indexes exist already (get() returns at once); lazy ones are chosen per
         // lookup (PhotonLighting::density).
-        lookups.emplace_back(m.map, p, m.lazyIndex ? nullptr : &m.index.get(m.map.photons()));
+        lookups.emplace_back(m.map, p,
+                             m.indexedOnDemand() ? nullptr : &m.index.get(m.map.photons()));
     }
     biasStats.resize(owner.maps_.size());
 }
@@ -61,22 +62,20 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
     // caustic map still loads); errors are reported in command-line order whatever the
     // threads did.
     using T = pmap::PhotonMapType;
-    std::vector<pmap::PhotonMap> loaded(uses.size());
-    std::vector<pmap::LazyPhotonIndex> indexes(uses.size());
+    std::vector<Map> loaded(uses.size());
     std::vector<std::exception_ptr> failed(uses.size());
     tbb::parallel_for(size_t(0), uses.size(), [&](size_t i) {
         try {
             // Searched through a PhotonIndex (pmap/lookup_index.h: same photons as the
             // kd-tree walk, about 1.7x faster), so the file's kd-tree order is checked
             // only for caustic maps, whose first rays walk it (Lookups::kKdTreeRays).
-            pmap::PhotonMap map =
-                pmap::PhotonMap::load(uses[i].file, pmap::PhotonMap::TreeOrder::Unchecked);
-            const T type = map.type();
-            if (type == T::Caustic)
-                map.checkTreeOrder(uses[i].file);
+            Map& m = loaded[i];
+            m.map = pmap::PhotonMap::load(uses[i].file, pmap::PhotonMap::TreeOrder::Unchecked);
+            const T type = m.map.type();
+            if (m.indexedOnDemand())
+                m.map.checkTreeOrder(uses[i].file);
             else if (type != T::Contrib && type != T::Volume)  // those are refused below
-                indexes[i].get(map.photons());  // copies what it needs: map may move
-            loaded[i] = std::move(map);
+                m.index.get(m.map.photons());
         } catch (...) {
             failed[i] = std::current_exception();
         }
@@ -85,12 +84,9 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         if (e) std::rethrow_exception(e);
     for (size_t i = 0; i < uses.size(); ++i) {
         const PhotonMapUse& use = uses[i];
-        Map m;
+        Map m = std::move(loaded[i]);
         m.use = use;
         m.file = use.file;
-        m.map = std::move(loaded[i]);
-        m.index = std::move(indexes[i]);
-        m.lazyIndex = m.map.type() == T::Caustic;
         T type = m.map.type();
         const char* name = pmap::photonMapTypeName(type);
         if (type == T::Contrib)
@@ -148,7 +144,7 @@ Color PhotonLighting::density(Lookups& l, int index, const Vec3& pos, const Vec3
     if (index < 0) return {};
     pmap::PhotonLookup& lookup = l.lookups[size_t(index)];
     const Map& m = maps_[size_t(index)];
-    if (m.lazyIndex) lookup.useIndex(l.earlyRay ? nullptr : &m.index.get(m.map.photons()));
+    if (m.indexedOnDemand()) lookup.useIndex(l.earlyRay ? nullptr : &m.index.get(m.map.photons()));
     std::array<double, 3> d;
     if (m.map.type() == pmap::PhotonMapType::PreComp)
         d = lookup.precompDensity(pos, normal);

@@ -59,7 +59,7 @@ public:
         }
         // Caustic maps answer the first kKdTreeRays primary rays by walking the file's
         // kd-tree and build their search index only when a later ray needs them (see
-        // Map::lazyIndex): a sensor grid of a few hundred points then never pays for
+        // Map::indexedOnDemand): a sensor grid of a few hundred points then never pays for
         // indexing a million caustic photons (0.07 s of a 0.8 s Cornell run). Chosen by
         // the ray's index, not by whether the index happens to exist yet, so results do
         // not depend on threads (the two searches may differ among equidistant photons).
@@ -88,10 +88,11 @@ public:
 private:
     struct Map {
         pmap::PhotonMap map;
-        // Cache-friendly search structure, built at load, or on first use when lazyIndex
-        // (caustic maps: about one lookup per primary ray, Lookups::kKdTreeRays).
+        // Cache-friendly search structure, built at load, or on first use when
+        // indexedOnDemand (caustic maps: about one lookup per primary ray,
+        // Lookups::kKdTreeRays).
         pmap::LazyPhotonIndex index;
-        bool lazyIndex = false;
+        bool indexedOnDemand() const { return map.type() == pmap::PhotonMapType::Caustic; }
         PhotonMapUse use;
         std::string file;
     };
