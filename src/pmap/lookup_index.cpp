@@ -28,6 +28,8 @@ inline V4 load4(const int8_t* p) {
     return __builtin_convertvector(v, V4);
 }
 inline V4 splat(float f) { return V4{f, f, f, f}; }
+// kAxisLane[a]: all ones in lane a.
+constexpr V4i kAxisLane[3] = {{-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, -1, 0}};
 // Lane i of a comparison result (all ones or zero) becomes bit i.
 inline uint32_t laneMask(V4i m) {
 #if defined(__SSE2__)
@@ -181,10 +183,13 @@ size_t PhotonIndex::memoryBytes() const {
 // (the radius shrinks when a full buffer is cut down to the k nearest).
 template <bool kFilter>
 void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
+    // The cell offsets live in one vector register (lane 3 zero): written to and read
+    // back from a stack array with a per-node axis index, each descent step waited on
+    // store-to-load forwarding (the largest single stall of the walk in perf).
     struct Pending {
+        V4 off;
         uint32_t node;
         float rd;  // cell distance (squared) of the far child
-        float off[3];
     };
     // Depth <= 96 (lookup_index_build.cpp: 63 code bits plus 32 count splits).
     Pending stack[100];
@@ -201,7 +206,7 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
     const Node* const nodes = nodes_.data();
     const unsigned char* const leaves = leaves_.data();
     const Colr* const flux = flux_.data();
-    float off[3] = {rootOff[0], rootOff[1], rootOff[2]};
+    V4 off = {rootOff[0], rootOff[1], rootOff[2], 0.f};
     uint32_t id = root;
 
     // Leaf test. GCC/Clang vector extensions, 4 lanes: -O2's cheap vectoriser leaves these
@@ -308,21 +313,25 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
                     farId = id + 1;
                     cut = below;
                 }
-                Pending& far = stack[top];
-                far.node = farId;
-                far.off[0] = off[0];
-                far.off[1] = off[1];
-                far.off[2] = off[2];
-                far.off[axis] = std::max(off[axis], cut);
+                // The far cell's offsets: off with lane `axis` raised to the cut
+                // (std::max(off[axis], cut)).
+                const V4 c = splat(cut);
+                const V4 farOff = ((off < c) & kAxisLane[axis]) ? c : off;
+                const V4 sq = farOff * farOff;
                 // Unscaled on purpose: any factor > 1 here (an earlier version had 4)
                 // prunes cells that lie inside the search radius and loses near photons
                 // once k spans several leaves.
-                far.rd = far.off[0] * far.off[0] + far.off[1] * far.off[1] + far.off[2] * far.off[2];
-                top += far.rd < maxDist2;  // the radius only shrinks: a cell outside stays out
+                const float rd = sq[0] + sq[1] + sq[2];
+                Pending& far = stack[top];
+                far.off = farOff;
+                far.node = farId;
+                far.rd = rd;
+                top += rd < maxDist2;  // the radius only shrinks: a cell outside stays out
                 id = nearId;
                 node = nodes + id;
             }
-            batch[nb++] = {id, off[0] * off[0] + off[1] * off[1] + off[2] * off[2]};
+            const V4 sq = off * off;
+            batch[nb++] = {id, sq[0] + sq[1] + sq[2]};
             // Next: the most recently deferred far child whose cell is still within the
             // radius.
             more = false;
@@ -330,9 +339,7 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
                 const Pending& far = stack[--top];
                 if (far.rd < maxDist2) {
                     id = far.node;
-                    off[0] = far.off[0];
-                    off[1] = far.off[1];
-                    off[2] = far.off[2];
+                    off = far.off;
                     more = true;
                     break;
                 }
