@@ -90,7 +90,7 @@ public:
         float leftMax;      // inner: largest coordinate along the split axis in the left child
                             // leaf: the photons' common normal, if any (leafCommonNormal)
         float rightMin;     // inner: smallest in the right child (leftMax <= rightMin)
-                            // leaf: area per photon (guessRadius2), 0 if unknown
+                            // leaf: area per photon (the radius guess), 0 if unknown
         uint32_t axisInfo;  // inner: split axis 0..2; leaf: 3 | (photon count << 2)
         uint32_t link;      // inner: node index of the right child; leaf: first slot
     };
@@ -112,7 +112,6 @@ private:
     void build(std::span<const Photon> photons, bool parallel);
     template <bool kFilter>
     void searchNode(uint32_t node, float off[3], Search& s) const;
-    float guessRadius2(const float q[3], size_t k) const;
 
     size_t size_ = 0;
     std::vector<Node> nodes_;

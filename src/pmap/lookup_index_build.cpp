@@ -233,8 +233,9 @@ void PhotonIndex::build(std::span<const Photon> photons, bool parallel) {
                 flux_[first + i] = Colr{0, 0, 0, 0};
                 index_[first + i] = 0;
             }
-            // Area per photon for guessRadius2: the two largest extents of the leaf's box
-            // (photons lie on surfaces); unknown for a single point.
+            // Area per photon for the search's radius guess (lookup_index.cpp): the two
+            // largest extents of the leaf's box (photons lie on surfaces); unknown for a
+            // single point.
             float ext[3] = {box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]};
             std::sort(ext, ext + 3);
             nodes_[id].rightMin = count > 1 ? ext[2] * ext[1] / static_cast<float>(count) : 0.f;
