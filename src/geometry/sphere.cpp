@@ -41,7 +41,12 @@ bool intersectSphere(const SphereShape& s, const Vec3& o, const Vec3& d, double 
     double a = dot(d, d);
     double bHalf = dot(oc, d);
     Vec3 l = oc - d * (bHalf / a);
-    double ll = length(l);
+    // Clear misses without the square root (the accelerator calls this for every ray
+    // through the sphere's bounding box): |l|^2 above r^2 by more than rounding means
+    // |l| > r, so disc below is negative. Same answers as without the test.
+    const double ll2 = dot(l, l);
+    if (ll2 > s.radius * s.radius * (1 + 1e-9)) return false;
+    double ll = std::sqrt(ll2);
     double disc = a * (s.radius - ll) * (s.radius + ll);
     if (!(disc > 0)) return false;
     double c = dot(oc, oc) - s.radius * s.radius;
