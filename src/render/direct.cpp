@@ -234,13 +234,29 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
     // RADIANCE compat (source.c direct): test the brightest first; stop when the next
     // nshadcheck = n^dc estimates together fall below dt/weight times what has been
     // found so far. Stable sort: ties keep source order, so results are reproducible.
-    std::stable_sort(cands.begin(), cands.end(),
-                     [](const Candidate& a, const Candidate& b) { return a.brt > b.brt; });
+    // A handful of candidates is usual: an insertion sort (stable too) then, as
+    // std::stable_sort allocated a buffer on every call.
+    const auto brighter = [](const Candidate& a, const Candidate& b) { return a.brt > b.brt; };
+    if (cands.size() <= 16) {
+        for (size_t i = 1; i < cands.size(); ++i)
+            for (size_t j = i; j > 0 && brighter(cands[j], cands[j - 1]); --j)
+                std::swap(cands[j], cands[j - 1]);
+    } else {
+        std::stable_sort(cands.begin(), cands.end(), brighter);
+    }
     const size_t n = cands.size();
     tail.assign(n + 1, 0.0);
     for (size_t i = n; i-- > 0;) tail[i] = tail[i + 1] + cands[i].brt;
-    const size_t nshadcheck =
-        size_t(std::pow(double(n), std::clamp(im.options.certainty, 0.0, 1.0)) + 0.5);
+    // n^dc for the last n seen (the same few counts recur at every shaded point).
+    thread_local size_t powN = 0;
+    thread_local double powCertainty = -1, powValue = 0;
+    const double certainty = std::clamp(im.options.certainty, 0.0, 1.0);
+    if (n != powN || certainty != powCertainty) {
+        powN = n;
+        powCertainty = certainty;
+        powValue = std::pow(double(n), certainty);
+    }
+    const size_t nshadcheck = size_t(powValue + 0.5);
     const double threshold = im.options.threshold / std::fmax(at.weight, 1e-9);
 
     Color total;
