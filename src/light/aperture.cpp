@@ -87,12 +87,8 @@ Vec3 sampleProjectedCone(const Cone& c, const Vec3& n, Rng& rng) {
         // uniform in the disc of that radius, projected up onto the hemisphere (Malley's
         // method; no trigonometry: the disc point is drawn by rejection from its square).
         const double cmin = std::fmax(c.cosHalf, 0.0), radius = std::sqrt(1 - cmin * cmin);
-        double x, y, r2;
-        do {
-            x = radius * (2 * rng.uniform() - 1);
-            y = radius * (2 * rng.uniform() - 1);
-            r2 = x * x + y * y;
-        } while (r2 >= radius * radius);
+        double x, y;
+        const double r2 = uniformDiscPoint(rng, radius, x, y);
         Vec3 u, v;
         coneFrame(n, u, v);
         return u * x + v * y + n * std::sqrt(fastMax(0.0, 1 - r2));

@@ -29,16 +29,13 @@ inline void perpendicularFrame(const Vec3& n, Vec3& u, Vec3& v) {
 // Mirror reflection of travel direction d about unit n facing the ray (dot(d, n) < 0).
 inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - n * (2 * dot(d, n)); }
 
-// Cosine-weighted direction about unit n (pmapmat.c diffPhotonScatter).
+// Cosine-weighted direction about unit n (pmapmat.c diffPhotonScatter), by Malley's method
+// (uniformDiscPoint).
 inline Vec3 sampleCosine(const Vec3& n, Rng& rng) {
     Vec3 u, v;
     perpendicularFrame(n, u, v);
-    double x, y, r2;
-    do {
-        x = 2 * rng.uniform() - 1;
-        y = 2 * rng.uniform() - 1;
-        r2 = x * x + y * y;
-    } while (r2 >= 1);
+    double x, y;
+    const double r2 = uniformDiscPoint(rng, 1.0, x, y);
     return u * x + v * y + n * std::sqrt(1 - r2);
 }
 

@@ -242,10 +242,15 @@ std::string checkPhotonRecords(std::span<const Photon> tree) {
 }
 
 std::string checkKdTree(std::span<const Photon> tree) {
+    // Per photon first (a flat loop), so that the order walk only compares ordered floats
+    // and reads valid split axes.
+    if (std::string problem = checkPhotonRecords(tree); !problem.empty()) return problem;
+    return checkKdTreeOrder(tree);
+}
+
+std::string checkKdTreeOrder(std::span<const Photon> tree) {
     const size_t n = tree.size();
     if (n == 0) return {};
-    // Per photon first (a flat loop), so that the walk below only compares ordered floats.
-    if (std::string problem = checkPhotonRecords(tree); !problem.empty()) return problem;
     float lo[3], hi[3];
     for (int a = 0; a < 3; ++a) {
         lo[a] = -std::numeric_limits<float>::infinity();

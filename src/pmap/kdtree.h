@@ -48,6 +48,8 @@ void photonBounds(std::span<const Photon> photons, float lo[3], float hi[3]);
 std::string checkKdTree(std::span<const Photon> tree);
 // The per-photon part of checkKdTree (split axis and finite position), without the order.
 std::string checkPhotonRecords(std::span<const Photon> tree);
+// The order part of checkKdTree alone, for photons whose records pass checkPhotonRecords.
+std::string checkKdTreeOrder(std::span<const Photon> tree);
 
 // Finds up to out.size() nearest photons to `pos` with squared distance < maxDist2,
 // skipping photons facing away from `normal` (no filter when normal is null, as for volume

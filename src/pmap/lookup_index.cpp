@@ -60,6 +60,15 @@ namespace {
 struct Nearer {
     bool operator()(const PhotonHit& a, const PhotonHit& b) const { return a.dist2 < b.dist2; }
 };
+// Sorts a[lo..hi) by distance: for the few candidates left at the end of a selection.
+void insertionSort(PhotonHit* a, size_t lo, size_t hi) {
+    for (size_t i = lo + 1; i < hi; ++i) {
+        const PhotonHit t = a[i];
+        size_t j = i;
+        for (; j > lo && t.dist2 < a[j - 1].dist2; --j) a[j] = a[j - 1];
+        a[j] = t;
+    }
+}
 // Moves the k nearest of a[0..n) (0 < k <= n) to a[0..k), the k-th nearest to a[k-1];
 // tmp has room for n. Quickselect whose partitions write every candidate to both ends of
 // tmp and advance one end: no branch on the coin-toss comparison (std::nth_element
@@ -95,12 +104,7 @@ void selectNearest(PhotonHit* a, PhotonHit* tmp, size_t n, size_t k) {
             }
         }
     }
-    for (size_t i = lo + 1; i < hi; ++i) {  // few left: insertion sort
-        const PhotonHit t = a[i];
-        size_t j = i;
-        for (; j > lo && t.dist2 < a[j - 1].dist2; --j) a[j] = a[j - 1];
-        a[j] = t;
-    }
+    insertionSort(a, lo, hi);  // few left
 }
 
 // The k nearest of a[0..n) (0 < k <= n, every dist2 < bound or, after a cut, <= it) in
@@ -140,17 +144,10 @@ void selectNearestBucketed(PhotonHit* a, PhotonHit* tmp, size_t n, size_t k, flo
     }
     const size_t need = k - before;  // 1 <= need <= m
     PhotonHit* step = tmp + before;  // room for n - before >= m
-    if (m > 32) {
-        // A crowded step (photons stacked at one distance, or a tight cluster).
+    if (m > 32)  // a crowded step (photons stacked at one distance, or a tight cluster)
         selectNearest(a, step, m, need);
-    } else {
-        for (size_t i = 1; i < m; ++i) {
-            const PhotonHit t = a[i];
-            size_t q = i;
-            for (; q > 0 && t.dist2 < a[q - 1].dist2; --q) a[q] = a[q - 1];
-            a[q] = t;
-        }
-    }
+    else
+        insertionSort(a, 0, m);
     // a[0, need) are the step's nearest, a[need - 1] the k-th nearest overall.
     std::copy(a, a + need, step);
     a[0] = step[need - 1];

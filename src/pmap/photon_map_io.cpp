@@ -222,7 +222,8 @@ std::string treeProblem(const std::string& problem) {
 }  // namespace
 
 void PhotonMap::checkTreeOrder(const std::string& what) const {
-    const std::string problem = checkKdTree(photons_);
+    // read() has checked every record already (and built maps have valid ones).
+    const std::string problem = checkKdTreeOrder(photons_);
     if (!problem.empty()) throw InputError(SourceLoc{what, 0}, treeProblem(problem));
 }
 
@@ -322,12 +323,9 @@ PhotonMap PhotonMap::read(std::istream& in, const std::string& what, TreeOrder o
                           });
     }
 
-    if (order == TreeOrder::Checked) {
-        map.checkTreeOrder(what);
-    } else {
-        const std::string problem = checkPhotonRecords(map.photons_);
-        if (!problem.empty()) throw InputError(loc, treeProblem(problem));
-    }
+    if (const std::string problem = checkPhotonRecords(map.photons_); !problem.empty())
+        throw InputError(loc, treeProblem(problem));
+    if (order == TreeOrder::Checked) map.checkTreeOrder(what);
     if (numPrimary)
         for (const Photon& p : map.photons_)
             if (p.primary >= numPrimary)

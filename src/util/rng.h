@@ -58,4 +58,18 @@ private:
     uint64_t s_[4];
 };
 
+// A point uniform in the disc of `radius` about the origin, drawn by rejection from the
+// enclosing square (no trigonometry); returns x^2 + y^2. Projected up onto the unit
+// hemisphere (z = sqrt(1 - x^2 - y^2)) such points are cosine-distributed directions
+// (Malley's method).
+inline double uniformDiscPoint(Rng& rng, double radius, double& x, double& y) {
+    double r2;
+    do {
+        x = radius * (2 * rng.uniform() - 1);
+        y = radius * (2 * rng.uniform() - 1);
+        r2 = x * x + y * y;
+    } while (r2 >= radius * radius);
+    return r2;
+}
+
 }  // namespace rp
