@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "render/source_sampling.h"
+#include "util/small_sort.h"
 
 namespace rp::render {
 
@@ -234,16 +235,9 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
     // RADIANCE compat (source.c direct): test the brightest first; stop when the next
     // nshadcheck = n^dc estimates together fall below dt/weight times what has been
     // found so far. Stable sort: ties keep source order, so results are reproducible.
-    // A handful of candidates is usual: an insertion sort (stable too) then, as
-    // std::stable_sort allocated a buffer on every call.
-    const auto brighter = [](const Candidate& a, const Candidate& b) { return a.brt > b.brt; };
-    if (cands.size() <= 16) {
-        for (size_t i = 1; i < cands.size(); ++i)
-            for (size_t j = i; j > 0 && brighter(cands[j], cands[j - 1]); --j)
-                std::swap(cands[j], cands[j - 1]);
-    } else {
-        std::stable_sort(cands.begin(), cands.end(), brighter);
-    }
+    // A handful of candidates is usual (stableSortSmall: no buffer allocated per call).
+    stableSortSmall(cands.begin(), cands.end(),
+                    [](const Candidate& a, const Candidate& b) { return a.brt > b.brt; });
     const size_t n = cands.size();
     tail.assign(n + 1, 0.0);
     for (size_t i = n; i-- > 0;) tail[i] = tail[i + 1] + cands[i].brt;
