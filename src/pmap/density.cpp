@@ -62,8 +62,8 @@ std::span<const PhotonHit> PhotonLookup::findPhotons(const Vec3& pos, const Vec3
 std::span<PhotonHit> PhotonLookup::search(const Vec3& pos, const Vec3* normal, size_t queueLen) {
     lastSearchDist2_ = static_cast<float>(maxDist2_);
     found_ = index_ ? index_->findNearestSlots(pos, normal, lastSearchDist2_, queueLen, hits_)
-                    : findNearestPhotons(map_->photons(), pos, normal, lastSearchDist2_,
-                                         std::span<PhotonHit>(hits_.data(), queueLen));
+                    : map_->findNearest(pos, normal, lastSearchDist2_,
+                                        std::span<PhotonHit>(hits_.data(), queueLen));
     ++lookups_;
     if (found_ == queueLen) lastSearchDist2_ = hits_[0].dist2;
 
@@ -108,7 +108,7 @@ std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& 
             for (int c = 0; c < 3; ++c) irrad[c] += f[c];
         }
     } else {
-        const auto photons = map_->photons();
+        const auto photons = map_->searched();
         for (size_t i = 1; i < hits.size(); ++i) {
             const auto f = photons[hits[i].index].fluxRgb();
             for (int c = 0; c < 3; ++c) irrad[c] += f[c];
@@ -131,7 +131,8 @@ std::array<double, 3> PhotonLookup::biasCompensatedDensity(const Vec3& pos, cons
     auto hits = search(pos, &normal, queueLen);
     if (index_)
         for (PhotonHit& h : hits) h.index = index_->photonIndex(h.index);
-    const BiasCompResult r = compensateBias(hits, map_->photons(), lastSearchDist2_,
+    // The hits' photons are read either way (the index was built from all of them).
+    const BiasCompResult r = compensateBias(hits, map_->searched(), lastSearchDist2_,
                                             hits.size() == queueLen, std::min(bwMin, upper),
                                             upper, biasPrefix_);
     // compensateBias sorted the hits: no longer a heap, so forget them.
@@ -152,10 +153,12 @@ std::array<double, 3> PhotonLookup::precompDensity(const Vec3& pos, const Vec3& 
             return {f[0], f[1], f[2]};
         }
     } else {
-        idx = findNearestPhoton(map_->photons(), pos, &normal, map_->stats().cogDist2);
+        PhotonHit hit{};
+        if (map_->findNearest(pos, &normal, map_->stats().cogDist2, {&hit, 1}) == 1)
+            idx = hit.index;
     }
     if (idx < 0) return irrad;
-    const auto f = map_->photons()[static_cast<size_t>(idx)].fluxRgb();
+    const auto f = map_->searched()[static_cast<size_t>(idx)].fluxRgb();
     return {f[0], f[1], f[2]};
 }
 

@@ -112,14 +112,6 @@ void gatherHeap(const Photon* inOrder, size_t s, size_t n, size_t root, Photon* 
         [&] { gatherHeap(inOrder, s + nLeft + 1, n - nLeft - 1, 2 * root + 1, out, fork); });
 }
 
-// Query normal scaled for comparison with the int8 photon normals.
-struct QueryNormal {
-    float n[3];
-    bool accepts(const Photon& p) const {
-        return n[0] * p.norm[0] + n[1] * p.norm[1] + n[2] * p.norm[2] > kNormalTolerance;
-    }
-};
-
 struct Pending {
     uint32_t node;  // 1-based heap index of a subtree still to visit
     float plane2;   // squared distance from the query to the plane that separated it
@@ -231,14 +223,18 @@ void photonBounds(std::span<const Photon> photons, float lo[3], float hi[3]) {
         }
 }
 
-std::string checkPhotonRecords(std::span<const Photon> tree) {
+std::string checkPhotonRecords(std::span<const Photon> tree, size_t first) {
     for (size_t i = 0; i < tree.size(); ++i) {
         const Photon& p = tree[i];
-        if (p.discr() > 2) return fmt::format("photon {} has split axis 3", i);
+        if (p.discr() > 2) return fmt::format("photon {} has split axis 3", first + i);
         if (!(std::isfinite(p.pos[0]) && std::isfinite(p.pos[1]) && std::isfinite(p.pos[2])))
-            return fmt::format("photon {} has a non-finite position", i);
+            return fmt::format("photon {} has a non-finite position", first + i);
     }
     return {};
+}
+
+std::string misplacedPhoton(size_t index) {
+    return fmt::format("photon {} lies on the wrong side of an ancestor's split", index);
 }
 
 std::string checkKdTree(std::span<const Photon> tree) {
@@ -257,7 +253,7 @@ std::string checkKdTreeOrder(std::span<const Photon> tree) {
         hi[a] = std::numeric_limits<float>::infinity();
     }
     if (const size_t bad = firstMisplaced(tree.data(), n, 1, lo, hi))
-        return fmt::format("photon {} lies on the wrong side of an ancestor's split", bad - 1);
+        return misplacedPhoton(bad - 1);
     return {};
 }
 

@@ -47,7 +47,10 @@ void photonBounds(std::span<const Photon> photons, float lo[3], float hi[3]);
 // right subtree >=. Returns "" if valid, else a short description of the first violation.
 std::string checkKdTree(std::span<const Photon> tree);
 // The per-photon part of checkKdTree (split axis and finite position), without the order.
-std::string checkPhotonRecords(std::span<const Photon> tree);
+// Messages number the photons from `first` (for a part of a tree).
+std::string checkPhotonRecords(std::span<const Photon> tree, size_t first = 0);
+// checkKdTreeOrder's description of photon `index` (0-based) outside its ancestors' splits.
+std::string misplacedPhoton(size_t index);
 // The order part of checkKdTree alone, for photons whose records pass checkPhotonRecords.
 std::string checkKdTreeOrder(std::span<const Photon> tree);
 

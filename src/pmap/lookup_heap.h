@@ -1,4 +1,5 @@
-// The bounded max-heap of nearest-photon results of the kd-tree walk (kdtree.cpp).
+// The bounded max-heap of nearest-photon results of the kd-tree walks (kdtree.cpp,
+// on_demand_photons.cpp), and their normal filter.
 // RADIANCE compat: pmapkdt.c keeps a queue of maxGather+1 entries the same way. (The
 // bucket index, lookup_index.cpp, collects candidates and selects instead; it keeps the
 // same photons up to ties at the k-th distance.)
@@ -10,6 +11,14 @@
 #include "pmap/kdtree.h"
 
 namespace rp::pmap {
+
+// Query normal scaled for comparison with the int8 photon normals (kNormalTolerance).
+struct QueryNormal {
+    float n[3];
+    bool accepts(const Photon& p) const {
+        return n[0] * p.norm[0] + n[1] * p.norm[1] + n[2] * p.norm[2] > kNormalTolerance;
+    }
+};
 
 // Offers photon `idx` at squared distance d2 (< maxDist2, checked by the caller) to the
 // heap heap[0..found) of capacity k (1-based positions internally; heap[0] is the

@@ -3,6 +3,7 @@
 
 #include <limits>
 
+#include "pmap/on_demand_photons.h"
 #include "pmap/portable_io.h"
 #include "util/error.h"
 
@@ -65,6 +66,20 @@ PhotonMap::PhotonMap(PhotonMapType type, std::vector<Photon> photons,
     RP_CHECK(primaries_.empty() || type == PhotonMapType::Contrib);
     stats_ = computeStats(photons);
     photons_ = buildKdTree(std::move(photons), parallel);
+}
+
+std::span<const Photon> PhotonMap::photons() const {
+    return onDemand_ ? onDemand_->all() : std::span<const Photon>(photons_);
+}
+
+std::span<const Photon> PhotonMap::searched() const {
+    return onDemand_ ? onDemand_->decoded() : std::span<const Photon>(photons_);
+}
+
+size_t PhotonMap::findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,
+                              std::span<PhotonHit> out) const {
+    return onDemand_ ? onDemand_->findNearest(pos, normal, maxDist2, out)
+                     : findNearestPhotons(photons_, pos, normal, maxDist2, out);
 }
 
 }  // namespace rp::pmap

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <iosfwd>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -16,6 +17,8 @@
 #include "util/header.h"
 
 namespace rp::pmap {
+
+class OnDemandPhotons;
 
 // RADIANCE's file format version for in-core kd-tree maps with RGBE flux and plain
 // primaries (pmapio.h PMAP_FILEVER); the only one we read and write so far.
@@ -52,10 +55,19 @@ public:
               std::vector<PhotonPrimary> primaries = {}, bool parallel = true);
 
     PhotonMapType type() const { return type_; }
-    size_t size() const { return photons_.size(); }
-    bool empty() const { return photons_.empty(); }
-    // Photons in kd-tree (= file) order.
-    std::span<const Photon> photons() const { return photons_; }
+    size_t size() const { return stats_.numPhotons; }
+    bool empty() const { return size() == 0; }
+    // Photons in kd-tree (= file) order. A map loaded on demand reads and checks the
+    // photons no search has reached yet first (once; InputError if the file turns out to
+    // be corrupt or truncated).
+    std::span<const Photon> photons() const;
+
+    // The kd-tree walk (kdtree.h findNearestPhotons), for maps loaded either way.
+    size_t findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,
+                       std::span<PhotonHit> out) const;
+    // Photons as far as they are read: those findNearest returned are valid (photons()
+    // without reading the rest of a map loaded on demand).
+    std::span<const Photon> searched() const;
     const PhotonMapStats& stats() const { return stats_; }
     const std::vector<PhotonPrimary>& primaries() const { return primaries_; }
 
@@ -85,14 +97,26 @@ public:
     enum class TreeOrder { Checked, Unchecked };
     static PhotonMap read(std::istream& in, const std::string& what,
                           TreeOrder order = TreeOrder::Checked);
-    static PhotonMap load(const std::string& path, TreeOrder order = TreeOrder::Checked);
+    // With `causticOnDemand`, a caustic map's photons are read as searches reach them
+    // (pmap/on_demand_photons.h), each checked then; the header, statistics and file size
+    // are checked at once either way. For the renderer, which looks caustic maps up about
+    // once per primary ray and may never need most of a million photons.
+    static PhotonMap load(const std::string& path, TreeOrder order = TreeOrder::Checked,
+                          bool causticOnDemand = false);
     // The kd-tree order check that read() skips with TreeOrder::Unchecked, for a map that
     // turns out to need it after all; throws the same InputError naming `what`.
     void checkTreeOrder(const std::string& what) const;
 
 private:
+    // The file's header and binary statistics, up to the photon records (the stream is
+    // left at the first one); the photon count is checked against the bytes that follow.
+    static PhotonMap readPrologue(std::istream& in, const std::string& what);
+    // The photon records that follow, decoded and checked (read()'s second half).
+    void readPhotons(std::istream& in, const std::string& what, TreeOrder order);
+
     PhotonMapType type_ = PhotonMapType::Global;
     std::vector<Photon> photons_;
+    std::shared_ptr<const OnDemandPhotons> onDemand_;  // set instead of photons_ on demand
     std::vector<PhotonPrimary> primaries_;
     PhotonMapStats stats_;
 };

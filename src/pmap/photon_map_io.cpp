@@ -19,8 +19,9 @@
 #include <ostream>
 #include <random>
 
+#include "pmap/on_demand_photons.h"
 #include "pmap/photon_map.h"
-#include "pmap/portable_io.h"
+#include "pmap/photon_records.h"
 #include "util/bulk_memory.h"
 #include "util/error.h"
 
@@ -28,7 +29,6 @@ namespace rp::pmap {
 
 namespace {
 
-constexpr size_t kPhotonRecordSize = 3 * kPortableFloatSize + 3 + 4 + 4 + 1;  // 27
 constexpr size_t kPrimaryRecordSize = 2;
 // Bytes after the version string up to and including numPrimary.
 constexpr size_t kFixedBinarySize = 8 + (3 + 6 + 3 + 1) * kPortableFloatSize + 4;  // 77
@@ -50,18 +50,6 @@ void encodePhoton(unsigned char* out, const Photon& p) {
     for (int a = 0; a < 4; ++a) out[3 + a] = p.flux[a];
     putInt(out + 7, p.primary, 4);
     out[11] = p.flags;
-}
-
-Photon decodePhoton(const unsigned char* b) {
-    Photon p;
-    // RADIANCE compat: getflt's double is assigned to the float position (round to nearest).
-    for (int a = 0; a < 3; ++a) p.pos[a] = static_cast<float>(getFlt(b + a * kPortableFloatSize));
-    b += 3 * kPortableFloatSize;
-    for (int a = 0; a < 3; ++a) p.norm[a] = static_cast<int8_t>(b[a]);
-    for (int a = 0; a < 4; ++a) p.flux[a] = b[3 + a];
-    p.primary = static_cast<uint32_t>(getInt32(b + 7));
-    p.flags = b[11];
-    return p;
 }
 
 // Explains why a version string other than "3.1k" cannot be read.
@@ -215,19 +203,30 @@ void PhotonMap::save(const std::string& path, const std::string& commandLine,
     guard.armed = false;
 }
 
-namespace {
+Photon decodePhoton(const unsigned char* b) {
+    Photon p;
+    // RADIANCE compat: getflt's double is assigned to the float position (round to nearest).
+    for (int a = 0; a < 3; ++a) p.pos[a] = static_cast<float>(getFlt(b + a * kPortableFloatSize));
+    b += 3 * kPortableFloatSize;
+    for (int a = 0; a < 3; ++a) p.norm[a] = static_cast<int8_t>(b[a]);
+    for (int a = 0; a < 4; ++a) p.flux[a] = b[3 + a];
+    p.primary = static_cast<uint32_t>(getInt32(b + 7));
+    p.flags = b[11];
+    return p;
+}
+
 std::string treeProblem(const std::string& problem) {
     return "photons are not a valid kd-tree (" + problem + "); corrupt file?";
 }
-}  // namespace
 
 void PhotonMap::checkTreeOrder(const std::string& what) const {
-    // read() has checked every record already (and built maps have valid ones).
-    const std::string problem = checkKdTreeOrder(photons_);
+    // read() has checked every record already (and built maps have valid ones); so has
+    // photons() of a map loaded on demand, with the order.
+    const std::string problem = checkKdTreeOrder(photons());
     if (!problem.empty()) throw InputError(SourceLoc{what, 0}, treeProblem(problem));
 }
 
-PhotonMap PhotonMap::read(std::istream& in, const std::string& what, TreeOrder order) {
+PhotonMap PhotonMap::readPrologue(std::istream& in, const std::string& what) {
     const SourceLoc loc{what, 0};
     const Header h = readHeader(in, what);
     PhotonMap map;
@@ -300,7 +299,20 @@ PhotonMap PhotonMap::read(std::istream& in, const std::string& what, TreeOrder o
     map.primaries_.resize(numPrimary);
     for (size_t i = 0; i < numPrimary; ++i)
         map.primaries_[i].srcIdx = static_cast<int16_t>(getInt(&buf[i * kPrimaryRecordSize], 2));
+    return map;
+}
 
+PhotonMap PhotonMap::read(std::istream& in, const std::string& what, TreeOrder order) {
+    PhotonMap map = readPrologue(in, what);
+    map.readPhotons(in, what, order);
+    return map;
+}
+
+void PhotonMap::readPhotons(std::istream& in, const std::string& what, TreeOrder order) {
+    const SourceLoc loc{what, 0};
+    PhotonMap& map = *this;
+    const PhotonMapStats& s = map.stats_;
+    const uint64_t numPrimary = map.primaries_.size();
     // Read in chunks (bounded memory for any map size) and decode each chunk in parallel:
     // records are fixed-size, so photon i is at byte 27 i of its chunk. The photon array is
     // advised for huge pages before its first write (see adviseHugePages: 4 KiB page
@@ -331,15 +343,23 @@ PhotonMap PhotonMap::read(std::istream& in, const std::string& what, TreeOrder o
             if (p.primary >= numPrimary)
                 throw InputError(loc, fmt::format("photon refers to primary ray {} of {}",
                                                   p.primary, numPrimary));
-    return map;
 }
 
-PhotonMap PhotonMap::load(const std::string& path, TreeOrder order) {
+PhotonMap PhotonMap::load(const std::string& path, TreeOrder order, bool causticOnDemand) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw InputError(SourceLoc{path, 0},
                          fmt::format("can't open photon map file: {}", std::strerror(errno)));
-    return read(in, path, order);
+    PhotonMap map = readPrologue(in, path);
+    if (!causticOnDemand || map.type_ != PhotonMapType::Caustic) {
+        map.readPhotons(in, path, order);
+        return map;
+    }
+    const std::streampos records = in.tellg();
+    if (records < 0 || !in) throw InputError(SourceLoc{path, 0}, "can't determine file size");
+    map.onDemand_ = std::make_shared<const OnDemandPhotons>(
+        path, static_cast<uint64_t>(records), map.stats_.numPhotons);
+    return map;
 }
 
 }  // namespace rp::pmap

@@ -67,15 +67,16 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
     tbb::parallel_for(size_t(0), uses.size(), [&](size_t i) {
         try {
             // Searched through a PhotonIndex (pmap/lookup_index.h: same photons as the
-            // kd-tree walk, about 1.7x faster), so the file's kd-tree order is checked
-            // only for caustic maps, whose first rays walk it (Lookups::kKdTreeRays).
+            // kd-tree walk, about 1.7x faster), so the file's kd-tree order is not
+            // checked here. Caustic maps, whose first rays walk it (Lookups::kKdTreeRays),
+            // are read on demand: the walks read and check the photons they visit, and
+            // the rest is read when the index is built.
             Map& m = loaded[i];
-            m.map = pmap::PhotonMap::load(uses[i].file, pmap::PhotonMap::TreeOrder::Unchecked);
+            m.map = pmap::PhotonMap::load(uses[i].file, pmap::PhotonMap::TreeOrder::Unchecked,
+                                          /*causticOnDemand=*/true);
             const T type = m.map.type();
-            if (m.indexedOnDemand())
-                m.map.checkTreeOrder(uses[i].file);
-            else if (type != T::Contrib && type != T::Volume)  // those are refused below
-                m.index.get(m.map.photons());
+            if (!m.indexedOnDemand() && type != T::Contrib && type != T::Volume)
+                m.index.get(m.map.photons());  // contribution and volume maps are refused below
         } catch (...) {
             failed[i] = std::current_exception();
         }

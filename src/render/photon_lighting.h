@@ -60,7 +60,8 @@ public:
         // Caustic maps answer the first kKdTreeRays primary rays by walking the file's
         // kd-tree and build their search index only when a later ray needs them (see
         // Map::indexedOnDemand): a sensor grid of a few hundred points then never pays for
-        // indexing a million caustic photons (0.07 s of a 0.8 s Cornell run). Chosen by
+        // indexing a million caustic photons (0.07 s of a 0.8 s Cornell run), nor for
+        // reading them (they are read as the walks reach them). Chosen by
         // the ray's index, not by whether the index happens to exist yet, so results do
         // not depend on threads (the two searches may differ among equidistant photons).
         static constexpr uint64_t kKdTreeRays = 10000;

@@ -78,7 +78,8 @@ TEST(PhotonLighting, CausticMapWalkedForEarlyRaysThenIndexed) {
     }
 
     // Exchange the first two photon records (the root no longer splits its subtrees): a
-    // caustic map is refused, a global map (searched only through its index) is not.
+    // caustic map is refused by the first walk (it is read on demand, so only its header
+    // and size are checked at load), a global map (searched only through its index) is not.
     auto corrupt = [&](const std::string& path) {
         std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
         f.seekg(0, std::ios::end);
@@ -92,7 +93,19 @@ TEST(PhotonLighting, CausticMapWalkedForEarlyRaysThenIndexed) {
         f.write(a, 27);
     };
     corrupt(c);
-    EXPECT_THROW(PhotonLighting({{c, 50, 0}}, 0, scene), InputError);
+    PhotonLighting bad({{c, 50, 0}}, 0, scene);
+    auto lb = bad.makeLookups();
+    int refused = 0;
+    for (int i = 0; i < 100; ++i) {  // walks over the map reach the misplaced photons
+        lb->startRay(uint64_t(i));
+        try {
+            bad.causticDensity(*lb, {0.1 * (i % 10) + 0.05, 0.1 * (i / 10) + 0.05, 0}, {0, 0, 1});
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("not a valid kd-tree"), std::string::npos);
+            ++refused;
+        }
+    }
+    EXPECT_GT(refused, 0);
     const std::string g = writeMap(tmp.path(), "g.pm", pmap::PhotonMapType::Global, 20000, 1.0);
     corrupt(g);
     EXPECT_NO_THROW(PhotonLighting({{g, 50, 0}}, 0, scene));

@@ -1,0 +1,23 @@
+// The 27-byte photon record of RADIANCE "3.1k" map files (pmapkdt.c kdT_SavePhotons) and
+// the messages for records that fail their checks, shared by the eager reader
+// (photon_map_io.cpp) and the on-demand one (on_demand_photons.cpp).
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "pmap/photon.h"
+#include "pmap/portable_io.h"
+
+namespace rp::pmap {
+
+// pos 3 flt | norm 3 x 1 B | RGBE 4 x 1 B | primary 4 B | flags 1 B.
+constexpr size_t kPhotonRecordSize = 3 * kPortableFloatSize + 3 + 4 + 4 + 1;  // 27
+
+// The photon in the kPhotonRecordSize bytes at b (no checks: see checkPhotonRecords).
+Photon decodePhoton(const unsigned char* b);
+
+// "photons are not a valid kd-tree (<problem>); corrupt file?"
+std::string treeProblem(const std::string& problem);
+
+}  // namespace rp::pmap
