@@ -161,17 +161,14 @@ size_t knnSearch(const Photon* tree, size_t n, const float q[3], const QueryNorm
 
 }  // namespace
 
-std::vector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel) {
+BulkVector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel) {
     const size_t n = photons.size();
     if (n > kMaxTreePhotons)
         throw InputError(
             fmt::format("too many photons for one map ({}; at most {})", n, kMaxTreePhotons));
-    std::vector<Photon> out;
-    out.reserve(n);
-    // Huge pages before the first touch: 4 KiB page faults on this fresh array cost about
-    // as much as the median partitions (util/bulk_memory.h).
-    adviseHugePages(out.data(), n * sizeof(Photon));
-    out.resize(n);
+    // On huge pages (BulkVector): 4 KiB page faults on this fresh array cost about as much
+    // as the median partitions (util/bulk_memory.h).
+    BulkVector<Photon> out(n);
     if (n == 0) return out;
     float lo[3], hi[3];
     photonBounds(photons, lo, hi);

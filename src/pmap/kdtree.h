@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "pmap/photon.h"
+#include "util/bulk_memory.h"
 #include "util/vec.h"
 
 namespace rp::pmap {
@@ -37,7 +38,7 @@ constexpr uint64_t kMaxTreePhotons = 0xfffffffful;
 // flag bytes (other flag bits, positions, normals, flux and primary are kept). With
 // `parallel`, subtrees above a size threshold are built as TBB tasks; the result does not
 // depend on the number of threads. Requires size() <= kMaxTreePhotons.
-std::vector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel = true);
+BulkVector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel = true);
 
 // The lowest and highest coordinate per axis of the photons (+inf / -inf when empty).
 void photonBounds(std::span<const Photon> photons, float lo[3], float hi[3]);

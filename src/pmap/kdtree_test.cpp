@@ -25,7 +25,8 @@ std::vector<Photon> randomPhotons(size_t n, uint32_t seed, float scale = 1.0f) {
     return v;
 }
 
-bool samePhotonMultiset(std::vector<Photon> a, std::vector<Photon> b) {
+bool samePhotonMultiset(std::vector<Photon> a, std::span<const Photon> tree) {
+    std::vector<Photon> b(tree.begin(), tree.end());
     auto key = [](const Photon& p) { return p.primary; };
     std::sort(a.begin(), a.end(), [&](auto& x, auto& y) { return key(x) < key(y); });
     std::sort(b.begin(), b.end(), [&](auto& x, auto& y) { return key(x) < key(y); });
@@ -121,7 +122,7 @@ TEST(KdTree, CheckDetectsBrokenOrder) {
 }
 
 // Brute force with the same single-precision arithmetic as the search.
-std::vector<float> bruteForce(const std::vector<Photon>& tree, const Vec3& pos, const Vec3* n,
+std::vector<float> bruteForce(std::span<const Photon> tree, const Vec3& pos, const Vec3* n,
                               float maxDist2, size_t k) {
     const float q[3] = {float(pos.x), float(pos.y), float(pos.z)};
     std::vector<float> d;

@@ -115,7 +115,7 @@ private:
     void readPhotons(std::istream& in, const std::string& what, TreeOrder order);
 
     PhotonMapType type_ = PhotonMapType::Global;
-    std::vector<Photon> photons_;
+    BulkVector<Photon> photons_;
     std::shared_ptr<const OnDemandPhotons> onDemand_;  // set instead of photons_ on demand
     std::vector<PhotonPrimary> primaries_;
     PhotonMapStats stats_;

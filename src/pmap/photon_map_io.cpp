@@ -315,10 +315,7 @@ void PhotonMap::readPhotons(std::istream& in, const std::string& what, TreeOrder
     const uint64_t numPrimary = map.primaries_.size();
     // Read in chunks (bounded memory for any map size) and decode each chunk in parallel:
     // records are fixed-size, so photon i is at byte 27 i of its chunk. The photon array is
-    // advised for huge pages before its first write (see adviseHugePages: 4 KiB page
-    // faults cost more than the decoding here).
-    map.photons_.reserve(s.numPhotons);
-    adviseHugePages(map.photons_.data(), s.numPhotons * sizeof(Photon));
+    // on huge pages (BulkVector: 4 KiB page faults cost more than the decoding here).
     map.photons_.resize(s.numPhotons);
     const size_t chunk = std::min<size_t>(kReadChunkPhotons, s.numPhotons);
     BulkVector<unsigned char> raw(std::max<size_t>(chunk, 1) * kPhotonRecordSize);

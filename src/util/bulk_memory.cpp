@@ -2,6 +2,7 @@
 #include "util/bulk_memory.h"
 
 #include <cstdint>
+#include <new>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -19,6 +20,40 @@ void adviseHugePages(void* p, size_t bytes) {
 #else
     (void)p;
     (void)bytes;
+#endif
+}
+
+namespace {
+constexpr size_t kHugePage = size_t{2} << 20;
+size_t roundToHugePages(size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
+}  // namespace
+
+void* allocateHugePages(size_t bytes) {
+    const size_t size = roundToHugePages(bytes);
+#if defined(__linux__)
+    // Map one huge page more than needed and unmap the unaligned ends.
+    void* m = ::mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE,
+                     MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (m == MAP_FAILED) throw std::bad_alloc();
+    const uintptr_t raw = reinterpret_cast<uintptr_t>(m);
+    const uintptr_t begin = (raw + kHugePage - 1) & ~(kHugePage - 1);
+    if (begin > raw) ::munmap(m, begin - raw);
+    const uintptr_t tail = raw + size + kHugePage - (begin + size);
+    if (tail > 0) ::munmap(reinterpret_cast<void*>(begin + size), tail);
+    void* p = reinterpret_cast<void*>(begin);
+#else
+    void* p = ::operator new(size, std::align_val_t{kHugePage});
+#endif
+    adviseHugePages(p, size);
+    return p;
+}
+
+void freeHugePages(void* p, size_t bytes) {
+#if defined(__linux__)
+    ::munmap(p, roundToHugePages(bytes));
+#else
+    (void)bytes;
+    ::operator delete(p, std::align_val_t{kHugePage});
 #endif
 }
 
