@@ -76,7 +76,7 @@ void Machine::attach(const CodeImage& image) {
     for (std::size_t i = 0; i < image.constants.size(); ++i)
         r_[image.constOperand(static_cast<int>(i))] = image.constants[i];
     stamps_.assign(image.nvars + 1, 0);
-    if (saved_.empty()) saved_.assign(1 << 16, 0.0);
+    if (!saved_) saved_.reset(new double[kSavedCapacity]);
     setRay(ray_ ? *ray_ : defaultRay_);
 }
 
@@ -100,10 +100,10 @@ double Machine::run(int blockId, const double* args, int nargs) {
     const CodeImage& img = *image_;
     const Instr* const code = img.code.data();
     double* const r = r_;
-    if (nargs > static_cast<int>(saved_.size())) runtimeError(nullptr, "too many arguments");
-    std::copy(args, args + nargs, saved_.data());
-    double* const saved = saved_.data();
-    const std::size_t savedCap = saved_.size();
+    if (nargs > static_cast<int>(kSavedCapacity)) runtimeError(nullptr, "too many arguments");
+    std::copy(args, args + nargs, saved_.get());
+    double* const saved = saved_.get();
+    const std::size_t savedCap = kSavedCapacity;
     std::size_t savedTop = nargs;
     const double* prm = saved;
     int nprm = nargs;
