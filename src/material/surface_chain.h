@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "material/pattern.h"
@@ -33,8 +34,34 @@ struct ShadingLayer {
 // mixture's probability (the expectation is the same as RADIANCE's raymixture).
 struct ChainResult {
     static constexpr int kMaxLayers = 4;
-    std::array<ShadingLayer, kMaxLayers> layers{};
+    // Room for kMaxLayers layers, of which only layers[0 .. count) are set: a resolve
+    // runs at every shaded point and shadow test, and initialising all four (256 bytes,
+    // a memcpy from a template) was a visible part of rtrace's time for plain materials.
+    // ShadingLayer is trivially copyable, so the bytes are its storage (C++20 implicit
+    // object creation).
+    class Layers {
+    public:
+        ShadingLayer& operator[](size_t i) { return data()[i]; }
+        const ShadingLayer& operator[](size_t i) const { return data()[i]; }
+        ShadingLayer* begin() { return data(); }
+        const ShadingLayer* begin() const { return data(); }
+
+    private:
+        ShadingLayer* data() { return reinterpret_cast<ShadingLayer*>(bytes_); }
+        const ShadingLayer* data() const { return reinterpret_cast<const ShadingLayer*>(bytes_); }
+        alignas(ShadingLayer) unsigned char bytes_[kMaxLayers * sizeof(ShadingLayer)];
+    };
+    static_assert(std::is_trivially_copyable_v<ShadingLayer>);
+    Layers layers;
     int count = 0;
+    // One plain layer: `material` (kVoid: invisible) with weight 1, no pattern or texture.
+    static ChainResult plain(int32_t material) {
+        ChainResult r;
+        r.layers[0] = ShadingLayer{};
+        r.layers[0].material = material;
+        r.count = 1;
+        return r;
+    }
 };
 
 // Every pattern, texture and mixture of a scene, compiled once (function and data files

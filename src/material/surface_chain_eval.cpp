@@ -253,13 +253,10 @@ SurfaceChainEvaluator::SurfaceChainEvaluator(const SurfaceChains& chains)
 SurfaceChainEvaluator::~SurfaceChainEvaluator() = default;
 
 ChainResult SurfaceChainEvaluator::resolve(int32_t modifier, const PatternPoint& at, Rng& rng) {
-    ChainResult res;
     const SurfaceChains::Impl& c = impl_->chains;
-    if (modifier == kVoid || c.plainMaterial[modifier] >= 0) {
-        res.layers[0].material = modifier == kVoid ? kVoid : modifier;
-        res.count = 1;
-        return res;
-    }
+    if (modifier == kVoid || c.plainMaterial[modifier] >= 0)
+        return ChainResult::plain(modifier == kVoid ? kVoid : modifier);
+    ChainResult res;
     Impl& im = *impl_;
     im.at = &at;
     im.rng = &rng;

@@ -61,12 +61,8 @@ void Renderer::Context::applyMaterialCalc(int32_t material, const Hit& hit, cons
 
 material::ChainResult Renderer::Context::resolve(int32_t modifier, const Hit& hit,
                                                  const Vec3& dir) {
-    if (impl.chains.isPlain(modifier)) {
-        material::ChainResult r;
-        r.count = 1;
-        r.layers[0].material = impl.chains.plainMaterial(modifier);
-        return r;
-    }
+    if (impl.chains.isPlain(modifier))
+        return material::ChainResult::plain(impl.chains.plainMaterial(modifier));
     return chains.resolve(modifier, patternPoint(hit, dir), rng);
 }
 
