@@ -41,7 +41,7 @@ std::string BiasCompStats::report(const char* photonType) const {
                        rmsError());
 }
 
-BiasCompResult compensateBias(std::span<PhotonHit> hits, std::span<const Photon> photons,
+BiasCompResult compensateBias(std::span<PhotonHit> hits, const PhotonMap& map,
                               double searchDist2, bool full, int bwMin, int bwMax,
                               std::vector<std::array<double, 3>>& prefix) {
     BiasCompResult res;
@@ -55,7 +55,7 @@ BiasCompResult compensateBias(std::span<PhotonHit> hits, std::span<const Photon>
     if (prefix.size() < m + 1) prefix.resize(m + 1);
     prefix[0] = {0, 0, 0};
     for (size_t i = 0; i < m; ++i) {
-        const auto f = photons[hits[i].index].fluxRgb();
+        const auto f = map.searchedPhoton(hits[i].index).fluxRgb();
         for (int c = 0; c < 3; ++c) prefix[i + 1][c] = prefix[i][c] + f[c];
     }
     const int last = static_cast<int>(m) - 1;  // largest bandwidth with a (j+1)-th distance

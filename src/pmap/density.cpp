@@ -108,9 +108,8 @@ std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& 
             for (int c = 0; c < 3; ++c) irrad[c] += f[c];
         }
     } else {
-        const auto photons = map_->searched();
         for (size_t i = 1; i < hits.size(); ++i) {
-            const auto f = photons[hits[i].index].fluxRgb();
+            const auto f = map_->searchedPhoton(hits[i].index).fluxRgb();
             for (int c = 0; c < 3; ++c) irrad[c] += f[c];
         }
     }
@@ -132,7 +131,7 @@ std::array<double, 3> PhotonLookup::biasCompensatedDensity(const Vec3& pos, cons
     if (index_)
         for (PhotonHit& h : hits) h.index = index_->photonIndex(h.index);
     // The hits' photons are read either way (the index was built from all of them).
-    const BiasCompResult r = compensateBias(hits, map_->searched(), lastSearchDist2_,
+    const BiasCompResult r = compensateBias(hits, *map_, lastSearchDist2_,
                                             hits.size() == queueLen, std::min(bwMin, upper),
                                             upper, biasPrefix_);
     // compensateBias sorted the hits: no longer a heap, so forget them.
@@ -158,7 +157,7 @@ std::array<double, 3> PhotonLookup::precompDensity(const Vec3& pos, const Vec3& 
             idx = hit.index;
     }
     if (idx < 0) return irrad;
-    const auto f = map_->searched()[static_cast<size_t>(idx)].fluxRgb();
+    const auto f = map_->searchedPhoton(static_cast<size_t>(idx)).fluxRgb();
     return {f[0], f[1], f[2]};
 }
 

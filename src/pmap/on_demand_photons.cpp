@@ -22,6 +22,7 @@ namespace rp::pmap {
 
 namespace {
 constexpr size_t kAllChunkPhotons = size_t{1} << 18;  // all(): photons read per chunk (7 MB)
+constexpr size_t kPoolBytes = size_t{2} << 20;        // one huge page per pool chunk
 }  // namespace
 
 OnDemandPhotons::OnDemandPhotons(const std::string& path, uint64_t offset, uint64_t n)
@@ -30,14 +31,12 @@ OnDemandPhotons::OnDemandPhotons(const std::string& path, uint64_t offset, uint6
     if (fd_ < 0)
         throw InputError(SourceLoc{path, 0},
                          fmt::format("can't open photon map file: {}", std::strerror(errno)));
-    // Uninitialised (the pages of blocks never read are never touched) and on huge pages:
-    // walks reach all over the array, and 4 KiB faults cost more than 2 MiB ones per byte.
-    data_ = BulkAllocator<Photon>().allocate(std::max<size_t>(n_, 1));
-    done_ = std::make_unique<std::atomic<uint8_t>[]>((n_ >> kBlockShift) + 1);
+    blocks_ = std::make_unique<std::atomic<const Photon*>[]>((n_ >> kBlockShift) + 1);
 }
 
 OnDemandPhotons::~OnDemandPhotons() {
-    BulkAllocator<Photon>().deallocate(data_, std::max<size_t>(n_, 1));
+    for (Photon* chunk : pool_) freeHugePages(chunk, kPoolBytes);
+    if (all_) freeHugePages(all_, std::max<size_t>(n_, 1) * sizeof(Photon));
     if (fd_ >= 0) ::close(fd_);
 }
 
@@ -55,49 +54,65 @@ void OnDemandPhotons::readRecords(size_t first, size_t count, unsigned char* buf
     }
 }
 
-void OnDemandPhotons::readBlock(size_t block) const {
+const Photon* OnDemandPhotons::readBlock(size_t block) const {
     std::lock_guard<std::mutex> lock(readMutex_);
-    if (done_[block].load(std::memory_order_relaxed)) return;  // another thread read it
+    if (const Photon* b = blocks_[block].load(std::memory_order_relaxed)) return b;  // raced
     const size_t first = block << kBlockShift;
-    const size_t count = std::min(n_ - first, size_t{1} << kBlockShift);
-    unsigned char buf[(size_t{1} << kBlockShift) * kPhotonRecordSize];
+    const size_t count = std::min(n_ - first, kBlockSize);
+    unsigned char buf[kBlockSize * kPhotonRecordSize];
     readRecords(first, count, buf);
+    constexpr size_t kPoolBlocks = kPoolBytes / (kBlockSize * sizeof(Photon));
+    if (pool_.empty() || poolUsed_ == kPoolBlocks) {
+        pool_.push_back(static_cast<Photon*>(allocateHugePages(kPoolBytes)));
+        poolUsed_ = 0;
+    }
+    Photon* dst = pool_.back() + poolUsed_ * kBlockSize;
     for (size_t j = 0; j < count; ++j)
-        ::new (static_cast<void*>(data_ + first + j)) Photon(decodePhoton(buf + j * kPhotonRecordSize));
-    if (const std::string problem = checkPhotonRecords({data_ + first, count}, first); !problem.empty())
+        ::new (static_cast<void*>(dst + j)) Photon(decodePhoton(buf + j * kPhotonRecordSize));
+    if (const std::string problem = checkPhotonRecords({dst, count}, first); !problem.empty())
         throw InputError(SourceLoc{path_, 0}, treeProblem(problem));
-    done_[block].store(1, std::memory_order_release);
+    ++poolUsed_;
+    blocks_[block].store(dst, std::memory_order_release);
+    return dst;
 }
 
 std::span<const Photon> OnDemandPhotons::all() const {
     std::call_once(allOnce_, [&] {
         std::lock_guard<std::mutex> lock(readMutex_);
-        const size_t blocks = (n_ + (size_t{1} << kBlockShift) - 1) >> kBlockShift;
-        std::vector<unsigned char> raw;
-        for (size_t i = 0; i < n_; i += kAllChunkPhotons) {
-            const size_t n = std::min(kAllChunkPhotons, n_ - i);
-            raw.resize(n * kPhotonRecordSize);
-            readRecords(i, n, raw.data());
-            // Isolated: this thread holds the lock, and must not pick up a render task
-            // that would wait for it while it waits for the loop.
-            tbb::this_task_arena::isolate([&] {
-                tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1 << 14),
-                                  [&](const tbb::blocked_range<size_t>& r) {
-                                      for (size_t j = r.begin(); j < r.end(); ++j)
-                                          if (!done_[(i + j) >> kBlockShift].load(
-                                                  std::memory_order_relaxed))
-                                              ::new (static_cast<void*>(data_ + i + j)) Photon(
+        Photon* all =
+            static_cast<Photon*>(allocateHugePages(std::max<size_t>(n_, 1) * sizeof(Photon)));
+        try {
+            std::vector<unsigned char> raw;
+            for (size_t i = 0; i < n_; i += kAllChunkPhotons) {
+                const size_t n = std::min(kAllChunkPhotons, n_ - i);
+                raw.resize(n * kPhotonRecordSize);
+                readRecords(i, n, raw.data());
+                // Isolated: this thread holds the lock, and must not pick up a render task
+                // that would wait for it while it waits for the loop.
+                tbb::this_task_arena::isolate([&] {
+                    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1 << 14),
+                                      [&](const tbb::blocked_range<size_t>& r) {
+                                          for (size_t j = r.begin(); j < r.end(); ++j)
+                                              ::new (static_cast<void*>(all + i + j)) Photon(
                                                   decodePhoton(raw.data() + j * kPhotonRecordSize));
-                                  });
-            });
+                                      });
+                });
+            }
+            const std::span<const Photon> photons(all, n_);
+            std::string problem = checkPhotonRecords(photons);
+            if (problem.empty()) problem = checkKdTreeOrder(photons);
+            if (!problem.empty()) throw InputError(SourceLoc{path_, 0}, treeProblem(problem));
+        } catch (...) {
+            freeHugePages(all, std::max<size_t>(n_, 1) * sizeof(Photon));
+            throw;
         }
-        const std::span<const Photon> photons(data_, n_);
-        std::string problem = checkPhotonRecords(photons);
-        if (problem.empty()) problem = checkKdTreeOrder(photons);
-        if (!problem.empty()) throw InputError(SourceLoc{path_, 0}, treeProblem(problem));
-        for (size_t b = 0; b < blocks; ++b) done_[b].store(1, std::memory_order_release);
+        all_ = all;
+        // Walks read the blocks not yet in the pool from here on.
+        for (size_t b = 0; b <= (n_ >> kBlockShift); ++b)
+            if (!blocks_[b].load(std::memory_order_relaxed))
+                blocks_[b].store(all + (b << kBlockShift), std::memory_order_release);
     });
-    return {data_, n_};
+    return {all_, n_};
 }
 
 // findNearestPhotons' walk (kdtree.cpp knnSearch: same order, same offers, so the same

@@ -18,6 +18,7 @@
 #include <mutex>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "pmap/kdtree.h"
 #include "pmap/lookup_heap.h"
@@ -42,34 +43,44 @@ public:
     size_t findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,
                        std::span<PhotonHit> out) const;
 
-    // The photon array as far as it is decoded: entries a findNearest returned are valid,
-    // others may not be until all().
-    std::span<const Photon> decoded() const { return {data_, n_}; }
+    // Photon i (0-based), which a findNearest must have returned (or all() been called).
+    const Photon& photon(size_t i) const {
+        return blocks_[i >> kBlockShift].load(std::memory_order_acquire)[i & kBlockMask];
+    }
 
-    // Every photon, decoded and checked (records, then the kd-tree order); the work is done
-    // once, by the first caller. Thread-safe.
+    // Every photon, decoded and checked (records, then the kd-tree order), as one array;
+    // the work is done once, by the first caller. Thread-safe.
     std::span<const Photon> all() const;
 
 private:
     static constexpr int kBlockShift = 6;  // photons are read in blocks of 64 (1.7 kB)
+    static constexpr size_t kBlockSize = size_t{1} << kBlockShift;
+    static constexpr size_t kBlockMask = kBlockSize - 1;
 
     const Photon& at(size_t i) const {
-        if (!done_[i >> kBlockShift].load(std::memory_order_acquire)) readBlock(i >> kBlockShift);
-        return data_[i];
+        const Photon* b = blocks_[i >> kBlockShift].load(std::memory_order_acquire);
+        if (!b) b = readBlock(i >> kBlockShift);
+        return b[i & kBlockMask];
     }
-    void readBlock(size_t block) const;
+    // Reads, decodes and checks block b into the pool (once); returns its photons.
+    const Photon* readBlock(size_t b) const;
     // Reads records [first, first + count) into buf; InputError on a short read.
     void readRecords(size_t first, size_t count, unsigned char* buf) const;
     template <bool kFilter>
-    size_t walk(const float q[3], const QueryNormal& qn, float maxDist2,
-                PhotonHit* heap, size_t k) const;
+    size_t walk(const float q[3], const QueryNormal& qn, float maxDist2, PhotonHit* heap,
+                size_t k) const;
 
     std::string path_;
     int fd_ = -1;
     uint64_t offset_ = 0;
     size_t n_ = 0;
-    Photon* data_ = nullptr;  // n_ entries, constructed as their blocks are read
-    std::unique_ptr<std::atomic<uint8_t>[]> done_;  // per block: decoded and checked
+    // Per block: its decoded and checked photons, or null. Blocks read by walks sit in
+    // pool chunks in the order read, so that fresh memory grows with what the walks
+    // reach: an array for the whole map, touched all over, cost its size in zeroed pages.
+    std::unique_ptr<std::atomic<const Photon*>[]> blocks_;
+    mutable std::vector<Photon*> pool_;  // chunks of kPoolBlocks blocks
+    mutable size_t poolUsed_ = 0;        // blocks used in the last chunk
+    mutable Photon* all_ = nullptr;      // all(): every photon, in order
     mutable std::mutex readMutex_;
     mutable std::once_flag allOnce_;
 };

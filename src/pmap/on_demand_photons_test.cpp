@@ -70,7 +70,7 @@ TEST(OnDemandPhotons, SameSearchesAsTheMapReadWhole) {
         for (size_t j = 0; j < na; ++j) {
             ASSERT_EQ(a[j].index, b[j].index) << "query " << i;
             ASSERT_EQ(a[j].dist2, b[j].dist2);
-            EXPECT_EQ(lazy.searched()[b[j].index], whole.photons()[a[j].index]);
+            EXPECT_EQ(lazy.searchedPhoton(b[j].index), whole.photons()[a[j].index]);
         }
     }
     // Reading the rest gives the whole map.

@@ -72,8 +72,8 @@ std::span<const Photon> PhotonMap::photons() const {
     return onDemand_ ? onDemand_->all() : std::span<const Photon>(photons_);
 }
 
-std::span<const Photon> PhotonMap::searched() const {
-    return onDemand_ ? onDemand_->decoded() : std::span<const Photon>(photons_);
+const Photon& PhotonMap::searchedPhoton(size_t i) const {
+    return onDemand_ ? onDemand_->photon(i) : photons_[i];
 }
 
 size_t PhotonMap::findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,

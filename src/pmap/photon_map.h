@@ -65,9 +65,9 @@ public:
     // The kd-tree walk (kdtree.h findNearestPhotons), for maps loaded either way.
     size_t findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,
                        std::span<PhotonHit> out) const;
-    // Photons as far as they are read: those findNearest returned are valid (photons()
-    // without reading the rest of a map loaded on demand).
-    std::span<const Photon> searched() const;
+    // Photon i, which findNearest must have returned (photons()[i] without reading the
+    // rest of a map loaded on demand).
+    const Photon& searchedPhoton(size_t i) const;
     const PhotonMapStats& stats() const { return stats_; }
     const std::vector<PhotonPrimary>& primaries() const { return primaries_; }
 
