@@ -68,6 +68,13 @@ struct Component {
 // Picks a component with probability avg(coef) (or absorbs); returns its index or -1 and
 // sets `factor` to coef / probability.
 int roulette(const Component* c, int n, Rng& rng, Color& factor);
+// roulette() in two steps, the table once per material where the coefficients are fixed
+// (same arithmetic, so the same picks and factors).
+RouletteTable makeRouletteTable(const Component* c, int n);
+int roulette(const RouletteTable& t, Rng& rng, Color& factor);
+// The components of a plastic, metal or trans without pattern or roughness-0 Fresnel, in
+// the order of photonRoulette (scatterNormalFixed).
+void setPhotonRoulette(NormalParams& m);
 
 // Extinction coefficient from a transmission per unit length (dielectric.c mylog).
 inline double extinctionOf(double t) {

@@ -56,34 +56,54 @@ bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, d
     return false;
 }
 
-int roulette(const Component* c, int n, Rng& rng, Color& factor) {
+RouletteTable makeRouletteTable(const Component* c, int n) {
     // Each probability is computed once (divisions are a visible part of a photon's
     // scatter); the callers pass at most 4 components.
-    constexpr int kMaxComponents = 4;
-    RP_CHECK(n <= kMaxComponents);
-    double prob[kMaxComponents];
+    RP_CHECK(n <= RouletteTable::kMaxComponents);
+    RouletteTable t;
+    t.n = n;
     double total = 0;
     for (int i = 0; i < n; ++i) {
         // Absent components (black, e.g. the specular parts of a plain plastic) skip the
         // division in average(); their probability is 0 either way.
         const Color& k = c[i].coef;
-        prob[i] = k.r == 0 && k.g == 0 && k.b == 0 ? 0.0 : std::max(k.average(), 0.0);
-        total += prob[i];
+        t.prob[i] = k.r == 0 && k.g == 0 && k.b == 0 ? 0.0 : std::max(k.average(), 0.0);
+        total += t.prob[i];
     }
     // Probabilities avg(C_i) as pmapmat.c; normalised only if they exceed 1 in sum
     // (non-physical input), so that the expectation stays exact either way.
-    double scale = total > 1 ? total : 1;
-    double xi = rng.uniform() * scale;
-    for (int i = 0; i < n; ++i) {
-        double p = prob[i];
+    t.scale = total > 1 ? total : 1;
+    for (int i = 0; i < n; ++i)
+        if (t.prob[i] > 0) t.factor[i] = c[i].coef / (t.prob[i] / t.scale);
+    return t;
+}
+
+int roulette(const RouletteTable& t, Rng& rng, Color& factor) {
+    double xi = rng.uniform() * t.scale;
+    for (int i = 0; i < t.n; ++i) {
+        const double p = t.prob[i];
         if (p <= 0) continue;
         if (xi < p) {
-            factor = c[i].coef / (p / scale);
+            factor = t.factor[i];
             return i;
         }
         xi -= p;
     }
     return -1;
+}
+
+int roulette(const Component* c, int n, Rng& rng, Color& factor) {
+    return roulette(makeRouletteTable(c, n), rng, factor);
+}
+
+void setPhotonRoulette(NormalParams& m) {
+    const Component c[4] = {
+        {ScatterKind::DiffuseReflection, m.diffuseReflectance},
+        {ScatterKind::DiffuseTransmission, m.diffuseTransmittance},
+        {ScatterKind::SpecularReflection, m.specularColor * (m.rspec > kFtiny ? 1.0 : 0.0)},
+        {ScatterKind::SpecularTransmission, m.specularTransmittance}};
+    m.photonRoulette = makeRouletteTable(c, 4);
+    m.photonStore = c[0].coef.average() > kFtiny || c[1].coef.average() > kFtiny;
 }
 
 BackwardResult shadeLight(const LightParams& m, const SurfacePoint& sp) {

@@ -80,6 +80,7 @@ NormalParams makeNormal(const Primitive& p) {
         m.transSpecular = p.rargs[6];
     }
     deriveWardColours(m, m.kind == NormalParams::Kind::Metal);
+    detail::setPhotonRoulette(m);
     return m;
 }
 

@@ -198,19 +198,25 @@ PhotonScatter scatterWard(const WardHit& h, bool pure, const SurfacePoint& sp, R
 // Fresnel term, where the per-hit coefficients equal the ones makeMaterial derived once
 // (same arithmetic, same bits). Why: setting up the full WardHit per photon hit was a
 // visible part of mkpmap's time; only the non-diffuse choices need it, and they are rare.
+// The roulette's table is makeMaterial's too (setPhotonRoulette): its probabilities and
+// factors were four divisions per photon hit.
 PhotonScatter scatterNormalFixed(const NormalParams& m, const SurfacePoint& sp, Rng& rng) {
-    const Component c[4] = {
-        {ScatterKind::DiffuseReflection, m.diffuseReflectance},
-        {ScatterKind::DiffuseTransmission, m.diffuseTransmittance},
-        {ScatterKind::SpecularReflection, m.specularColor * (m.rspec > kFtiny ? 1.0 : 0.0)},
-        {ScatterKind::SpecularTransmission, m.specularTransmittance}};
-    return rouletteScatter(c, rng, [&](ScatterKind kind, Vec3& dir) {
-        if (kind == ScatterKind::DiffuseReflection) {
-            dir = sampleCosine(sp.normal, rng);
-            return true;
-        }
-        return wardDirection(setupNormal(m, sp), m.pureSpecular, sp, kind, rng, dir);
-    });
+    constexpr ScatterKind kKinds[4] = {
+        ScatterKind::DiffuseReflection, ScatterKind::DiffuseTransmission,
+        ScatterKind::SpecularReflection, ScatterKind::SpecularTransmission};
+    PhotonScatter s;
+    s.store = m.photonStore;
+    Color factor;
+    const int i = roulette(m.photonRoulette, rng, factor);
+    if (i < 0) return s;
+    if (i == 0) {
+        s.dir = sampleCosine(sp.normal, rng);
+    } else if (!wardDirection(setupNormal(m, sp), m.pureSpecular, sp, kKinds[i], rng, s.dir)) {
+        return s;
+    }
+    s.kind = kKinds[i];
+    s.fluxFactor = factor;
+    return s;
 }
 
 }  // namespace
