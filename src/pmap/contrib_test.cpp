@@ -14,15 +14,13 @@
 #include "pmap/mkpmap.h"
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon_map.h"
+#include "pmap/pmap_test_util.h"
 #include "util/temp_dir_for_tests.h"
 
 namespace rp::pmap {
 namespace {
 
-std::string slurp(const std::string& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::slurp;
 
 class ContribRun : public ::testing::Test {
 protected:

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "pmap/pmap_test_util.h"
 #include "util/error.h"
 #include "util/temp_dir_for_tests.h"
 
@@ -22,10 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using test::slurp;
 
 // n photons on a fixed lattice filling [0,2]x[0,3]x[0,4] (z = 0 for flat maps), flux
 // (0.001, 0.002, 0.003) W times a factor in [0.5, 1.5] that varies from photon to photon.

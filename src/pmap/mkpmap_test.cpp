@@ -9,6 +9,7 @@
 #include "pmap/mkpmap.h"
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon_map.h"
+#include "pmap/pmap_test_util.h"
 #include "util/error.h"
 #include "util/temp_dir_for_tests.h"
 
@@ -114,10 +115,7 @@ protected:
 
 std::string cornell() { return std::string(RP_SOURCE_DIR) + "/examples/cornell/scene.rad"; }
 
-std::string slurp(const std::string& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::slurp;
 
 TEST_F(MkpmapRun, SameFilesForOneAndTwoThreads) {
     std::ostringstream diag;

@@ -11,12 +11,15 @@
 
 #include "pmap/photon_map.h"
 #include "util/error.h"
+#include "pmap/pmap_test_util.h"
 #include "util/temp_dir_for_tests.h"
 
 namespace rp::pmap {
 namespace {
 
 namespace fs = std::filesystem;
+using test::errorOf;
+using test::slurp;
 
 PhotonMap randomMap(PhotonMapType type, size_t n, uint32_t seed) {
     std::mt19937 rng(seed);
@@ -28,19 +31,7 @@ PhotonMap randomMap(PhotonMapType type, size_t n, uint32_t seed) {
     return PhotonMap(type, std::move(v));
 }
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(no InputError)";
-}
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 PhotonMap loadOnDemand(const std::string& f) {
     return PhotonMap::load(f, PhotonMap::TreeOrder::Unchecked, /*causticOnDemand=*/true);
@@ -73,9 +64,12 @@ TEST(OnDemandPhotons, SameSearchesAsTheMapReadWhole) {
             EXPECT_EQ(lazy.searchedPhoton(b[j].index), whole.photons()[a[j].index]);
         }
     }
-    // Reading the rest gives the whole map.
+    // Reading the rest gives the whole map, and saving it the same file.
     ASSERT_EQ(lazy.photons().size(), whole.photons().size());
     for (size_t i = 0; i < whole.size(); ++i) ASSERT_EQ(lazy.photons()[i], whole.photons()[i]);
+    const std::string again = dir.file("again.pm");
+    loadOnDemand(f).save(again, "", false);
+    EXPECT_EQ(slurp(again), slurp(f));
 }
 
 TEST(OnDemandPhotons, OnlyCausticMapsAreReadOnDemand) {

@@ -123,9 +123,10 @@ Header PhotonMap::fileHeader(const std::string& commandLine) const {
 void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
     writeHeader(out, fileHeader(commandLine));
     const PhotonMapStats& s = stats_;
+    const std::span<const Photon> photons = this->photons();  // all of a map read on demand
     std::string b;
     putStr(b, kPhotonMapFileVersion);
-    putInt(b, static_cast<int64_t>(photons_.size()), 8);
+    putInt(b, static_cast<int64_t>(photons.size()), 8);
     for (int a = 0; a < 3; ++a) putFlt(b, s.avgFlux[a]);
     for (int a = 0; a < 3; ++a) {
         putFlt(b, s.bboxMin[a]);
@@ -142,7 +143,7 @@ void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
     // half of mkpmap's page faults.
     constexpr size_t kBatch = 4;
     BulkVector<unsigned char> bufs[kBatch];
-    const size_t n = photons_.size();
+    const size_t n = photons.size();
     for (size_t i = 0; i < n; i += kBatch * kChunkPhotons) {
         const size_t chunks = std::min(kBatch, (n - i + kChunkPhotons - 1) / kChunkPhotons);
         tbb::parallel_for(size_t{0}, chunks, [&](size_t k) {
@@ -152,7 +153,7 @@ void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
             buf.resize((end - begin) * kPhotonRecordSize);
             unsigned char* b = buf.data();
             for (size_t j = begin; j < end; ++j, b += kPhotonRecordSize)
-                encodePhoton(b, photons_[j]);
+                encodePhoton(b, photons[j]);
         });
         for (size_t k = 0; k < chunks; ++k)
             out.write(reinterpret_cast<const char*>(bufs[k].data()),
@@ -164,7 +165,7 @@ void PhotonMap::save(const std::string& path, const std::string& commandLine,
                      bool overwrite) const {
     namespace fs = std::filesystem;
     const SourceLoc loc{path, 0};
-    if (photons_.empty()) throw InputError(loc, "refusing to save an empty photon map");
+    if (empty()) throw InputError(loc, "refusing to save an empty photon map");
     std::error_code ec;
     if (!overwrite && fs::exists(path, ec))
         throw InputError(loc, "photon map file exists; use -fo to overwrite it");

@@ -14,18 +14,17 @@
 
 #include "pmap/portable_io.h"
 #include "util/error.h"
+#include "pmap/pmap_test_util.h"
 #include "util/temp_dir_for_tests.h"
 
 namespace rp::pmap {
 namespace {
 
 namespace fs = std::filesystem;
+using test::errorOf;
+using test::slurp;
 
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 void spit(const std::string& path, const std::string& data) {
     std::ofstream(path, std::ios::binary) << data;
 }
@@ -46,14 +45,6 @@ PhotonMap randomMap(PhotonMapType type, size_t n, uint32_t seed, size_t numPrima
     return PhotonMap(type, std::move(v), std::move(prims));
 }
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(no InputError)";
-}
 
 TEST(PhotonMap, TypeNamesAndFormats) {
     EXPECT_STREQ(photonMapTypeName(PhotonMapType::PreComp), "PreComp");
