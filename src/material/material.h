@@ -81,6 +81,7 @@ struct AnisoParams {
 struct MirrorParams {
     Color color;
     std::optional<std::string> alternate;  // material for non-source rays ("void": invisible)
+    RouletteTable photonRoulette;  // photon scattering without a pattern (one component)
 };
 
 // glass: thin double-surface pane. `transmission` is the transmissivity at normal

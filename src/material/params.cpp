@@ -206,8 +206,12 @@ MaterialParams makeMaterial(const Primitive& p) {
     case PrimType::Metal2:
     case PrimType::Trans2:
         return makeAniso(p);
-    case PrimType::Mirror:
-        return MirrorParams{rgb(p, 0), alternateOf(p)};
+    case PrimType::Mirror: {
+        MirrorParams m{rgb(p, 0), alternateOf(p), {}};
+        const detail::Component c{ScatterKind::SpecularReflection, m.color};
+        m.photonRoulette = detail::makeRouletteTable(&c, 1);
+        return m;
+    }
     case PrimType::Glass:
         return makeGlass(p);
     case PrimType::Dielectric:

@@ -40,9 +40,15 @@ BackwardResult shadeMirror(const MirrorParams& m, const SurfacePoint& sp,
 PhotonScatter scatterMirror(const MirrorParams& m, const SurfacePoint& sp, Rng& rng) {
     PhotonScatter s;
     if (!sp.front) return s;  // pmapmat.c: back is black
-    Component c{ScatterKind::SpecularReflection, m.color * sp.pattern};
-    if (roulette(&c, 1, rng, s.fluxFactor) < 0) return s;
-    s.kind = c.kind;
+    int pick;
+    if (sp.pattern == Color{1, 1, 1}) {
+        pick = roulette(m.photonRoulette, rng, s.fluxFactor);  // makeMaterial's table
+    } else {
+        const Component c{ScatterKind::SpecularReflection, m.color * sp.pattern};
+        pick = roulette(&c, 1, rng, s.fluxFactor);
+    }
+    if (pick < 0) return s;
+    s.kind = ScatterKind::SpecularReflection;
     s.dir = mirrorDir(sp);
     return s;
 }
