@@ -33,7 +33,7 @@ public:
     // (RADIANCE compat: loadPmaps "adjusting density estimate bandwidth"). With `index`
     // (built over map.photons(), outliving this object; share one per map between threads,
     // e.g. via LazyPhotonIndex) searches use it: the same photons, several times faster.
-    // Without, they walk the map's kd-tree (kdtree.h findNearestPhotons).
+    // Without, they walk the map's kd-tree (PhotonMap::findNearest).
     PhotonLookup(const PhotonMap& map, const LookupParams& params,
                  const PhotonIndex* index = nullptr);
 

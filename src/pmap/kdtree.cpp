@@ -11,7 +11,7 @@
 #include <limits>
 
 #include "pmap/kdtree_select.h"
-#include "pmap/lookup_heap.h"
+#include "pmap/kdtree_walk.h"
 #include "util/bulk_memory.h"
 #include "util/error.h"
 
@@ -112,53 +112,6 @@ void gatherHeap(const Photon* inOrder, size_t s, size_t n, size_t root, Photon* 
         [&] { gatherHeap(inOrder, s + nLeft + 1, n - nLeft - 1, 2 * root + 1, out, fork); });
 }
 
-struct Pending {
-    uint32_t node;  // 1-based heap index of a subtree still to visit
-    float plane2;   // squared distance from the query to the plane that separated it
-};
-// Deep enough for any tree of kMaxTreePhotons (at most one pending subtree per level).
-constexpr int kStackSize = 64;
-
-// Iterative search with an explicit stack of far subtrees. Each photon is tested on the way
-// down (pre-order) where RADIANCE's recursion tests it after both subtrees; the photons
-// found are the same (the k nearest within the radius; among equal distances either may be
-// kept) and pre-order with a prefetch of the near grandchildren measured ~1.5x faster.
-template <bool kFilter>
-size_t knnSearch(const Photon* tree, size_t n, const float q[3], const QueryNormal& qn,
-                 float maxDist2, PhotonHit* heap, size_t k) {
-    size_t found = 0;
-    Pending stack[kStackSize];
-    int top = 0;
-    size_t node = 1;
-    while (true) {
-        // Descend towards the query, remembering far subtrees that might still matter.
-        while (node <= n) {
-            const Photon& p = tree[node - 1];
-            const int axis = p.discr();
-            const float d = q[axis] - p.pos[axis];
-            const size_t nearChild = 2 * node + (d >= 0 ? 1 : 0);
-            const size_t farChild = 2 * node + (d >= 0 ? 0 : 1);
-            // The near child's two children are adjacent: fetch them while we work here.
-            if (2 * nearChild <= n) __builtin_prefetch(tree + 2 * nearChild - 1);
-            if (farChild <= n && d * d < maxDist2)
-                stack[top++] = {static_cast<uint32_t>(farChild), d * d};
-
-            const float dx = q[0] - p.pos[0], dy = q[1] - p.pos[1], dz = q[2] - p.pos[2];
-            const float d2 = dx * dx + dy * dy + dz * dz;
-            if (d2 < maxDist2 && (!kFilter || qn.accepts(p))) {
-                offerPhoton(heap, k, found, maxDist2, d2, static_cast<uint32_t>(node - 1));
-            }
-            node = nearChild;
-        }
-        // Resume at the most recent far subtree still within the (shrunken) radius.
-        do {
-            if (top == 0) return found;
-            --top;
-        } while (stack[top].plane2 >= maxDist2);
-        node = stack[top].node;
-    }
-}
-
 }  // namespace
 
 BulkVector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel) {
@@ -254,19 +207,21 @@ std::string checkKdTreeOrder(std::span<const Photon> tree) {
     return {};
 }
 
+namespace {
+// walkKdTree over a tree in memory (whose order was checked at load, or built here).
+struct InMemoryTree {
+    static constexpr bool kCheckOrder = false;
+    const Photon* photons;
+    const Photon& at(size_t i) const { return photons[i]; }
+    void prefetch(size_t i) const { __builtin_prefetch(photons + i); }
+    void misplaced(size_t) const {}
+};
+}  // namespace
+
 size_t findNearestPhotons(std::span<const Photon> tree, const Vec3& pos, const Vec3* normal,
                           float maxDist2, std::span<PhotonHit> out) {
-    if (out.empty() || tree.empty()) return 0;
-    // RADIANCE compat: the query point and normal are compared in single precision.
-    const float q[3] = {static_cast<float>(pos.x), static_cast<float>(pos.y),
-                        static_cast<float>(pos.z)};
-    if (normal) {
-        QueryNormal qn{{static_cast<float>(normal->x), static_cast<float>(normal->y),
-                        static_cast<float>(normal->z)}};
-        return knnSearch<true>(tree.data(), tree.size(), q, qn, maxDist2, out.data(), out.size());
-    }
-    return knnSearch<false>(tree.data(), tree.size(), q, QueryNormal{}, maxDist2, out.data(),
-                            out.size());
+    return findNearestInKdTree(InMemoryTree{tree.data()}, tree.size(), pos, normal, maxDist2,
+                               out);
 }
 
 int64_t findNearestPhoton(std::span<const Photon> tree, const Vec3& pos, const Vec3* normal,

@@ -3,17 +3,13 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
-#include <limits>
-#include <new>
 #include <vector>
 
+#include "pmap/kdtree_walk.h"
 #include "pmap/photon_records.h"
 #include "util/bulk_memory.h"
 #include "util/error.h"
@@ -67,8 +63,7 @@ const Photon* OnDemandPhotons::readBlock(size_t block) const {
         poolUsed_ = 0;
     }
     Photon* dst = pool_.back() + poolUsed_ * kBlockSize;
-    for (size_t j = 0; j < count; ++j)
-        ::new (static_cast<void*>(dst + j)) Photon(decodePhoton(buf + j * kPhotonRecordSize));
+    for (size_t j = 0; j < count; ++j) dst[j] = decodePhoton(buf + j * kPhotonRecordSize);
     if (const std::string problem = checkPhotonRecords({dst, count}, first); !problem.empty())
         throw InputError(SourceLoc{path_, 0}, treeProblem(problem));
     ++poolUsed_;
@@ -87,21 +82,10 @@ std::span<const Photon> OnDemandPhotons::all() const {
                 const size_t n = std::min(kAllChunkPhotons, n_ - i);
                 raw.resize(n * kPhotonRecordSize);
                 readRecords(i, n, raw.data());
-                // Isolated: this thread holds the lock, and must not pick up a render task
-                // that would wait for it while it waits for the loop.
-                tbb::this_task_arena::isolate([&] {
-                    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1 << 14),
-                                      [&](const tbb::blocked_range<size_t>& r) {
-                                          for (size_t j = r.begin(); j < r.end(); ++j)
-                                              ::new (static_cast<void*>(all + i + j)) Photon(
-                                                  decodePhoton(raw.data() + j * kPhotonRecordSize));
-                                      });
-                });
+                decodePhotons(raw.data(), n, all + i);
             }
-            const std::span<const Photon> photons(all, n_);
-            std::string problem = checkPhotonRecords(photons);
-            if (problem.empty()) problem = checkKdTreeOrder(photons);
-            if (!problem.empty()) throw InputError(SourceLoc{path_, 0}, treeProblem(problem));
+            if (const std::string problem = checkKdTree({all, n_}); !problem.empty())
+                throw InputError(SourceLoc{path_, 0}, treeProblem(problem));
         } catch (...) {
             freeHugePages(all, std::max<size_t>(n_, 1) * sizeof(Photon));
             throw;
@@ -115,68 +99,20 @@ std::span<const Photon> OnDemandPhotons::all() const {
     return {all_, n_};
 }
 
-// findNearestPhotons' walk (kdtree.cpp knnSearch: same order, same offers, so the same
-// photons), reading photons through at() and carrying each cell's bounds to check that
-// every visited photon lies inside its ancestors' splits.
-template <bool kFilter>
-size_t OnDemandPhotons::walk(const float q[3], const QueryNormal& qn, float maxDist2,
-                             PhotonHit* heap, size_t k) const {
-    struct Pending {
-        uint32_t node;
-        float plane2;
-        float lo[3], hi[3];
-    };
-    Pending stack[64];  // at most one pending subtree per level
-    int top = 0;
-    size_t found = 0, node = 1;
-    const size_t n = n_;
-    float lo[3], hi[3];
-    for (int a = 0; a < 3; ++a) {
-        lo[a] = -std::numeric_limits<float>::infinity();
-        hi[a] = std::numeric_limits<float>::infinity();
+// walkKdTree reading photons through at() and checking each one's place in the tree.
+struct OnDemandPhotons::Reader {
+    static constexpr bool kCheckOrder = true;
+    const OnDemandPhotons& map;
+    const Photon& at(size_t i) const { return map.at(i); }
+    void prefetch(size_t) const {}
+    [[noreturn]] void misplaced(size_t i) const {
+        throw InputError(SourceLoc{map.path_, 0}, treeProblem(misplacedPhoton(i)));
     }
-    while (true) {
-        while (node <= n) {
-            const Photon& p = at(node - 1);
-            for (int a = 0; a < 3; ++a)
-                if (!(p.pos[a] >= lo[a] && p.pos[a] <= hi[a]))
-                    throw InputError(SourceLoc{path_, 0}, treeProblem(misplacedPhoton(node - 1)));
-            const int axis = p.discr();
-            const float d = q[axis] - p.pos[axis];
-            const size_t farChild = 2 * node + (d >= 0 ? 0 : 1);
-            if (farChild <= n && d * d < maxDist2) {
-                Pending& f = stack[top++];
-                f.node = static_cast<uint32_t>(farChild);
-                f.plane2 = d * d;
-                for (int a = 0; a < 3; ++a) f.lo[a] = lo[a], f.hi[a] = hi[a];
-                (d >= 0 ? f.hi : f.lo)[axis] = p.pos[axis];  // the far side of the split
-            }
-            const float dx = q[0] - p.pos[0], dy = q[1] - p.pos[1], dz = q[2] - p.pos[2];
-            const float d2 = dx * dx + dy * dy + dz * dz;
-            if (d2 < maxDist2 && (!kFilter || qn.accepts(p)))
-                offerPhoton(heap, k, found, maxDist2, d2, static_cast<uint32_t>(node - 1));
-            (d >= 0 ? lo : hi)[axis] = p.pos[axis];
-            node = 2 * node + (d >= 0 ? 1 : 0);
-        }
-        do {
-            if (top == 0) return found;
-            --top;
-        } while (stack[top].plane2 >= maxDist2);
-        node = stack[top].node;
-        for (int a = 0; a < 3; ++a) lo[a] = stack[top].lo[a], hi[a] = stack[top].hi[a];
-    }
-}
+};
 
 size_t OnDemandPhotons::findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,
                                     std::span<PhotonHit> out) const {
-    if (out.empty() || n_ == 0) return 0;
-    // RADIANCE compat: the query point and normal are compared in single precision.
-    const float q[3] = {static_cast<float>(pos.x), static_cast<float>(pos.y),
-                        static_cast<float>(pos.z)};
-    if (!normal) return walk<false>(q, QueryNormal{}, maxDist2, out.data(), out.size());
-    const QueryNormal qn{{static_cast<float>(normal->x), static_cast<float>(normal->y),
-                          static_cast<float>(normal->z)}};
-    return walk<true>(q, qn, maxDist2, out.data(), out.size());
+    return findNearestInKdTree(Reader{*this}, n_, pos, normal, maxDist2, out);
 }
 
 }  // namespace rp::pmap

@@ -21,7 +21,6 @@
 #include <vector>
 
 #include "pmap/kdtree.h"
-#include "pmap/lookup_heap.h"
 #include "pmap/photon.h"
 #include "util/vec.h"
 
@@ -64,11 +63,9 @@ private:
     }
     // Reads, decodes and checks block b into the pool (once); returns its photons.
     const Photon* readBlock(size_t b) const;
+    struct Reader;  // the kd-tree walk's view of these photons (on_demand_photons.cpp)
     // Reads records [first, first + count) into buf; InputError on a short read.
     void readRecords(size_t first, size_t count, unsigned char* buf) const;
-    template <bool kFilter>
-    size_t walk(const float q[3], const QueryNormal& qn, float maxDist2, PhotonHit* heap,
-                size_t k) const;
 
     std::string path_;
     int fd_ = -1;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -219,6 +220,16 @@ Photon decodePhoton(const unsigned char* b) {
     return p;
 }
 
+void decodePhotons(const unsigned char* src, size_t n, Photon* dst) {
+    tbb::this_task_arena::isolate([&] {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kChunkPhotons / 4),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              for (size_t j = r.begin(); j < r.end(); ++j)
+                                  dst[j] = decodePhoton(src + j * kPhotonRecordSize);
+                          });
+    });
+}
+
 std::string treeProblem(const std::string& problem) {
     return "photons are not a valid kd-tree (" + problem + "); corrupt file?";
 }
@@ -314,33 +325,26 @@ PhotonMap PhotonMap::read(std::istream& in, const std::string& what, TreeOrder o
 
 void PhotonMap::readPhotons(std::istream& in, const std::string& what, TreeOrder order) {
     const SourceLoc loc{what, 0};
-    PhotonMap& map = *this;
-    const PhotonMapStats& s = map.stats_;
-    const uint64_t numPrimary = map.primaries_.size();
+    const PhotonMapStats& s = stats_;
+    const uint64_t numPrimary = primaries_.size();
     // Read in chunks (bounded memory for any map size) and decode each chunk in parallel:
     // records are fixed-size, so photon i is at byte 27 i of its chunk. The photon array is
     // on huge pages (BulkVector: 4 KiB page faults cost more than the decoding here).
-    map.photons_.resize(s.numPhotons);
+    photons_.resize(s.numPhotons);
     const size_t chunk = std::min<size_t>(kReadChunkPhotons, s.numPhotons);
     BulkVector<unsigned char> raw(std::max<size_t>(chunk, 1) * kPhotonRecordSize);
     for (size_t i = 0; i < s.numPhotons; i += kReadChunkPhotons) {
         const size_t n = std::min<size_t>(kReadChunkPhotons, s.numPhotons - i);
         if (!readBytes(in, raw.data(), n * kPhotonRecordSize))
             throw InputError(loc, fmt::format("truncated photon map (read error at photon {})", i));
-        Photon* dst = map.photons_.data() + i;
-        const unsigned char* src = raw.data();
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kChunkPhotons / 4),
-                          [&](const tbb::blocked_range<size_t>& r) {
-                              for (size_t j = r.begin(); j < r.end(); ++j)
-                                  dst[j] = decodePhoton(src + j * kPhotonRecordSize);
-                          });
+        decodePhotons(raw.data(), n, photons_.data() + i);
     }
 
-    if (const std::string problem = checkPhotonRecords(map.photons_); !problem.empty())
+    if (const std::string problem = checkPhotonRecords(photons_); !problem.empty())
         throw InputError(loc, treeProblem(problem));
-    if (order == TreeOrder::Checked) map.checkTreeOrder(what);
+    if (order == TreeOrder::Checked) checkTreeOrder(what);
     if (numPrimary)
-        for (const Photon& p : map.photons_)
+        for (const Photon& p : photons_)
             if (p.primary >= numPrimary)
                 throw InputError(loc, fmt::format("photon refers to primary ray {} of {}",
                                                   p.primary, numPrimary));

@@ -16,6 +16,9 @@ constexpr size_t kPhotonRecordSize = 3 * kPortableFloatSize + 3 + 4 + 4 + 1;  //
 
 // The photon in the kPhotonRecordSize bytes at b (no checks: see checkPhotonRecords).
 Photon decodePhoton(const unsigned char* b);
+// The n records at src decoded into dst (storage for n photons), in parallel. Isolated:
+// a caller holding a lock must not pick up, while it waits, a task that would wait for it.
+void decodePhotons(const unsigned char* src, size_t n, Photon* dst);
 
 // "photons are not a valid kd-tree (<problem>); corrupt file?"
 std::string treeProblem(const std::string& problem);
