@@ -61,8 +61,13 @@ void glassCoefficients(const GlassParams& m, double pdot, const Color& pattern, 
     // cos of the refracted angle inside the pane; the path length grows as 1/cos2.
     double cos2 = std::sqrt((1 - 1 / (n * n)) + pdot * pdot / (n * n));
     Color t = m.transmission;
-    if (m.hasTransmission)
-        for (int i = 0; i < 3; ++i) t[i] = std::pow(t[i], 1 / cos2);
+    if (m.hasTransmission) {
+        // Grey glass (the usual case) needs one pow, not three: same values.
+        if (t.r == t.g && t.g == t.b)
+            t.r = t.g = t.b = std::pow(t.r, 1 / cos2);
+        else
+            for (int i = 0; i < 3; ++i) t[i] = std::pow(t[i], 1 / cos2);
+    }
     // Fresnel reflectances of one interface for the two polarisations.
     double r1e = (pdot - n * cos2) / (pdot + n * cos2);
     r1e *= r1e;

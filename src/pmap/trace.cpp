@@ -131,7 +131,30 @@ void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool i
         for (const RegionOfInterest& r : settings_.rois) inside = inside || r.contains(hit.point);
         if (!inside) return;
     }
-    Vec3 n = front ? hit.normal : -hit.normal;  // facing the incoming photon
+    // One storage draw per eligible deposit, in the fixed order below (deterministic);
+    // the record is filled only when a draw keeps it: most deposits of a map with a
+    // small storage probability are dropped. u < 0: not kept.
+    auto draw = [&](PhotonMapType t) -> float {
+        const size_t k = size_t(t);
+        if (!settings_.maps[k]) return -1;
+        const double u = storeRng.uniform();
+        return u < prob[k] ? float(u) : -1.0f;
+    };
+    // pmapmat.c addPhotons: direct at the first hit, global (and caustic after specular
+    // paths) afterwards.
+    float u[3];
+    const PhotonMapType types[3] = {PhotonMapType::Global, PhotonMapType::PreComp,
+                                    PhotonMapType::Caustic};
+    if (!indirect) {
+        u[0] = draw(PhotonMapType::Direct);
+        u[1] = u[2] = -1;
+    } else {
+        u[0] = draw(PhotonMapType::Global);
+        u[1] = draw(PhotonMapType::PreComp);  // -app: global photons, precomputed later
+        u[2] = caustic ? draw(PhotonMapType::Caustic) : -1;
+    }
+    if (u[0] < 0 && u[1] < 0 && u[2] < 0) return;
+    const Vec3 n = front ? hit.normal : -hit.normal;  // facing the incoming photon
     RawPhoton rp;
     rp.pos[0] = float(hit.point.x);
     rp.pos[1] = float(hit.point.y);
@@ -139,27 +162,15 @@ void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool i
     rp.norm[0] = packNormal(n.x);
     rp.norm[1] = packNormal(n.y);
     rp.norm[2] = packNormal(n.z);
+    rp.caustic = indirect && caustic ? 1 : 0;
     rp.flux[0] = float(flux.r);
     rp.flux[1] = float(flux.g);
     rp.flux[2] = float(flux.b);
-    auto put = [&](PhotonMapType t, bool causticFlag) {
-        size_t k = size_t(t);
-        if (!settings_.maps[k]) return;
-        double u = storeRng.uniform();  // one draw per eligible deposit: deterministic
-        if (u >= prob[k]) return;
-        rp.caustic = causticFlag ? 1 : 0;
-        rp.u = float(u);
-        out.maps[k].push_back(rp);
-    };
-    // pmapmat.c addPhotons: direct at the first hit, global (and caustic after specular
-    // paths) afterwards.
-    if (!indirect) {
-        put(PhotonMapType::Direct, false);
-        return;
+    for (int i = 0; i < 3; ++i) {
+        if (u[i] < 0) continue;
+        rp.u = u[i];
+        out.maps[size_t(indirect ? types[i] : PhotonMapType::Direct)].push_back(rp);
     }
-    put(PhotonMapType::Global, caustic);
-    put(PhotonMapType::PreComp, caustic);  // -app: global photons, precomputed later
-    if (caustic) put(PhotonMapType::Caustic, true);
 }
 
 void PhotonTracer::trace(uint64_t seed, uint64_t index,
@@ -190,6 +201,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     bool firstSegment = true;
     double travelled = 0;
     ClipSet clip;
+    material::SurfacePoint sp = material::makeSurfacePoint(ray.dir, ray.dir, true);
     auto causticNow = [&] {
         return scatters > 0 && lastSpecular;
     };
@@ -251,8 +263,12 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         if (mi->isLight) return;  // "Light sources doan' reflect"; nothing stored
         if (!hit->front && !settings_.backVisible && mi->backAbsorbs) return;
 
-        material::SurfacePoint sp = material::makeSurfacePoint(
-            ray.dir, hit->front ? hit->normal : -hit->normal, hit->front);
+        // The fields makeSurfacePoint sets; the rest keep their defaults (no pattern,
+        // no textures in photon scattering). Reused: constructing the whole struct per
+        // hit was a visible part of the loop.
+        sp.dir = ray.dir;
+        sp.normal = sp.geomNormal = hit->front ? hit->normal : -hit->normal;
+        sp.front = hit->front;
         material::PhotonScatter s = material::scatterPhoton(mi->params, sp, rng);
         if (s.store && mi->storeAllowed)
             deposit(*hit, hit->front, flux, scatters > 0 || fromPort,
