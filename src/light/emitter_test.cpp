@@ -324,6 +324,25 @@ TEST(Emitter, ManyPartitionsPickedByFlux) {
     EXPECT_NEAR(double(fromA) / kPhotons, p, 4 * std::sqrt(p * (1 - p) / kPhotons));
 }
 
+// Few partitions (under 16): the pick counts the cdf entries at or below the draw
+// (emitter.cpp upperBound) and must still pick in proportion to flux (4 sigma).
+TEST(Emitter, FewPartitionsPickedByFlux) {
+    Builder b;
+    // A: 1 x 1 m at L = 3 in z = 0; B: 2 x 2 m at L = 1 in z = 1; both facing +z.
+    b.add(PrimType::Polygon, "a", {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, b.light("la", 3, 3, 3));
+    b.add(PrimType::Polygon, "b", {3, 0, 1, 5, 0, 1, 5, 2, 1, 3, 2, 1}, b.light("lb", 1, 1, 1));
+    SceneGeometry geom(b.scene());
+    EmissionOptions opt;
+    opt.partitionSize = 1;
+    EmissionPlan plan = planFor(b, geom, opt);
+    ASSERT_GE(plan.partitionCount(), 2u);
+    ASSERT_LT(plan.partitionCount(), 16u);
+    const double p = 3.0 / 7.0;  // A's share of the flux
+    long fromA = 0;
+    for (int i = 0; i < kPhotons; ++i) fromA += plan.emitPhoton(3, uint64_t(i)).ray.origin.z < 0.5;
+    EXPECT_NEAR(double(fromA) / kPhotons, p, 4 * std::sqrt(p * (1 - p) / kPhotons));
+}
+
 TEST(Emitter, DeterministicPerPhotonIndex) {
     Builder b;
     b.add(PrimType::Sphere, "s", {0, 0, 0, 0.5}, b.light("l", 1, 1, 1));
