@@ -390,23 +390,38 @@ TEST(Query, NearestOfMixedShapes) {
     EXPECT_EQ(g.closestHit({{0, 0, 0.5}, {0, 0, 1}})->prim, sph);
 }
 
-// A lone quadric gets a never-hit stand-in primitive, a point box at max + (max - min)
-// + (1,1,1) of its bounds, so that Embree's tree culls rays missing the shape's box
-// (embree_accel.cpp). Rays through that point must find nothing; the shape still hits.
+// A lone quadric gets a never-hit stand-in primitive, a small box centred at
+// max + (max - min) + (1,1,1) of its bounds, so that Embree's tree culls rays missing the
+// shape's box (embree_accel.cpp). Rays through that box reach the stand-in's callback
+// and must find nothing; the shape still hits.
 TEST(Query, LoneShapeStandInIsNeverHit) {
-    SceneBuilder b;
-    int32_t s = b.surface(PrimType::Sphere, {1, 2, 3, 2});  // box (-1,0,1)..(3,4,5)
-    SceneGeometry g(b.scene());
-    const Vec3 standIn{8, 9, 10};
-    for (const Vec3& d : {Vec3{0, 0, -1}, Vec3{0, -1, 0}, Vec3{-1, 0, 0}}) {
-        const Vec3 o = standIn - d * 10;
-        EXPECT_FALSE(g.closestHit({o, d}));
-        EXPECT_FALSE(g.occluded(o, d, 20));
+    struct Case {
+        PrimType type;
+        std::vector<double> args;
+        Ray hitting;
+    };
+    const Case cases[] = {
+        {PrimType::Sphere, {1, 2, 3, 2}, {{1, 2, -7}, {0, 0, 1}}},
+        {PrimType::Cone, {0, 0, 0, 0, 0, 2, 2, 1}, {{5, 0, 1}, {-1, 0, 0}}},
+        {PrimType::Ring, {0, 0, 1, 0, 0, 2, 0.5, 1}, {{0.75, 0, 3}, {0, 0, -1}}},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(primTypeName(c.type));
+        SceneBuilder b;
+        int32_t s = b.surface(c.type, c.args);
+        SceneGeometry g(b.scene());
+        const Bounds3& box = g.bounds();  // the lone shape's own box
+        const Vec3 standIn = box.max + (box.max - box.min) + Vec3{1, 1, 1};
+        for (const Vec3& d : {Vec3{0, 0, -1}, Vec3{0, -1, 0}, Vec3{-1, 0, 0}}) {
+            const Vec3 o = standIn - d * 10;
+            EXPECT_FALSE(g.closestHit({o, d}));
+            EXPECT_FALSE(g.occluded(o, d, 20));
+        }
+        auto h = g.closestHit(c.hitting);
+        ASSERT_TRUE(h);
+        EXPECT_EQ(h->prim, s);
+        EXPECT_TRUE(g.occluded(c.hitting.origin, c.hitting.dir, 20));
     }
-    auto h = g.closestHit({{1, 2, -7}, {0, 0, 1}});
-    ASSERT_TRUE(h);
-    EXPECT_EQ(h->prim, s);
-    EXPECT_TRUE(g.occluded({1, 2, -7}, {0, 0, 1}, 20));
 }
 
 TEST(Query, EmptyScene) {
