@@ -305,42 +305,43 @@ TEST(Emitter, DaylightSourcesThroughWindow) {
     EXPECT_LT(plan.sourceFlux(2).r, 0.05 * plan.sourceFlux(1).r);
 }
 
-// Many partitions of very different flux: the guided partition search (emitter.cpp
-// upperBound) must pick each source in proportion to its flux (4 sigma).
-TEST(Emitter, ManyPartitionsPickedByFlux) {
+// Two lamps facing +z: A, 1 x 1 m at radiance la in z = 0, and B, 2 x 2 m at radiance 1
+// in z = 1, partitioned at -ds `ds`. Gives the partition count and the fraction of
+// kPhotons emitted from A, whose flux share is la / (la + 4).
+struct TwoLampPicks {
+    size_t partitions;
+    double fromA;
+};
+TwoLampPicks twoLampPicks(double la, double ds) {
     Builder b;
-    // A: 1 x 1 m at L = 100 in z = 0; B: 2 x 2 m at L = 1 in z = 1; both facing +z.
-    b.add(PrimType::Polygon, "a", {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0},
-          b.light("la", 100, 100, 100));
+    b.add(PrimType::Polygon, "a", {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, b.light("la", la, la, la));
     b.add(PrimType::Polygon, "b", {3, 0, 1, 5, 0, 1, 5, 2, 1, 3, 2, 1}, b.light("lb", 1, 1, 1));
     SceneGeometry geom(b.scene());
     EmissionOptions opt;
-    opt.partitionSize = 0.01;
+    opt.partitionSize = ds;
     EmissionPlan plan = planFor(b, geom, opt);
-    ASSERT_GT(plan.partitionCount(), 100u);
-    const double p = 100.0 / 104.0;  // A's share of the flux
     long fromA = 0;
     for (int i = 0; i < kPhotons; ++i) fromA += plan.emitPhoton(3, uint64_t(i)).ray.origin.z < 0.5;
-    EXPECT_NEAR(double(fromA) / kPhotons, p, 4 * std::sqrt(p * (1 - p) / kPhotons));
+    return {plan.partitionCount(), double(fromA) / kPhotons};
+}
+
+// Many partitions of very different flux: the guided partition search (emitter.cpp
+// upperBound) must pick each source in proportion to its flux (4 sigma).
+TEST(Emitter, ManyPartitionsPickedByFlux) {
+    const TwoLampPicks r = twoLampPicks(100, 0.01);
+    ASSERT_GT(r.partitions, 100u);
+    const double p = 100.0 / 104.0;  // A's share of the flux
+    EXPECT_NEAR(r.fromA, p, 4 * std::sqrt(p * (1 - p) / kPhotons));
 }
 
 // Few partitions (under 16): the pick counts the cdf entries at or below the draw
 // (emitter.cpp upperBound) and must still pick in proportion to flux (4 sigma).
 TEST(Emitter, FewPartitionsPickedByFlux) {
-    Builder b;
-    // A: 1 x 1 m at L = 3 in z = 0; B: 2 x 2 m at L = 1 in z = 1; both facing +z.
-    b.add(PrimType::Polygon, "a", {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, b.light("la", 3, 3, 3));
-    b.add(PrimType::Polygon, "b", {3, 0, 1, 5, 0, 1, 5, 2, 1, 3, 2, 1}, b.light("lb", 1, 1, 1));
-    SceneGeometry geom(b.scene());
-    EmissionOptions opt;
-    opt.partitionSize = 1;
-    EmissionPlan plan = planFor(b, geom, opt);
-    ASSERT_GE(plan.partitionCount(), 2u);
-    ASSERT_LT(plan.partitionCount(), 16u);
+    const TwoLampPicks r = twoLampPicks(3, 1);
+    ASSERT_GE(r.partitions, 2u);
+    ASSERT_LT(r.partitions, 16u);
     const double p = 3.0 / 7.0;  // A's share of the flux
-    long fromA = 0;
-    for (int i = 0; i < kPhotons; ++i) fromA += plan.emitPhoton(3, uint64_t(i)).ray.origin.z < 0.5;
-    EXPECT_NEAR(double(fromA) / kPhotons, p, 4 * std::sqrt(p * (1 - p) / kPhotons));
+    EXPECT_NEAR(r.fromA, p, 4 * std::sqrt(p * (1 - p) / kPhotons));
 }
 
 TEST(Emitter, DeterministicPerPhotonIndex) {

@@ -143,9 +143,10 @@ void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool i
     // pmapmat.c addPhotons: direct at the first hit, global (and caustic after specular
     // paths) afterwards.
     float u[3];
-    const PhotonMapType types[3] = {PhotonMapType::Global, PhotonMapType::PreComp,
-                                    PhotonMapType::Caustic};
+    PhotonMapType types[3] = {PhotonMapType::Global, PhotonMapType::PreComp,
+                              PhotonMapType::Caustic};
     if (!indirect) {
+        types[0] = PhotonMapType::Direct;
         u[0] = draw(PhotonMapType::Direct);
         u[1] = u[2] = -1;
     } else {
@@ -169,7 +170,7 @@ void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool i
     for (int i = 0; i < 3; ++i) {
         if (u[i] < 0) continue;
         rp.u = u[i];
-        out.maps[size_t(indirect ? types[i] : PhotonMapType::Direct)].push_back(rp);
+        out.maps[size_t(types[i])].push_back(rp);
     }
 }
 
@@ -201,7 +202,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     bool firstSegment = true;
     double travelled = 0;
     ClipSet clip;
-    material::SurfacePoint sp = material::makeSurfacePoint(ray.dir, ray.dir, true);
+    material::SurfacePoint sp;  // set per hit below
     auto causticNow = [&] {
         return scatters > 0 && lastSpecular;
     };

@@ -17,19 +17,19 @@ namespace rp {
 
 #if defined(__SSE2__)
 // minpd/maxpd return their second operand when either is NaN, so (b, a) gives a unless
-// b is the smaller/larger, and the mask puts b in when a is NaN. Both lanes hold the
+// b is the smaller/larger; unlessANan then puts b in when a is NaN. Both lanes hold the
 // same value (set1: _mm_set_sd's zeroing move is an encoding valgrind cannot run).
-inline double fastMin(double a, double b) {
-    const __m128d va = _mm_set1_pd(a), vb = _mm_set1_pd(b);
-    const __m128d m = _mm_min_pd(vb, va);  // b < a ? b : a
+inline double unlessANan(__m128d va, __m128d vb, __m128d m) {
     const __m128d aNan = _mm_cmpunord_pd(va, va);
     return _mm_cvtsd_f64(_mm_or_pd(_mm_and_pd(aNan, vb), _mm_andnot_pd(aNan, m)));
 }
+inline double fastMin(double a, double b) {
+    const __m128d va = _mm_set1_pd(a), vb = _mm_set1_pd(b);
+    return unlessANan(va, vb, _mm_min_pd(vb, va));  // b < a ? b : a
+}
 inline double fastMax(double a, double b) {
     const __m128d va = _mm_set1_pd(a), vb = _mm_set1_pd(b);
-    const __m128d m = _mm_max_pd(vb, va);  // b > a ? b : a
-    const __m128d aNan = _mm_cmpunord_pd(va, va);
-    return _mm_cvtsd_f64(_mm_or_pd(_mm_and_pd(aNan, vb), _mm_andnot_pd(aNan, m)));
+    return unlessANan(va, vb, _mm_max_pd(vb, va));  // b > a ? b : a
 }
 #else
 inline double fastMin(double a, double b) { return a < b ? a : (b != b ? a : b); }

@@ -89,11 +89,17 @@ struct RingFamily {
     static Bounds3 bounds(const Shape& s) { return ringBounds(s); }
 };
 
+// The shape list a family's geometry was given as user data (addUser).
+template <class F>
+const std::vector<typename F::Shape>& shapesOf(void* userPtr) {
+    return *static_cast<const std::vector<typename F::Shape>*>(userPtr);
+}
+
 // Float box that surely contains the double box, with room for the float rounding of
 // the ray Embree traverses with (a few ulps of the coordinates involved).
 template <class F>
 void boundsFunc(const RTCBoundsFunctionArguments* args) {
-    const auto& shapes = *static_cast<const std::vector<typename F::Shape>*>(args->geometryUserPtr);
+    const auto& shapes = shapesOf<F>(args->geometryUserPtr);
     RTCBounds* o = args->bounds_o;
     if (args->primID >= shapes.size()) {
         // The culling stand-in of a lone shape (addUser): a small box beside its box,
@@ -126,7 +132,7 @@ template <class F>
 void intersectFunc(const RTCIntersectFunctionNArguments* args) {
     RP_CHECK(args->N == 1);  // we only issue rtcIntersect1
     if (!args->valid[0]) return;
-    const auto& shapes = *static_cast<const std::vector<typename F::Shape>*>(args->geometryUserPtr);
+    const auto& shapes = shapesOf<F>(args->geometryUserPtr);
     if (args->primID >= shapes.size()) return;  // a culling stand-in (addUser)
     QueryContext* ctx = queryContext(args->context);
     const auto& shape = shapes[args->primID];
@@ -147,7 +153,7 @@ template <class F>
 void occludedFunc(const RTCOccludedFunctionNArguments* args) {
     RP_CHECK(args->N == 1);  // we only issue rtcOccluded1
     if (!args->valid[0]) return;
-    const auto& shapes = *static_cast<const std::vector<typename F::Shape>*>(args->geometryUserPtr);
+    const auto& shapes = shapesOf<F>(args->geometryUserPtr);
     if (args->primID >= shapes.size()) return;  // a culling stand-in (addUser)
     const QueryContext* ctx = queryContext(args->context);
     const auto& shape = shapes[args->primID];
