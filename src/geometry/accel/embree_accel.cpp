@@ -15,7 +15,12 @@
 
 #include <embree3/rtcore.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -237,7 +242,25 @@ struct EmbreeAccel::Impl {
 };
 
 namespace {
+#if defined(__SSE2__)
+// (v.x, v.y, v.z, 0) as floats, rounded as float(double) rounds.
+inline __m128 floatsWithZero(const Vec3& v) {
+    const __m128 xy = _mm_cvtpd_ps(_mm_loadu_pd(&v.x));
+    const __m128 z0 = _mm_cvtpd_ps(_mm_load_sd(&v.z));  // upper lane zeroed by the load
+    return _mm_movelh_ps(xy, z0);
+}
+#endif
+
 void setRay(RTCRay& r, const Ray& ray) {
+#if defined(__SSE2__)
+    // Origin with tnear = 0 and direction with time = 0 as two 16-byte stores: Embree
+    // starts by loading each as one vector, and a vector load of four separate float
+    // stores cannot be forwarded from the store buffer (a stall on every ray).
+    static_assert(offsetof(RTCRay, tnear) == 12 && offsetof(RTCRay, dir_x) == 16 &&
+                  offsetof(RTCRay, time) == 28);
+    _mm_storeu_ps(&r.org_x, floatsWithZero(ray.origin));
+    _mm_storeu_ps(&r.dir_x, floatsWithZero(ray.dir));
+#else
     r.org_x = float(ray.origin.x);
     r.org_y = float(ray.origin.y);
     r.org_z = float(ray.origin.z);
@@ -245,8 +268,9 @@ void setRay(RTCRay& r, const Ray& ray) {
     r.dir_y = float(ray.dir.y);
     r.dir_z = float(ray.dir.z);
     r.tnear = 0.0f;
-    r.tfar = ray.tmax < double(std::numeric_limits<float>::max()) ? float(ray.tmax) : HUGE_VALF;
     r.time = 0.0f;
+#endif
+    r.tfar = ray.tmax < double(std::numeric_limits<float>::max()) ? float(ray.tmax) : HUGE_VALF;
     r.mask = ~0u;
     r.id = 0;
     r.flags = 0;
