@@ -230,13 +230,22 @@ BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
 // ---------------------------------------------------------------------------------------
 // Forward direction: photon scattering (pmapmat.c).
 
+// The medium change is kept flat (its kind beside the other one-byte fields) so that the
+// record is 80 bytes: GCC zeroes a default-constructed record of 88 bytes or more with
+// `rep stos`, whose start-up cost was a visible part of every photon bounce.
 struct PhotonScatter {
     ScatterKind kind = ScatterKind::Absorbed;
-    Vec3 dir;
-    Color fluxFactor;    // multiply the photon flux by this (Russian roulette included)
     bool store = false;  // the hit has a diffuse component: deposit the incident photon here
-    MediumChange medium;
+    MediumChange::Kind mediumKind = MediumChange::Kind::Unchanged;
+    Vec3 dir;
+    Color fluxFactor;  // multiply the photon flux by this (Russian roulette included)
+    Color extinction;  // of the medium entered, where mediumKind is Given
+    void setMedium(const MediumChange& m) {
+        mediumKind = m.kind;
+        extinction = m.extinction;
+    }
 };
+static_assert(sizeof(PhotonScatter) <= 80, "see PhotonScatter");
 
 // Russian roulette as RADIANCE: component i (diffuse/specular reflection/transmission)
 // has colour coefficient C_i and is chosen with probability avg(C_i); otherwise the

@@ -198,11 +198,11 @@ PhotonScatter scatterDielectric(const DielectricParams& m, const SurfacePoint& s
     if (rng.uniform() >= h.refl) {
         s.kind = ScatterKind::SpecularTransmission;
         s.dir = h.refracted;
-        s.medium = h.transmittedMedium;
+        s.setMedium(h.transmittedMedium);
     } else {
         s.kind = ScatterKind::SpecularReflection;
         s.dir = h.reflected;
-        s.medium = h.reflectedMedium;
+        s.setMedium(h.reflectedMedium);
     }
     return s;
 }

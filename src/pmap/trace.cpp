@@ -283,10 +283,10 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         flux *= s.fluxFactor;
         ++scatters;
         lastSpecular = material::isSpecular(s.kind);
-        switch (s.medium.kind) {
+        switch (s.mediumKind) {
         case material::MediumChange::Kind::Unchanged: break;
         case material::MediumChange::Kind::Global: extinction = Color{}; break;
-        case material::MediumChange::Kind::Given: extinction = s.medium.extinction; break;
+        case material::MediumChange::Kind::Given: extinction = s.extinction; break;
         }
         ray = spawnRay(*hit, s.dir);
     }
