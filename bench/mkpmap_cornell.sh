@@ -3,10 +3,10 @@
 # caustic 1m), -n 1 and -n 2: emitted and stored photons/s, kd-tree build time, bytes
 # per photon on disk, peak memory. RADIANCE 5.4a took 9.2 s (-n 1) and 6.2 s (-n 2) on
 # a machine of the same kind (README). CPU time (user+sys) is printed too: on a shared
-# machine it varies far less than wall time. Usage: bench/mkpmap_cornell.sh [build/tools]
+# machine it varies far less than wall time. Usage: bench/mkpmap_cornell.sh [build dir]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bin=${1:-$root/build/tools}
+bin=${1:-$root/build}/tools
 scene=$root/../shared/validation/cornell/scene.rad
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 for n in 1 2; do
