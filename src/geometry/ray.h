@@ -15,9 +15,13 @@ namespace rp {
 
 // A ray o + t*dir, t in (0, tmax). dir need not be unit, but then t is in units of
 // |dir|; the renderer always passes unit directions so that t is a distance.
+// Both vectors start on 16-byte boundaries. Why: compilers copy and load a Vec3 as an
+// (x, y) pair plus z; with dir at offset 24 a ray copied in 16-byte pieces was then read
+// back as (dir.x, dir.y) straddling two of those stores, which the store buffer cannot
+// forward (a stall at the start of every photon path).
 struct Ray {
-    Vec3 origin;
-    Vec3 dir;
+    alignas(16) Vec3 origin;
+    alignas(16) Vec3 dir;
     double tmax = HUGE_VAL;
 };
 
