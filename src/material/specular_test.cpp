@@ -130,6 +130,9 @@ TEST(Dielectric, SnellAndTotalInternalReflection) {
     for (int i = 0; i < 100; ++i) {
         PhotonScatter s = scatterPhoton(m, makeSurfacePoint(din, kUp, false), rng);
         EXPECT_EQ(s.kind, ScatterKind::SpecularReflection);
+        // The photon stays in the absorbing medium, as the backward ray does.
+        EXPECT_EQ(s.mediumKind, MediumChange::Kind::Given);
+        EXPECT_NEAR(s.extinction.g, -std::log(0.8), 1e-12);
     }
     // Leaving a dielectric below the critical angle enters the global medium.
     BackwardResult out = shadeBackward(m, makeSurfacePoint(test::incident(20), kUp, false), {}, rng);
