@@ -170,6 +170,15 @@ struct SurfacePoint {
 // A SurfacePoint whose shading normal is the geometric one.
 SurfacePoint makeSurfacePoint(const Vec3& dir, const Vec3& normalFacingRay, bool front,
                               const Color& pattern = {1, 1, 1});
+// The fields makeSurfacePoint sets from the hit, the others left as they are: the photon
+// tracer reuses one SurfacePoint per path (constructing the whole struct per hit was a
+// visible part of its loop).
+inline void setSurfaceHit(SurfacePoint& sp, const Vec3& dir, const Vec3& normalFacingRay,
+                          bool front) {
+    sp.dir = dir;
+    sp.normal = sp.geomNormal = normalFacingRay;
+    sp.front = front;
+}
 
 enum class ScatterKind : uint8_t {
     Absorbed,

@@ -249,9 +249,7 @@ MaterialParams makeMaterial(const Primitive& p) {
 SurfacePoint makeSurfacePoint(const Vec3& dir, const Vec3& normalFacingRay, bool front,
                               const Color& pattern) {
     SurfacePoint sp;
-    sp.dir = dir;
-    sp.normal = sp.geomNormal = normalFacingRay;
-    sp.front = front;
+    setSurfaceHit(sp, dir, normalFacingRay, front);
     sp.pattern = pattern;
     return sp;
 }

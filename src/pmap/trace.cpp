@@ -264,12 +264,9 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         if (mi->isLight) return;  // "Light sources doan' reflect"; nothing stored
         if (!hit->front && !settings_.backVisible && mi->backAbsorbs) return;
 
-        // The fields makeSurfacePoint sets; the rest keep their defaults (no pattern,
-        // no textures in photon scattering). Reused: constructing the whole struct per
-        // hit was a visible part of the loop.
-        sp.dir = ray.dir;
-        sp.normal = sp.geomNormal = hit->front ? hit->normal : -hit->normal;
-        sp.front = hit->front;
+        // No pattern or texture in photon scattering: the other fields keep their defaults.
+        material::setSurfaceHit(sp, ray.dir, hit->front ? hit->normal : -hit->normal,
+                                hit->front);
         material::PhotonScatter s = material::scatterPhoton(mi->params, sp, rng);
         if (s.store && mi->storeAllowed)
             deposit(*hit, hit->front, flux, scatters > 0 || fromPort,
