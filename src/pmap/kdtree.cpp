@@ -75,13 +75,16 @@ void buildSubtree(const BuildBuffers& bufs, Photon* cur, size_t s, size_t n, con
                   const float hi[3], bool parallel) {
     if (n == 0) return;
     const int axis = splitAxis(lo, hi);
-    const size_t nLeft = leftSubtreeSize(n);
-    Photon* data = cur;
-    if (n > 1) {
-        Photon* other = cur == bufs.a ? bufs.b : bufs.a;
-        data = selectRank(cur + s, other + s, bufs.bins + s, n, nLeft, axis, lo[axis],
-                          hi[axis]) - s;
+    if (n == 1) {  // a leaf (half of all nodes): no selection, no empty children to visit
+        Photon& leaf = bufs.a[s];
+        if (cur != bufs.a) leaf = cur[s];
+        leaf.setDiscr(axis);
+        return;
     }
+    const size_t nLeft = leftSubtreeSize(n);
+    Photon* other = cur == bufs.a ? bufs.b : bufs.a;
+    Photon* data =
+        selectRank(cur + s, other + s, bufs.bins + s, n, nLeft, axis, lo[axis], hi[axis]) - s;
     Photon& median = bufs.a[s + nLeft];
     if (data != bufs.a) median = data[s + nLeft];
     median.setDiscr(axis);
@@ -104,6 +107,10 @@ void buildSubtree(const BuildBuffers& bufs, Photon* cur, size_t s, size_t n, con
 void gatherHeap(const Photon* inOrder, size_t s, size_t n, size_t root, Photon* out,
                 bool parallel) {
     if (n == 0) return;
+    if (n == 1) {
+        out[root - 1] = inOrder[s];
+        return;
+    }
     const size_t nLeft = leftSubtreeSize(n);
     out[root - 1] = inOrder[s + nLeft];
     const bool fork = parallel && n > kParallelGrain;

@@ -114,6 +114,25 @@ TEST(KdTreeSelect, LooseBoundsStillSplit) {
     for (size_t i = 1501; i < in.size(); ++i) ASSERT_GE(r[i].pos[0], r[1500].pos[0]);
 }
 
+TEST(KdTreeSelect, SmallRangeWithNaNKeepsEveryPhoton) {
+    // Outside selectRank's contract (coordinates within finite bounds), but a NaN must not
+    // make the small-range sort drop or duplicate photons: its counted places are then no
+    // permutation, and it falls back to std::nth_element.
+    for (size_t n : {5u, 24u}) {
+        float next = 0;
+        auto in = photonsFrom(n, [&] { return next += 1.0f; });
+        in[1].pos[0] = std::numeric_limits<float>::quiet_NaN();
+        for (Photon& p : in) p.primary += 7;  // no id is 0, as a zeroed record would be
+        std::vector<Photon> src = in, dst(n);
+        std::vector<uint16_t> bins(n);
+        const Photon* r = selectRank(src.data(), dst.data(), bins.data(), n, n / 2, 0, 0, 1e3f);
+        std::vector<uint32_t> ids;
+        for (size_t i = 0; i < n; ++i) ids.push_back(r[i].primary);
+        std::sort(ids.begin(), ids.end());
+        for (size_t i = 0; i < n; ++i) ASSERT_EQ(ids[i], i + 7) << "n=" << n;
+    }
+}
+
 TEST(KdTreeSelect, TreeWithManyTiesIsValid) {
     std::mt19937 rng(3);
     std::uniform_int_distribution<int> few(0, 4);
