@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "util/fast_frexp.h"
+
 namespace rp::pmap {
 
 namespace {
@@ -45,29 +47,16 @@ void putFlt(std::string& out, double value) {
 void putFlt(unsigned char* out, double value) {
     int64_t m = 0;
     int e = 0;
-    uint64_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    const int biased = int((bits >> 52) & 0x7ff);
     if (std::isnan(value)) {
         // m = 0, e = 0
     } else if (std::isinf(value)) {
         m = value > 0 ? 0x7fffffff : -0x7fffffff;
         e = 127;
     } else {
-        if (biased != 0) {
-            // Normal numbers (every float position is one, or zero): frexp by moving the
-            // exponent field to that of [0.5, 1), exact and the same bits as std::frexp,
-            // which was a visible part of writing a map (three calls per photon).
-            e = biased - 1022;
-            const uint64_t fracBits = (bits & ~(uint64_t{0x7ff} << 52)) | (uint64_t{1022} << 52);
-            double frac;
-            std::memcpy(&frac, &fracBits, sizeof frac);
-            m = static_cast<int64_t>(frac * kMantissaScale);
-        } else {
-            // Zero and subnormals. The C conversion (long)(double) truncates toward zero;
-            // static_cast does the same.
-            m = static_cast<int64_t>(std::frexp(value, &e) * kMantissaScale);
-        }
+        // std::frexp, inline for normal numbers (every float position is one, or zero),
+        // which was a visible part of writing a map (three calls per photon). The C
+        // conversion (long)(double) truncates toward zero; static_cast does the same.
+        m = static_cast<int64_t>(frexpFast(value, e) * kMantissaScale);
         if (e > 127) {
             m = m > 0 ? 0x7fffffff : -0x7fffffff;
             e = 127;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "util/fast_frexp.h"
+
 namespace rp {
 
 namespace {
@@ -16,7 +18,7 @@ Colr toColr(double r, double g, double b) {
     if (d <= 1e-32) return {0, 0, 0, 0};
     if (!std::isfinite(d)) return {255, 255, 255, 255};
     int e = 0;
-    double scale = std::frexp(d, &e) * 256.0 / d;
+    double scale = frexpFast(d, e) * 256.0 / d;
     if (e + kColrExcess > 255) return {255, 255, 255, 255};
     if (e + kColrExcess < 1) return {0, 0, 0, 0};  // below the smallest exponent
     auto mant = [scale](double v) -> uint8_t {
