@@ -1,6 +1,7 @@
 // The Embree 3 accelerator: the only code that sees rtc* calls or types. Built once from
 // a ShapeSet (polygons' triangles as an Embree triangle mesh; spheres, cones and rings as
-// Embree user geometry with exact double-precision intersectors), then queried from
+// Embree user geometry with exact double-precision intersectors, or tested one by one
+// with those intersectors when there are only a few of them), then queried from
 // any number of threads. Hit records are completed by SceneGeometry, not here.
 #pragma once
 
