@@ -34,7 +34,11 @@ constexpr size_t kPrimaryRecordSize = 2;
 // Bytes after the version string up to and including numPrimary.
 constexpr size_t kFixedBinarySize = 8 + (3 + 6 + 3 + 1) * kPortableFloatSize + 4;  // 77
 constexpr size_t kMaxVersionLength = 32;
-constexpr size_t kChunkPhotons = size_t{1} << 16;      // photons encoded per chunk
+constexpr size_t kChunkPhotons = size_t{1} << 16;      // photons decoded per task (/ 4)
+// Photons encoded per write buffer: 442 kB, so the four buffers of a save come from the
+// heap, reused from one save to the next. At 2^16 photons each buffer was a fresh 2 MB
+// huge page, 16 MB zero-filled by the kernel per mkpmap run (~0.6 % of a Cornell run).
+constexpr size_t kWriteChunkPhotons = size_t{1} << 14;
 constexpr size_t kReadChunkPhotons = size_t{1} << 18;  // photons read per chunk (7 MB)
 
 std::string cFormat(const char* format, auto... args) {
@@ -140,17 +144,17 @@ void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
     out.write(b.data(), static_cast<std::streamsize>(b.size()));
     // Chunks are encoded in parallel (in the caller's task arena), a batch at a time to
     // bound the buffer memory, and written in order: the bytes do not depend on threads.
-    // The buffers are BulkVectors: as strings, their zero fill in 4 KiB pages was about
-    // half of mkpmap's page faults.
+    // BulkVectors: resize() leaves them uninitialised (each byte is written once).
     constexpr size_t kBatch = 4;
     BulkVector<unsigned char> bufs[kBatch];
     const size_t n = photons.size();
-    for (size_t i = 0; i < n; i += kBatch * kChunkPhotons) {
-        const size_t chunks = std::min(kBatch, (n - i + kChunkPhotons - 1) / kChunkPhotons);
+    for (size_t i = 0; i < n; i += kBatch * kWriteChunkPhotons) {
+        const size_t chunks =
+            std::min(kBatch, (n - i + kWriteChunkPhotons - 1) / kWriteChunkPhotons);
         tbb::parallel_for(size_t{0}, chunks, [&](size_t k) {
             BulkVector<unsigned char>& buf = bufs[k];
-            const size_t begin = i + k * kChunkPhotons;
-            const size_t end = std::min(n, begin + kChunkPhotons);
+            const size_t begin = i + k * kWriteChunkPhotons;
+            const size_t end = std::min(n, begin + kWriteChunkPhotons);
             buf.resize((end - begin) * kPhotonRecordSize);
             unsigned char* b = buf.data();
             for (size_t j = begin; j < end; ++j, b += kPhotonRecordSize)
