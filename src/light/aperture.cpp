@@ -73,7 +73,19 @@ Vec3 fromCone(const Vec3& axis, double cosTheta, double phi) {
                      axis * cosTheta);
 }
 
+// Malley's method: a point uniform in the disc of `radius` (drawn by rejection from its
+// square, no trigonometry), projected up onto the hemisphere about n.
+Vec3 projectDiscPoint(const Vec3& n, const Vec3& u, const Vec3& v, double radius, Rng& rng) {
+    double x, y;
+    const double r2 = uniformDiscPoint(rng, radius, x, y);
+    return u * x + v * y + n * std::sqrt(fastMax(0.0, 1 - r2));
+}
+
 }  // namespace
+
+Vec3 sampleCosineHemisphere(const Vec3& n, const Vec3& u, const Vec3& v, Rng& rng) {
+    return projectDiscPoint(n, u, v, 1.0, rng);  // sampleProjectedCone's radius for cosHalf 0
+}
 
 Vec3 sampleUniformCone(const Cone& c, Rng& rng) {
     double cosTheta = 1 - rng.uniform() * (1 - c.cosHalf);
@@ -84,14 +96,11 @@ Vec3 sampleProjectedCone(const Cone& c, const Vec3& n, Rng& rng) {
     double an = std::clamp(dot(c.axis, n), -1.0, 1.0);
     if (an > 1 - 1e-12) {
         // Centred on the normal: sin^2 uniform in [0, 1 - max(cosHalf,0)^2], i.e. a point
-        // uniform in the disc of that radius, projected up onto the hemisphere (Malley's
-        // method; no trigonometry: the disc point is drawn by rejection from its square).
+        // uniform in the disc of that radius, projected up onto the hemisphere.
         const double cmin = std::fmax(c.cosHalf, 0.0), radius = std::sqrt(1 - cmin * cmin);
-        double x, y;
-        const double r2 = uniformDiscPoint(rng, radius, x, y);
         Vec3 u, v;
         coneFrame(n, u, v);
-        return u * x + v * y + n * std::sqrt(fastMax(0.0, 1 - r2));
+        return projectDiscPoint(n, u, v, radius, rng);
     }
     // Largest w.n in the cone bounds the rejection ratio of a uniform-cone proposal.
     double alpha = std::acos(an), half = std::acos(std::clamp(c.cosHalf, -1.0, 1.0));

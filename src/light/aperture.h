@@ -39,6 +39,11 @@ inline double projectedSolidAngle(const Cone& c, const Vec3& n) {
 // cosine-weighted hemisphere and a uniform cone). Requires projectedSolidAngle > 0.
 Vec3 sampleProjectedCone(const Cone& c, const Vec3& n, Rng& rng);
 
+// sampleProjectedCone(Cone{n, 0}, n, rng), the cosine-weighted hemisphere about unit n,
+// with n's coneFrame u, v given, so that a caller emitting many photons about one normal
+// (a flat light source) computes the frame once. The same direction, bit for bit.
+Vec3 sampleCosineHemisphere(const Vec3& n, const Vec3& u, const Vec3& v, Rng& rng);
+
 // Uniform direction in the cone (density 1 / solidAngle).
 Vec3 sampleUniformCone(const Cone& c, Rng& rng);
 

@@ -23,6 +23,9 @@ struct Group {
     bool flipNormal = false;  // emit about minus the surface normal (forward ports)
     Mode mode = Mode::Hemisphere;
     Cone cone;                // spotlight cone or distant source disk
+    // Hemisphere mode on a flat shape: its one normal's coneFrame, computed once.
+    bool flatFrame = false;
+    Vec3 frameU, frameV;
     Color radiance;
     Color weight;  // radiance scaled to the mean total flux (all modes but Table)
     bool distant = false;
@@ -192,6 +195,12 @@ EmissionPlan::EmissionPlan(const SceneGeometry& geometry, std::vector<LightSourc
                 }
             } else if (!spot) {
                 m.groups[gi].mode = Mode::Hemisphere;
+                if (flat && !parts.empty()) {
+                    // pointAt gives every point of a polygon or ring this same normal.
+                    const Vec3 n = partitionCentre(shapes, m.cube, parts.front()).normal;
+                    m.groups[gi].flatFrame = true;
+                    coneFrame(n, m.groups[gi].frameU, m.groups[gi].frameV);
+                }
                 for (const Partition& p : parts) m.add(p, gi, L * (kPi * p.area), -1);
             } else if (flat) {
                 m.groups[gi].mode = Mode::FlatCone;
@@ -327,7 +336,8 @@ EmittedPhoton EmissionPlan::emitPhoton(Rng& rng) const {
     Color colour = g.radiance;
     switch (g.mode) {
     case Mode::Hemisphere:
-        dir = sampleProjectedCone(Cone{e.normal, 0}, e.normal, rng);
+        dir = g.flatFrame ? sampleCosineHemisphere(e.normal, g.frameU, g.frameV, rng)
+                          : sampleProjectedCone(Cone{e.normal, 0}, e.normal, rng);
         break;
     case Mode::FlatCone:
         dir = sampleProjectedCone(g.cone, e.normal, rng);

@@ -120,6 +120,22 @@ TEST(Aperture, ProjectedSolidAngleMatchesMonteCarlo) {
     }
 }
 
+// The flat-source shortcut (frame computed once) draws exactly the directions of the
+// general sampler, so maps do not change with it.
+TEST(Aperture, CosineHemisphereWithGivenFrameMatchesProjectedCone) {
+    for (const Vec3& n : {Vec3{0, 0, 1}, Vec3{0, 0, -1}, normalize(Vec3{0.3, -0.8, 0.2}),
+                          normalize(Vec3{-1, 0.001, 0})}) {
+        Vec3 u, v;
+        coneFrame(n, u, v);
+        Rng a(8, RngDomain::Test, 1), b(8, RngDomain::Test, 1);
+        for (int i = 0; i < 1000; ++i) {
+            const Vec3 w = sampleCosineHemisphere(n, u, v, a);
+            ASSERT_EQ(w, sampleProjectedCone(Cone{n, 0}, n, b)) << i;
+            ASSERT_GT(dot(w, n), 0);
+        }
+    }
+}
+
 // Density proportional to max(0, w.n) in the cone: the mean of w.n is
 // integral((w.n)^2) / integral(w.n), estimated independently with uniform samples.
 TEST(Aperture, ProjectedConeSamplerHasCosineDensity) {
