@@ -87,18 +87,24 @@ RouletteTable makeRouletteTable(const Component* c, int n) {
     return t;
 }
 
-int roulette(const RouletteTable& t, Rng& rng, Color& factor) {
+namespace {
+// The component a draw picks by the table's probabilities, or -1 (absorbed).
+int rouletteIndex(const RouletteTable& t, Rng& rng) {
     double xi = rng.uniform() * t.scale;
     for (int i = 0; i < t.n; ++i) {
         const double p = t.prob[i];
         if (p <= 0) continue;
-        if (xi < p) {
-            factor = t.factor[i];
-            return i;
-        }
+        if (xi < p) return i;
         xi -= p;
     }
     return -1;
+}
+}  // namespace
+
+int roulette(const RouletteTable& t, Rng& rng, Color& factor) {
+    const int i = rouletteIndex(t, rng);
+    if (i >= 0) factor = t.factor[i];
+    return i;
 }
 
 int roulette(const Component* c, int n, Rng& rng, Color& factor) {
@@ -106,8 +112,7 @@ int roulette(const Component* c, int n, Rng& rng, Color& factor) {
     // divided out (a table built per glass or mirror hit was ~0.6 % of mkpmap).
     RouletteTable t;
     setRouletteProbabilities(c, n, t);
-    Color picked;
-    const int i = roulette(t, rng, picked);
+    const int i = rouletteIndex(t, rng);
     if (i >= 0) factor = rouletteFactor(c[i].coef, t.prob[i], t.scale);
     return i;
 }

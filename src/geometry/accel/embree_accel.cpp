@@ -134,6 +134,14 @@ void boundsFunc(const RTCBoundsFunctionArguments* args) {
     o->upper_z = up(b.max.z + pad);
 }
 
+// A shape's exact test from the query's double ray (t in (0, tmax)), unless its modifier
+// is skipped: for Embree's user-geometry callbacks and the directly tested shapes alike.
+template <class F>
+bool hitUserShape(const typename F::Shape& s, const QueryContext& ctx, double tmax, double& t) {
+    if (ctx.skip && ctx.skip->contains(s.modifier)) return false;
+    return F::hit(s, ctx.org, ctx.dir, tmax, t);
+}
+
 template <class F>
 void intersectFunc(const RTCIntersectFunctionNArguments* args) {
     RP_CHECK(args->N == 1);  // we only issue rtcIntersect1
@@ -141,11 +149,10 @@ void intersectFunc(const RTCIntersectFunctionNArguments* args) {
     const auto& shapes = shapesOf<F>(args->geometryUserPtr);
     if (args->primID >= shapes.size()) return;  // a culling stand-in (addUser)
     QueryContext* ctx = queryContext(args->context);
-    const auto& shape = shapes[args->primID];
-    if (ctx->skip && ctx->skip->contains(shape.modifier)) return;
     RTCRayHit* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
     double t;
-    if (!F::hit(shape, ctx->org, ctx->dir, fastMin(ctx->tmax, double(rh->ray.tfar)), t)) return;
+    if (!hitUserShape<F>(shapes[args->primID], *ctx, fastMin(ctx->tmax, double(rh->ray.tfar)), t))
+        return;
     rh->ray.tfar = float(t);  // rounding is monotonic, so still <= the previous tfar
     rh->hit.Ng_x = rh->hit.Ng_y = rh->hit.Ng_z = 0;  // completed in double by the caller
     rh->hit.u = rh->hit.v = 0;
@@ -162,11 +169,9 @@ void occludedFunc(const RTCOccludedFunctionNArguments* args) {
     const auto& shapes = shapesOf<F>(args->geometryUserPtr);
     if (args->primID >= shapes.size()) return;  // a culling stand-in (addUser)
     const QueryContext* ctx = queryContext(args->context);
-    const auto& shape = shapes[args->primID];
-    if (ctx->skip && ctx->skip->contains(shape.modifier)) return;
     RTCRay* ray = reinterpret_cast<RTCRay*>(args->ray);
     double t;
-    if (F::hit(shape, ctx->org, ctx->dir, std::fmin(ctx->tmax, double(ray->tfar)), t))
+    if (hitUserShape<F>(shapes[args->primID], *ctx, std::fmin(ctx->tmax, double(ray->tfar)), t))
         ray->tfar = -HUGE_VALF;  // Embree's "occluded" mark
 }
 
@@ -238,21 +243,15 @@ struct EmbreeAccel::Impl {
         attach(g, kind);
     }
 
-    // The exact test of a direct shape (t in (0, tmax)), unless its modifier is skipped.
+    // hitUserShape for a direct shape.
     bool hitDirect(const DirectShape& d, const QueryContext& ctx, double tmax, double& t) const {
         switch (d.kind) {
-        case ShapeKind::Sphere: return hitShape<SphereFamily>(shapes.spheres[d.index], ctx, tmax, t);
-        case ShapeKind::Cone: return hitShape<ConeFamily>(shapes.cones[d.index], ctx, tmax, t);
-        case ShapeKind::Ring: return hitShape<RingFamily>(shapes.rings[d.index], ctx, tmax, t);
+        case ShapeKind::Sphere: return hitUserShape<SphereFamily>(shapes.spheres[d.index], ctx, tmax, t);
+        case ShapeKind::Cone: return hitUserShape<ConeFamily>(shapes.cones[d.index], ctx, tmax, t);
+        case ShapeKind::Ring: return hitUserShape<RingFamily>(shapes.rings[d.index], ctx, tmax, t);
         case ShapeKind::Polygon: break;
         }
         return false;
-    }
-    template <class F>
-    static bool hitShape(const typename F::Shape& s, const QueryContext& ctx, double tmax,
-                         double& t) {
-        if (ctx.skip && ctx.skip->contains(s.modifier)) return false;
-        return F::hit(s, ctx.org, ctx.dir, tmax, t);
     }
     // Nearest direct shape closer than `hit` (or than the ray's tmax when !found).
     bool nearestDirect(const QueryContext& ctx, bool found, AccelHit& hit) const {
