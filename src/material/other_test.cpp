@@ -34,6 +34,29 @@ TEST(DiffuseSampling, SampleCosineIsCosineWeighted) {
     EXPECT_LT(length(tangential) / kSamples, 4 * std::sqrt(0.5 / kSamples));
 }
 
+// The tangent frame (detail.h, Duff et al.) is orthonormal and right-handed (u x v = n)
+// for every unit normal, including both poles, -0 and the equator, where the helper
+// division would cancel if the sign were taken the other way.
+TEST(DiffuseSampling, PerpendicularFrameIsOrthonormal) {
+    std::vector<Vec3> normals{{0, 0, 1}, {0, 0, -1}, {1, 0, -0.0}, {1, 0, 0}, {0, -1, 0},
+                              {0, 1, -1e-300}, normalize(Vec3{1, 1, 1e-9})};
+    Rng rng(5, RngDomain::Test, 0);
+    for (int i = 0; i < 1000; ++i) {
+        Vec3 r{2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1};
+        if (lengthSquared(r) > 1e-6) normals.push_back(normalize(r));
+    }
+    for (const Vec3& n : normals) {
+        Vec3 u, v;
+        detail::perpendicularFrame(n, u, v);
+        EXPECT_NEAR(length(u), 1.0, 1e-14);
+        EXPECT_NEAR(length(v), 1.0, 1e-14);
+        EXPECT_NEAR(dot(u, v), 0.0, 1e-14);
+        EXPECT_NEAR(dot(u, n), 0.0, 1e-14);
+        EXPECT_NEAR(dot(v, n), 0.0, 1e-14);
+        EXPECT_LT(length(cross(u, v) - n), 1e-14) << n.x << " " << n.y << " " << n.z;
+    }
+}
+
 TEST(Lights, AbsorbPhotonsAndEmit) {
     Rng rng(1, RngDomain::Test, 0);
     SurfacePoint sp = makeSurfacePoint(test::incident(20), kUp, true);

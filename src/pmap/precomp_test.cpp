@@ -131,8 +131,9 @@ TEST(Precomp, FurnaceMapEndToEnd) {
     EXPECT_GE(matched, int(0.99 * checked)) << matched << " of " << checked;
     // Uniform indirect irradiance E_i = 0.785398 W/m2 (README; x 0.9975 for the lamp's
     // shadow); the estimate is E/pi. Mean of ~1600 estimates of k = 50, which the
-    // k-nearest estimator biases upward by about k/(k-1) = +2 %: 4 % tolerance.
-    EXPECT_NEAR(sum / checked * kPiD, 0.785398 * 0.9975, 0.04 * 0.785);
+    // k-nearest estimator biases upward (k/(k-1) = +2 %): over seeds 1-40 the mean came
+    // out +2.8 % high with a spread of 0.8 % (sd), hence a 5.5 % tolerance.
+    EXPECT_NEAR(sum / checked * kPiD, 0.785398 * 0.9975, 0.055 * 0.785);
 }
 
 }  // namespace

@@ -240,7 +240,9 @@ TEST(AmbientTest, ParallelLookupsAreSafe) {
     o.resolution = 64;
     // Deterministic tracers: a distant environment 1 + 0.5 d.x (mean 1 for normal z), and
     // the ceiling step of ambient_hemisphere_test (V(x) = 2 + x / sqrt(1 + x^2)), which
-    // exercises extrapolation with real gradients.
+    // exercises extrapolation with real gradients. Tolerances: the worst of the 4000
+    // points is 0.004-0.009 off for the environment and 0.09-0.12 for the step (-aa 0.2
+    // interpolation across it), over seeds 1-12 with either random generator used so far.
     FunctionTracer distant([](const Vec3&, const Vec3& d) {
         return HemisphereTracer::Sample{Color::grey(1 + 0.5 * d.x), 1e10, {}};
     });
@@ -251,7 +253,7 @@ TEST(AmbientTest, ParallelLookupsAreSafe) {
         double tolerance;
         int divisions;
     } cases[] = {{&distant, [](double) { return 1.0; }, 0.02, 64},
-                 {&step, [](double x) { return 2 + x / std::sqrt(1 + x * x); }, 0.1, 512}};
+                 {&step, [](double x) { return 2 + x / std::sqrt(1 + x * x); }, 0.15, 512}};
     for (const Case& c : cases) {
         o.divisions = c.divisions;
         Ambient amb(o, 16, scene);
