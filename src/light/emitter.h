@@ -1,5 +1,5 @@
-// Photon emission: the EmissionPlan (every source's partitions, their exact flux and a
-// CDF over them, built once) and emitPhoton, which turns a random stream into one
+// Photon emission: the EmissionPlan (every source's partitions, their exact flux and an
+// alias table over them, built once) and emitPhoton, which turns a random stream into one
 // photon ray with equal flux. Finding sources is light_sources.h, partitioning
 // partition.h; tracing the photon through the scene belongs to pmap/.
 #pragma once

@@ -325,8 +325,8 @@ TwoLampPicks twoLampPicks(double la, double ds) {
     return {plan.partitionCount(), double(fromA) / kPhotons};
 }
 
-// Many partitions of very different flux: the guided partition search (emitter.cpp
-// upperBound) must pick each source in proportion to its flux (4 sigma).
+// Many partitions of very different flux: the alias table (emitter.cpp pickAny) must
+// pick each source in proportion to its flux (4 sigma).
 TEST(Emitter, ManyPartitionsPickedByFlux) {
     const TwoLampPicks r = twoLampPicks(100, 0.01);
     ASSERT_GT(r.partitions, 100u);
@@ -334,14 +334,41 @@ TEST(Emitter, ManyPartitionsPickedByFlux) {
     EXPECT_NEAR(r.fromA, p, 4 * std::sqrt(p * (1 - p) / kPhotons));
 }
 
-// Few partitions (under 16): the pick counts the cdf entries at or below the draw
-// (emitter.cpp upperBound) and must still pick in proportion to flux (4 sigma).
+// Few partitions (under 16) of unequal flux: picked in proportion to flux (4 sigma).
 TEST(Emitter, FewPartitionsPickedByFlux) {
     const TwoLampPicks r = twoLampPicks(3, 1);
     ASSERT_GE(r.partitions, 2u);
     ASSERT_LT(r.partitions, 16u);
     const double p = 3.0 / 7.0;  // A's share of the flux
     EXPECT_NEAR(r.fromA, p, 4 * std::sqrt(p * (1 - p) / kPhotons));
+}
+
+// Seven unit-square lamps of radiance 1..7, two partitions each: every slot of the alias
+// table is kept or aliased, and each lamp must get k/28 of the photons (4 sigma), which
+// a wrong keep probability or alias in the construction would break.
+TEST(Emitter, AliasTablePicksEveryPartitionByFlux) {
+    Builder b;
+    constexpr int kLamps = 7;
+    for (int k = 0; k < kLamps; ++k) {
+        const double x = 2.0 * k, r = k + 1;
+        b.add(PrimType::Polygon, "p" + std::to_string(k),
+              {x, 0, 0, x + 1, 0, 0, x + 1, 1, 0, x, 1, 0},
+              b.light("l" + std::to_string(k), r, r, r));
+    }
+    SceneGeometry geom(b.scene());
+    EmissionOptions opt;
+    opt.partitionSize = 1;
+    EmissionPlan plan = planFor(b, geom, opt);
+    ASSERT_EQ(plan.partitionCount(), size_t(2 * kLamps));  // two triangles each
+    std::array<long, kLamps> count{};
+    for (int i = 0; i < kPhotons; ++i)
+        ++count[size_t(plan.emitPhoton(5, uint64_t(i)).ray.origin.x / 2)];
+    for (int k = 0; k < kLamps; ++k) {
+        const double p = (k + 1) / 28.0;
+        EXPECT_NEAR(double(count[size_t(k)]) / kPhotons, p,
+                    4 * std::sqrt(p * (1 - p) / kPhotons))
+            << "lamp " << k;
+    }
 }
 
 TEST(Emitter, DeterministicPerPhotonIndex) {
