@@ -36,7 +36,8 @@ constexpr uint64_t fmix64(uint64_t z) {
 // before): seeding its 256-bit state took six mixes per stream, ~3 % of mkpmap's
 // instructions; a SplitMix stream starts with two. A stream starts at a pseudo-random
 // point of the one 2^64 Weyl sequence: two streams of L draws overlap with probability
-// about 2L / 2^64 per pair, and streams draw tens of numbers.
+// about 2L / 2^64 (for a million streams of a thousand draws, ~5e-5 that any pair
+// does), and an overlap would only make two work items share some of their draws.
 class Rng {
 public:
     Rng(uint64_t seed, RngDomain domain, uint64_t index)
