@@ -1,5 +1,6 @@
 // Small helpers shared by the analytic shapes (sphere.h, cone.h, ring.h): the local
-// surface record they return and the orthonormal frame used for their u coordinate.
+// surface record they return and the angle about a frame (orthonormalFrame, vec.h) used
+// for their u coordinate.
 #pragma once
 
 #include <cmath>
@@ -13,16 +14,6 @@ struct SurfacePoint {
     Vec3 normal;
     double u = 0, v = 0;
 };
-
-// A fixed unit vector perpendicular to unit `axis`, so that angles about the axis are
-// reproducible (Duff et al. 2017, "Building an orthonormal basis, revisited").
-inline void orthonormalFrame(const Vec3& axis, Vec3& e1, Vec3& e2) {
-    double sign = std::copysign(1.0, axis.z);
-    double a = -1.0 / (sign + axis.z);
-    double b = axis.x * axis.y * a;
-    e1 = {1.0 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x};
-    e2 = {b, sign + axis.y * axis.y * a, -axis.y};
-}
 
 // Angle of radial vector r about the frame, as a fraction of a turn in [0, 1).
 inline double turnFraction(const Vec3& r, const Vec3& e1, const Vec3& e2) {

@@ -20,15 +20,9 @@ inline double fresnelEstimate(double cosi) { return std::exp(-5.85 * cosi) - 0.0
 
 // Orthonormal u, v perpendicular to unit n (any rotation about n is fine for isotropic use).
 inline void perpendicularFrame(const Vec3& n, Vec3& u, Vec3& v) {
-    // Duff et al., "Building an orthonormal basis, revisited" (JCGT 2017): one division,
-    // no square root and no branch (|sign + n.z| >= 1, so no cancellation). Why: the
-    // cross-and-normalize form, with a data-dependent choice of helper axis, was a third
-    // of cosine sampling's time in mkpmap.
-    const double sign = std::copysign(1.0, n.z);
-    const double a = -1 / (sign + n.z);
-    const double b = n.x * n.y * a;
-    u = Vec3{1 + sign * n.x * n.x * a, sign * b, -sign * n.x};
-    v = Vec3{b, sign + n.y * n.y * a, -n.y};
+    // Why this frame (vec.h): the cross-and-normalize form used here before, with a
+    // data-dependent choice of helper axis, was a third of cosine sampling's time.
+    orthonormalFrame(n, u, v);
 }
 
 // Mirror reflection of travel direction d about unit n facing the ray (dot(d, n) < 0).

@@ -75,4 +75,16 @@ inline Vec3 newellNormal(const std::vector<Vec3>& loop) {
     return n;
 }
 
+// Unit e1, e2 completing unit `axis` to a right-handed orthonormal frame, fixed for each
+// axis so that angles about it are reproducible (Duff et al. 2017, "Building an
+// orthonormal basis, revisited"): one division, no square root and no branch
+// (|sign + axis.z| >= 1, so no cancellation).
+inline void orthonormalFrame(const Vec3& axis, Vec3& e1, Vec3& e2) {
+    double sign = std::copysign(1.0, axis.z);
+    double a = -1.0 / (sign + axis.z);
+    double b = axis.x * axis.y * a;
+    e1 = {1.0 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x};
+    e2 = {b, sign + axis.y * axis.y * a, -axis.y};
+}
+
 }  // namespace rp
