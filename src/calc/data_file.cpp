@@ -9,31 +9,29 @@
 #include <fstream>
 #include <sstream>
 
+#include "util/data_words.h"
 #include "util/error.h"
 
 namespace rp::calc {
 namespace {
 
-// Whitespace-separated numbers with line tracking.
+// The numbers of a data file, read as RADIANCE's fgetval reads them (comments
+// included), with the line of each for error messages.
 class NumberReader {
 public:
-    NumberReader(std::string_view text, std::string name) : text_(text), name_(std::move(name)) {}
+    NumberReader(std::string_view text, std::string name)
+        : words_(splitDataWords(text)), name_(std::move(name)) {}
 
     double number(const char* what) {
-        skipSpace();
-        if (pos_ >= text_.size())
-            throw InputError(SourceLoc{name_, lastLine_},
+        if (next_ >= words_.size())
+            throw InputError(SourceLoc{name_, words_.empty() ? 1 : words_.back().line},
                              "unexpected end of file: expected " + std::string(what));
-        lastLine_ = line_;
-        std::size_t start = pos_;
-        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_])))
-            ++pos_;
-        std::string word(text_.substr(start, pos_ - start));
+        const DataWord& w = words_[next_++];
         char* end = nullptr;
         errno = 0;
-        double v = std::strtod(word.c_str(), &end);
-        if (end == word.c_str() || *end != '\0' || !std::isfinite(v))
-            fail("expected " + std::string(what) + ", found '" + word + "'");
+        double v = std::strtod(w.text.c_str(), &end);
+        if (end == w.text.c_str() || *end != '\0' || !std::isfinite(v))
+            fail("expected " + std::string(what) + ", found '" + w.text + "'");
         return v;
     }
     int count(const char* what) {
@@ -42,26 +40,21 @@ public:
             fail(std::string(what) + " must be a positive integer");
         return static_cast<int>(v);
     }
-    bool atEnd() {
-        skipSpace();
-        return pos_ >= text_.size();
-    }
-    [[noreturn]] void fail(const std::string& msg) const {
-        throw InputError(SourceLoc{name_, line_}, msg);
-    }
+    bool atEnd() const { return next_ >= words_.size(); }
+    // Reports at the word last read.
+    [[noreturn]] void fail(const std::string& msg) const { failAt(next_ > 0 ? next_ - 1 : 0, msg); }
+    // Reports at the first word not read.
+    [[noreturn]] void failAtNext(const std::string& msg) const { failAt(next_, msg); }
 
 private:
-    void skipSpace() {
-        while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) {
-            if (text_[pos_] == '\n') ++line_;
-            ++pos_;
-        }
+    [[noreturn]] void failAt(std::size_t word, const std::string& msg) const {
+        int line = words_.empty() ? 1 : words_[std::min(word, words_.size() - 1)].line;
+        throw InputError(SourceLoc{name_, line}, msg);
     }
-    std::string_view text_;
+
+    std::vector<DataWord> words_;
     std::string name_;
-    std::size_t pos_ = 0;
-    int line_ = 1;
-    int lastLine_ = 1;  // line of the last number read
+    std::size_t next_ = 0;
 };
 
 // Position along one axis: the lower sample index i and the weights of samples i and
@@ -149,7 +142,7 @@ DataFile DataFile::parse(std::string_view text, const std::string& name) {
     d.values_.reserve(total);
     for (std::size_t j = 0; j < total; ++j) d.values_.push_back(r.number("data value"));
     if (!r.atEnd())
-        r.fail("more data than the axes declare (" + std::to_string(total) + " values)");
+        r.failAtNext("more data than the axes declare (" + std::to_string(total) + " values)");
     d.strides_.assign(n, 1);
     for (int k = n - 2; k >= 0; --k) d.strides_[k] = d.strides_[k + 1] * d.axes_[k + 1].count;
     return d;

@@ -36,6 +36,16 @@ TEST(CalcDataFile, OneDimensionRegular) {
     EXPECT_DOUBLE_EQ(at(-10), (2 * 1 - 3) / 2.0);
 }
 
+TEST(CalcDataFile, CommentsWhereverANumberMayStand) {
+    // As glass_illR.dat and rect_fixture.dat write them: a header comment, comments
+    // after axis lines, between values and glued to a number.
+    auto d = DataFile::parse("# from RADIANCE test/renders\n1 # one axis\n0 10 3#regular\n"
+                             "1 # first\n3#second\n# a line\n7\n# trailing", "m.dat");
+    EXPECT_EQ(d.dimensions(), 1);
+    EXPECT_DOUBLE_EQ(d.value(std::vector<double>{5}), 3);
+    EXPECT_DOUBLE_EQ(d.value(std::vector<double>{10}), 7);
+}
+
 TEST(CalcDataFile, ListedAxis) {
     auto d = DataFile::parse("1\n0 0 4  0 1 3 7\n0 10 30 70\n", "b.dat");
     auto at = [&](double x) { return d.value(std::vector<double>{x}); };
@@ -71,6 +81,8 @@ TEST(CalcDataFile, MalformedFiles) {
     EXPECT_EQ(errorOf("1\n0 0 3 0 2 1\n1 2 3"), "bad.dat:2: axis 1 coordinates are not monotonic");
     EXPECT_EQ(errorOf("1\n0 1 2\n1 zz"), "bad.dat:3: expected data value, found 'zz'");
     EXPECT_EQ(errorOf("9\n"), "bad.dat:1: too many dimensions (9, at most 8)");
+    EXPECT_EQ(errorOf("# c\n1 # d\n0 1 2\n1 #2\n"), "bad.dat:4: unexpected end of file: expected data value");
+    EXPECT_EQ(errorOf("1\n0 1 2\n1 2 # end\n#\n3"), "bad.dat:5: more data than the axes declare (2 values)");
 }
 
 TEST(CalcDataFile, MissingFile) {

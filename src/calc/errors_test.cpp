@@ -82,7 +82,7 @@ TEST(CalcErrors, ModifierArgumentsMustExist) {
     ray.args = args;
     EXPECT_EQ(testing::evalWith("", "A2 + AC", true, &ray), 4);
     EXPECT_EQ(errorOf([&] { testing::evalWith("", "A3", true, &ray); }),
-              std::string(RP_SOURCE_DIR) + "/lib/rayinit.cal:19: missing real argument 3 (modifier has 2)");
+              std::string(RP_SOURCE_DIR) + "/lib/rayinit.cal:21: missing real argument 3 (modifier has 2)");
 }
 
 TEST(CalcErrors, RecursionWithoutBaseCase) {

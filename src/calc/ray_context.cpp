@@ -20,6 +20,9 @@ const std::array kRayVariables = {
     RP_RAYVAR("Ix", I, 0),    RP_RAYVAR("Iy", I, 1),    RP_RAYVAR("Iz", I, 2),
     RP_RAYVAR("Jx", J, 0),    RP_RAYVAR("Jy", J, 1),    RP_RAYVAR("Jz", J, 2),
     RP_RAYVAR("Kx", K, 0),    RP_RAYVAR("Ky", K, 1),    RP_RAYVAR("Kz", K, 2),
+    RP_RAYVAR("NxP", NP, 0),  RP_RAYVAR("NyP", NP, 1),  RP_RAYVAR("NzP", NP, 2),
+    RP_RAYVAR("RdotP", RdotP, 0), RP_RAYVAR("CrP", CP, 0), RP_RAYVAR("CgP", CP, 1),
+    RP_RAYVAR("CbP", CP, 2),
 };
 
 #undef RP_RAYVAR

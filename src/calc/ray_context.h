@@ -30,6 +30,11 @@ struct RayContext {
     Vec3 I{1, 0, 0};     // Ix Iy Iz: world i unit vector in object space
     Vec3 J{0, 1, 0};     // Jx Jy Jz
     Vec3 K{0, 0, 1};     // Kx Ky Kz
+    // Set for *func, *data and BRTDfunc materials only (m_brdf.c setbrdfunc; 0 elsewhere):
+    Vec3 NP{0, 0, 1};    // NxP NyP NzP: perturbed normal on the ray's side, as N
+    double RdotP = 0;    // RdotP: -D.NP in world space, clamped to [-1, 1]
+    Vec3 CP;             // CrP CgP CbP: the material colour times the pattern
+                         // (*func/*data), the pattern alone (BRTDfunc)
     std::span<const double> args;  // the modifier's real arguments: A1 = args[0], arg(0) = size
 };
 
@@ -42,7 +47,7 @@ struct RayVariable {
 };
 
 // All predefined ray variables (Dx Dy Dz Nx Ny Nz Px Py Pz Lu Lv T Ts Rdot S Tx Ty Tz
-// Ix Iy Iz Jx Jy Jz Kx Ky Kz). A1..An come from rayinit.cal (A1 = arg(1); ...).
+// Ix Iy Iz Jx Jy Jz Kx Ky Kz NxP NyP NzP RdotP CrP CgP CbP). A1..An come from rayinit.cal (A1 = arg(1); ...).
 std::span<const RayVariable> rayVariables();
 
 // Reads the variable at `offset` (from rayVariables()).

@@ -69,8 +69,9 @@ struct Block {
     }
 };
 
-// Number of predefined ray variables (Dx .. Kz), stored contiguously in RayContext.
-constexpr int kRayDoubles = 27;
+// Number of predefined ray variables (Dx .. Kz, NxP .. CbP), stored contiguously in
+// RayContext.
+constexpr int kRayDoubles = 34;
 // Modifier arguments A1 .. A16 are also kept in globals.
 constexpr int kArgGlobals = 16;
 

@@ -56,11 +56,8 @@ bool makePolygon(const Primitive& prim, int32_t primIndex, PolygonShape& shape,
     shape.modifier = prim.modifier;
 
     Triangulation tri = triangulatePolygon(loop, shape.normal);
-    if (!tri.clean)
-        warn(prim.loc, "polygon '" + prim.name + "': self-intersecting outline, triangulated "
-                       "approximately");
     uint32_t base = uint32_t(vertices.size());
-    vertices.insert(vertices.end(), loop.begin(), loop.end());
+    vertices.insert(vertices.end(), tri.vertices.begin(), tri.vertices.end());
     for (const TriIndices& t : tri.triangles)
         triangles.push_back({base + t[0], base + t[1], base + t[2]});
     return !tri.triangles.empty();

@@ -131,6 +131,53 @@ TEST(Polygon, SharedEdgeAndVertexBetweenPolygons) {
     }
 }
 
+// A 10 x 3 m wall in the plane y = 0 with a 4 x 1.8 m window cut by RADIANCE's seam
+// convention, and coplanar glass in the window. Rays through the window must reach the
+// glass (the wall covers none of the hole, so there is no tie at equal distance), and
+// rays beside it the wall, whatever else is in the scene. Cut with and without the
+// seam's repeated return vertex, with slats behind the window or not.
+std::vector<double> xz(std::initializer_list<std::pair<double, double>> pts) {
+    std::vector<double> r;
+    for (auto [x, z] : pts) r.insert(r.end(), {x, 0, z});
+    return r;
+}
+
+TEST(Polygon, RaysThroughASeamCutWindowHitTheGlass) {
+    for (bool returnVertex : {true, false})
+        for (int clutter : {0, 1, 2}) {
+            SceneBuilder b;
+            int32_t wallMat = b.material("wall"), glassMat = b.material("glass");
+            std::vector<double> wall = xz({{0, 0}, {0, 3}, {10, 3}, {10, 0}, {0, 0}, {3, 0.9},
+                                           {7, 0.9}, {7, 2.7}, {3, 2.7}, {3, 0.9}});
+            if (returnVertex) wall.insert(wall.end(), {0, 0, 0});
+            int32_t wallId = b.surface(PrimType::Polygon, wall, wallMat);
+            int32_t glassId = b.surface(
+                PrimType::Polygon, xz({{3, 0.9}, {3, 2.7}, {7, 2.7}, {7, 0.9}}), glassMat);
+            for (int k = 0; k < 20 * clutter; ++k) {  // blind slats 0.1 m behind the glass
+                double z = 0.9 + 0.09 * k;
+                b.surface(PrimType::Polygon, {3, 0.1, z, 7, 0.1, z, 7, 0.15, z - 0.01, 3, 0.15, z - 0.01});
+            }
+            SceneGeometry g(b.scene());
+            int wallHits = 0, glassHits = 0;
+            for (int i = 0; i < 7; ++i)
+                for (int j = 0; j < 7; ++j) {
+                    Vec3 target{3 + 4 * (i + 0.5) / 7, 0, 0.9 + 1.8 * (j + 0.5) / 7};
+                    Vec3 from{target.x - 0.3, -4, target.z + 0.2};
+                    auto h = g.closestHit({from, normalize(target - from)});
+                    ASSERT_TRUE(h);
+                    wallHits += h->prim == wallId;
+                    glassHits += h->prim == glassId;
+                }
+            EXPECT_EQ(glassHits, 49) << "return vertex " << returnVertex << ", clutter " << clutter;
+            EXPECT_EQ(wallHits, 0);
+            for (Vec3 beside : {Vec3{1, 0, 1.5}, Vec3{8.5, 0, 2}, Vec3{5, 0, 0.4}, Vec3{5, 0, 2.85}}) {
+                auto h = g.closestHit({beside - Vec3{0, 4, 0}, {0, 1, 0}});
+                ASSERT_TRUE(h);
+                EXPECT_EQ(h->prim, wallId);
+            }
+        }
+}
+
 TEST(Polygon, ConcaveNotchMisses) {
     SceneBuilder b;
     b.surface(PrimType::Polygon, {0, 0, 0, 2, 0, 0, 2, 1, 0, 1, 1, 0, 1, 2, 0, 0, 2, 0});

@@ -1,7 +1,9 @@
-// Ear-clipping triangulation of one planar polygon as RADIANCE allows it: any vertex
-// count, convex or concave, and holes joined to the outline by a seam (an edge walked
-// once in each direction, so seam vertices appear twice). Planes and shapes live in
-// polygon.h; this file only turns a vertex loop into triangles.
+// Triangulation of one planar polygon exactly as RADIANCE's point-in-polygon test
+// (face.c inface: even-odd crossings in the dominant-axis projection) defines it: any
+// vertex count, convex or concave, holes joined to the outline by a seam (with or
+// without the repeated return vertex), several holes, overlapping and collinear seam
+// edges, self-intersections. Planes and shapes live in polygon.h; this file only turns
+// a vertex loop into triangles.
 #pragma once
 
 #include <array>
@@ -16,14 +18,16 @@ namespace rp {
 using TriIndices = std::array<uint32_t, 3>;
 
 struct Triangulation {
-    std::vector<TriIndices> triangles;  // indices into the input loop, CCW about normal
-    bool clean = true;  // false if no valid ear was left and a fallback clip was used
-                        // (self-intersecting input); the result still covers the loop
+    // The triangles' corners: the input loop for convex polygons; otherwise the loop's
+    // vertices plus points on its edges where the decomposition cut them.
+    std::vector<Vec3> vertices;
+    std::vector<TriIndices> triangles;  // indices into vertices, CCW about the normal
 };
 
 // Triangulates the loop verts[0..n) whose front side faces `normal` (counter-clockwise
-// seen from the front, RADIANCE's convention). Zero-area triangles (collinear runs, the
-// two sides of a seam) are dropped. Runs in O(n) for convex loops, O(n * reflex) else.
+// seen from the front, RADIANCE's convention). The triangles cover exactly the points
+// with an odd crossing count, each once, and share every edge point they touch (no
+// T-junctions). Zero-area triangles are dropped. A fan in O(n) for convex loops.
 Triangulation triangulatePolygon(std::span<const Vec3> verts, const Vec3& normal);
 
 }  // namespace rp

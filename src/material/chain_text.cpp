@@ -5,39 +5,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "util/data_words.h"
 #include "util/error.h"
 
 namespace rp::material {
 
 namespace {
-
-// Integer tokens of a font file with their line numbers; '#' starts a comment.
-struct Token {
-    std::string text;
-    int line = 0;
-};
-
-std::vector<Token> tokenize(const std::string& text) {
-    std::vector<Token> out;
-    int line = 1;
-    size_t i = 0;
-    while (i < text.size()) {
-        char c = text[i];
-        if (c == '\n') {
-            ++line;
-            ++i;
-        } else if (c == '#') {
-            while (i < text.size() && text[i] != '\n') ++i;
-        } else if (std::isspace((unsigned char)c)) {
-            ++i;
-        } else {
-            size_t start = i;
-            while (i < text.size() && !std::isspace((unsigned char)text[i]) && text[i] != '#') ++i;
-            out.push_back({text.substr(start, i - start), line});
-        }
-    }
-    return out;
-}
 
 bool toInt(const std::string& s, int& v) {
     if (s.empty()) return false;
@@ -54,7 +27,7 @@ bool toInt(const std::string& s, int& v) {
 
 std::shared_ptr<Font> Font::parse(const std::string& text, const std::string& name) {
     auto font = std::make_shared<Font>();
-    std::vector<Token> tok = tokenize(text);
+    std::vector<DataWord> tok = splitDataWords(text);
     size_t k = 0;
     long widthSum = 0, count = 0;
     auto fail = [&](int line, const std::string& msg) {

@@ -192,7 +192,8 @@ MaterialCalcEvaluator::MaterialCalcEvaluator(const MaterialCalc& calc)
 
 MaterialCalcEvaluator::~MaterialCalcEvaluator() = default;
 
-void MaterialCalcEvaluator::setHit(int32_t material, const PatternPoint& at) {
+void MaterialCalcEvaluator::setHit(int32_t material, const PatternPoint& at,
+                                   const Vec3& shadingNormal, const Color& pattern) {
     RP_CHECK(material >= 0 && size_t(material) < calc_.recordOf_.size() &&
              calc_.recordOf_[material] >= 0);
     rec_ = &calc_.records_[calc_.recordOf_[material]];
@@ -204,11 +205,27 @@ void MaterialCalcEvaluator::setHit(int32_t material, const PatternPoint& at) {
     ctx_.N = toVec(t.direction(toArr(at.normal)));
     ctx_.T = at.distance * t.scale;
     ctx_.Rdot = at.rdot;
+    if (at.rdot < 0 && (rec_->kind == MaterialCalc::Kind::Func ||
+                        rec_->kind == MaterialCalc::Kind::Data)) {
+        // m_brdf.c m_brdf2 turns the surface to the ray (flipsurface) before its
+        // functions run, so on the back they see N and Rdot reversed; BRTDfunc does not.
+        ctx_.N = -ctx_.N;
+        ctx_.Rdot = -at.rdot;
+    }
     ctx_.S = rec_->scale;
     ctx_.Tvec = toVec(t.point({0, 0, 0}));
     ctx_.I = toVec(t.direction({1, 0, 0}));
     ctx_.J = toVec(t.direction({0, 1, 0}));
     ctx_.K = toVec(t.direction({0, 0, 1}));
+    // m_brdf.c setbrdfunc: the perturbed normal through the same transform as N; the
+    // material colour (first three reals) times the pattern for *func/*data, the pattern
+    // alone for BRTDfunc. Both material routines orient the normal towards the ray.
+    ctx_.NP = toVec(t.direction(toArr(shadingNormal)));
+    ctx_.RdotP = std::clamp(-dot(at.dir, shadingNormal), -1.0, 1.0);
+    ctx_.CP = {pattern.r, pattern.g, pattern.b};
+    if (rec_->kind != MaterialCalc::Kind::Brtd && rec_->rargs.size() >= 3)
+        ctx_.CP = {rec_->rargs[0] * pattern.r, rec_->rargs[1] * pattern.g,
+                   rec_->rargs[2] * pattern.b};
     ctx_.args = rec_->rargs;
     eval_.setRay(ctx_);
     errorsAtHit_ = eval_.mathErrors();

@@ -88,7 +88,10 @@ public:
     // Sets the hit for `material` (must be uses()): at.dir, at.point, at.normal
     // (unperturbed surface normal, not flipped), at.distance, at.rdot. The values the
     // functions see are in the material's function space (its transform arguments).
-    void setHit(int32_t material, const PatternPoint& at);
+    // `shadingNormal` (the perturbed normal on the ray's side) and `pattern` (the
+    // colour of the modifier chain's patterns) give NxP NyP NzP RdotP CrP CgP CbP.
+    void setHit(int32_t material, const PatternPoint& at, const Vec3& shadingNormal,
+                const Color& pattern);
 
     // plastic2/metal2/trans2: the u orientation, world space (aniso.c getacoords: the
     // ux uy uz values through the forward transform). Normalised; zero if degenerate or

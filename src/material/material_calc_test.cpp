@@ -7,6 +7,7 @@
 
 #include <fstream>
 #include <functional>
+#include <optional>
 
 #include "material/material.h"
 #include "scene/reader.h"
@@ -41,7 +42,10 @@ struct Fixture {
         eval = std::make_unique<MaterialCalcEvaluator>(*calc);
         fn = [this](const Vec3& l) { return eval->directional(l); };
     }
-    int32_t hit(const std::string& name, const Vec3& dir = {0, 0, -1}) {
+    // A hit on the plane z = 0 (normal +z); `shading` is the perturbed normal on the
+    // ray's side (the plain one when not given).
+    int32_t hit(const std::string& name, const Vec3& dir = {0, 0, -1},
+                std::optional<Vec3> shading = std::nullopt, Color pattern = {1, 1, 1}) {
         int32_t m = indexOf(*scene, name);
         PatternPoint at;
         at.dir = dir;
@@ -49,7 +53,8 @@ struct Fixture {
         at.normal = {0, 0, 1};
         at.distance = 2;
         at.rdot = -dot(dir, at.normal);
-        eval->setHit(m, at);
+        Vec3 n = shading ? *shading : at.rdot < 0 ? -at.normal : at.normal;
+        eval->setHit(m, at, n, pattern);
         return m;
     }
     MaterialParams params(int32_t m) { return makeMaterial(scene->prims[m]); }
@@ -162,6 +167,89 @@ TEST(MaterialCalcBrtd, SpecularColoursFromConstantsAndExpressions) {
     f.eval->brtdSpecular(refl, trans);
     expectColor(refl, {0.5, 0.25, 0.5});
     expectColor(trans, {0, 0, 0.1});
+}
+
+// m_brdf.c setbrdfunc: NxP NyP NzP the perturbed normal on the ray's side (through the
+// function transform), RdotP its cosine with the ray (clamped), CrP CgP CbP the material
+// colour times the pattern (*func) or the pattern alone (BRTDfunc); on the back, m_brdf2
+// also turns N and Rdot to the ray, BRTDfunc does not.
+struct PerturbedValues {
+    double nx, ny, nz, rdotp, cr, cg, cb, n, r;
+};
+
+PerturbedValues perturbedValues(Fixture& f, const std::string& type, const std::string& transform,
+                                const Vec3& dir, const Vec3& shading, const Color& pattern) {
+    const char* vars[] = {"NxP", "NyP", "NzP", "RdotP", "CrP", "CgP", "CbP", "Nz", "Rdot"};
+    std::string cal, rad;
+    for (int k = 0; k < 9; ++k) {
+        std::string fn = "f" + std::to_string(k);
+        cal += fn + "(lx, ly, lz, om) = " + vars[k] + ";\n";
+        if (type == "plasfunc")
+            rad += "void plasfunc m" + std::to_string(k) + "\n" + std::to_string(2 + (transform.empty() ? 0 : 2)) +
+                   " " + fn + " p.cal " + transform + "\n0\n4 .5 .4 .3 .2\n";
+        else
+            rad += "void BRTDfunc m" + std::to_string(k) + "\n" +
+                   std::to_string(10 + (transform.empty() ? 0 : 2)) + " 0 0 0 0 0 0 " + fn + " " + fn +
+                   " " + fn + " p.cal " + transform + "\n0\n9 .1 .1 .1 .1 .1 .1 0 0 0\n";
+    }
+    f.write("p.cal", cal);
+    f.load(rad);
+    double v[9];
+    for (int k = 0; k < 9; ++k) {
+        f.hit("m" + std::to_string(k), dir, shading, pattern);
+        v[k] = f.eval->directional({0, 0, 1}).r;
+    }
+    return {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]};
+}
+
+TEST(MaterialCalcFunc, PerturbedVariablesOfFuncMaterials) {
+    Fixture f;
+    Vec3 pert = normalize(Vec3{0.6, 0, 0.8});
+    Vec3 d = normalize(Vec3{0, 0.6, -0.8});
+    // -rz 90 takes world x to function-space -y... through the inverse: (x,y) -> (y,-x).
+    PerturbedValues v = perturbedValues(f, "plasfunc", "-rz 90", d, pert, {2, 1, 0.5});
+    EXPECT_NEAR(v.nx, 0, kEps);
+    EXPECT_NEAR(v.ny, -0.6, kEps);
+    EXPECT_NEAR(v.nz, 0.8, kEps);
+    EXPECT_NEAR(v.rdotp, -dot(d, pert), kEps);
+    EXPECT_NEAR(v.cr, 0.5 * 2, kEps);  // material colour .5 .4 .3 times the pattern
+    EXPECT_NEAR(v.cg, 0.4 * 1, kEps);
+    EXPECT_NEAR(v.cb, 0.3 * 0.5, kEps);
+    // From the back: the shading normal faces the ray; m_brdf2 reverses N and Rdot too.
+    Vec3 up = normalize(Vec3{0, 0.6, 0.8});
+    PerturbedValues b = perturbedValues(f, "plasfunc", "", up, {0, 0, -1}, {1, 1, 1});
+    EXPECT_NEAR(b.nz, -1, kEps);
+    EXPECT_NEAR(b.rdotp, 0.8, kEps);
+    EXPECT_NEAR(b.n, -1, kEps);
+    EXPECT_NEAR(b.r, 0.8, kEps);
+}
+
+TEST(MaterialCalcBrtd, PerturbedVariablesOfBrtdfunc) {
+    Fixture f;
+    Vec3 up = normalize(Vec3{0, 0.6, 0.8});
+    PerturbedValues b = perturbedValues(f, "BRTDfunc", "", up, {0, 0, -1}, {0.5, 0.25, 2});
+    EXPECT_NEAR(b.nz, -1, kEps);     // flipped to the ray's side
+    EXPECT_NEAR(b.rdotp, 0.8, kEps);
+    EXPECT_NEAR(b.n, 1, kEps);       // but N and Rdot stay as the surface has them
+    EXPECT_NEAR(b.r, -0.8, kEps);
+    EXPECT_NEAR(b.cr, 0.5, kEps);    // the pattern alone
+    EXPECT_NEAR(b.cg, 0.25, kEps);
+    EXPECT_NEAR(b.cb, 2, kEps);
+}
+
+// RADIANCE's rayinit.cal frame functions on top of them (Idz is RdotP; Ldz projects on NP).
+TEST(MaterialCalcFunc, RayinitFrameFunctions) {
+    Fixture f;
+    f.write("p.cal", "fz(lx, ly, lz, om) = Idz;\nfl(lx, ly, lz, om) = Ldz(lx, ly, lz) + 10*Ldx(1, 0, 0);\n");
+    f.load("void plasfunc a\n2 fz p.cal\n0\n7 .5 .5 .5 .1 0 1 0\n"
+           "void plasfunc b\n2 fl p.cal\n0\n7 .5 .5 .5 .1 0 1 0\n");
+    Vec3 d = normalize(Vec3{0.3, 0, -1});
+    f.hit("a", d);
+    EXPECT_NEAR(f.eval->directional({0, 0, 1}).r, -d.z, kEps);
+    f.hit("b", d);
+    // up (0,1,0): Vn = up x N = (1,0,0), Un = Vn x N... = N x Vn ordering of rayinit:
+    // Un = (Ny*Vnz - Nz*Vny, Nz*Vnx - Nx*Vnz, Nx*Vny - Ny*Vnx) = (0, 1, 0); Ldx(1,0,0) = 0.
+    EXPECT_NEAR(f.eval->directional({0, 0, 1}).r, 1, kEps);
 }
 
 TEST(MaterialCalcBrtd, DirectionalDiffuseFunctionOfLightDirection) {

@@ -17,6 +17,7 @@
 #include "light/light_sources.h"
 #include "light/pattern_emission.h"
 #include "calc/search_path.h"
+#include "material/material_calc.h"
 #include "material/pattern.h"
 #include "pmap/contrib.h"
 #include "pmap/distribute.h"
@@ -120,7 +121,8 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         dist.emitted = cr.totalEmitted;
         dist.runaways = cr.runaways;
     } else {
-        PhotonTracer tracer(scene, geometry, plan, ts);
+        material::MaterialCalc functions(scene, calc::defaultSearchPath(projectLibDir()));
+        PhotonTracer tracer(scene, geometry, plan, ts, &functions);
         DistributionSettings ds;
         for (size_t t = 0; t < o.maps.size(); ++t)
             if (o.maps[t]) ds.targets[t] = o.maps[t]->target;

@@ -57,8 +57,10 @@ int8_t packNormal(double v) { return static_cast<int8_t>(127.0 * v); }
 }  // namespace
 
 PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
-                           const light::EmissionPlan& plan, TraceSettings settings)
-    : scene_(scene), geometry_(geometry), plan_(plan), settings_(std::move(settings)) {
+                           const light::EmissionPlan& plan, TraceSettings settings,
+                           const material::MaterialCalc* materialCalc)
+    : scene_(scene), geometry_(geometry), materialCalc_(materialCalc), plan_(plan),
+      settings_(std::move(settings)) {
     const auto& prims = scene.prims;
     modifiers_.resize(prims.size());
     std::unordered_set<std::string> include(settings_.include.begin(), settings_.include.end());
@@ -107,6 +109,10 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
         info.antimatter = mat.type == PrimType::Antimatter;
         info.sensor = info.antimatter && sensors.count(mat.name) > 0;
         info.backAbsorbs = opaqueBackAbsorbs(info.params);
+        // Of the function-driven materials only BRTDfunc's photon scattering reads its
+        // functions (the specular colours); *func and *data scatter diffusely.
+        info.functions = materialCalc_ && materialCalc_->uses(m) &&
+                         std::holds_alternative<material::BrtdParams>(info.params);
         if (info.antimatter) {
             // RADIANCE lastmod: the last definition of the name before the antimatter.
             for (const std::string& name : mat.sargs) {
@@ -121,6 +127,23 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
     }
     for (const light::LightSource& s : plan_.sources())
         sourceMaxDistance_.push_back(s.maxDistance);
+}
+
+void PhotonTracer::setFunctionValues(int32_t material, const Hit& hit, const Vec3& dir,
+                                     std::optional<material::MaterialCalcEvaluator>& eval,
+                                     material::SurfacePoint& sp) const {
+    if (!eval) eval.emplace(*materialCalc_);
+    material::PatternPoint at;
+    at.dir = dir;
+    at.point = hit.point;
+    at.normal = hit.normal;
+    at.distance = hit.t;
+    at.rdot = -dot(dir, hit.normal);
+    eval->setHit(material, at, sp.normal, Color{1, 1, 1});
+    Color refl, trans;
+    eval->brtdSpecular(refl, trans);
+    sp.brtdSpecularReflection = refl;
+    sp.brtdSpecularTransmission = trans;
 }
 
 void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool indirect,
@@ -206,6 +229,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     // scattering only reads it. One per thread: default-constructing its ~220 bytes per
     // photon was a memset call on every path.
     static thread_local material::SurfacePoint sp;
+    std::optional<material::MaterialCalcEvaluator> calcEval;  // made at the first use
     auto causticNow = [&] {
         return scatters > 0 && lastSpecular;
     };
@@ -270,7 +294,9 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         // No pattern or texture in photon scattering: the other fields keep their defaults.
         material::setSurfaceHit(sp, ray.dir, hit->front ? hit->normal : -hit->normal,
                                 hit->front);
+        if (mi->functions) setFunctionValues(mi->material, *hit, ray.dir, calcEval, sp);
         material::PhotonScatter s = material::scatterPhoton(mi->params, sp, rng);
+        if (mi->functions) sp.brtdSpecularReflection = sp.brtdSpecularTransmission = std::nullopt;
         if (s.store && mi->storeAllowed)
             deposit(*hit, hit->front, flux, scatters > 0 || fromPort,
                     causticNow(), prob, storeRng, out);

@@ -6,12 +6,14 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/scene_geometry.h"
 #include "light/emitter.h"
 #include "material/material.h"
+#include "material/material_calc.h"
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon.h"
 #include "scene/primitive.h"
@@ -55,8 +57,12 @@ public:
     // Resolves materials, sensors and include/exclude sets once. Throws InputError for
     // a sensor modifier that is not antimatter, sensors that match nothing, material
     // argument errors, and notSupportedYet for mixtures on surfaces.
+    // `materialCalc` (may be null when the scene has no function-driven materials)
+    // evaluates BRTDfunc's specular colour expressions at photon hits, as pmapmat.c
+    // brdfPhotonScatter does; it must outlive the tracer.
     PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
-                 const light::EmissionPlan& plan, TraceSettings settings);
+                 const light::EmissionPlan& plan, TraceSettings settings,
+                 const material::MaterialCalc* materialCalc = nullptr);
 
     // Emits photon `index` of the run keyed by `seed` and traces it. A deposit for map
     // type t is kept when its storage draw u < storeProbability[t]. Thread-safe.
@@ -78,6 +84,7 @@ private:
         bool sensor = false;
         bool storeAllowed = true;   // include/exclude sets
         bool backAbsorbs = false;   // opaque material: back face black unless -bv
+        bool functions = false;     // BRTDfunc with specular expressions (materialCalc_)
         std::vector<int32_t> clips;  // antimatter: modifiers clipped inside it
     };
 
@@ -85,8 +92,13 @@ private:
                  bool caustic, const std::array<double, kNumPhotonMapTypes>& prob,
                  Rng& storeRng, PhotonBins& out) const;
 
+    void setFunctionValues(int32_t material, const Hit& hit, const Vec3& dir,
+                           std::optional<material::MaterialCalcEvaluator>& eval,
+                           material::SurfacePoint& sp) const;
+
     const Scene& scene_;
     const SceneGeometry& geometry_;
+    const material::MaterialCalc* materialCalc_;
     const light::EmissionPlan& plan_;
     TraceSettings settings_;
     std::vector<ModifierInfo> modifiers_;  // indexed by modifier (prim) index

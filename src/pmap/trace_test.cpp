@@ -165,6 +165,42 @@ portmat polygon port 0 0 12  0 0 4  0 4 4  4 4 4  4 0 4
     EXPECT_NEAR(sumRed(g), expected, 0.03 * expected);
 }
 
+// pmapmat.c brdfPhotonScatter evaluates BRTDfunc's specular colours at each photon
+// hit, with NxP..RdotP set: a pane over the floor, lit by a vertical sun, whose
+// transmission is 0.5 where RdotP > 0.9 passes as much light as a constant 0.5 (the same
+// photons: same seed, same draws), and none where the expression gives 0.
+TEST(TraceFunctions, BrtdfuncSpecularExpressionsAtPhotonHits) {
+    auto sceneWith = [](const std::string& trans) {
+        return sceneFromText(R"(
+void plastic floormat 0 0 5 0.5 0.5 0.5 0 0
+void light solar 0 0 3 1000 1000 1000
+solar source sun 0 0 4 0 0 1 0.5
+floormat polygon floor 0 0 12  0 0 0  4 0 0  4 4 0  0 4 0
+void BRTDfunc pane
+10 0 0 0 )" + trans + " " + trans + " " + trans + R"( 0 0 0 .
+0
+9 0 0 0 0 0 0 0 0 0
+pane polygon glazing 0 0 12  -1 -1 2  5 -1 2  5 5 2  -1 5 2
+)");
+    };
+    auto floorFlux = [&](const std::string& trans) {
+        auto run = makeRun(sceneWith(trans), mapsFor(true, false, false), {}, true);
+        DistributionSettings ds;
+        ds.targets[size_t(PhotonMapType::Global)] = 4000;
+        ds.seed = 5;
+        ds.maxPrepass = 3;
+        try {
+            return sumRed(mapOf(distributePhotons(*run->tracer, ds), PhotonMapType::Global));
+        } catch (const InputError&) {
+            return 0.0;  // no photon stored at all
+        }
+    };
+    double constant = floorFlux("0.5");
+    EXPECT_GT(constant, 0);
+    EXPECT_DOUBLE_EQ(floorFlux("if(RdotP-.9,.5,0)"), constant);
+    EXPECT_EQ(floorFlux("if(RdotP-1.1,.5,0)"), 0);
+}
+
 // Caustics need L S+ D paths: a purely diffuse room cannot hold any (manual 4.2).
 TEST(TraceStorage, CausticMapFailsWithoutSpecularSurfaces) {
     auto run = makeRun(sceneFromText(boxRoom()), mapsFor(false, true, false));

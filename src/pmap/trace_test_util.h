@@ -9,6 +9,7 @@
 #include "geometry/scene_geometry.h"
 #include "light/emitter.h"
 #include "light/light_sources.h"
+#include "material/material_calc.h"
 #include "pmap/distribute.h"
 #include "pmap/trace.h"
 #include "scene/reader.h"
@@ -20,11 +21,14 @@ struct Run {
     Scene scene;
     std::unique_ptr<SceneGeometry> geometry;
     std::unique_ptr<light::EmissionPlan> plan;
+    std::unique_ptr<material::MaterialCalc> functions;
     std::unique_ptr<PhotonTracer> tracer;
 };
 
+// `functions`: evaluate function-driven materials (files along the project's lib/).
 inline std::unique_ptr<Run> makeRun(Scene scene, TraceSettings ts,
-                                    const std::vector<std::string>& ports = {}) {
+                                    const std::vector<std::string>& ports = {},
+                                    bool functions = false) {
     auto r = std::make_unique<Run>();
     r->scene = std::move(scene);
     r->geometry = std::make_unique<SceneGeometry>(r->scene);
@@ -36,7 +40,11 @@ inline std::unique_ptr<Run> makeRun(Scene scene, TraceSettings ts,
     }
     r->plan = std::make_unique<light::EmissionPlan>(
         *r->geometry, light::findLightSources(r->scene, *r->geometry), eo);
-    r->tracer = std::make_unique<PhotonTracer>(r->scene, *r->geometry, *r->plan, std::move(ts));
+    if (functions)
+        r->functions = std::make_unique<material::MaterialCalc>(
+            r->scene, std::vector<std::string>{std::string(RP_SOURCE_DIR) + "/lib"});
+    r->tracer = std::make_unique<PhotonTracer>(r->scene, *r->geometry, *r->plan, std::move(ts),
+                                               r->functions.get());
     return r;
 }
 

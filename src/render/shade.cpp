@@ -44,7 +44,7 @@ Renderer::Context::Context(const Renderer& r, const Impl& i)
 void Renderer::Context::applyMaterialCalc(int32_t material, const Hit& hit, const Vec3& dir,
                                           material::SurfacePoint& sp) {
     if (!impl.materialCalc.uses(material)) return;
-    materialCalc.setHit(material, patternPoint(hit, dir));
+    materialCalc.setHit(material, patternPoint(hit, dir), sp.normal, sp.pattern);
     const material::MaterialParams& p = *impl.material(material).params;
     if (std::holds_alternative<material::AnisoParams>(p)) {
         sp.uDir = materialCalc.anisoU();
@@ -330,10 +330,11 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
     if (pm.active()) {
         // RADIANCE pmapamb.c: a final-gather sample's hit (or any hit with -ab -1) reads
         // the global map, which holds caustic light too; hits of other rays add the
-        // caustic map and gather the rest.
+        // caustic map and gather the rest. Without a global map the caustic map fills in
+        // at the samples' hits as well (ambPmapCaustic), or that light would be lost.
         if (pm.hasGlobal() && (state.ambientLevel > 0 || impl.ambientOptions.bounces < 0))
             return pm.globalDensity(*photonLookups, hit.point, normal);
-        if (pm.hasCaustic() && state.ambientLevel == 0)
+        if (pm.hasCaustic() && (state.ambientLevel == 0 || !pm.hasGlobal()))
             c += pm.causticDensity(*photonLookups, hit.point, normal);
     }
     int saved = sampleDepth_;
