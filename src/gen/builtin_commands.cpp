@@ -4,10 +4,15 @@
 #include <functional>
 #include <sstream>
 
-#include "gen/gendaylit.h"
+#include "calc/search_path.h"
+#include "gen/genblinds.h"
 #include "gen/genbox.h"
+#include "gen/gendaylit.h"
 #include "gen/genprism.h"
+#include "gen/genrev.h"
 #include "gen/gensky.h"
+#include "gen/gensurf.h"
+#include "gen/genworm.h"
 #include "gen/xform_scene.h"
 #include "util/warnings.h"
 
@@ -24,9 +29,21 @@ void reportWarnings(const std::string& program, const std::vector<std::string>& 
     for (const std::string& w : warnings) warn(loc, program + ": " + w);
 }
 
+// genrev, gensurf and genworm find -f files as their tools do: along RAYPATH, else in
+// the current directory (where the shell would have run the command).
+template <class Fn>
+std::string withSearchPath(const char* program, const SourceLoc& loc, Fn&& run) {
+    std::vector<std::string> warnings;
+    std::string out = run(calc::defaultSearchPath(""), warnings);
+    reportWarnings(program, warnings, loc);
+    return out;
+}
+
 const Generator* findGenerator(const std::string& name) {
     static const std::vector<std::pair<std::string, Generator>> table = {
         {"genbox", [](const auto& args, const auto&, const auto&) { return genbox(args); }},
+        {"genblinds",
+         [](const auto& args, const auto&, const auto&) { return genblinds(args); }},
         {"genprism",
          [](const auto& args, const auto& input, const auto&) {
              std::istringstream in(input);
@@ -45,6 +62,25 @@ const Generator* findGenerator(const std::string& name) {
              std::string out = gendaylit(args, &warnings);
              reportWarnings("gendaylit", warnings, loc);
              return out;
+         }},
+        {"genrev",
+         [](const auto& args, const auto&, const auto& loc) {
+             return withSearchPath("genrev", loc, [&](const auto& path, auto& warnings) {
+                 return genrev(args, path, warnings);
+             });
+         }},
+        {"gensurf",
+         [](const auto& args, const auto& input, const auto& loc) {
+             std::istringstream in(input);
+             return withSearchPath("gensurf", loc, [&](const auto& path, auto& warnings) {
+                 return gensurf(args, path, in, warnings);
+             });
+         }},
+        {"genworm",
+         [](const auto& args, const auto&, const auto& loc) {
+             return withSearchPath("genworm", loc, [&](const auto& path, auto& warnings) {
+                 return genworm(args, path, warnings);
+             });
          }},
         {"xform",
          [](const auto& args, const auto& input, const auto&) {

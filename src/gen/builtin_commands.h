@@ -1,7 +1,7 @@
-// Runs the generator commands that scene files embed (`!genbox ...`, `!xform ...`,
-// `!gensky ... | xform ...`) with radphoton's own generators, in-process, so scenes load
-// on machines without RADIANCE. Anything else (other programs, redirections, variables)
-// is left to /bin/sh by the scene reader.
+// Runs the generator commands that scene files embed (`!genbox ...`, `!genblinds ...`,
+// `!xform ...`, `!gensky ... | xform ...`) with radphoton's own generators, in-process,
+// so scenes load on machines without RADIANCE. Anything else (other programs,
+// redirections, variables) is left to /bin/sh by the scene reader.
 #pragma once
 
 #include <optional>
@@ -26,8 +26,8 @@ constexpr const char* kShellCommandsEnv = "RADPHOTON_SHELL_COMMANDS";
 std::optional<std::vector<std::vector<std::string>>> splitPipeline(std::string_view command);
 
 // For LoadOptions::commandHook: the output of `command` if every stage of its pipeline
-// is one of our generators (genbox, genprism, gensky, gendaylit, genrev, gensurf,
-// genworm, xform), else nullopt. Generator errors are InputErrors at `loc`
+// is one of our generators (genblinds, genbox, genprism, gensky, gendaylit, genrev,
+// gensurf, genworm, xform), else nullopt. Generator errors are InputErrors at `loc`
 // ("genbox: ..."), generator warnings are reported at `loc`.
 std::optional<std::string> runBuiltinCommand(const std::string& command, const SourceLoc& loc);
 

@@ -6,7 +6,14 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
+#include <sstream>
 
+#include "calc/search_path.h"
+#include "gen/genblinds.h"
+#include "gen/genrev.h"
+#include "gen/gensurf.h"
+#include "gen/genworm.h"
 #include "scene/reader.h"
 
 namespace rp::gen {
@@ -27,9 +34,10 @@ TEST(SplitPipeline, ShellFeaturesAreLeftToTheShell) {
 
 TEST(BuiltinCommands, GenboxThroughXformInAScene) {
     unsetenv(kShellCommandsEnv);
-    Scene s = parseScene("void plastic m\n0\n0\n5 .5 .5 .5 0 0\n"
-                         "!genbox m box 1 2 3 | xform -t 10 0 0\n",
-                         "room.rad", builtinLoadOptions());
+    Scene s = parseScene(
+        "void plastic m\n0\n0\n5 .5 .5 .5 0 0\n"
+        "!genbox m box 1 2 3 | xform -t 10 0 0\n",
+        "room.rad", builtinLoadOptions());
     ASSERT_EQ(s.prims.size(), 7u);  // the material and six polygons
     double minX = 1e9, maxX = -1e9, maxY = -1e9;
     for (size_t i = 1; i < s.prims.size(); ++i) {
@@ -60,6 +68,53 @@ TEST(BuiltinCommands, XformOfAFileRunsInProcess) {
     ASSERT_EQ(s.prims.size(), 2u);
     EXPECT_EQ(s.prims[1].name, "k.s");
     EXPECT_DOUBLE_EQ(s.prims[1].rargs[2], 3);
+}
+
+// genblinds, genrev, gensurf and genworm run in-process with exactly the text their
+// tools print (the tools are thin mains around the same functions).
+TEST(BuiltinCommands, BlindsRevSurfWormRunInProcess) {
+    unsetenv(kShellCommandsEnv);
+    auto path = calc::defaultSearchPath("");
+    std::vector<std::string> warnings;
+    auto blinds = runBuiltinCommand("genblinds m slat 0.05 1 0.5 2 -30 +r 0.15", SourceLoc{});
+    ASSERT_TRUE(blinds);
+    EXPECT_EQ(*blinds,
+              genblinds({"genblinds", "m", "slat", "0.05", "1", "0.5", "2", "-30", "+r", "0.15"}));
+    auto rev = runBuiltinCommand("genrev steel torus 'sin(2*PI*t)' '1+cos(2*PI*t)' 4", SourceLoc{});
+    ASSERT_TRUE(rev);
+    EXPECT_EQ(*rev, genrev({"genrev", "steel", "torus", "sin(2*PI*t)", "1+cos(2*PI*t)", "4"}, path,
+                           warnings));
+    auto worm =
+        runBuiltinCommand("genworm m w 0 0 t 'if(t-.6,small,.5)' 2 -e 'small = .25'", SourceLoc{});
+    ASSERT_TRUE(worm);
+    EXPECT_EQ(*worm, genworm({"genworm", "m", "w", "0", "0", "t", "if(t-.6,small,.5)", "2", "-e",
+                              "small = .25"},
+                             path, warnings));
+    auto surf = runBuiltinCommand("gensurf m p 'sx*s' t 0 2 2 -e 'sx = 2'", SourceLoc{});
+    ASSERT_TRUE(surf);
+    std::istringstream none;
+    EXPECT_EQ(*surf, gensurf({"gensurf", "m", "p", "sx*s", "t", "0", "2", "2", "-e", "sx = 2"},
+                             path, none, warnings));
+    EXPECT_NE(surf->find("# gensurf m p sx*s t 0 2 2 -e \"sx = 2\"\n"), std::string::npos);
+    EXPECT_TRUE(warnings.empty());
+}
+
+// A scene with each of them loads without any generator on PATH.
+TEST(BuiltinCommands, BlindsRevSurfWormInAScene) {
+    unsetenv(kShellCommandsEnv);
+    Scene s = parseScene(
+        "void plastic m 0 0 5 .5 .5 .5 0 0\n"
+        "!genblinds m slat 0.05 1 0.5 2 20 -r 0.2 | xform -rz 90\n"
+        "!genrev m can 't' '1' 2\n"
+        "!genworm m w 0 0 t .1 2\n"
+        "!gensurf m p s t 0 2 2\n",
+        "gens.rad", builtinLoadOptions());
+    std::map<PrimType, int> count;
+    for (const Primitive& p : s.prims) ++count[p.type];
+    EXPECT_EQ(count[PrimType::Polygon], 2 * 5 + 4);  // 5 facets per curved slat; 2 x 2 cells
+    EXPECT_EQ(count[PrimType::Cylinder], 2 + 2);     // genrev's 2 segments, genworm's 2 links
+    EXPECT_EQ(count[PrimType::Sphere], 3);
+    EXPECT_EQ(s.prims.size(), 1u + 14u + 4u + 3u);
 }
 
 TEST(BuiltinCommands, GeneratorErrorsNameTheCommandLine) {

@@ -1,6 +1,7 @@
 // Text helpers for the generators: printf-style formatting, header line, number parsing.
 #include "gen/gen_text.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdarg>
@@ -24,11 +25,29 @@ std::string cformat(const char* fmt, ...) {
     return out;
 }
 
-std::string commandHeader(const std::vector<std::string>& args) {
+std::string headerWord(const std::string& word) {
+    // RADIANCE compat (fputword.c): a word with white space is put in double quotes; a
+    // quote character inside the word (not first, not last) selects the other kind of
+    // quote, the last such character deciding.
+    bool space = false;
+    char quote = 0;
+    for (size_t i = 0; i < word.size(); ++i) {
+        char c = word[i];
+        if (std::isspace(static_cast<unsigned char>(c)))
+            space = true;
+        else if (i > 0 && i + 1 < word.size() && (c == '"' || c == '\''))
+            quote = c == '"' ? '\'' : '"';
+    }
+    if (!space && !quote) return word;
+    if (!quote) quote = '"';
+    return quote + word + quote;
+}
+
+std::string commandHeader(const std::vector<std::string>& args, bool quoteWords) {
     std::string out = "#";
     for (const std::string& a : args) {
         out += ' ';
-        out += a;
+        out += quoteWords ? headerWord(a) : a;
     }
     out += '\n';
     return out;

@@ -27,8 +27,14 @@ struct GenSurface {
 // printf into a std::string (C locale formatting, as RADIANCE's printf).
 std::string cformat(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 
-// RADIANCE's printhead(): "#" then " word" for every argument (argv[0] included), newline.
-std::string commandHeader(const std::vector<std::string>& args);
+// One command word as RADIANCE's fputword() writes it: as is, or in quotes when it holds
+// white space or an inner quote character ("-e \"x = 2\"").
+std::string headerWord(const std::string& word);
+
+// RADIANCE's "# " + printargs(): "#" then " word" for every argument (argv[0] included,
+// each through headerWord), newline. RADIANCE compat: gendaylit prints its own header
+// with the words unquoted (quoteWords = false).
+std::string commandHeader(const std::vector<std::string>& args, bool quoteWords = true);
 
 // One vertex line as genbox and genprism print it: "\t%18.12g\t%18.12g\t%18.12g\n".
 std::string vertexLine(const Vec3& p);

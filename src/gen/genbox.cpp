@@ -17,28 +17,51 @@ namespace {
 constexpr const char* kLetters =
     "0123456789._ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
 
+// RADIANCE's normalize() (fvect.c): near unit length it scales by a first-order
+// approximation of 1/|v| instead of a division; matching it keeps the corner vertices
+// identical to RADIANCE's to the last printed digit. Returns the old length.
+double radianceNormalize(Vec3& v) {
+    double d = dot(v, v);
+    if (d == 0.0) return 0.0;
+    double len;
+    if (d <= 1.0 + 1e-6 && d >= 1.0 - 1e-6) {
+        len = 0.5 + 0.5 * d;
+        d = 2.0 - len;
+    } else {
+        len = std::sqrt(d);
+        d = 1.0 / len;
+    }
+    v *= d;
+    return len;
+}
+
 struct BoxBuilder {
     const GenboxOptions& opt;
+    int segments;  // facets per quarter circle when the rounding is tessellated, else 0
     std::vector<GenSurface> out;
 
     double inset() const { return opt.edges == BoxEdges::Square ? 0.0 : opt.edgeSize; }
+
+    // RADIANCE compat (genbox.c): -i mirrors the box through its centre (every corner
+    // code takes the opposite corner's coordinates) rather than reversing vertex order;
+    // the surfaces keep their names and each polygon's first vertex moves.
+    bool farSide(int code, int axis) const { return (((code >> axis) & 1) != 0) != opt.inward; }
 
     Vec3 corner(int code) const {
         Vec3 v;
         double b = inset();
         for (int i = 0; i < 3; ++i) {
-            bool far = (code >> i) & 1;
+            bool far = farSide(code, i);
             bool in = (code >> (i + 3)) & 1;
             v[i] = in ? (far ? opt.size[i] - b : b) : (far ? opt.size[i] : 0.0);
         }
         return v;
     }
 
-    void polygon(std::vector<int> codes) {
+    void polygon(std::initializer_list<int> codes) {
         GenSurface s;
         s.name = opt.name + ".";
         for (int c : codes) s.name += kLetters[c];
-        if (opt.inward) std::reverse(codes.begin(), codes.end());
         for (int c : codes) s.points.push_back(corner(c));
         out.push_back(std::move(s));
     }
@@ -46,7 +69,7 @@ struct BoxBuilder {
     void cylinder(int c0, int c1) {
         GenSurface s;
         s.kind = GenSurface::Kind::Cylinder;
-        s.name = opt.name + "." + char('0' + c0) + char('0' + c1);
+        s.name = opt.name + "." + kLetters[c0] + kLetters[c1];
         s.points = {corner(c0), corner(c1)};
         s.radius = opt.edgeSize;
         out.push_back(std::move(s));
@@ -55,74 +78,95 @@ struct BoxBuilder {
     void sphere(int c) {
         GenSurface s;
         s.kind = GenSurface::Kind::Sphere;
-        s.name = opt.name + "." + char('0' + c);
+        s.name = opt.name + "." + kLetters[c];
         s.points = {corner(c)};
         s.radius = opt.edgeSize;
         out.push_back(std::move(s));
     }
 
-    // A facet of the tessellated rounding: orient it away from the inner box (its
-    // rounding centre) and then apply -i.
-    void facet(const std::string& name, std::vector<Vec3> pts) {
-        Vec3 centroid;
-        for (const Vec3& p : pts) centroid += p;
-        centroid = centroid / double(pts.size());
-        Vec3 inner;
-        double b = inset();
-        for (int i = 0; i < 3; ++i) inner[i] = std::clamp(centroid[i], b, opt.size[i] - b);
-        bool outward = dot(newellNormal(pts), centroid - inner) > 0;
-        if (outward == opt.inward) std::reverse(pts.begin(), pts.end());
-        out.push_back({GenSurface::Kind::Polygon, name, std::move(pts), 0});
+    // A mesh facet; named later, when RADIANCE's numbering is known.
+    void facet(std::vector<Vec3> pts) {
+        out.push_back({GenSurface::Kind::Polygon, "", std::move(pts), 0});
     }
 
-    // Edge between corner codes c0 and c1 (differing on one axis) as n flat strips.
+    // Rounded edge c0-c1 as `segments` flat strips. The quarter circle starts on the
+    // first of two offset axes and turns towards the second, RADIANCE's choice per edge
+    // direction (x edge: z then y; y edge: x then z; z edge: y then x); each offset points
+    // to the side of the box the edge lies on.
     void edgeStrips(int c0, int c1) {
-        int n = opt.segments;
-        double r = opt.edgeSize;
-        int axis = 0;
-        while (!(((c0 ^ c1) >> axis) & 1)) ++axis;
-        int u = (axis + 1) % 3, w = (axis + 2) % 3;
-        Vec3 a = corner(c0), b = corner(c1);
-        double du = ((c0 >> u) & 1) ? 1 : -1, dw = ((c0 >> w) & 1) ? 1 : -1;
-        auto offset = [&](int k) {
-            double t = 0.5 * kPi * k / n;
-            Vec3 d;
-            d[u] = du * r * std::cos(t);
-            d[w] = dw * r * std::sin(t);
-            return d;
-        };
-        std::string base = opt.name + "." + char('0' + c0) + char('0' + c1) + ".";
-        for (int k = 0; k < n; ++k) {
-            Vec3 o0 = offset(k), o1 = offset(k + 1);
-            facet(base + std::to_string(k + 1), {a + o0, b + o0, b + o1, a + o1});
+        Vec3 p0 = corner(c0), p1 = corner(c1);
+        int axis = (c0 ^ c1) & 1 ? 0 : ((c0 ^ c1) & 2 ? 1 : 2);
+        static constexpr int kOffsetAxes[3][2] = {{2, 1}, {0, 2}, {1, 0}};
+        Vec3 off[2];
+        for (int k = 0; k < 2; ++k) {
+            int a = kOffsetAxes[axis][k];
+            off[k][a] = opt.edgeSize * (p1[a] < 0.5 * opt.size[a] ? -1.0 : 1.0);
+        }
+        double step = 0.5 * kPi / segments;
+        Vec3 prev0 = p0 + off[0], prev1 = p1 + off[0];
+        for (int i = 1; i <= segments; ++i) {
+            double c = std::cos(step * i), s = std::sin(step * i);
+            Vec3 o;
+            for (int j = 0; j < 3; ++j) o[j] = c * off[0][j] + s * off[1][j];
+            Vec3 next0 = p0 + o, next1 = p1 + o;
+            facet({prev0, prev1, next1, next0});
+            prev0 = next0;
+            prev1 = next1;
         }
     }
 
-    // Corner octant as an n x n latitude/longitude grid (triangles at the pole).
+    // Octant of the sphere around `centre` spanned by unit directions d0 d1 d2, split
+    // `level` times into four (midpoints of the edges pushed back onto the sphere).
+    void cornerTriangles(const Vec3& centre, const Vec3& d0, const Vec3& d1, const Vec3& d2,
+                         int level) {
+        if (level == 0) {
+            double r = opt.edgeSize;
+            facet({centre + d0 * r, centre + d1 * r, centre + d2 * r});
+            return;
+        }
+        Vec3 m01 = d0 + d1, m12 = d1 + d2, m20 = d2 + d0;
+        radianceNormalize(m01);
+        radianceNormalize(m12);
+        radianceNormalize(m20);
+        cornerTriangles(centre, d0, m01, m20, level - 1);
+        cornerTriangles(centre, d1, m12, m01, level - 1);
+        cornerTriangles(centre, d2, m20, m12, level - 1);
+        cornerTriangles(centre, m01, m12, m20, level - 1);
+    }
+
     void cornerPatches(int c) {
-        int n = opt.segments;
-        double r = opt.edgeSize;
-        Vec3 centre = corner(c);
-        Vec3 d(((c >> 0) & 1) ? 1 : -1, ((c >> 1) & 1) ? 1 : -1, ((c >> 2) & 1) ? 1 : -1);
-        auto point = [&](int i, int j) {  // i: polar step from +-z, j: azimuth step
-            double th = 0.5 * kPi * i / n, ph = 0.5 * kPi * j / n;
-            return centre + Vec3(d.x * r * std::sin(th) * std::cos(ph),
-                                 d.y * r * std::sin(th) * std::sin(ph), d.z * r * std::cos(th));
-        };
-        std::string base = opt.name + "." + char('0' + c) + ".";
-        int k = 0;
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j) {
-                std::string nm = base + std::to_string(++k);
-                if (i == 0)
-                    facet(nm, {point(0, 0), point(1, j), point(1, j + 1)});
-                else
-                    facet(nm, {point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)});
+        Vec3 d[3];
+        for (int i = 0; i < 3; ++i) d[i][i] = farSide(c, i) ? 1.0 : -1.0;
+        // Corners with an even number of far sides swap the first two directions, so
+        // every octant winds outward (before -i mirrors the box).
+        int parity = (c & 1) + ((c >> 1) & 1) + ((c >> 2) & 1);
+        if (parity % 2 == 0) std::swap(d[0], d[1]);
+        int level = 0;
+        while ((1 << level) < segments) ++level;
+        cornerTriangles(corner(c), d[0], d[1], d[2], level);
+    }
+
+    // RADIANCE writes a tessellated box through its mesh library (objutil.c): faces
+    // come out last first, numbered name.1, name.2, ..., and faces of area at most
+    // 1e-12 (FTINY squared) are dropped.
+    void finishMesh() {
+        std::reverse(out.begin(), out.end());
+        std::vector<GenSurface> kept;
+        for (GenSurface& s : out) {
+            Vec3 sum, v1 = s.points[1] - s.points[0];
+            for (size_t i = 2; i < s.points.size(); ++i) {
+                Vec3 v2 = s.points[i] - s.points[0];
+                sum += cross(v1, v2);
+                v1 = v2;
             }
+            if (0.5 * radianceNormalize(sum) <= 1e-12) continue;
+            s.name = opt.name + "." + std::to_string(kept.size() + 1);
+            kept.push_back(std::move(s));
+        }
+        out = std::move(kept);
     }
 
     void build() {
-        bool rounded = opt.edges == BoxEdges::Round;
         if (opt.edges == BoxEdges::Square) {
             polygon({1, 5, 4, 0});
             polygon({4, 6, 2, 0});
@@ -142,7 +186,7 @@ struct BoxBuilder {
         static constexpr int kEdges[12][2] = {{070, 071}, {070, 074}, {070, 072}, {073, 071},
                                               {073, 072}, {073, 077}, {075, 071}, {075, 074},
                                               {075, 077}, {076, 072}, {076, 074}, {076, 077}};
-        if (!rounded) {
+        if (opt.edges == BoxEdges::Bevel) {
             static constexpr int kBevels[12][4] = {
                 {031, 051, 050, 030}, {060, 062, 032, 030}, {050, 054, 064, 060},
                 {034, 036, 066, 064}, {037, 057, 056, 036}, {052, 062, 066, 056},
@@ -154,12 +198,13 @@ struct BoxBuilder {
                                                    {053, 063, 033}, {037, 067, 057}};
             for (const auto& q : kBevels) polygon({q[0], q[1], q[2], q[3]});
             for (const auto& t : kCorners) polygon({t[0], t[1], t[2]});
-        } else if (opt.segments == 0) {
+        } else if (segments == 0) {
             for (const auto& e : kEdges) cylinder(e[0], e[1]);
             for (int c = 070; c <= 077; ++c) sphere(c);
         } else {
             for (const auto& e : kEdges) edgeStrips(e[0], e[1]);
             for (int c = 070; c <= 077; ++c) cornerPatches(c);
+            finishMesh();
         }
     }
 };
@@ -178,7 +223,7 @@ GenboxOptions parseGenboxArgs(const std::vector<std::string>& args) {
         if (opt.size[i] <= 0)
             throw InputError(std::string(kAxis[i]) + " must be positive, got " + args[3 + i]);
     }
-    bool sawEdge = false, sawSegments = false;
+    bool sawEdge = false;
     for (size_t i = 6; i < args.size(); ++i) {
         const std::string& a = args[i];
         if (a == "-i") {
@@ -190,9 +235,12 @@ GenboxOptions parseGenboxArgs(const std::vector<std::string>& args) {
             if (opt.edgeSize < 0) throw InputError(a + " value must not be negative");
             if (opt.edgeSize > 0) opt.edges = a == "-r" ? BoxEdges::Round : BoxEdges::Bevel;
         } else if (a == "-n") {
-            sawSegments = true;
             opt.segments = parseInt(optionValue(args, i), "segment count");
             if (opt.segments < 1) throw InputError("-n needs at least 1 segment");
+        } else if (a == "-s" || a == "-o") {
+            throw InputError("option " + a + " (" +
+                             (a == "-s" ? "smoothed facets" : "OBJ output") +
+                             ") is not supported yet");
         } else {
             throw InputError("unknown option '" + a + "'");
         }
@@ -202,24 +250,34 @@ GenboxOptions parseGenboxArgs(const std::vector<std::string>& args) {
         throw InputError(cformat("%s %g must be less than half the smallest size (%g)",
                                  opt.edges == BoxEdges::Round ? "radius" : "bevel",
                                  opt.edgeSize, smallest));
-    if (sawSegments && opt.edges != BoxEdges::Round)
-        throw InputError("-n applies only to rounded edges (-r rad)");
     return opt;
 }
 
+int genboxRoundingSegments(const GenboxOptions& opt) {
+    if (opt.edges != BoxEdges::Round) return 0;
+    int requested = opt.segments;
+    if (opt.inward && requested == 1) requested = 32;
+    int segments = 2;
+    while (segments < requested) segments *= 2;
+    return segments > 2 ? segments : 0;
+}
+
 std::vector<GenSurface> genboxSurfaces(const GenboxOptions& opt) {
-    BoxBuilder b{opt, {}};
+    BoxBuilder b{opt, genboxRoundingSegments(opt), {}};
     b.build();
     return std::move(b.out);
 }
 
-std::string formatGenboxSurface(const std::string& material, const GenSurface& s) {
+std::string formatGenboxSurface(const std::string& material, const GenSurface& s,
+                                bool meshLayout) {
     std::string out;
     switch (s.kind) {
         case GenSurface::Kind::Polygon:
             out = cformat("\n%s polygon %s\n0\n0\n%d\n", material.c_str(), s.name.c_str(),
                           int(3 * s.points.size()));
-            for (const Vec3& p : s.points) out += vertexLine(p);
+            for (const Vec3& p : s.points)
+                out += meshLayout ? cformat("\t%18.12g %18.12g %18.12g\n", p.x, p.y, p.z)
+                                  : vertexLine(p);
             break;
         case GenSurface::Kind::Cylinder:
             out = cformat("\n%s cylinder %s\n0\n0\n7\n", material.c_str(), s.name.c_str());
@@ -237,7 +295,9 @@ std::string formatGenboxSurface(const std::string& material, const GenSurface& s
 std::string genbox(const std::vector<std::string>& args) {
     GenboxOptions opt = parseGenboxArgs(args);
     std::string out = commandHeader(args);
-    for (const GenSurface& s : genboxSurfaces(opt)) out += formatGenboxSurface(opt.material, s);
+    bool mesh = genboxRoundingSegments(opt) > 0;
+    for (const GenSurface& s : genboxSurfaces(opt))
+        out += formatGenboxSurface(opt.material, s, mesh);
     return out;
 }
 

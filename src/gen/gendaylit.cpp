@@ -360,7 +360,7 @@ GendaylitSky computeGendaylit(const GendaylitOptions& opt) {
 }
 
 std::string formatGendaylit(const GendaylitSky& sky, const std::vector<std::string>& args) {
-    std::string out = commandHeader(args);
+    std::string out = commandHeader(args, false);
     for (const std::string& line : sky.comments) out += line + "\n";
     out += cformat("# Local solar time: %.2f\n", sky.solarTime);
     out += cformat("# Solar altitude and azimuth: %.1f %.1f\n", sky.altitude / kDegree,

@@ -1,5 +1,5 @@
 // genrev(1): surfaces of revolution (see genrev.h). Matches RADIANCE genrev.c's choice
-// of primitive per segment, its naming, its %15.9g layout and its -s Phong records.
+// of primitive per segment, its naming, its %18.12g layout and its -s Phong records.
 #include "gen/genrev.h"
 
 #include <cmath>
@@ -141,11 +141,11 @@ std::string formatRevSegment(const GenrevOptions& opt, const RevSegment& s) {
         out += cformat("\n%s texfunc Phong\n4 rev_dx rev_dy rev_dz rev.cal\n0\n4\n",
                        opt.material.c_str());
         if (s.zLinear)
-            out += cformat("\t%15.9g\t%15.9g\n", s.phong[0], s.phong[1]);
+            out += cformat("\t%18.12g\t%18.12g\n", s.phong[0], s.phong[1]);
         else
             out += cformat("\t0\t%d\n", static_cast<int>(s.phong[1]));
         if (s.rLinear)
-            out += cformat("\t%15.9g\t%15.9g\n", s.phong[2], s.phong[3]);
+            out += cformat("\t%18.12g\t%18.12g\n", s.phong[2], s.phong[3]);
         else
             out += cformat("\t0\t%d\n", static_cast<int>(s.phong[3]));
         mod = "Phong";
@@ -157,20 +157,20 @@ std::string formatRevSegment(const GenrevOptions& opt, const RevSegment& s) {
         case RevSegment::Kind::Tube:
             out += cformat("\n%s %s %s.%d\n0\n0\n7\n", m,
                            s.kind == RevSegment::Kind::Tube ? "tube" : "cylinder", n, s.index);
-            out += cformat("\t0\t0\t%15.9g\n\t0\t0\t%15.9g\n\t%15.9g\n", s.z0, s.z1, s.r1);
+            out += cformat("\t0\t0\t%18.12g\n\t0\t0\t%18.12g\n\t%18.12g\n", s.z0, s.z1, s.r1);
             break;
         case RevSegment::Kind::Ring:
             // RADIANCE compat: the radii stay in profile order (outer first when r
             // shrinks); ring readers take the smaller as inner (geometry/ring.h).
             out += cformat("\n%s ring %s.%d\n0\n0\n8\n", m, n, s.index);
-            out += cformat("\t0\t0\t%15.9g\n\t0\t0\t%15.9g\n\t%15.9g\t%15.9g\n", s.z1,
+            out += cformat("\t0\t0\t%18.12g\n\t0\t0\t%18.12g\n\t%18.12g\t%18.12g\n", s.z1,
                            s.ringNormalZ, s.r0, s.r1);
             break;
         case RevSegment::Kind::Cone:
         case RevSegment::Kind::Cup:
             out += cformat("\n%s %s %s.%d\n0\n0\n8\n", m,
                            s.kind == RevSegment::Kind::Cup ? "cup" : "cone", n, s.index);
-            out += cformat("\t0\t0\t%15.9g\n\t0\t0\t%15.9g\n\t%15.9g\t%15.9g\n", s.z0, s.z1,
+            out += cformat("\t0\t0\t%18.12g\n\t0\t0\t%18.12g\n\t%18.12g\t%18.12g\n", s.z0, s.z1,
                            s.r0, s.r1);
             break;
     }

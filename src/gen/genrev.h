@@ -47,7 +47,7 @@ struct RevSegment {
 // negative radius (RADIANCE forbids them but does not check).
 std::vector<RevSegment> genrevSegments(const GenrevOptions& opt, GenFunctions& funcs);
 
-// One segment as genrev prints it ("\n" first; tab + %15.9g columns); `smooth` adds the
+// One segment as genrev prints it ("\n" first; tab + %18.12g columns); `smooth` adds the
 // "mat texfunc Phong" record and makes Phong the segment's modifier.
 std::string formatRevSegment(const GenrevOptions& opt, const RevSegment& s);
 

@@ -47,9 +47,9 @@ TEST(Genrev, CylinderOfRadiusOne) {
     EXPECT_EQ(out,
               "# genrev m c t 1 1\n"
               "\nm cylinder c.1\n0\n0\n7\n"
-              "\t0\t0\t              0\n"
-              "\t0\t0\t              1\n"
-              "\t              1\n");
+              "\t0\t0\t                 0\n"
+              "\t0\t0\t                 1\n"
+              "\t                 1\n");
 }
 
 TEST(Genrev, ZFallingGivesTubesAndCups) {
@@ -75,9 +75,9 @@ TEST(Genrev, ConeEndPointsAndRadii) {
     EXPECT_EQ(run({"genrev", "m", "k", "2*t", "1-t", "1"}),
               "# genrev m k 2*t 1-t 1\n"
               "\nm cone k.1\n0\n0\n8\n"
-              "\t0\t0\t              0\n"
-              "\t0\t0\t              2\n"
-              "\t              1\t              0\n");
+              "\t0\t0\t                 0\n"
+              "\t0\t0\t                 2\n"
+              "\t                 1\t                 0\n");
 }
 
 TEST(Genrev, DiscAsRingFacingUpWhenRadiusShrinks) {
@@ -89,9 +89,9 @@ TEST(Genrev, DiscAsRingFacingUpWhenRadiusShrinks) {
     EXPECT_EQ(run({"genrev", "m", "d", "3", "1-t", "1"}),
               "# genrev m d 3 1-t 1\n"
               "\nm ring d.1\n0\n0\n8\n"
-              "\t0\t0\t              3\n"
-              "\t0\t0\t              1\n"
-              "\t              1\t              0\n");
+              "\t0\t0\t                 3\n"
+              "\t0\t0\t                 1\n"
+              "\t                 1\t                 0\n");
     auto down = segments({"genrev", "m", "d", "0", "t", "1"});
     ASSERT_EQ(down.size(), 1u);
     EXPECT_DOUBLE_EQ(down[0].ringNormalZ, -1);

@@ -22,7 +22,9 @@ const char* kUsage =
 
 bool zeroVector(const Vec3& v) { return dot(v, v) <= kFtiny * kFtiny; }
 
-std::string vertexText(const Vec3& p) { return cformat("%15.9g %15.9g %15.9g\n", p.x, p.y, p.z); }
+std::string vertexText(const Vec3& p) {
+    return cformat("%18.12g %18.12g %18.12g\n", p.x, p.y, p.z);
+}
 
 // One grid cell ready for output: its corners in putsquare() order (p0 p1 p2 p3, with
 // the triangles p0 p1 p2 and p2 p1 p3), which triangles exist, their unit normals, and
@@ -255,28 +257,38 @@ std::string formatSurfPolygon(const std::string& material, const SurfPolygon& p)
 }
 
 std::string gensurfObj(const GensurfOptions& opt, const SurfGrid& grid) {
-    // Vertex and normal numbers (1-based, 0 = none) per grid point in output order.
+    // RADIANCE compat (gensurf.c 2.29): faces refer to vertices and normals by relative
+    // (negative) numbers, 0 = none; a normal equal to the last one written (each
+    // component within 1e-6) is not written again but shared.
     const int m = grid.m(), n = grid.n();
     std::vector<int> vnum(size_t(m + 1) * size_t(n + 1), 0), nnum(vnum.size(), 0);
     int nv = 0, nn = 0;
+    Vec3 lastNormal;
+    auto same = [](const Vec3& a, const Vec3& b) {
+        return std::fabs(a.x - b.x) <= 1e-6 && std::fabs(a.y - b.y) <= 1e-6 &&
+               std::fabs(a.z - b.z) <= 1e-6;
+    };
     auto putRow = [&](int i) {
         std::string s;
         for (int j = 0; j <= n; ++j) {
             const SurfPoint& p = grid.at(i, j);
             if (!p.valid) continue;
+            size_t x = size_t(i) * size_t(n + 1) + size_t(j);
             s += "v " + vertexText(p.p);
-            vnum[size_t(i) * size_t(n + 1) + size_t(j)] = ++nv;
-            // Our normal numbers count vn records; RADIANCE reuses the vertex number,
-            // which differs only once some vertex had no normal.
-            if (opt.smooth && !zeroVector(p.normal)) {
-                s += cformat("\tvn %.9g %.9g %.9g\n", p.normal.x, p.normal.y, p.normal.z);
-                nnum[size_t(i) * size_t(n + 1) + size_t(j)] = ++nn;
-            }
+            vnum[x] = ++nv;
             s += cformat("\tvt %.9g %.9g\n", p.s, p.t);
+            if (!opt.smooth || zeroVector(p.normal)) continue;
+            if (same(p.normal, lastNormal)) {
+                nnum[x] = nn;
+                continue;
+            }
+            s += cformat("\tvn %.9g %.9g %.9g\n", p.normal.x, p.normal.y, p.normal.z);
+            nnum[x] = ++nn;
+            lastNormal = p.normal;
         }
         return s;
     };
-    std::string out = "\nusemtl " + opt.material + "\n\n" + putRow(0);
+    std::string out = "\nusemtl " + opt.material + "\n\no " + opt.name + "\n\n" + putRow(0);
     for (int i = 0; i < m; ++i) {
         out += putRow(i + 1);
         for (int j = 0; j < n; ++j) {
@@ -284,7 +296,8 @@ std::string gensurfObj(const GensurfOptions& opt, const SurfGrid& grid) {
             if (!c) continue;
             auto ref = [&](int k) {
                 size_t x = size_t(c->i[k]) * size_t(n + 1) + size_t(c->j[k]);
-                return cformat(" %d/%d/%d", vnum[x], vnum[x], nnum[x]);
+                int v = vnum[x] ? vnum[x] - nv - 1 : 0, nr = nnum[x] ? nnum[x] - nn - 1 : 0;
+                return cformat(" %d/%d/%d", v, v, nr);
             };
             if (c->quad) {
                 out += "f" + ref(0) + ref(1) + ref(3) + ref(2) + "\n";

@@ -82,10 +82,11 @@ struct SurfPolygon {
 // split along alternating diagonals; degenerate or invalid triangles are left out.
 std::vector<SurfPolygon> gensurfPolygons(const GensurfOptions& opt, const SurfGrid& grid);
 
-// One polygon as gensurf prints it ("\n" first; "%15.9g %15.9g %15.9g" vertex lines).
+// One polygon as gensurf prints it ("\n" first; "%18.12g %18.12g %18.12g" vertex lines).
 std::string formatSurfPolygon(const std::string& material, const SurfPolygon& p);
 
-// -o: the surface as Wavefront .OBJ text (usemtl, v/vn/vt per valid vertex, f records).
+// -o: the surface as Wavefront .OBJ text (usemtl, o, v/vt/vn per valid vertex, f records
+// with relative vertex numbers).
 std::string gensurfObj(const GensurfOptions& opt, const SurfGrid& grid);
 
 // The whole output: "# gensurf ..." header then the polygons (or the .OBJ text).

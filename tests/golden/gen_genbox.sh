@@ -1,7 +1,8 @@
 #!/bin/bash
 # Golden test for genbox: RADIANCE's exact text (header line, polygon names from corner
 # codes, vertex order, tab + %18.12g columns) for an outward and an inward (-i) box,
-# compared with the hand-written gen_genbox.expected; then the error exits.
+# compared with gen_genbox.expected (RADIANCE genbox 2.13's output for the same two
+# commands, -i mirroring the corners); then the error exits.
 set -u
 GENBOX="${RP_BIN:?RP_BIN not set}/genbox"
 EXPECTED="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/tests/golden/gen_genbox.expected"

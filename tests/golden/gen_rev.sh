@@ -1,8 +1,9 @@
 #!/bin/bash
 # Golden test for genrev: RADIANCE's text (header line, name.<i> numbering, cone/cup/ring/
-# cylinder choice, tab + %15.9g columns, -s Phong texfuncs) for the man page's torus and a
+# cylinder choice, tab + %18.12g columns, -s Phong texfuncs) for the man page's torus and a
 # closed can (bottom ring facing -z, cylinder, top ring facing +z), compared with the
-# hand-checked gen_rev.expected; then the error exits.
+# gen_rev.expected (RADIANCE genrev 2.14's output for the same commands); then the
+# error exits.
 set -u
 GENREV="${RP_BIN:?RP_BIN not set}/genrev"
 EXPECTED="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/tests/golden/gen_rev.expected"

@@ -1,10 +1,10 @@
 #!/bin/bash
 # Golden test for gensurf: RADIANCE's text (header line, name.<k> numbering, vertex order
-# by the (s,t) right-hand rule with alternating diagonals, "%15.9g %15.9g %15.9g" lines)
+# by the (s,t) right-hand rule with alternating diagonals, "%18.12g %18.12g %18.12g" lines)
 # for a 2x2 plane, x y z triplets from standard input (a non-planar cell: two triangles),
 # a smoothed plane (-s: Phong texfunc with zero perturbation) and z data with -o -s
-# (.OBJ with the plane z = s + 2t's normal), compared with the hand-checked
-# gen_surf.expected; then the error exits.
+# (.OBJ with the plane z = s + 2t's normal), compared with gen_surf.expected (RADIANCE
+# gensurf 2.29's output for the same commands); then the error exits.
 set -u
 GENSURF="${RP_BIN:?RP_BIN not set}/gensurf"
 EXPECTED="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/tests/golden/gen_surf.expected"

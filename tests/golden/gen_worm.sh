@@ -2,8 +2,8 @@
 # Golden test for genworm: RADIANCE's text (header line, name.s<i>/name.c<i>, space-
 # separated %18.12g columns) for a straight worm whose radius drops from 0.5 to 0.25:
 # a cylinder, then the cone tangent to both spheres (rims at z = 0.75 and 1.125, radii
-# 0.5*sqrt(3)/2 and 0.25*sqrt(3)/2), compared with the hand-checked gen_worm.expected;
-# then the error exits.
+# 0.5*sqrt(3)/2 and 0.25*sqrt(3)/2), compared with gen_worm.expected (RADIANCE genworm
+# 2.12's output); then the error exits.
 set -u
 GENWORM="${RP_BIN:?RP_BIN not set}/genworm"
 EXPECTED="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/tests/golden/gen_worm.expected"

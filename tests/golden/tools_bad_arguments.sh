@@ -15,8 +15,8 @@ check() {  # description, command...
         fail=1
     fi
 }
-for t in genbox gendaylit genprism genrev gensky gensurf genworm mkpmap oconv pmapdump ra_png \
-         rpreview xform; do
+for t in genblinds genbox gendaylit genprism genrev gensky gensurf genworm mkpmap oconv pmapdump \
+         ra_png rpreview xform; do
     check "$t unknown option" "$RP_BIN/$t" -zzz
 done
 check "getinfo missing file" "$RP_BIN/getinfo" "$tmp/none.hdr"
