@@ -20,6 +20,7 @@ const std::array kRayVariables = {
     RP_RAYVAR("Ix", I, 0),    RP_RAYVAR("Iy", I, 1),    RP_RAYVAR("Iz", I, 2),
     RP_RAYVAR("Jx", J, 0),    RP_RAYVAR("Jy", J, 1),    RP_RAYVAR("Jz", J, 2),
     RP_RAYVAR("Kx", K, 0),    RP_RAYVAR("Ky", K, 1),    RP_RAYVAR("Kz", K, 2),
+    RP_RAYVAR("DxA", DA, 0),  RP_RAYVAR("DyA", DA, 1),  RP_RAYVAR("DzA", DA, 2),
 };
 
 #undef RP_RAYVAR

@@ -30,6 +30,9 @@ struct RayContext {
     Vec3 I{1, 0, 0};     // Ix Iy Iz: world i unit vector in object space
     Vec3 J{0, 1, 0};     // Jx Jy Jz
     Vec3 K{0, 0, 1};     // Kx Ky Kz
+    // DxA DyA DzA (prism1/prism2, m_direct.c): unit direction from P to the light source
+    // a redirected ray is aimed at, seen like D; zero for rays not aimed at a source.
+    Vec3 DA;
     std::span<const double> args;  // the modifier's real arguments: A1 = args[0], arg(0) = size
 };
 
@@ -42,7 +45,7 @@ struct RayVariable {
 };
 
 // All predefined ray variables (Dx Dy Dz Nx Ny Nz Px Py Pz Lu Lv T Ts Rdot S Tx Ty Tz
-// Ix Iy Iz Jx Jy Jz Kx Ky Kz). A1..An come from rayinit.cal (A1 = arg(1); ...).
+// Ix Iy Iz Jx Jy Jz Kx Ky Kz DxA DyA DzA). A1..An come from rayinit.cal (A1 = arg(1); ...).
 std::span<const RayVariable> rayVariables();
 
 // Reads the variable at `offset` (from rayVariables()).

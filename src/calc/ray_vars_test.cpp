@@ -24,6 +24,7 @@ RayContext distinctRay(std::span<const double> args) {
     r.I = {19, 20, 21};
     r.J = {22, 23, 24};
     r.K = {25, 26, 27};
+    r.DA = {28, 29, 30};
     r.args = args;
     return r;
 }
@@ -31,7 +32,7 @@ RayContext distinctRay(std::span<const double> args) {
 TEST(CalcRayVars, EachVariableReachesAFunction) {
     const char* names[] = {"Dx", "Dy", "Dz", "Nx", "Ny", "Nz", "Px", "Py", "Pz", "Lu",
                            "Lv", "T",  "Ts", "Rdot", "S", "Tx", "Ty", "Tz", "Ix", "Iy",
-                           "Iz", "Jx", "Jy", "Jz", "Kx", "Ky", "Kz"};
+                           "Iz", "Jx", "Jy", "Jz", "Kx", "Ky", "Kz", "DxA", "DyA", "DzA"};
     ASSERT_EQ(rayVariables().size(), std::size(names));
     double args[] = {101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111};
     RayContext ray = distinctRay(args);

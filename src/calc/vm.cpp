@@ -13,8 +13,8 @@
 namespace rp::calc {
 namespace {
 
-static_assert(offsetof(RayContext, K) + sizeof(Vec3) == kRayDoubles * sizeof(double),
-              "ray variables must be the first 27 doubles of RayContext");
+static_assert(offsetof(RayContext, DA) + sizeof(Vec3) == kRayDoubles * sizeof(double),
+              "ray variables must be the first 30 doubles of RayContext");
 
 [[noreturn]] void runtimeError(const void* info, const std::string& msg) {
     if (info) throw InputError(static_cast<const NodeInfo*>(info)->loc, msg);
