@@ -23,6 +23,7 @@ const std::array kRayVariables = {
     RP_RAYVAR("NxP", NP, 0),  RP_RAYVAR("NyP", NP, 1),  RP_RAYVAR("NzP", NP, 2),
     RP_RAYVAR("RdotP", RdotP, 0), RP_RAYVAR("CrP", CP, 0), RP_RAYVAR("CgP", CP, 1),
     RP_RAYVAR("CbP", CP, 2),
+    RP_RAYVAR("DxA", DA, 0),  RP_RAYVAR("DyA", DA, 1),  RP_RAYVAR("DzA", DA, 2),
 };
 
 #undef RP_RAYVAR

@@ -35,6 +35,9 @@ struct RayContext {
     double RdotP = 0;    // RdotP: -D.NP in world space, clamped to [-1, 1]
     Vec3 CP;             // CrP CgP CbP: the material colour times the pattern
                          // (*func/*data), the pattern alone (BRTDfunc)
+    // DxA DyA DzA (prism1/prism2, m_direct.c): unit direction from P to the light source
+    // a redirected ray is aimed at, seen like D; zero for rays not aimed at a source.
+    Vec3 DA;
     std::span<const double> args;  // the modifier's real arguments: A1 = args[0], arg(0) = size
 };
 
@@ -47,7 +50,8 @@ struct RayVariable {
 };
 
 // All predefined ray variables (Dx Dy Dz Nx Ny Nz Px Py Pz Lu Lv T Ts Rdot S Tx Ty Tz
-// Ix Iy Iz Jx Jy Jz Kx Ky Kz NxP NyP NzP RdotP CrP CgP CbP). A1..An come from rayinit.cal (A1 = arg(1); ...).
+// Ix Iy Iz Jx Jy Jz Kx Ky Kz NxP NyP NzP RdotP CrP CgP CbP DxA DyA DzA). A1..An come from
+// rayinit.cal (A1 = arg(1); ...).
 std::span<const RayVariable> rayVariables();
 
 // Reads the variable at `offset` (from rayVariables()).

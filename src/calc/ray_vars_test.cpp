@@ -27,6 +27,7 @@ RayContext distinctRay(std::span<const double> args) {
     r.NP = {28, 29, 30};
     r.RdotP = 31;
     r.CP = {32, 33, 34};
+    r.DA = {35, 36, 37};
     r.args = args;
     return r;
 }
@@ -35,7 +36,7 @@ TEST(CalcRayVars, EachVariableReachesAFunction) {
     const char* names[] = {"Dx", "Dy", "Dz", "Nx", "Ny", "Nz", "Px", "Py", "Pz", "Lu",
                            "Lv", "T",  "Ts", "Rdot", "S", "Tx", "Ty", "Tz", "Ix", "Iy",
                            "Iz", "Jx", "Jy", "Jz", "Kx", "Ky", "Kz", "NxP", "NyP", "NzP",
-                           "RdotP", "CrP", "CgP", "CbP"};
+                           "RdotP", "CrP", "CgP", "CbP", "DxA", "DyA", "DzA"};
     ASSERT_EQ(rayVariables().size(), std::size(names));
     double args[] = {101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111};
     RayContext ray = distinctRay(args);

@@ -13,7 +13,7 @@
 namespace rp::calc {
 namespace {
 
-static_assert(offsetof(RayContext, CP) + sizeof(Vec3) == kRayDoubles * sizeof(double),
+static_assert(offsetof(RayContext, DA) + sizeof(Vec3) == kRayDoubles * sizeof(double),
               "ray variables must be the first kRayDoubles doubles of RayContext");
 
 [[noreturn]] void runtimeError(const void* info, const std::string& msg) {

@@ -5,7 +5,7 @@
 //
 // Operands are ints indexing one array around register 0: >= 0 is a register, < 0 a
 // global. Globals hold, going down: the per-ray variable cache (slot s at -1 - s), a copy
-// of the ray's 27 predefined variables and of modifier arguments A1..A16 (refreshed by
+// of the ray's 30 predefined variables and of modifier arguments A1..A16 (refreshed by
 // setRay), and the program's constants. Internal to the calc module; users see
 // program.h.
 #pragma once
@@ -69,9 +69,9 @@ struct Block {
     }
 };
 
-// Number of predefined ray variables (Dx .. Kz, NxP .. CbP), stored contiguously in
-// RayContext.
-constexpr int kRayDoubles = 34;
+// Number of predefined ray variables (Dx .. Kz, NxP .. CbP, DxA .. DzA), stored
+// contiguously in RayContext.
+constexpr int kRayDoubles = 37;
 // Modifier arguments A1 .. A16 are also kept in globals.
 constexpr int kArgGlobals = 16;
 

@@ -116,4 +116,6 @@ PhotonScatter scatterBrtd(const BrtdParams&, const SurfacePoint&, Rng&);
 
 BackwardResult shadeLight(const LightParams&, const SurfacePoint&);
 
+BackwardResult shadePrism(const PrismParams&, const SurfacePoint&);
+
 }  // namespace rp::material::detail

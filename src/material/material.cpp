@@ -191,6 +191,7 @@ BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
             },
             [&](const FuncParams& p) { return shadeFunc(p, sp, opt); },
             [&](const BrtdParams& p) { return shadeBrtd(p, sp); },
+            [&](const PrismParams& p) { return shadePrism(p, sp); },
         },
         m);
 }
@@ -215,6 +216,9 @@ PhotonScatter scatterPhoton(const MaterialParams& m, const SurfacePoint& sp, Rng
             },
             [&](const FuncParams& p) { return scatterFunc(p, sp, rng); },
             [&](const BrtdParams& p) { return scatterBrtd(p, sp, rng); },
+            // RADIANCE's photon tracer has no prism1/prism2 (pmapmat.c); the photon
+            // tracer refuses them at load, so a photon never gets here.
+            [&](const PrismParams&) { return PhotonScatter{}; },
         },
         m);
 }

@@ -140,17 +140,34 @@ struct BrtdParams {
     bool directionalDiffuse = false;  // rbrtd.. not all "0"
 };
 
+// prism1, prism2 (m_direct.c): light redirected in one or two directions given, with a
+// coefficient each, by expressions of a function file (compiled by MaterialCalc; the
+// renderer evaluates them and hands the results in as SurfacePoint::redirections).
+// Sources are seen through them as virtual sources (render/source_list.h).
+struct PrismParams {
+    int redirections = 1;  // prism1: 1; prism2: 2
+};
+
 using MaterialParams = std::variant<NormalParams, AnisoParams, MirrorParams, GlassParams,
                                     DielectricParams, LightParams, AntimatterParams,
-                                    FuncParams, BrtdParams>;
+                                    FuncParams, BrtdParams, PrismParams>;
 
 // Checks p's arguments (counts were checked by the reader; values here) and derives the
 // constants. Throws InputError at p.loc for bad values and notSupportedYet for mist,
-// BSDF, aBSDF, ashik2, WGMDfunc, prism1, prism2; InputError for non-material types.
+// BSDF, aBSDF, ashik2, WGMDfunc; InputError for non-material types.
 MaterialParams makeMaterial(const Primitive& p);
 
 // ---------------------------------------------------------------------------------------
 // Inputs at a hit point (all unit vectors, world space).
+
+// One prism1/prism2 redirection evaluated at a hit: the coefficient and the unit world
+// direction the ray continues in. `ok` is false after a math error or for a zero
+// direction (m_direct.c "compute error": the redirection gives nothing).
+struct Redirection {
+    double coef = 0;
+    Vec3 dir;
+    bool ok = false;
+};
 
 struct SurfacePoint {
     Vec3 dir;           // direction the ray/photon travels (towards the surface)
@@ -165,6 +182,8 @@ struct SurfacePoint {
     // unit world direction (grey); BRTDfunc: rbrtd gbrtd bbrtd. Null: no such part
     // (MaterialCalcEvaluator::directional supplies it). Only evaluate() uses it.
     const std::function<Color(const Vec3&)>* directional = nullptr;
+    // prism1/prism2: the redirections at this hit (MaterialCalcEvaluator::redirect).
+    const std::array<Redirection, 2>* redirections = nullptr;
 };
 
 // A SurfacePoint whose shading normal is the geometric one.

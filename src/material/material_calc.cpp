@@ -41,6 +41,8 @@ size_t funcFileIndex(PrimType t) {
     case PrimType::Metdata:
     case PrimType::Transdata: return 2;  // func datafile funcfile x1 .. xN transform
     case PrimType::BRTDfunc: return 9;   // 6 colours, 3 brtd functions, funcfile
+    case PrimType::Prism1: return 4;     // coef dx dy dz funcfile transform
+    case PrimType::Prism2: return 8;     // coef1 dx1 dy1 dz1 coef2 dx2 dy2 dz2 funcfile
     default: return 1;                   // func funcfile transform
     }
 }
@@ -106,6 +108,8 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
         case PrimType::Metdata:
         case PrimType::Transdata: r.kind = Kind::Data; break;
         case PrimType::BRTDfunc: r.kind = Kind::Brtd; break;
+        case PrimType::Prism1:
+        case PrimType::Prism2: r.kind = Kind::Prism; break;
         default: continue;
         }
         r.prim = int32_t(i);
@@ -129,7 +133,10 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
         r.toObject = r.forward.inverse();
         r.scale = r.forward.scale;
 
-        int nexpr = r.kind == Kind::Aniso ? 3 : r.kind == Kind::Brtd ? 6 : 0;
+        int nexpr = r.kind == Kind::Aniso   ? 3
+                    : r.kind == Kind::Brtd  ? 6
+                    : r.kind == Kind::Prism ? int(ff)
+                                            : 0;
         for (int k = 0; k < nexpr; ++k) {
             if (auto v = number(p.sargs[k])) {
                 r.exprConstant[k] = true;
@@ -173,7 +180,7 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
                 fail(p, "unknown function '" + c.name + "'");
             }
         };
-        if (r.kind != Kind::Aniso)
+        if (r.kind != Kind::Aniso && r.kind != Kind::Prism)
             for (int k = 0; k < (r.kind == Kind::Brtd ? 3 : 1); ++k) resolve(r.fn[k]);
         for (Callable& c : r.coords) resolve(c);
     }
@@ -251,6 +258,30 @@ void MaterialCalcEvaluator::brtdSpecular(Color& reflection, Color& transmission)
                                      : eval_.eval(calc_.program_->expression(rec_->expr[k]));
     reflection = {v[0], v[1], v[2]};
     transmission = {v[3], v[4], v[5]};
+}
+
+Redirection MaterialCalcEvaluator::redirect(int n, const Vec3& toSource) {
+    RP_CHECK(rec_ && rec_->kind == MaterialCalc::Kind::Prism && n >= 0 &&
+             4 * n + 3 < MaterialCalc::Record::kMaxExpr);
+    // DxA..: the direction through the world -> function transform, as D (m_direct.c).
+    ctx_.DA = toVec(rec_->toObject.direction(toArr(toSource)));
+    eval_.setRay(ctx_);
+    long before = eval_.mathErrors();
+    double v[4];
+    for (int k = 0; k < 4; ++k) {
+        int i = 4 * n + k;
+        v[k] = rec_->exprConstant[i] ? rec_->exprValue[i]
+                                     : eval_.eval(calc_.program_->expression(rec_->expr[i]));
+    }
+    Redirection r;
+    if (eval_.mathErrors() != before) return r;  // m_direct.c: "compute error"
+    Vec3 d = toVec(rec_->forward.direction({v[1], v[2], v[3]}));
+    double len = length(d);
+    if (!(len > 0) || !std::isfinite(len) || !std::isfinite(v[0])) return r;
+    r.coef = v[0];
+    r.dir = d / len;
+    r.ok = true;
+    return r;
 }
 
 double MaterialCalcEvaluator::call(const MaterialCalc::Callable& c, std::span<const double> args) {

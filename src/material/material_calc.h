@@ -1,7 +1,8 @@
 // The .cal side of the function-driven materials, compiled once per scene: the u
 // orientation of plastic2/metal2/trans2 (aniso.c), the specular function or data file
 // of plasfunc/metfunc/transfunc/plasdata/metdata/transdata (m_brdf.c m_brdf2), and the
-// ideal specular colours and directional-diffuse functions of BRTDfunc (m_brdf.c m_brdf).
+// ideal specular colours and directional-diffuse functions of BRTDfunc (m_brdf.c m_brdf),
+// and the coefficients and directions of prism1/prism2 (m_direct.c).
 // material.h stays free of calc/: the renderer evaluates these per hit and hands the
 // results in through SurfacePoint (uDir, brtdSpecular..., directional).
 #pragma once
@@ -14,6 +15,7 @@
 
 #include "calc/data_file.h"
 #include "calc/program.h"
+#include "material/material.h"
 #include "material/pattern.h"
 #include "scene/primitive.h"
 #include "scene/xform.h"
@@ -44,7 +46,7 @@ public:
 
 private:
     friend class MaterialCalcEvaluator;
-    enum class Kind : uint8_t { Aniso, Func, Data, Brtd };
+    enum class Kind : uint8_t { Aniso, Func, Data, Brtd, Prism };
 
     // A function named in a string argument, called with the light direction: a user
     // or builtin function, a variable (RADIANCE's funvalue accepts one: it ignores the
@@ -65,9 +67,11 @@ private:
         Transform forward;   // function space -> world
         double scale = 1;    // forward scale (S)
         std::vector<double> rargs;
-        int expr[6] = {-1, -1, -1, -1, -1, -1};  // aniso: ux uy uz; BRTDfunc: 6 colours
-        bool exprConstant[6] = {false, false, false, false, false, false};
-        double exprValue[6] = {0, 0, 0, 0, 0, 0};
+        // aniso: ux uy uz; BRTDfunc: 6 colours; prism1: coef dx dy dz; prism2: two sets
+        static constexpr int kMaxExpr = 8;
+        int expr[kMaxExpr] = {-1, -1, -1, -1, -1, -1, -1, -1};
+        bool exprConstant[kMaxExpr] = {};
+        double exprValue[kMaxExpr] = {};
         Callable fn[3];                 // func/data: fn[0]; BRTDfunc: rbrtd gbrtd bbrtd
         std::vector<Callable> coords;   // data types: x1 .. xN
         std::shared_ptr<const calc::DataFile> data;
@@ -109,6 +113,12 @@ public:
     // `omega` is the source's solid angle (RADIANCE passes it; 0 when unknown). A math
     // error (division by zero, ...) gives zero, as m_brdf.c's "compute error".
     Color directional(const Vec3& toLight, double omega = 0);
+
+    // prism1/prism2: redirection `n` (0, or 1 for prism2) at the hit, m_direct.c: DxA DyA
+    // DzA are the unit world direction `toSource` as the functions see directions (zero:
+    // the ray is not aimed at a source); the coefficient, and the direction through the
+    // forward transform, made unit. Not ok after a math error or for a zero direction.
+    Redirection redirect(int n, const Vec3& toSource);
 
 private:
     double call(const MaterialCalc::Callable& c, std::span<const double> args);

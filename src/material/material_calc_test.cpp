@@ -1,6 +1,7 @@
 // Function-driven materials: plastic2's u orientation through the record's transform,
 // plasfunc/metfunc/transfunc/plasdata specular functions and BRTDfunc's colours and
-// directional-diffuse functions weighted as m_brdf.c does, and errors at the record.
+// directional-diffuse functions weighted as m_brdf.c does, prism1/prism2 redirections
+// (DxA DyA DzA, the transform), and errors at the record.
 #include "material/material_calc.h"
 
 #include <gtest/gtest.h>
@@ -318,6 +319,50 @@ TEST(MaterialCalcErrors, NameTheRecordsFileAndLine) {
                 5, "unknown function 'nob'", "br(a, b, c, d) = 1;\n");
     expectError(lead + "void plasdata pd\n4 d none.dat . cz\n0\n4 .5 .5 .5 .2\n", 5, "none.dat");
     expectError(lead + "void plastic2 a\n5 1 0 0 . -rz\n0\n6 .5 .5 .5 .05 .1 .2\n", 5, "");
+}
+
+TEST(MaterialCalc, PrismRedirectionsSeeDxAAndTheTransform) {
+    Fixture f;
+    // Function space is world turned by -rz 90: world +y is function +x. Redirection 1
+    // is the ray direction itself; redirection 2 turns it to function +x (world +y),
+    // with the coefficient telling DxA (world +x is function -y) from none.
+    f.write("p.cal",
+            "c1 = A1; x1 = Dx; y1 = Dy; z1 = Dz;\n"
+            "c2 = if(DyA*DyA - .5, -DyA, A2); x2 = 2; y2 = 0; z2 = 0;\n");
+    f.load("void prism2 p 11 c1 x1 y1 z1 c2 x2 y2 z2 p.cal -rz 90 0 2 .7 .3\n");
+    const Vec3 d = normalize(Vec3{0.3, 0.4, -1});
+    f.hit("p", d);
+    Redirection r1 = f.eval->redirect(0, {});
+    ASSERT_TRUE(r1.ok);
+    EXPECT_NEAR(r1.coef, 0.7, kEps);
+    EXPECT_NEAR(length(r1.dir - d), 0, 1e-9);
+    Redirection r2 = f.eval->redirect(1, {});
+    ASSERT_TRUE(r2.ok);
+    EXPECT_NEAR(r2.coef, 0.3, kEps);
+    EXPECT_NEAR(length(r2.dir - Vec3{0, 1, 0}), 0, 1e-9);  // made unit, back in world
+    EXPECT_NEAR(f.eval->redirect(1, {1, 0, 0}).coef, 1, kEps);  // DyA = -1
+}
+
+TEST(MaterialCalc, PrismErrorsAtTheRecord) {
+    Fixture f;
+    try {
+        f.load("\nvoid prism1 p 5 coef dx dy dz nofile.cal 0 0\n");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("c.rad:2: prism1 'p'"), std::string::npos) << e.what();
+    }
+    // An undefined name is reported when first evaluated, at the record's line, as the
+    // calc module does for every material (RADIANCE reports it at evaluation too).
+    f.load("void prism1 p 5 nocoef dx dy dz . 0 0\n");
+    f.hit("p");
+    try {
+        f.eval->redirect(0, {});
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("c.rad:1: undefined variable 'nocoef'"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 }  // namespace rp::material

@@ -233,13 +233,15 @@ MaterialParams makeMaterial(const Primitive& p) {
         return makeFunc(p);
     case PrimType::BRTDfunc:
         return makeBrtd(p);
+    case PrimType::Prism1:
+    case PrimType::Prism2:
+        // The expressions and the function file are checked by MaterialCalc at load.
+        return PrismParams{p.type == PrimType::Prism2 ? 2 : 1};
     case PrimType::Mist:
     case PrimType::BSDF:
     case PrimType::ABSDF:
     case PrimType::Ashik2:
     case PrimType::WGMDfunc:
-    case PrimType::Prism1:
-    case PrimType::Prism2:
         throw notSupportedYet(p.loc, std::string(primTypeName(p.type)) + " material");
     default:
         fail(p, "not a material");

@@ -150,6 +150,20 @@ TEST(MaterialParams, NotSupportedYet) {
                                       std::string(c.name));
 }
 
+TEST(MaterialParams, PrismsCountTheirRedirections) {
+    // The expressions and the function file are MaterialCalc's (checked at load there).
+    EXPECT_EQ(as<PrismParams>(makeMaterial(prim(PrimType::Prism1, {},
+                                                {"coef1", "dx1", "dy1", "dz1", "p.cal"})))
+                  .redirections,
+              1);
+    EXPECT_EQ(as<PrismParams>(makeMaterial(prim(PrimType::Prism2, {1.52},
+                                                {"c1", "x1", "y1", "z1", "c2", "x2", "y2",
+                                                 "z2", "p.cal", "-rz", "90"})))
+                  .redirections,
+              2);
+    EXPECT_FALSE(storesPhotons(makeMaterial(prim(PrimType::Prism1, {}, {"1", "0", "0", "1", "."}))));
+}
+
 TEST(MaterialParams, NotAMaterial) {
     expectError(prim(PrimType::Polygon, {0, 0, 0, 1, 0, 0, 0, 1, 0}, {}, 50), "not a material");
 }

@@ -1,6 +1,7 @@
 // Ideal specular families in both directions: mirror (m_mirror.c), thin glass (glass.c)
-// and dielectric/interface (dielectric.c), with photon counterparts from pmapmat.c.
-// Virtual light sources through mirrors are not here (photon mapping disables them).
+// and dielectric/interface (dielectric.c), with photon counterparts from pmapmat.c; the
+// non-source rays of prism1/prism2 (m_direct.c). Virtual light sources through mirrors
+// and prisms are not here (render/source_list.h; photon mapping disables them).
 #include <cmath>
 
 #include "material/detail.h"
@@ -20,6 +21,21 @@ Vec3 mirrorDir(const SurfacePoint& sp) {
     return normalize(reflect(sp.dir, sp.geomNormal));
 }
 }  // namespace
+
+// --- prism1, prism2 -----------------------------------------------------------------------
+
+// m_direct.c for a ray not aimed at a source: each redirection continues the ray in its
+// direction with its (grey) coefficient, a transmitted ray. No pattern applies and the
+// surface takes neither direct nor ambient light.
+BackwardResult shadePrism(const PrismParams& m, const SurfacePoint& sp) {
+    BackwardResult r;
+    if (!sp.redirections) return r;
+    for (int k = 0; k < m.redirections; ++k) {
+        const Redirection& d = (*sp.redirections)[size_t(k)];
+        if (d.ok) r.add(makeRay(d.dir, Color::grey(d.coef), ScatterKind::SpecularTransmission));
+    }
+    return r;
+}
 
 // --- mirror ------------------------------------------------------------------------------
 

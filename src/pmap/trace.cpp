@@ -105,6 +105,11 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
         if (m == kVoid) continue;  // void: photons pass (tracePhoton's OVOID transfer)
         const Primitive& mat = prims[size_t(m)];
         info.params = material::makeMaterial(mat);
+        // RADIANCE's photon tracer has no prism1/prism2 scattering (pmapmat.c leaves them
+        // to its default, an error); we say so at the material's line.
+        if (std::holds_alternative<material::PrismParams>(info.params))
+            throw notSupportedYet(mat.loc, std::string(primTypeName(mat.type)) +
+                                               " material in photon maps");
         info.isLight = std::holds_alternative<material::LightParams>(info.params);
         info.antimatter = mat.type == PrimType::Antimatter;
         info.sensor = info.antimatter && sensors.count(mat.name) > 0;

@@ -1,6 +1,6 @@
 // The direct calculation: candidate samples of every source, RADIANCE's sorted shadow
 // test with the -dt threshold and -dc certainty, and shadow paths through transmitting
-// surfaces and relaying mirrors (see direct.h). The source list is source_list.h and
+// surfaces and relaying mirrors and prisms (see direct.h). The source list is source_list.h and
 // the subdivision source_sampling.h.
 #include "render/direct.h"
 
@@ -20,9 +20,9 @@ struct Candidate {
     SourceSample sample;  // toward the real source, from the apparent origin
     Vec3 toLight;         // unit direction leaving the shaded point
     Color coef;           // coefficient(toLight, omega) * omega
-    Color estimate;       // coef * unoccluded radiance (mirrors included)
+    Color estimate;       // coef * unoccluded radiance (relays included)
     double brt = 0;       // brightness of estimate (sort key)
-    uint32_t crossings = 0;  // first index into the mirror crossing points
+    uint32_t crossings = 0;  // first index into the relay crossing points
 };
 
 constexpr int kMaxShadowSurfaces = 64;  // transmitting surfaces crossed per leg at most
@@ -35,15 +35,17 @@ struct DirectLighting::Impl {
     SourceList list;
 
     // Radiance reaching the shaded point along candidate `c`'s shadow path, zero if
-    // blocked. `crossings` are the points where the path meets the mirrors (virtual).
+    // blocked. `crossings` are the points where the path meets the relays (virtual).
     Color trace(const DirectPoint& at, const Candidate& c, const Vec3* crossings,
                 ShadowOracle& oracle) const;
 };
 
 DirectLighting::DirectLighting(const Scene& scene, const SceneGeometry& geometry,
-                               const DirectOptions& options, bool virtualSources)
-    : impl_(std::make_unique<Impl>(
-          Impl{geometry, options, buildSourceList(scene, geometry, options, virtualSources)})) {}
+                               const DirectOptions& options, bool virtualSources,
+                               const RedirectFunction& redirect)
+    : impl_(std::make_unique<Impl>(Impl{
+          geometry, options,
+          buildSourceList(scene, geometry, options, virtualSources, redirect)})) {}
 
 DirectLighting::~DirectLighting() = default;
 
@@ -73,34 +75,47 @@ bool DirectLighting::isDistantSource(int32_t source) const {
 Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
                                   const Vec3* crossings, ShadowOracle& oracle) const {
     const DirectSource& src = list.sources[size_t(c.source)];
-    const size_t legs = src.mirrors.size() + 1;
+    const size_t legs = src.relays.size() + 1;
     Vec3 dir = c.toLight;
     Ray ray = at.hit ? spawnRay(*at.hit, dir) : Ray{at.point, dir, HUGE_VAL};
     // How far spawn offsets may have moved the ray off the straight line to the goal.
     double shift = at.hit ? at.hit->offset : 0;
     Color through{1, 1, 1};
+    // After a prism the ray goes where the prism's functions send it (m_direct.c), not
+    // necessarily through the sample: it must meet the source itself (a distant one
+    // within its disk, RADIANCE sourcehit), wherever that is.
+    bool redirected = false;
     for (size_t leg = 0; leg < legs; ++leg) {
         const bool last = leg + 1 == legs;
         const bool escape = last && src.distant();
+        const bool anywhere = last && redirected;
         const Vec3& goal = last ? c.sample.target : crossings[leg];
+        const RelayPlane* relay = last ? nullptr : &list.relays[size_t(src.relays[leg].relay)];
         bool advanced = false;
         for (int guard = 0; guard < kMaxShadowSurfaces && !advanced; ++guard) {
-            double remaining = escape ? HUGE_VAL : length(goal - ray.origin);
-            // Slightly past the goal: the source (or mirror) itself is the last thing
-            // the ray may reach; what lies behind it must not count. A mirror is reached
+            double remaining = escape || anywhere ? HUGE_VAL : length(goal - ray.origin);
+            // Slightly past the goal: the source (or relay) itself is the last thing
+            // the ray may reach; what lies behind it must not count. A relay is reached
             // where the ray meets its plane, wherever offsets moved the origin.
-            if (!last) {
-                const MirrorPlane& m = list.mirrors[size_t(src.mirrors[leg])];
-                double denom = dot(m.region.normal, ray.dir);
-                if (denom != 0) remaining = -m.region.signedDistance(ray.origin) / denom;
+            if (relay) {
+                double denom = dot(relay->region.normal, ray.dir);
+                if (denom != 0) remaining = -relay->region.signedDistance(ray.origin) / denom;
                 if (!(remaining > 0)) return {};
             }
-            ray.tmax = escape ? HUGE_VAL
-                              : remaining * (1 + 1e-6) + 2 * shift + 1e-9 * maxAbs(goal);
+            ray.tmax = escape || anywhere
+                           ? HUGE_VAL
+                           : remaining * (1 + 1e-6) + 2 * shift + 1e-9 * maxAbs(goal);
             std::optional<Hit> hit = oracle.closestHit(ray);
             if (!hit) {
-                if (!last) return {};  // grazed past the mirror's edge
-                if (escape) return through * oracle.distantRadiance(src.light.shapeIndex, dir);
+                if (!last) return {};  // grazed past the relay's edge
+                if (escape) {
+                    if (redirected) {
+                        const DistantSource& d = geometry.sources()[size_t(src.light.shapeIndex)];
+                        if (2 * kPi * (1 - dot(d.dir, dir)) > d.solidAngle) return {};
+                    }
+                    return through * oracle.distantRadiance(src.light.shapeIndex, dir);
+                }
+                if (anywhere) return {};
                 // Reached the target although the accelerator did not report the
                 // (grazed) source surface: it is there by construction.
                 ShadowEvent ev = oracle.event(
@@ -108,11 +123,21 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
                     dir);
                 return ev.kind == ShadowEvent::Kind::Emit ? through * ev.colour : Color{};
             }
-            if (!last && hit->prim == list.mirrors[size_t(src.mirrors[leg])].prim) {
-                ShadowEvent ev = oracle.event(*hit, dir);
-                if (ev.kind != ShadowEvent::Kind::Reflect) return {};
-                through *= ev.colour;
-                dir = list.mirrors[size_t(src.mirrors[leg])].reflectDir(dir);
+            if (relay && hit->prim == relay->prim) {
+                const RelayStep& step = src.relays[leg];
+                if (relay->isPrism()) {
+                    material::Redirection r =
+                        oracle.redirect(*hit, dir, step.projection, step.toTarget(hit->point));
+                    if (!r.ok || !(r.coef > 0)) return {};
+                    through *= Color::grey(r.coef);
+                    dir = r.dir;
+                    redirected = true;
+                } else {
+                    ShadowEvent ev = oracle.event(*hit, dir);
+                    if (ev.kind != ShadowEvent::Kind::Reflect) return {};
+                    through *= ev.colour;
+                    dir = relay->reflectDir(dir);
+                }
                 ray = spawnRay(*hit, dir);
                 shift = hit->offset;
                 advanced = true;
@@ -122,7 +147,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
             if (last && !escape && hit->prim == src.light.prim)
                 return ev.kind == ShadowEvent::Kind::Emit ? through * ev.colour : Color{};
             // Glass and trans pass light on; anything else (an opaque surface, another
-            // source, a mirror not on this path) blocks it.
+            // source, a relay not on this path) blocks it.
             if (ev.kind != ShadowEvent::Kind::Transmit) return {};
             through *= ev.colour;
             if (through.isBlack()) return {};
@@ -150,35 +175,47 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
 
     for (size_t si = 0; si < list.sources.size(); ++si) {
         const DirectSource& src = list.sources[si];
-        // Virtual sources: the point must be on the mirror's reflecting side, and the
-        // source is sampled from the point's mirror image (virtuals.c).
+        // Virtual sources: the point must be on a mirror's reflecting side, and the
+        // source is sampled from the point's preimage through the relays (virtuals.c).
         Vec3 from = at.point;
         if (src.isVirtual()) {
-            const MirrorPlane& m1 = list.mirrors[size_t(src.mirrors.front())];
-            if (m1.region.signedDistance(at.point) * src.mirrorSide <= 0) continue;
-            for (int32_t mi : src.mirrors) from = list.mirrors[size_t(mi)].reflectPoint(from);
+            const RelayPlane& m1 = list.relays[size_t(src.relays.front().relay)];
+            if (src.mirrorSide != 0 &&
+                m1.region.signedDistance(at.point) * src.mirrorSide <= 0)
+                continue;
+            for (const RelayStep& st : src.relays)
+                from = st.unproject(list.relays[size_t(st.relay)].region, from);
         }
         samples.clear();
         sampleSource(list, src, shapes, from, im.options, at.weight, rng, samples);
-        for (const SourceSample& s : samples) {
-            // Direction leaving the point: the sample direction reflected back through
-            // the mirrors, last to first.
+        for (SourceSample& s : samples) {
+            // Direction leaving the point: the sample direction through the relays'
+            // maps, last to first. A local sample's solid angle changes by the maps'
+            // Jacobian |det L| / |L u|^3 (1 for mirrors); a distant source keeps its
+            // solid angle, as RADIANCE's virtual sources keep ss2.
             Vec3 d = s.dir;
-            for (size_t k = src.mirrors.size(); k-- > 0;)
-                d = list.mirrors[size_t(src.mirrors[k])].reflectDir(d);
+            for (size_t k = src.relays.size(); k-- > 0;) {
+                const RelayStep& st = src.relays[k];
+                const PlanarRegion& r = list.relays[size_t(st.relay)].region;
+                Vec3 w = st.projectDir(r, d);
+                double len = length(w);
+                if (!(len > 0)) break;
+                if (!src.distant()) s.omega *= std::fabs(st.det(r)) / (len * len * len);
+                d = w / len;
+            }
             if (!at.transmits && dot(d, at.normal) <= 0) continue;
             Candidate c;
             c.source = int32_t(si);
             c.sample = s;
             c.toLight = d;
             c.crossings = uint32_t(crossings.size());
-            // The path must cross each mirror inside its polygon (RADIANCE checks the
-            // virtual source's ray against the mirror object).
+            // The path must cross each relay inside its polygon (RADIANCE traces the
+            // virtual source's ray into the relay object).
             Color mirrorColour{1, 1, 1};
             Vec3 p = at.point, dir = d;
             bool ok = true;
-            for (int32_t mi : src.mirrors) {
-                const MirrorPlane& m = list.mirrors[size_t(mi)];
+            for (const RelayStep& st : src.relays) {
+                const RelayPlane& m = list.relays[size_t(st.relay)];
                 double denom = dot(m.region.normal, dir);
                 double t = denom != 0 ? -m.region.signedDistance(p) / denom : -1;
                 if (!(t > 0)) {
@@ -191,7 +228,21 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
                     ok = false;
                     break;
                 }
-                ShadowEvent ev = oracle.event(mirrorSurfaceHit(m, x, dir, t), dir);
+                Hit h = relaySurfaceHit(m, x, dir, t);
+                if (m.isPrism()) {
+                    material::Redirection r =
+                        oracle.redirect(h, dir, st.projection, st.toTarget(x));
+                    if (!r.ok || !(r.coef > 0)) {
+                        ok = false;
+                        break;
+                    }
+                    mirrorColour *= Color::grey(r.coef);
+                    crossings.push_back(x);
+                    p = x;
+                    dir = r.dir;
+                    continue;
+                }
+                ShadowEvent ev = oracle.event(h, dir);
                 if (ev.kind != ShadowEvent::Kind::Reflect) {
                     ok = false;
                     break;

@@ -1,9 +1,10 @@
 // The direct calculation of the backward pass (RADIANCE source.c direct(), srcsamp.c,
-// virtuals.c, m_mirror's virtual sources): the scene's light sources as the renderer sees
-// them, their subdivision into samples at -ds resolution with -dj jitter, the sorted
-// source test with the -dt threshold and -dc certainty, and virtual sources relayed by
-// planar mirrors (-dr, -dp). Shadow rays are traced by the caller's ShadowOracle, which
-// knows materials (glass and trans pass light, mirrors reflect it, sources emit).
+// virtuals.c, m_mirror's and m_direct's virtual sources): the scene's light sources as
+// the renderer sees them, their subdivision into samples at -ds resolution with -dj
+// jitter, the sorted source test with the -dt threshold and -dc certainty, and virtual
+// sources relayed by planar mirrors and prism1/prism2 surfaces (-dr, -dp). Shadow rays
+// are traced by the caller's ShadowOracle, which knows materials (glass and trans pass
+// light, mirrors reflect it, prisms redirect it, sources emit).
 #pragma once
 
 #include <cstdint>
@@ -46,6 +47,13 @@ public:
     // Radiance of distant source `source` (index into SceneGeometry::sources()) seen in
     // unit direction `dir` (patterns applied); zero if it is not a light source.
     virtual Color distantRadiance(int32_t source, const Vec3& dir) = 0;
+    // Redirection `projection` of the prism1/prism2 surface at `hit` for a shadow ray
+    // travelling `dir` toward a virtual source, DxA DyA DzA aimed along `toSource`
+    // (m_direct.c). The default knows no prisms.
+    virtual material::Redirection redirect(const Hit& hit, const Vec3& dir, int projection,
+                                           const Vec3& toSource) {
+        return {};
+    }
 };
 
 // The point being shaded.
@@ -78,6 +86,9 @@ using DirectCoefficient = std::function<Color(const Vec3& toLight, double omega)
 //  - the -dp pretest is geometric (opaque surfaces only; see source_list.h);
 //  - spotlights: the cone cut-off is applied; the focal length (a virtual emission point
 //    behind the spot) is not;
+//  - a local source seen through a prism: sampled through the prism's affine map, its
+//    samples' solid angles scaled by the map's Jacobian (RADIANCE transforms the source's
+//    axes but keeps its area); virtual sources are not given RADIANCE's spot cones;
 //  - a shadow ray that reaches its target without the accelerator reporting the source
 //    (grazing) is given the source's emission there, since the target is on it.
 class DirectLighting {
@@ -86,11 +97,12 @@ public:
     // material is light, spotlight, illum or glow with positive radius (local glows
     // only illuminate within their radius), and distant `source`s with light-type
     // materials (a glow on a `source`, such as a sky, is left to the ambient calculation:
-    // RADIANCE's SSKIP). Zero-radiance sources are dropped. With -dr > 0 and mirrors in
-    // the scene, virtual sources are added (virtuals.c) unless `virtualSources` is false
-    // (photon-map mode switches them off).
+    // RADIANCE's SSKIP). Zero-radiance sources are dropped. With -dr > 0 and mirrors (or,
+    // given `redirect`, prisms) in the scene, virtual sources are added (virtuals.c)
+    // unless `virtualSources` is false (photon-map mode switches them off).
     DirectLighting(const Scene& scene, const SceneGeometry& geometry,
-                   const DirectOptions& options, bool virtualSources = true);
+                   const DirectOptions& options, bool virtualSources = true,
+                   const RedirectFunction& redirect = {});
     ~DirectLighting();
 
     // Direct contribution at `at`: sum over sources and their samples of
@@ -107,7 +119,7 @@ public:
     bool isDistantSource(int32_t source) const;
 
     size_t sourceCount() const;         // real sources
-    size_t virtualSourceCount() const;  // relayed by mirrors
+    size_t virtualSourceCount() const;  // relayed by mirrors and prisms
 
     // The list itself (real sources first, then virtual ones), for diagnostics and tests.
     const SourceList& sourceList() const;

@@ -1,8 +1,8 @@
 // The direct calculation against closed-form irradiance: parallel squares (form factor),
 // spheres, disks, distant sources, occluders, glass, spotlights, the -dt/-dc source test
-// and mirror-relayed virtual sources. The oracle here is a stand-in for the renderer:
-// light materials emit their radiance, glass transmits 0.9, mirrors reflect 0.9, anything
-// else is opaque.
+// and mirror- and prism-relayed virtual sources. The oracle here is a stand-in for the
+// renderer: light materials emit their radiance, glass transmits 0.9, mirrors reflect
+// 0.9, prisms turn light by a fixed angle (TurningFilm), anything else is opaque.
 #include "render/direct.h"
 #include "render/source_sampling.h"
 
@@ -459,6 +459,106 @@ TEST(DirectJitter, StaysWithinTheCell) {
         EXPECT_LE(std::fabs(jittered[i].target.y - centred[i].target.y), 0.0625 / 4 + 1e-12);
         EXPECT_NEAR(jittered[i].omega, centred[i].omega, 1e-12);
     }
+}
+
+// A prism1 film (z = 0) standing in for a prism's functions: it turns light about the x
+// axis by `angle`, the sign following the side the light crosses from, so the reversed
+// ray retraces the path (what virtual sources need); coefficient 0.8, and 0.5 for a
+// second redirection turning the other way.
+struct TurningFilm {
+    double angle = 10 * kPi / 180;
+    std::vector<Vec3> toSource;  // DxA DyA DzA of each redirection of a shadow ray
+    material::Redirection operator()(const Hit&, const Vec3& d, int projection,
+                                     const Vec3& towards) {
+        if (lengthSquared(towards) > 0) toSource.push_back(towards);
+        double a = (d.z < 0 ? angle : -angle) * (projection == 0 ? 1 : -1);
+        material::Redirection r;
+        r.coef = projection == 0 ? 0.8 : 0.5;
+        r.dir = {d.x, d.y * std::cos(a) - d.z * std::sin(a), d.y * std::sin(a) + d.z * std::cos(a)};
+        r.ok = true;
+        return r;
+    }
+};
+
+class FilmOracle : public TestOracle {
+public:
+    FilmOracle(const Scene& scene, const SceneGeometry& geo, TurningFilm& film)
+        : TestOracle(scene, geo), film_(film) {}
+    material::Redirection redirect(const Hit& hit, const Vec3& dir, int projection,
+                                   const Vec3& toSource) override {
+        return film_(hit, dir, projection, toSource);
+    }
+
+private:
+    TurningFilm& film_;
+};
+
+const std::string kSunAndFilm =
+    "void light sun 0 0 3 1000 1000 1000\nsun source s 0 0 4 0 -0.5 0.8660254 0.5\n"
+    "void prism1 film 5 c dx dy dz f.cal 0 0\n"
+    "film polygon panel 0 0 12 -50 -50 0 50 -50 0 50 50 0 -50 50 0\n";
+
+TEST(DirectVirtual, DistantSourceThroughAPrism) {
+    Fixture f(kSunAndFilm);
+    TurningFilm film;
+    RedirectFunction redirect = [&film](const Hit& h, const Vec3& d, int k, const Vec3& a) {
+        return film(h, d, k, a);
+    };
+    DirectOptions opt;
+    DirectLighting direct(f.scene, f.geo, opt, true, redirect);
+    ASSERT_EQ(direct.virtualSourceCount(), 1u);
+    // Below the film, facing up: the sun only through its image, the light arriving
+    // turned by the film, with the sun's solid angle (as RADIANCE's virtual sources).
+    const Vec3 sun = normalize(Vec3{0, -0.5, 0.8660254});
+    material::Redirection through = film(Hit{}, -sun, 0, {});
+    const Vec3 n{0, 0, 1};
+    double omega = 2 * kPi * (1 - std::cos(0.25 * kPi / 180));
+    double exact = 0.8 * 1000 * omega * dot(-through.dir, n);
+    FilmOracle oracle(f.scene, f.geo, film);
+    DirectPoint at;
+    at.point = {0, 0, -1};
+    at.normal = at.geomNormal = n;
+    Rng rng(1, RngDomain::Test, 0);
+    film.toSource.clear();
+    EXPECT_NEAR(direct.compute(at, cosine(n), oracle, rng).r, exact, 1e-6 * exact);
+    // DxA DyA DzA aim at the sun (m_direct.c: the source the virtual one was made from).
+    ASSERT_FALSE(film.toSource.empty());
+    for (const Vec3& a : film.toSource) EXPECT_NEAR(dot(a, sun), 1, 1e-12);
+    // Without the prism's functions there is no image and the film blocks the sun.
+    EXPECT_EQ(f.irradiance(opt, {0, 0, -1}, n).r, 0);
+    // Photon-map mode: no virtual sources.
+    EXPECT_EQ(DirectLighting(f.scene, f.geo, opt, false, redirect).virtualSourceCount(), 0u);
+    // Above the film the sun is seen directly, not its image.
+    at.point = {0, 0, 1};
+    double sunDirect = 1000 * omega * dot(sun, n);
+    EXPECT_NEAR(direct.compute(at, cosine(n), oracle, rng).r, sunDirect, 1e-6 * sunDirect);
+}
+
+TEST(DirectVirtual, Prism2MakesAnImagePerRedirection) {
+    std::string text = kSunAndFilm;
+    text.replace(text.find("prism1 film 5 c dx dy dz"), 24, "prism2 film 9 c dx dy dz c dx dy dz");
+    Fixture f(text);
+    TurningFilm film;
+    RedirectFunction redirect = [&film](const Hit& h, const Vec3& d, int k, const Vec3& a) {
+        return film(h, d, k, a);
+    };
+    DirectOptions opt;
+    DirectLighting direct(f.scene, f.geo, opt, true, redirect);
+    ASSERT_EQ(direct.virtualSourceCount(), 2u);
+    const Vec3 sun = normalize(Vec3{0, -0.5, 0.8660254});
+    const Vec3 n{0, 0, 1};
+    double omega = 2 * kPi * (1 - std::cos(0.25 * kPi / 180));
+    double exact = 0;
+    for (int k = 0; k < 2; ++k) {
+        material::Redirection r = film(Hit{}, -sun, k, {});
+        exact += r.coef * 1000 * omega * dot(-r.dir, n);
+    }
+    FilmOracle oracle(f.scene, f.geo, film);
+    DirectPoint at;
+    at.point = {0, 0, -1};
+    at.normal = at.geomNormal = n;
+    Rng rng(1, RngDomain::Test, 0);
+    EXPECT_NEAR(direct.compute(at, cosine(n), oracle, rng).r, exact, 1e-6 * exact);
 }
 
 }  // namespace

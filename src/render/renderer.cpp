@@ -79,8 +79,12 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
       photons(o.photonMaps, o.photonMaxRadius, s),
       ambientOptions(photonAmbientOptions(o, photons)),
       // RADIANCE compat (source.c): in photon-map mode virtual sources are not made;
-      // mirror-reflected light then arrives through caustic photons.
-      direct(s, g, o.direct, o.photonMaps.empty()),
+      // light from mirrors (and prisms) then arrives through caustic photons.
+      direct(s, g, o.direct, o.photonMaps.empty(),
+             [this](const Hit& hit, const Vec3& dir, int projection, const Vec3& toSource) {
+                 material::MaterialCalcEvaluator ev(materialCalc);
+                 return evalRedirect(scene, materialCalc, ev, hit, dir, projection, toSource);
+             }),
       ambient(ambientOptions, g.sceneCube().size, s, o.limits.minWeight) {
     materials.resize(s.prims.size());
     for (size_t i = 0; i < s.prims.size(); ++i)

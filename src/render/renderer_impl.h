@@ -73,6 +73,8 @@ public:
     std::optional<Hit> closestHit(const Ray& ray) override;
     ShadowEvent event(const Hit& hit, const Vec3& dir) override;
     Color distantRadiance(int32_t source, const Vec3& dir) override;
+    material::Redirection redirect(const Hit& hit, const Vec3& dir, int projection,
+                                   const Vec3& toSource) override;
     // HemisphereTracer
     Sample trace(const Vec3& origin, const Vec3& dir, int ambientLevel,
                  double weight) override;
@@ -90,6 +92,9 @@ public:
     const Impl& impl;
     material::SurfaceChainEvaluator chains;
     material::MaterialCalcEvaluator materialCalc;
+    // prism1/prism2 functions, apart from materialCalc: shadow rays through prisms are
+    // traced while a function-driven material's hit is set there.
+    material::MaterialCalcEvaluator prismCalc;
     std::function<Color(const Vec3&)> directional;  // materialCalc.directional, for evaluate
     Rng rng{0, RngDomain::Sampling, 0};
     std::vector<TracedRay>* tree = nullptr;
@@ -128,6 +133,13 @@ private:
     bool shadowBlockedByTransparent_ = false;
     bool shadowInPhotonMap(const RayState& state) const;
 };
+
+// m_direct.c: redirection `projection` of the prism1/prism2 material of the surface at
+// `hit` for a ray travelling `dir`, DxA DyA DzA along `toSource` (zero: none), evaluated
+// with `ev` (an evaluator of `calc`). Not ok if the surface's material is no prism.
+material::Redirection evalRedirect(const Scene& scene, const material::MaterialCalc& calc,
+                                   material::MaterialCalcEvaluator& ev, const Hit& hit,
+                                   const Vec3& dir, int projection, const Vec3& toSource);
 
 // The record named `name` most recently defined before record `before` (RADIANCE
 // lastmod); kVoid for "void" or when none.

@@ -4,6 +4,7 @@
 // (ambient) light. Shadow rays and hemisphere samples are in shadow.cpp.
 #include <cmath>
 
+#include "light/light_sources.h"
 #include "render/renderer_impl.h"
 #include "util/error.h"
 
@@ -36,8 +37,24 @@ material::PatternPoint patternPoint(const Hit& hit, const Vec3& dir) {
 
 }  // namespace
 
+material::Redirection evalRedirect(const Scene& scene, const material::MaterialCalc& calc,
+                                   material::MaterialCalcEvaluator& ev, const Hit& hit,
+                                   const Vec3& dir, int projection, const Vec3& toSource) {
+    int32_t mat = light::findMaterial(scene, hit.prim);
+    if (mat == kVoid || !calc.uses(mat)) return {};
+    const PrimType t = scene.prims[size_t(mat)].type;
+    if (t != PrimType::Prism1 && t != PrimType::Prism2) return {};
+    if (projection > 0 && t != PrimType::Prism2) return {};
+    ev.setHit(mat, patternPoint(hit, dir));
+    return ev.redirect(projection, toSource);
+}
+
 Renderer::Context::Context(const Renderer& r, const Impl& i)
-    : renderer(r), impl(i), chains(i.chains), materialCalc(i.materialCalc) {
+    : renderer(r),
+      impl(i),
+      chains(i.chains),
+      materialCalc(i.materialCalc),
+      prismCalc(i.materialCalc) {
     directional = [this](const Vec3& l) { return materialCalc.directional(l); };
 }
 
@@ -198,7 +215,17 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         return shadeAlternate(ray, hit, state, e.alternate, first, passThrough);
     }
 
-    applyMaterialCalc(layer.material, hit, ray.dir, sp);
+    std::array<material::Redirection, 2> redirections{};
+    if (const auto* prism = std::get_if<material::PrismParams>(&params)) {
+        // m_direct.c: a ray not aimed at a source follows each redirection, DxA DyA DzA
+        // zero. (Shadow rays toward a prism's virtual sources are direct.cpp's.)
+        prismCalc.setHit(layer.material, patternPoint(hit, ray.dir));
+        for (int k = 0; k < prism->redirections; ++k)
+            redirections[size_t(k)] = prismCalc.redirect(k, Vec3{});
+        sp.redirections = &redirections;
+    } else {
+        applyMaterialCalc(layer.material, hit, ray.dir, sp);
+    }
     material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
     if (b.transparent) {
         passThrough = true;

@@ -156,6 +156,12 @@ Color Renderer::Context::sourceRadiance(int32_t modifier, const Hit& at, const V
     return value;
 }
 
+material::Redirection Renderer::Context::redirect(const Hit& hit, const Vec3& dir,
+                                                 int projection, const Vec3& toSource) {
+    return evalRedirect(impl.scene, impl.materialCalc, prismCalc, hit, dir, projection,
+                        toSource);
+}
+
 Color Renderer::Context::distantRadiance(int32_t source, const Vec3& dir) {
     const DistantSource& src = impl.geometry.sources()[size_t(source)];
     Hit at;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "material/material.h"
 
@@ -32,9 +33,9 @@ Vec3 sourceCentre(const light::LightSource& s, const ShapeSet& shapes,
     return {};
 }
 
-// Side (+1/-1) of the mirror from which `src` (real or virtual) can be seen through it,
-// 0 if none: a local source must lie off the plane, a distant one off its direction.
-int reflectingSide(const MirrorPlane& m, const DirectSource& src) {
+// Side (+1/-1) of the relay on which `src` (real or virtual) lies, 0 if none: a local
+// source must lie off the plane, a distant one off its direction.
+int reflectingSide(const RelayPlane& m, const DirectSource& src) {
     double s = src.distant() ? dot(m.region.normal, src.apparentCentre)
                              : m.region.signedDistance(src.apparentCentre);
     double tol = src.distant() ? kFtiny : kFtiny * std::fmax(1.0, maxAbs(src.apparentCentre));
@@ -45,7 +46,7 @@ int reflectingSide(const MirrorPlane& m, const DirectSource& src) {
 // Whether a flat real source emits toward some part of the mirror (its front faces a
 // mirror corner).
 bool facesMirror(const DirectSource& src, const ShapeSet& shapes,
-                 const std::vector<PlanarRegion>& regions, const MirrorPlane& m) {
+                 const std::vector<PlanarRegion>& regions, const RelayPlane& m) {
     Vec3 n;
     if (src.light.shape == light::EmitterShape::Polygon)
         n = regions[size_t(src.region)].normal;
@@ -93,7 +94,7 @@ ModifierSet passableModifiers(const Scene& scene, const ShapeSet& shapes) {
 // mirror sees the real source's centre past opaque surfaces. Sample count: `density`
 // per steradian of the mirror as seen from the source (at least 4, at most 256).
 bool mirrorSeesSource(const SceneGeometry& geometry, const ModifierSet& skip,
-                      const MirrorPlane& m, const DirectSource& src, int side, int density) {
+                      const RelayPlane& m, const DirectSource& src, int side, int density) {
     const PlanarRegion& r = m.region;
     double omega = 2 * kPi;
     if (!src.distant()) {
@@ -118,6 +119,106 @@ bool mirrorSeesSource(const SceneGeometry& geometry, const ModifierSet& skip,
             if (!geometry.occluded(p, dir, tmax, &skip)) return true;
         }
     return false;
+}
+
+// virtuals.c getdisk: a virtual source is relayed again only by a surface on the other
+// side of the relay that made it than where the source appears (the side its light
+// leaves that relay toward).
+bool beyondRelay(const RelayPlane& prev, const DirectSource& base, const RelayPlane& next) {
+    double rd = base.distant() ? dot(prev.region.normal, base.apparentCentre)
+                               : prev.region.signedDistance(base.apparentCentre);
+    double d = prev.region.signedDistance(next.region.centroid);
+    return (d > 0) != (rd > 0);
+}
+
+// The image of source `s` in mirror `mi` (m_mirror.c), if the mirror can relay it.
+std::optional<DirectSource> mirrorImage(const SourceList& list, size_t s, size_t mi) {
+    const DirectSource& base = list.sources[s];
+    const RelayPlane& m = list.relays[mi];
+    // A mirror reflects on its front only (the oracle answers Opaque on its back), so
+    // only sources in front of it are relayed.
+    int side = reflectingSide(m, base);
+    if (side <= 0) return std::nullopt;
+    if (base.isVirtual()) {
+        const RelayPlane& prev = list.relays[size_t(base.relays.front().relay)];
+        if (prev.isPrism()) {
+            if (!beyondRelay(prev, base, m)) return std::nullopt;
+        } else {
+            // The relaying mirror must lie on the side light reaches this one from.
+            double d = m.region.signedDistance(prev.region.centroid);
+            if (d * side <= 0) return std::nullopt;
+        }
+    }
+    RelayStep step;
+    step.relay = int32_t(mi);
+    step.shear = m.region.normal * -2.0;
+    step.target = base.apparentCentre;
+    step.targetDistant = base.distant();
+    DirectSource v = base;
+    v.relays.insert(v.relays.begin(), step);
+    v.mirrorSide = side;
+    v.apparentCentre = base.distant() ? m.reflectDir(base.apparentCentre)
+                                      : m.reflectPoint(base.apparentCentre);
+    return v;
+}
+
+// The image of source `s` through redirection `k` of prism `mi` (m_direct.c dir_proj):
+// the redirection is evaluated for light from the source reaching the prism's centre
+// (DxA DyA DzA zero, as RADIANCE), and the shear maps the source to where it appears
+// along the redirected direction.
+std::optional<DirectSource> prismImage(const SourceList& list, size_t s, size_t mi, int k,
+                                       const RedirectFunction& redirect) {
+    const DirectSource& base = list.sources[s];
+    const RelayPlane& m = list.relays[mi];
+    const Vec3& n = m.region.normal;
+    if (reflectingSide(m, base) == 0) return std::nullopt;
+    if (base.isVirtual() &&
+        !beyondRelay(list.relays[size_t(base.relays.front().relay)], base, m))
+        return std::nullopt;
+    Vec3 centre = m.region.centroid;
+    Vec3 old;
+    double dist = 1;
+    if (base.distant()) {
+        old = -base.apparentCentre;
+    } else {
+        old = centre - base.apparentCentre;
+        dist = length(old);
+        if (!(dist > 0)) return std::nullopt;
+        old = old / dist;
+    }
+    double oldDot = dot(old, n);
+    if (std::fabs(oldDot) <= kFtiny) return std::nullopt;  // parallels the plane
+    Hit at;
+    at.t = dist;
+    at.point = centre;
+    at.normal = n;
+    at.front = oldDot < 0;
+    at.prim = m.prim;
+    at.modifier = m.modifier;
+    Vec3 rel = centre - m.region.origin;
+    at.u = dot(rel, m.region.uAxis);
+    at.v = dot(rel, m.region.vAxis);
+    at.offset = 1e-6 * std::fmax(1.0, maxAbs(centre));
+    material::Redirection r = redirect(at, old, k, Vec3{});
+    if (!r.ok || r.coef <= kFtiny) return std::nullopt;  // insignificant
+    double newDot = dot(r.dir, n);
+    if (std::fabs(newDot) <= kFtiny) return std::nullopt;
+    RelayStep step;
+    step.relay = int32_t(mi);
+    step.projection = k;
+    step.shear = r.dir / newDot - old / oldDot;
+    if ((newDot > 0) != (oldDot > 0)) step.shear -= n * 2.0;  // crossing back: mirrored
+    // A redirection that changes nothing makes no virtual source (makevsrc: no-op).
+    if (maxAbs(step.shear) <= kFtiny) return std::nullopt;
+    step.target = base.apparentCentre;
+    step.targetDistant = base.distant();
+    DirectSource v = base;
+    v.relays.insert(v.relays.begin(), step);
+    v.mirrorSide = 0;
+    v.apparentCentre = base.distant()
+                           ? normalize(step.projectDir(m.region, base.apparentCentre))
+                           : step.project(m.region, base.apparentCentre);
+    return v;
 }
 
 }  // namespace
@@ -173,7 +274,8 @@ PlanarRegion makePlanarRegion(const ShapeSet& shapes, size_t index) {
 }
 
 SourceList buildSourceList(const Scene& scene, const SceneGeometry& geometry,
-                           const DirectOptions& options, bool virtualSources) {
+                           const DirectOptions& options, bool virtualSources,
+                           const RedirectFunction& redirect) {
     SourceList list;
     const ShapeSet& shapes = geometry.shapes();
     list.sourceOfPrim.assign(scene.prims.size(), -1);
@@ -207,50 +309,60 @@ SourceList buildSourceList(const Scene& scene, const SceneGeometry& geometry,
     list.realCount = list.sources.size();
     if (!virtualSources || options.relays <= 0 || list.sources.empty()) return list;
 
-    // Planar mirrors. RADIANCE's m_mirror relays only through flat surfaces; a curved
-    // mirror (sphere, cone) makes no virtual source.
+    // Planar mirrors and prisms. RADIANCE relays only through flat surfaces; a curved
+    // mirror (sphere, cone) makes no virtual source. Prisms need the renderer's functions.
     for (size_t i = 0; i < shapes.polygons.size(); ++i) {
         int32_t mat = light::findMaterial(scene, shapes.polygons[i].prim);
-        if (mat == kVoid || scene.prims[size_t(mat)].type != PrimType::Mirror) continue;
-        MirrorPlane m;
+        if (mat == kVoid) continue;
+        PrimType type = scene.prims[size_t(mat)].type;
+        RelayPlane m;
+        if (type == PrimType::Mirror) {
+            m.kind = RelayPlane::Kind::Mirror;
+        } else if ((type == PrimType::Prism1 || type == PrimType::Prism2) && redirect) {
+            m.kind = RelayPlane::Kind::Prism;
+            m.projections = type == PrimType::Prism2 ? 2 : 1;
+        } else {
+            continue;
+        }
         m.prim = shapes.polygons[i].prim;
         m.modifier = shapes.polygons[i].modifier;
         m.region = makePlanarRegion(shapes, i);
-        if (m.region.area > 0) list.mirrors.push_back(std::move(m));
+        if (m.region.area > 0) list.relays.push_back(std::move(m));
     }
-    if (list.mirrors.empty()) return list;
+    if (list.relays.empty()) return list;
 
     const ModifierSet passable = passableModifiers(scene, shapes);
     // Level by level (virtuals.c addvirtuals): each source of the previous level seen
-    // through each mirror other than the one it was last relayed by.
+    // through each relay other than the one it was last relayed by.
     size_t levelStart = 0, levelEnd = list.sources.size();
     for (int level = 1; level <= options.relays; ++level) {
         for (size_t s = levelStart; s < levelEnd; ++s) {
-            for (size_t mi = 0; mi < list.mirrors.size(); ++mi) {
-                const DirectSource& base = list.sources[s];
-                const MirrorPlane& m = list.mirrors[mi];
-                if (!base.mirrors.empty() && base.mirrors.front() == int32_t(mi)) continue;
-                // A mirror reflects on its front only (the oracle answers Opaque on its
-                // back), so only sources in front of it are relayed.
-                int side = reflectingSide(m, base);
-                if (side <= 0) continue;
-                if (base.mirrors.empty()) {
-                    if (!facesMirror(base, shapes, list.regions, m)) continue;
-                    if (options.pretest > 0 &&
-                        !mirrorSeesSource(geometry, passable, m, base, side, options.pretest))
+            for (size_t mi = 0; mi < list.relays.size(); ++mi) {
+                const RelayPlane& m = list.relays[mi];
+                if (!list.sources[s].relays.empty() &&
+                    list.sources[s].relays.front().relay == int32_t(mi))
+                    continue;
+                for (int k = 0; k < m.projections; ++k) {
+                    std::optional<DirectSource> v =
+                        m.isPrism() ? prismImage(list, s, mi, k, redirect)
+                                    : mirrorImage(list, s, mi);
+                    if (!v) continue;
+                    const DirectSource& base = list.sources[s];
+                    if (!base.isVirtual()) {
+                        if (!facesMirror(base, shapes, list.regions, m)) continue;
+                        int side = reflectingSide(m, base);
+                        if (options.pretest > 0 &&
+                            !mirrorSeesSource(geometry, passable, m, base, side,
+                                              options.pretest))
+                            continue;
+                    }
+                    // A local glow relayed farther than its radius lights nothing
+                    // (makevsrc: SPROX).
+                    if (v->proximity > 0 && !v->distant() &&
+                        length(v->apparentCentre - m.region.centroid) > v->proximity)
                         continue;
-                } else {
-                    // The relaying mirror must lie on the side light reaches this one from.
-                    const MirrorPlane& prev = list.mirrors[size_t(base.mirrors.front())];
-                    double d = m.region.signedDistance(prev.region.centroid);
-                    if (d * side <= 0) continue;
+                    list.sources.push_back(std::move(*v));
                 }
-                DirectSource v = base;
-                v.mirrors.insert(v.mirrors.begin(), int32_t(mi));
-                v.mirrorSide = side;
-                v.apparentCentre = base.distant() ? m.reflectDir(base.apparentCentre)
-                                                  : m.reflectPoint(base.apparentCentre);
-                list.sources.push_back(std::move(v));
             }
         }
         levelStart = levelEnd;

@@ -317,7 +317,7 @@ Hit sourceSurfaceHit(const DirectSource& src, const ShapeSet& shapes,
     return h;
 }
 
-Hit mirrorSurfaceHit(const MirrorPlane& m, const Vec3& p, const Vec3& dir, double t) {
+Hit relaySurfaceHit(const RelayPlane& m, const Vec3& p, const Vec3& dir, double t) {
     Hit h;
     h.t = t;
     h.point = p;

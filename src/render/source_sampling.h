@@ -51,8 +51,8 @@ Hit sourceSurfaceHit(const DirectSource& src, const ShapeSet& shapes,
                      const std::vector<PlanarRegion>& regions, const Vec3& p, const Vec3& dir,
                      double t);
 
-// Same for a point on a planar mirror.
-Hit mirrorSurfaceHit(const MirrorPlane& m, const Vec3& p, const Vec3& dir, double t);
+// Same for a point on a relay (planar mirror or prism).
+Hit relaySurfaceHit(const RelayPlane& m, const Vec3& p, const Vec3& dir, double t);
 
 // Exact solid angle of triangle (a, b, c) seen from `o` (Van Oosterom & Strackee 1983).
 double triangleSolidAngle(const Vec3& o, const Vec3& a, const Vec3& b, const Vec3& c);
