@@ -96,6 +96,11 @@ public:
     // colour of the modifier chain's patterns) give NxP NyP NzP RdotP CrP CgP CbP.
     void setHit(int32_t material, const PatternPoint& at, const Vec3& shadingNormal,
                 const Color& pattern);
+    // The same with the plain normal turned to the ray and no pattern (prisms, whose
+    // functions see no NxP..CbP in RADIANCE).
+    void setHit(int32_t material, const PatternPoint& at) {
+        setHit(material, at, at.rdot < 0 ? -at.normal : at.normal, Color{1, 1, 1});
+    }
 
     // plastic2/metal2/trans2: the u orientation, world space (aniso.c getacoords: the
     // ux uy uz values through the forward transform). Normalised; zero if degenerate or
