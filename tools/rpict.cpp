@@ -18,6 +18,7 @@
 #include "render/photon_lighting.h"
 #include "render/rpict.h"
 #include "render/rpict_options.h"
+#include "render/rpict_run.h"
 #include "render/rpict_tracer.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
@@ -63,6 +64,10 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
     // RADIANCE reads the octree from standard input without a scene argument; we need
     // the scene to be named (use "-" for standard input).
     if (cmd.sceneFiles.empty()) throw rp::InputError("missing scene file");
+    // RADIANCE compat (rpict.1, -S): the views come on standard input, the scene cannot.
+    if (o.sequenceStart > 0 &&
+        std::find(cmd.sceneFiles.begin(), cmd.sceneFiles.end(), "-") != cmd.sceneFiles.end())
+        throw rp::InputError("-S reads views from standard input: the scene must be a file");
     if (o.render.mist.any())
         throw rp::notSupportedYet({}, "global participating medium (-me/-ma/-mg/-ms)");
     // Check the view before the (slow) scene load, as RADIANCE's setview does.
@@ -85,19 +90,22 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
               << std::endl;
         biasReport();
     };
-    std::vector<float> depth;
-    rp::Picture picture;
+    RpictIo io;
+    io.views = &std::cin;
+    io.out = &std::cout;
+    io.commandLine = commandLine;
+    io.frameStarted = [&](int frame, const rp::View& view) {
+        // RADIANCE compat (rpict.c): with -t, each frame is announced with its view.
+        if (o.reportInterval > 0) *diag << "FRAME " << frame << ":" << rp::formatView(view) << std::endl;
+    };
     try {
-        picture = renderPicture(o, rendererPixelTracers(renderer), progress,
-                                o.zFile.empty() ? nullptr : &depth);
+        runRpict(o, rendererPixelTracers(renderer), progress, io);
     } catch (...) {
         renderer.flushAmbientFile();  // keep the records computed so far, as RADIANCE
         throw;
     }
     renderer.flushAmbientFile();
     if (o.reportInterval > 0) biasReport();
-    addRpictHeader(picture, commandLine, std::time(nullptr));
-    writeRpictOutput(picture, o.zFile.empty() ? nullptr : &depth, o, std::cout);
     return 0;
 }
 

@@ -66,6 +66,7 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     settings.threads = o.render.threads;
     settings.limitDistance = o.limitDistance;
     RayWriter writer(spec, o.outputFormat, &scene);
+    writer.setTraceFilter(o.trace);
     try {
         runRtrace(settings, std::cin, out, writer, tracer.trace());
     } catch (...) {

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "util/error.h"
@@ -119,6 +120,8 @@ int applyWords(View& view, const std::string& text, bool allowFile) {
     return n;
 }
 
+}  // namespace
+
 // RADIANCE compat: isview() in image.c: header lines that carry views start with
 // VIEW= or a rendering program's command line.
 bool isViewLine(const std::string& line) {
@@ -130,6 +133,8 @@ bool isViewLine(const std::string& line) {
         if (first.rfind(prog, 0) == 0) return true;
     return false;
 }
+
+namespace {
 
 std::string fmt(const char* f, double a) {
     char buf[64];
@@ -371,6 +376,63 @@ std::optional<ViewRays::Ray> ViewRays::ray(double x, double y) const {
     r.direction = normalize(d);
     r.maxDistance = aftPlain;
     return r;
+}
+
+namespace {
+
+// Shirley & Chiu's concentric map ("A Low Distortion Map Between Disk and Square",
+// J. Graphics Tools 2(3), 1997): uniform on the square to uniform on the unit disk,
+// keeping strata compact.
+std::pair<double, double> squareToDisk(double u1, double u2) {
+    const double a = 2 * u1 - 1, b = 2 * u2 - 1;
+    if (a == 0 && b == 0) return {0, 0};
+    double r, phi;
+    if (std::fabs(a) > std::fabs(b)) {
+        r = a;
+        phi = (kPi / 4) * (b / a);
+    } else {
+        r = b;
+        phi = kPi / 2 - (kPi / 4) * (a / b);
+    }
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+}  // namespace
+
+bool ViewRays::jitterAperture(Ray& ray, double diameter, double u1, double u2,
+                              double u3) const {
+    if (diameter <= kTiny) return true;
+    auto [dx, dy] = squareToDisk(u1, u2);
+    dx *= 0.5 * diameter;
+    dy *= 0.5 * diameter;
+    // The aperture lies in the plane of the view's right and up directions, whatever
+    // lengths hvec_/vvec_ carry for this view type.
+    Vec3 shift = dx * normalize(hvec_) + dy * normalize(vvec_);
+    Vec3 focus;
+    switch (view_.type) {
+        case ViewType::kPerspective:
+            // The focal surface is the plane at the focal distance, as RADIANCE's.
+            focus = view_.point + (focalDistance_ / dot(ray.direction, dir_)) * ray.direction;
+            break;
+        case ViewType::kParallel:
+            // Not RADIANCE: its jitteraperture aims every parallel ray at the single
+            // point vp + vdist * vdir, which folds the picture onto that point. We focus
+            // each ray on its own point at the focal distance from the view plane.
+            focus = ray.origin + (focalDistance_ - view_.fore) * dir_;
+            break;
+        default:
+            // RADIANCE compat (jitteraperture): a focal sphere, and an extra random shift
+            // along the view direction for the views that bend rays sideways.
+            focus = view_.point + focalDistance_ * ray.direction;
+            shift += (kPi / 4 * diameter * (0.5 - u3)) * dir_;
+            break;
+    }
+    ray.origin += shift;
+    const Vec3 d = focus - ray.origin;
+    const double len = length(d);
+    if (len == 0) return false;
+    ray.direction = d / len;
+    return true;
 }
 
 }  // namespace rp

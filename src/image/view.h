@@ -51,6 +51,10 @@ int parseViewOption(View& view, int argc, const char* const* argv);
 // InputError for a recognised option with bad values.
 int applyViewString(View& view, const std::string& text);
 
+// True for lines that carry view options: "VIEW=..." or the command line of rpict,
+// rview, rvu, rpiece or pinterp (RADIANCE's isview). rpict -S reads such lines.
+bool isViewLine(const std::string& line);
+
 // The view described by a header: defaults, then every "VIEW=" line (and rpict/rvu
 // command lines) applied in order, as RADIANCE's viewfile. nullopt if none.
 std::optional<View> viewFromHeader(const Header& header);
@@ -96,6 +100,15 @@ public:
     // (bottom) to 1 (top), before -vs/-vl are added. nullopt outside the fisheye circle
     // (RADIANCE's viewray returns -1 there).
     std::optional<Ray> ray(double x, double y) const;
+
+    // Depth of field (rpict -pd; RADIANCE's jitteraperture in image.c): moves the origin
+    // of `ray` (as ray() made it) to a point of a disk of diameter `diameter` facing the
+    // view, chosen by (u1, u2) in [0,1)^2, and aims it at the point the unmoved ray
+    // reaches at the focal distance (the length of -vd), so that only surfaces at that
+    // distance stay sharp. Fisheye and panoramic views also move the origin along the
+    // view direction by up to pi/8 diameters (u3). Returns false when the new direction
+    // is degenerate. No change for diameter <= 1e-6.
+    bool jitterAperture(Ray& ray, double diameter, double u1, double u2, double u3) const;
 
     const View& view() const { return view_; }
     const Vec3& horizontalVector() const { return hvec_; }

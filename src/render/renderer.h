@@ -42,7 +42,8 @@ struct RayResult {
     double unmirroredLength = 1e10;  // X: effective length of the unmirrored part
 };
 
-// One ray of the ray tree, for rtrace's ~ specifier (every ray traced, parents first).
+// One ray of the ray tree, for rtrace's trace output (-o...t...): every ray traced,
+// each after the rays it spawned (RADIANCE reports a ray when its value is known).
 struct TracedRay {
     int depth = 0;  // 0: the input ray
     RayResult result;

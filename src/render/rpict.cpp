@@ -23,11 +23,11 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <optional>
 #include <ostream>
 
 #include <fmt/format.h>
 
-#include "image/file_write.h"
 #include "image/view.h"
 #include "util/error.h"
 #include "util/rng.h"
@@ -47,9 +47,10 @@ using Clock = std::chrono::steady_clock;
 // Serialised, rate-limited progress reports (RADIANCE's -t alarm).
 class Progress {
 public:
-    Progress(const ProgressCallback& cb, int interval, int rows, const std::atomic<long>& rays)
-        : cb_(cb), interval_(interval), rows_(rows), rays_(rays), start_(Clock::now()),
-          last_(start_) {}
+    Progress(const ProgressCallback& cb, int interval, int rows, int done,
+             const std::atomic<long>& rays)
+        : cb_(cb), interval_(interval), rows_(rows), rays_(rays), done_(done),
+          start_(Clock::now()), last_(start_) {}
 
     void start() { report(true); }
     void advance(int rows) {
@@ -76,7 +77,7 @@ private:
     int interval_;
     int rows_;
     const std::atomic<long>& rays_;
-    std::atomic<int> done_{0};
+    std::atomic<int> done_;
     std::mutex mutex_;
     Clock::time_point start_, last_;
 };
@@ -90,8 +91,9 @@ bool bigDiff(const Pixel& a, const Pixel& b, double md) {
 
 struct Sampler {
     ViewRays rays;
+    std::optional<ViewRays> previous;  // -pm: the previous frame's view
     int xres, yres;
-    double jitter, threshold;
+    double jitter, threshold, motionBlur, aperture;
     bool useDepth;
     std::vector<Pixel>& pixels;
     std::vector<float>& z;
@@ -99,16 +101,38 @@ struct Sampler {
 
     size_t at(int x, int row) const { return size_t(row) * size_t(xres) + size_t(x); }
 
-    void trace(PixelTracer& tracer, int x, int row) {
-        const uint64_t index = uint64_t(row) * uint64_t(xres) + uint64_t(x);
+    // The primary ray of pixel (x, row), or nullopt where nothing is traced.
+    std::optional<ViewRays::Ray> pixelRay(int x, int row, uint64_t index) const {
         // RADIANCE compat (pixjitter): .5 + pj*(.5 - random) in each direction.
         Rng rng(0, RngDomain::Pixel, index);
         const double jx = 0.5 + jitter * (0.5 - rng.uniform());
         const double jy = 0.5 + jitter * (0.5 - rng.uniform());
         // Image y runs from the bottom; picture rows from the top.
-        auto ray = rays.ray((x + jx) / xres, (yres - 1 - row + jy) / yres);
+        const double hpos = (x + jx) / xres, vpos = (yres - 1 - row + jy) / yres;
+        auto ray = rays.ray(hpos, vpos);
+        if (!ray) return ray;  // outside a fisheye's circle
+        // RADIANCE compat (rpict.c pixvalue): motion blur moves origin, direction and aft
+        // distance linearly towards the previous view's ray by d in [-pm/2, pm/2).
+        const double dm = motionBlur * (0.5 - rng.uniform());
+        if (previous && motionBlur > 1e-6) {
+            if (auto last = previous->ray(hpos, vpos)) {
+                ray->origin = (1 - dm) * ray->origin + dm * last->origin;
+                ray->maxDistance = (1 - dm) * ray->maxDistance + dm * last->maxDistance;
+                const Vec3 d = (1 - dm) * ray->direction + dm * last->direction;
+                if (length(d) == 0) return std::nullopt;
+                ray->direction = normalize(d);
+            }
+        }
+        const double u1 = rng.uniform(), u2 = rng.uniform(), u3 = rng.uniform();
+        if (!rays.jitterAperture(*ray, aperture, u1, u2, u3)) return std::nullopt;
+        return ray;
+    }
+
+    void trace(PixelTracer& tracer, int x, int row) {
+        const uint64_t index = uint64_t(row) * uint64_t(xres) + uint64_t(x);
+        auto ray = pixelRay(x, row, index);
         const size_t i = at(x, row);
-        if (!ray) {  // outside a fisheye's circle: black, as RADIANCE
+        if (!ray) {  // black, as RADIANCE
             pixels[i] = Pixel{0, 0, 0};
             z[i] = 0;
             return;
@@ -184,9 +208,20 @@ struct Sampler {
 
 }  // namespace
 
+std::vector<std::string> viewHeaderLines(const RpictOptions& options) {
+    std::vector<std::string> lines{viewHeaderLine(options.view)};
+    // RADIANCE compat (rpict.c): PIXASPECT only when the pixels are not about square.
+    const double pa = pictureSize(options).pixelAspect;
+    if (pa < .99 || pa > 1.01) lines.push_back(fmt::format("PIXASPECT={:f}", pa));
+    return lines;
+}
+
 Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& factory,
-                      const ProgressCallback& progress, std::vector<float>* depth) {
+                      const ProgressCallback& progress, std::vector<float>* depth,
+                      const RenderRows& rowsIn) {
     ViewRays rays(options.view);
+    std::optional<ViewRays> previous;
+    if (rowsIn.previousView) previous.emplace(*rowsIn.previousView);
     const PictureSize size = pictureSize(options);
     int ps = options.sampleSpacing;
     if (ps < 1) {
@@ -201,8 +236,10 @@ Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& fac
 
     Picture pic(size.xres, size.yres);
     std::vector<float> z(pic.pixels.size(), 0.0f);
+    const int firstRow = std::clamp(rowsIn.firstRow, 0, size.yres);
     std::atomic<long> traced{0};
-    Sampler s{rays,  size.xres,  size.yres, options.pixelJitter, options.sampleThreshold,
+    Sampler s{rays, previous, size.xres, size.yres, options.pixelJitter,
+              options.sampleThreshold, options.motionBlur, options.apertureBlur,
               depth != nullptr, pic.pixels, z, traced};
 
     // Sampled scanlines from the top: 0, ystep, 2*ystep, ... and always the last.
@@ -211,7 +248,7 @@ Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& fac
     rows.push_back(size.yres - 1);
     if (rows.size() > 1 && rows[rows.size() - 2] == rows.back()) rows.pop_back();
 
-    Progress report(progress, options.reportInterval, size.yres, traced);
+    Progress report(progress, options.reportInterval, size.yres, firstRow, traced);
     report.start();
     std::mutex factoryMutex;
     tbb::enumerable_thread_specific<PixelTracer> tracers;
@@ -224,23 +261,36 @@ Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& fac
         }
         return t;
     };
-    tbb::task_arena arena(std::max(1, options.render.threads));
-    arena.execute([&] {
-        tbb::parallel_for(size_t(0), rows.size(), [&](size_t k) {
-            s.sampledRow(tracerHere(), rows[k], int(k), hstep);
-            report.advance(1);
+    // The picture is made in chunks of sampled scanlines, top to bottom, so that finished
+    // rows can be written while the rest is rendered. A recovered picture restarts at the
+    // last sampled scanline at or above its first missing row: that scanline and the band
+    // below it are traced again (the rows above firstRow are not handed over), so the
+    // rows after firstRow come out as the uninterrupted run made them.
+    size_t start = 0;
+    while (start + 1 < rows.size() && rows[start + 1] <= firstRow) ++start;
+    const int threads = std::max(1, options.render.threads);
+    const size_t chunk = size_t(std::max(8, 4 * threads));
+    int handed = firstRow;
+    tbb::task_arena arena(threads);
+    for (size_t k0 = start; firstRow < size.yres && k0 < rows.size(); k0 += chunk) {
+        const size_t k1 = std::min(rows.size(), k0 + chunk);  // sample rows[k0..k1)
+        arena.execute([&] {
+            tbb::parallel_for(k0, k1, [&](size_t k) {
+                s.sampledRow(tracerHere(), rows[k], int(k), hstep);
+                if (rows[k] >= firstRow) report.advance(1);
+            });
+            tbb::parallel_for(std::max(k0, start + 1), k1, [&](size_t k) {
+                s.band(tracerHere(), rows[k - 1], rows[k]);
+                report.advance(std::max(0, rows[k] - std::max(rows[k - 1] + 1, firstRow)));
+            });
         });
-        tbb::parallel_for(size_t(1), rows.size(), [&](size_t k) {
-            s.band(tracerHere(), rows[k - 1], rows[k]);
-            report.advance(rows[k] - rows[k - 1] - 1);
-        });
-    });
+        const int end = rows[k1 - 1] + 1;
+        if (rowsIn.done && end > handed) rowsIn.done(pic, z, handed, end);
+        handed = std::max(handed, end);
+    }
     report.finish();
 
-    pic.header.lines.push_back(viewHeaderLine(options.view));
-    // RADIANCE compat (rpict.c): PIXASPECT only when the pixels are not about square.
-    if (size.pixelAspect < .99 || size.pixelAspect > 1.01)
-        pic.header.lines.push_back(fmt::format("PIXASPECT={:f}", size.pixelAspect));
+    for (auto& line : viewHeaderLines(options)) pic.header.lines.push_back(std::move(line));
     if (depth) *depth = std::move(z);
     return pic;
 }
@@ -258,23 +308,6 @@ void addRpictHeader(Picture& picture, const std::string& commandLine, std::time_
     };
     lines.push_back(stamp("CAPDATE=", local));
     lines.push_back(stamp("GMT=", gmt));
-}
-
-void writeRpictOutput(const Picture& picture, const std::vector<float>* depth,
-                      const RpictOptions& options, std::ostream& out) {
-    if (!options.zFile.empty() && depth) {
-        RP_CHECK(depth->size() == picture.pixels.size());
-        std::string bytes(reinterpret_cast<const char*>(depth->data()),
-                          depth->size() * sizeof(float));
-        writeFileAtomically(options.zFile, bytes);
-    }
-    if (options.outputFile.empty()) {
-        writePicture(out, picture);
-        out.flush();
-        if (!out) throw InputError("write error on standard output");
-    } else {
-        writePicture(options.outputFile, picture);
-    }
 }
 
 }  // namespace rp::render

@@ -44,27 +44,43 @@ std::string formatProgress(long rays, double percentDone, double seconds);
 // The largest -ps RADIANCE allows (MAXDIV); larger values are reduced with a warning.
 constexpr int kMaxSampleSpacing = 16;
 
-// Renders the picture: size from pictureSize(options), header lines VIEW= and (when the
-// pixel aspect is not within 1%) PIXASPECT=. Pixels outside a fisheye's circle are
-// black with depth 0 and are not traced. With `depth` non-null it receives one distance
-// per pixel (top row first) and, as RADIANCE does with -z, depth differences also stop
-// interpolation. Uses options.render.threads worker threads. Throws InputError for an
-// invalid view (ViewRays' messages) and for aft clipping (-va), which the tracer
-// interface cannot honour yet.
+// Where renderPicture starts, what it hands over while it works, and the previous view.
+struct RenderRows {
+    // Rows [0, firstRow) (from the top) were recovered from an interrupted picture
+    // (rpict -r): they are not passed to `done`, and in the result they hold only what
+    // the restart traced again (black elsewhere).
+    int firstRow = 0;
+    // Called on the calling thread, top to bottom, each time rows [begin, end) are final
+    // (pixels and depths), so that they can be written while the rest is rendered; every
+    // row from firstRow on is passed exactly once.
+    std::function<void(const Picture&, const std::vector<float>& depth, int begin, int end)>
+        done;
+    // -pm: the previous frame's view; each pixel's ray is moved towards the one this
+    // view would trace by a random part of -pm (RADIANCE's motion blur). Null: none.
+    const View* previousView = nullptr;
+};
+
+// Renders the picture: size from pictureSize(options), header lines viewHeaderLines().
+// Pixels outside a fisheye's circle are black with depth 0 and are not traced. With
+// `depth` non-null it receives one distance per pixel (top row first) and, as RADIANCE
+// does with -z, depth differences also stop interpolation. Rays go through a disk of
+// diameter -pd when it is positive (ViewRays::jitterAperture). Uses
+// options.render.threads worker threads; pixels never depend on their number, nor on
+// `rows.firstRow` (a recovered picture is finished exactly as the uninterrupted run
+// would have done it, given a deterministic tracer). Throws InputError for an invalid
+// view (ViewRays' messages).
 Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& factory,
-                      const ProgressCallback& progress = {}, std::vector<float>* depth = nullptr);
+                      const ProgressCallback& progress = {}, std::vector<float>* depth = nullptr,
+                      const RenderRows& rows = {});
+
+// The header lines the picture's view adds: VIEW= and, when the pixel aspect is not
+// within 1 % of square, PIXASPECT= (RADIANCE's rpict).
+std::vector<std::string> viewHeaderLines(const RpictOptions& options);
 
 // Completes an rpict header as RADIANCE's rpict writes it: `commandLine` and
 // "SOFTWARE= radphoton ..." before the lines renderPicture added, "CAPDATE=" (local time)
 // and "GMT=" of `now` after them. writePicture then adds FORMAT=.
 void addRpictHeader(Picture& picture, const std::string& commandLine, std::time_t now);
-
-// Writes the picture to options.outputFile (via a temporary file renamed when complete,
-// never a half-written picture) or, without -o, to `out`; and with -z the depth file:
-// raw native-endian floats, one per pixel, top row first (RADIANCE's z-file layout),
-// written the same safe way. Throws InputError when a file cannot be written.
-void writeRpictOutput(const Picture& picture, const std::vector<float>* depth,
-                      const RpictOptions& options, std::ostream& out);
 
 // What the SOFTWARE= line names.
 constexpr const char* kSoftwareName = "radphoton 0.1";

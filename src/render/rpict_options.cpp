@@ -84,7 +84,6 @@ bool parseOwnOption(const std::vector<std::string>& args, size_t& i, RpictComman
         o.motionBlur = realValue(args, i++);
     } else if (a == "-pd") {
         o.apertureBlur = realValue(args, i++);
-        if (o.apertureBlur > 0) throw notSupportedYet({}, "depth of field (-pd)");
     } else if (a == "-t") {
         o.reportInterval = intValue(args, i++);
     } else if (a == "-o") {
@@ -92,9 +91,11 @@ bool parseOwnOption(const std::vector<std::string>& args, size_t& i, RpictComman
     } else if (a == "-z") {
         o.zFile = valueOf(args, i++);
     } else if (a == "-S") {
-        throw notSupportedYet({}, "picture sequences (-S)");
+        o.sequenceStart = intValue(args, i++);
     } else if (a == "-r" || a == "-ro") {
-        throw notSupportedYet({}, "recovering pictures (" + a + ")");
+        // RADIANCE compat (rpmain.c): -ro names the recover file and the output file.
+        o.recoverFile = valueOf(args, i++);
+        if (a == "-ro") o.outputFile = o.recoverFile;
     } else if (a == "-P" || a == "-PP") {
         throw notSupportedYet({}, "persistent processes (" + a + ")");
     } else if (a == "-defaults" || a == "-help") {

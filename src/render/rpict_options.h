@@ -25,11 +25,13 @@ struct RpictOptions {
     double pixelJitter = 0.67;     // -pj: 0 samples pixel centres, 1 anywhere in the pixel
     int sampleSpacing = 4;         // -ps: adaptive sampling spacing in pixels (1 = every pixel)
     double sampleThreshold = 0.05; // -pt: relative difference above which pixels are traced
-    double motionBlur = 0;         // -pm: accepted; only matters for sequences (-S)
-    double apertureBlur = 0;       // -pd: depth of field (not supported yet when > 0)
+    double motionBlur = 0;         // -pm: blur between the previous and this frame (-S)
+    double apertureBlur = 0;       // -pd: depth-of-field aperture diameter (world units)
     int reportInterval = 0;        // -t: seconds between progress reports (0 = none)
-    std::string outputFile;        // -o: picture file (empty = standard output)
-    std::string zFile;             // -z: depth file (raw floats, one per pixel)
+    int sequenceStart = 0;         // -S: > 0 renders one frame per view line on input
+    std::string outputFile;        // -o: picture file; with -S may hold a printf %d field
+    std::string zFile;             // -z: depth file (raw floats, one per pixel; %d as -o)
+    std::string recoverFile;       // -r / -ro: partial picture to continue; with -S a frame number
 };
 
 // A parsed rpict command: options, then the scene files.
@@ -45,8 +47,9 @@ struct RpictCommand {
 // RADIANCE's rpmain, options come first (shared render options, then view options, then
 // rpict's own) and the first word not starting with '-' starts the scene files. Throws
 // InputError for an unknown option ("unknown option '-q'"), a missing or bad value, an
-// option after the scene files, and RADIANCE features not supported yet (-S, -r, -ro,
-// -P, -PP, -pd > 0). A missing scene is not an error here (the tool decides).
+// option after the scene files, and RADIANCE features not supported yet (-P, -PP).
+// -ro file is -r file -o file, as RADIANCE's. A missing scene is not an error here (the
+// tool decides).
 RpictCommand parseRpictCommand(std::vector<std::string> args);
 
 // The lines RADIANCE's `rpict -defaults` prints (view, picture, then the render options

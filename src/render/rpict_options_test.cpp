@@ -84,11 +84,23 @@ TEST(RpictOptions, BadInputIsAnInputError) {
     EXPECT_NE(errorOf({"-x"}).find("missing value for -x"), std::string::npos);
     EXPECT_NE(errorOf({"s.rad", "-x", "10"}).find("after the scene file"), std::string::npos);
     EXPECT_NE(errorOf({"-vh"}).size(), 0u);
-    for (const char* unsupported : {"-S", "-r", "-ro", "-P", "-PP"})
+    for (const char* unsupported : {"-P", "-PP"})
         EXPECT_NE(errorOf({unsupported, "1", "s.rad"}).find("not supported"), std::string::npos)
             << unsupported;
-    EXPECT_NE(errorOf({"-pd", "0.1", "s.rad"}).find("not supported"), std::string::npos);
-    EXPECT_EQ(errorOf({"-pd", "0", "s.rad"}), "");
+    EXPECT_NE(errorOf({"-S", "x", "s.rad"}).find("bad value for -S"), std::string::npos);
+    EXPECT_NE(errorOf({"-r"}).find("missing value for -r"), std::string::npos);
+}
+
+TEST(RpictOptions, SequenceRecoverAndApertureOptions) {
+    RpictOptions o = parseRpictCommand({"-S", "3", "-r", "old.hdr", "-pd", "0.1", "s.rad"}).options;
+    EXPECT_EQ(o.sequenceStart, 3);
+    EXPECT_EQ(o.recoverFile, "old.hdr");
+    EXPECT_TRUE(o.outputFile.empty());
+    EXPECT_DOUBLE_EQ(o.apertureBlur, 0.1);
+    // RADIANCE compat: -ro is -r and -o with the same file.
+    o = parseRpictCommand({"-o", "a.hdr", "-ro", "b.hdr", "s.rad"}).options;
+    EXPECT_EQ(o.recoverFile, "b.hdr");
+    EXPECT_EQ(o.outputFile, "b.hdr");
 }
 
 TEST(RpictOptions, ExpandsAtFilesAtOptionPositions) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <mutex>
 #include <sstream>
 
 #include "image/picture.h"
@@ -278,38 +279,68 @@ TEST(RpictRender, PixelAspectLineWhenPixelsAreNotSquare) {
     EXPECT_NEAR(pic.pixelAspect(), std::tan(22.5 * kPi / 180) / std::tan(30 * kPi / 180), 1e-6);
 }
 
-TEST(RpictRender, WritesPictureAndDepthFilesWhole) {
-    TempDir dir;
-    RpictOptions o = smallOptions(24, 16, 2);
-    o.pixelAspect = 0;
-    o.outputFile = dir.file("out.hdr");
-    o.zFile = dir.file("out.z");
-    std::vector<float> z;
-    Picture pic = renderPicture(
-        o, fakeFactory(24, nullptr, [](int x, int) { return Color(x, x, x); }, 7.5), {}, &z);
-    std::ostringstream unused;
-    writeRpictOutput(pic, &z, o, unused);
-    EXPECT_TRUE(unused.str().empty());
-    EXPECT_EQ(dir.count(), 2u);  // no temporary files left behind
-    EXPECT_EQ(std::filesystem::file_size(o.zFile), 24u * 16u * sizeof(float));
-    std::ifstream zin(o.zFile, std::ios::binary);
-    std::vector<float> back(24 * 16);
-    zin.read(reinterpret_cast<char*>(back.data()), std::streamsize(back.size() * sizeof(float)));
-    for (float v : back) ASSERT_EQ(v, 7.5f);
-    Picture read = readPicture(o.outputFile);
-    EXPECT_EQ(read.width, 24);
-    EXPECT_EQ(read.height, 16);
-
-    // Without -o the picture goes to the stream.
-    o.outputFile.clear();
-    o.zFile.clear();
-    std::stringstream out;
-    writeRpictOutput(pic, nullptr, o, out);
-    EXPECT_EQ(readPicture(out, "stdout").width, 24);
-
-    // An unwritable place is an InputError, not a crash.
-    o.outputFile = dir.file("no/such/dir/out.hdr");
-    EXPECT_THROW(writeRpictOutput(pic, nullptr, o, out), InputError);
+TEST(RpictRender, DepthOfFieldBlursOnlyAwayFromTheFocus) {
+    // A wall at y = 5, white where x > 0, seen along +y through pixel centres: the focus
+    // at the wall (-vd 0 5 0) keeps every pixel as the pinhole's; a focus at 2.5 spreads
+    // each pixel over the aperture's diameter on the wall (|1 - 5/2.5| * 0.5), so pixels
+    // whose pinhole ray lands within 0.25 of the edge may change and no others do.
+    auto pictureWith = [](Vec3 direction, double pd, ViewType type, std::vector<Vec3>* origins) {
+        RpictOptions o = smallOptions(40, 40, 1);
+        o.pixelJitter = 0;
+        o.apertureBlur = pd;
+        o.view.type = type;
+        o.view.direction = direction;
+        o.view.horizontal = o.view.vertical = type == ViewType::kParallel ? 4 : 40;
+        auto m = std::make_shared<std::mutex>();
+        PixelTracerFactory f = [=]() -> PixelTracer {
+            return [=](const Vec3& org, const Vec3& dir, uint64_t, double, double* d) {
+                const double t = (5 - org.y) / dir.y;
+                *d = t;
+                if (origins) {
+                    std::lock_guard<std::mutex> lock(*m);
+                    origins->push_back(org);
+                }
+                return (org + t * dir).x > 0 ? Color(1, 1, 1) : Color(0, 0, 0);
+            };
+        };
+        return renderPicture(o, f);
+    };
+    const Picture pinhole = pictureWith(Vec3(0, 5, 0), 0, ViewType::kPerspective, nullptr);
+    std::vector<Vec3> origins;
+    const Picture focused = pictureWith(Vec3(0, 5, 0), 0.5, ViewType::kPerspective, &origins);
+    const Picture blurred = pictureWith(Vec3(0, 2.5, 0), 0.5, ViewType::kPerspective, nullptr);
+    EXPECT_EQ(focused.pixels, pinhole.pixels);
+    const double planeHalf = std::tan(20 * kPi / 180) * 5;  // wall x at the picture's edge
+    int near = 0, changed = 0;
+    for (int row = 0; row < 40; ++row)
+        for (int x = 0; x < 40; ++x) {
+            const double wallX = ((x + 0.5) / 40 - 0.5) * 2 * planeHalf;
+            const bool differs = blurred.at(x, row) != pinhole.at(x, row);
+            if (std::fabs(wallX) > 0.25) {
+                ASSERT_FALSE(differs) << x << "," << row;
+            } else {
+                ++near;
+                changed += differs;
+            }
+        }
+    // A pixel at s from the edge changes with the chance that a uniform point of the
+    // radius-0.25 disk lies beyond s: averaged over s in [0, 0.25] that is 2/(3 pi) =
+    // 0.21. Bounds at about 4 binomial sigmas for the 240 pixels of the band.
+    EXPECT_GT(changed, near * 12 / 100) << changed << " of " << near;
+    EXPECT_LT(changed, near * 31 / 100) << changed << " of " << near;
+    // The origins fill the aperture: a disk of radius 0.25 across the view direction.
+    double rmax = 0;
+    for (const Vec3& org : origins) {
+        EXPECT_EQ(org.y, 0);
+        rmax = std::max(rmax, std::hypot(org.x, org.z));
+    }
+    EXPECT_LE(rmax, 0.25 + 1e-12);
+    EXPECT_GT(rmax, 0.24);
+    // Parallel views focus each ray on its own point (not RADIANCE's single point).
+    EXPECT_EQ(pictureWith(Vec3(0, 5, 0), 0.5, ViewType::kParallel, nullptr).pixels,
+              pictureWith(Vec3(0, 5, 0), 0, ViewType::kParallel, nullptr).pixels);
+    EXPECT_NE(pictureWith(Vec3(0, 1, 0), 0.5, ViewType::kParallel, nullptr).pixels,
+              pictureWith(Vec3(0, 1, 0), 0, ViewType::kParallel, nullptr).pixels);
 }
 
 }  // namespace

@@ -114,6 +114,23 @@ RayReader::Status RayReader::next(InputRay& ray) {
 RayWriter::RayWriter(OutputSpec spec, char format, const Scene* scene)
     : spec_(std::move(spec)), format_(format), scene_(scene) {}
 
+void RayWriter::setTraceFilter(const TraceFilter& filter) {
+    traceMode_ = filter.mode;
+    traceModifiers_ = {filter.modifiers.begin(), filter.modifiers.end()};
+}
+
+bool RayWriter::traced(const RayResult& r) const {
+    if (traceMode_ == TraceFilter::Mode::kAll) return true;
+    // RADIANCE compat (rtrace.c ourtrace): a ray that hits nothing has no modifier: left
+    // out by an include list, kept by an exclude list. The list holds modifier names
+    // (RADIANCE collects every modifier of that name), so names are compared.
+    bool listed = false;
+    if (r.hit && r.modifier >= 0 && scene_ && size_t(r.modifier) < scene_->prims.size())
+        listed = traceModifiers_.count(scene_->prims[size_t(r.modifier)].name) > 0;
+    if (!r.hit) return traceMode_ == TraceFilter::Mode::kExclude;
+    return listed == (traceMode_ == TraceFilter::Mode::kInclude);
+}
+
 void RayWriter::real(std::string& out, double v) const {
     if (format_ == 'a') {
         // RADIANCE compat (rtrace.c puta): "%e" then a tab after every value.
@@ -188,6 +205,7 @@ void RayWriter::write(std::string& out, const RayResult& r,
         // RADIANCE compat (rtrace.c ourtrace/tabin): one record per traced ray, indented
         // by one tab per ancestor, before the input ray's own record.
         for (const TracedRay& t : *tree) {
+            if (!traced(t.result)) continue;
             out.append(size_t(std::max(0, t.depth)), '\t');
             record(out, spec_.tree, t.result);
             if (format_ == 'a') out += '\n';

@@ -6,9 +6,11 @@
 #include <cstdint>
 #include <istream>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "render/renderer.h"
+#include "render/rtrace_options.h"
 #include "scene/primitive.h"
 #include "util/vec.h"
 
@@ -61,6 +63,11 @@ public:
     // materials for s, m, M.
     RayWriter(OutputSpec spec, char format, const Scene* scene);
 
+    // -ti/-te: with a list, the tree records are only those of rays that hit a surface
+    // whose modifier is listed (-ti), or all but those (-te; rays that hit nothing are
+    // reported), as RADIANCE's ourtrace. The input ray's own record is always written.
+    void setTraceFilter(const TraceFilter& filter);
+
     // Appends the tree records (if requested) then the ray's own record.
     void write(std::string& out, const RayResult& r, const std::vector<TracedRay>* tree) const;
     // RADIANCE's bogus record (zero direction or unusable input): every value zero.
@@ -73,7 +80,10 @@ private:
     void real(std::string& out, double v) const;
     void color(std::string& out, const Color& c) const;
     void name(std::string& out, int32_t index, bool hit) const;
+    bool traced(const RayResult& r) const;  // passes the trace filter
     OutputSpec spec_;
+    TraceFilter::Mode traceMode_ = TraceFilter::Mode::kAll;
+    std::unordered_set<std::string> traceModifiers_;
     char format_;
     const Scene* scene_;
 };

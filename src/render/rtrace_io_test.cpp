@@ -153,6 +153,37 @@ TEST(RtraceIo, SpecErrorsAndTree) {
               "5.000000e-01\t2.500000e-01\t1.250000e-01\t\n");
 }
 
+TEST(RtraceIo, TraceFilterChoosesTreeRecords) {
+    // Tree, as the renderer lists it (each ray after the rays it spawned): a grandchild
+    // that leaves the scene, a child that hits 'white' (modifier 0), the input ray that
+    // hits 'pattern' (1). The input ray's own record is always written.
+    Scene scene = namedScene();
+    std::vector<TracedRay> tree(3);
+    for (int k = 0; k < 3; ++k) {
+        tree[size_t(k)].depth = 2 - k;
+        tree[size_t(k)].result.distance = 3 - k;
+        tree[size_t(k)].result.hit = k > 0;
+    }
+    tree[1].result.modifier = 0;
+    tree[2].result.modifier = 1;
+    auto written = [&](TraceFilter::Mode mode, std::vector<std::string> mods) {
+        RayWriter w(parseOutputSpec("LtL", 'a'), 'a', &scene);
+        w.setTraceFilter(TraceFilter{mode, std::move(mods)});
+        std::string out;
+        w.write(out, fabricated(), &tree);
+        return out;
+    };
+    const std::string one = "1.000000e+00\t\n", two = "\t2.000000e+00\t\n",
+                      three = "\t\t3.000000e+00\t\n", own = "2.000000e+00\t\n";
+    EXPECT_EQ(written(TraceFilter::Mode::kAll, {}), three + two + one + own);
+    EXPECT_EQ(written(TraceFilter::Mode::kInclude, {"white"}), two + own);
+    EXPECT_EQ(written(TraceFilter::Mode::kInclude, {"white", "pattern"}), two + one + own);
+    // Surfaces are chosen by their modifier, not by their own name ('floor' is prim 2).
+    EXPECT_EQ(written(TraceFilter::Mode::kInclude, {"floor"}), own);
+    EXPECT_EQ(written(TraceFilter::Mode::kExclude, {"white"}), three + one + own);
+    EXPECT_EQ(written(TraceFilter::Mode::kExclude, {"nothing"}), three + two + one + own);
+}
+
 TEST(RtraceIo, BogusRecord) {
     RayWriter w(parseOutputSpec("vodLw", 'a'), 'a', nullptr);
     std::string out;

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 
 #include "render/command_args.h"
 #include "util/error.h"
@@ -64,6 +65,28 @@ const char* specName(char c) {
     }
 }
 
+// -ti/-te/-tI/-tE at args[i] (RADIANCE rtmain.c): a word, or the words of a file.
+void parseTraceList(const std::vector<std::string>& args, size_t& i, TraceFilter& t) {
+    const std::string& opt = args[i];
+    if (i + 1 >= args.size()) throw InputError("missing value for option '" + opt + "'");
+    const std::string& v = args[++i];
+    const bool include = opt[2] == 'i' || opt[2] == 'I';
+    const TraceFilter::Mode mode = include ? TraceFilter::Mode::kInclude : TraceFilter::Mode::kExclude;
+    if (t.mode != mode) {
+        t.mode = mode;
+        t.modifiers.clear();
+    }
+    if (opt[2] == 'i' || opt[2] == 'e') {
+        t.modifiers.push_back(v);
+        return;
+    }
+    std::ifstream in(v);
+    if (!in)
+        throw InputError(std::string("cannot open trace ") + (include ? "include" : "exclude") +
+                         " file \"" + v + "\"");
+    for (std::string w; in >> w;) t.modifiers.push_back(w);
+}
+
 }  // namespace
 
 const char* formatName(char format) {
@@ -107,6 +130,7 @@ RtraceOptions parseRtraceArgs(std::vector<std::string> args) {
         }
         if (opt == "-x") o.xres = intValue(args, i);
         else if (opt == "-y") o.yres = intValue(args, i);
+        else if (opt == "-ti" || opt == "-te" || opt == "-tI" || opt == "-tE") parseTraceList(args, i, o.trace);
         else if (opt.rfind("-ld", 0) == 0) o.limitDistance = boolSuffix(opt, 3, o.limitDistance);
         else if (opt.rfind("-I", 0) == 0) o.immediateIrradiance = boolSuffix(opt, 2, o.immediateIrradiance);
         else if (opt.rfind("-h", 0) == 0) o.header = boolSuffix(opt, 2, o.header);

@@ -10,6 +10,16 @@
 
 namespace rp::render {
 
+// -ti/-te mod (-tI/-tE file): which rays of the ray tree the trace output (-o...t...)
+// reports, by the modifier of the surface each ray hits (RADIANCE rtrace.c ourtrace).
+// RADIANCE compat (rtmain.c): switching between include and exclude starts a new list;
+// repeating the same kind adds to it.
+struct TraceFilter {
+    enum class Mode { kAll, kInclude, kExclude };
+    Mode mode = Mode::kAll;
+    std::vector<std::string> modifiers;
+};
+
 struct RtraceOptions {
     RenderOptions render;         // -n, -e, -w and every common option live here
     std::string outputSpec = "v";  // -o
@@ -19,6 +29,7 @@ struct RtraceOptions {
     int xres = 0;                 // -x: flush interval (with -y: picture width)
     int yres = 0;                 // -y
     bool immediateIrradiance = false;  // -I
+    TraceFilter trace;            // -ti -te -tI -tE
     bool limitDistance = false;   // -ld (parsed; not supported by the renderer yet)
     bool printDefaults = false;   // -defaults / -help: print and exit, no scene needed
     std::string sceneFile;        // the octree / scene file (last argument)
@@ -32,7 +43,8 @@ RtraceOptions rtraceDefaults();
 
 // Parses argv (argv[0] the program). @file and $EVAR arguments are expanded at option
 // positions. Throws InputError: "unknown option '-xx'", missing/bad values, "missing octree
-// argument", extra arguments after the octree, -fc with specifiers that are not colours.
+// argument", extra arguments after the octree, -fc with specifiers that are not colours,
+// -tI/-tE files that cannot be read.
 // Stops early (printDefaults set, sceneFile empty) at -defaults or -help.
 RtraceOptions parseRtraceArgs(int argc, const char* const* argv);
 RtraceOptions parseRtraceArgs(std::vector<std::string> args);

@@ -62,6 +62,24 @@ TEST(RtraceOptions, Errors) {
     EXPECT_NE(errorOf({"rtrace", "a.oct", "b.oct"}), "");
 }
 
+TEST(RtraceOptions, TraceIncludeAndExcludeLists) {
+    TempDir dir;
+    const std::string file = dir.file("mods.txt");
+    std::ofstream(file) << "glass\n  metal frame\n";
+    RtraceOptions o = parseRtraceArgs({"rtrace", "-ti", "a", "-tI", file, "-ti", "b", "s.oct"});
+    EXPECT_EQ(o.trace.mode, TraceFilter::Mode::kInclude);
+    EXPECT_EQ(o.trace.modifiers, (std::vector<std::string>{"a", "glass", "metal", "frame", "b"}));
+    // RADIANCE compat: switching kinds starts a new list.
+    o = parseRtraceArgs({"rtrace", "-ti", "a", "-te", "b", "-tE", file, "s.oct"});
+    EXPECT_EQ(o.trace.mode, TraceFilter::Mode::kExclude);
+    EXPECT_EQ(o.trace.modifiers, (std::vector<std::string>{"b", "glass", "metal", "frame"}));
+    EXPECT_EQ(parseRtraceArgs({"rtrace", "s.oct"}).trace.mode, TraceFilter::Mode::kAll);
+    EXPECT_EQ(errorOf({"rtrace", "-tI", dir.file("none"), "s.oct"}),
+              "cannot open trace include file \"" + dir.file("none") + "\"");
+    EXPECT_EQ(errorOf({"rtrace", "-te"}), "missing value for option '-te'");
+    EXPECT_EQ(errorOf({"rtrace", "-tx", "a", "s.oct"}), "unknown option '-tx'");
+}
+
 TEST(RtraceOptions, DefaultsStopsParsing) {
     RtraceOptions o = parseRtraceArgs({"rtrace", "-ab", "3", "-defaults", "-bogus"});
     EXPECT_TRUE(o.printDefaults);

@@ -86,16 +86,10 @@ material::ChainResult Renderer::Context::resolve(int32_t modifier, const Hit& hi
 Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResult* first,
                                   double& distance, Vec3* hitNormal) {
     impl.rays.fetch_add(1, std::memory_order_relaxed);
-    size_t treeIndex = 0;
-    if (tree) {
-        treeIndex = tree->size();
-        TracedRay t;
-        t.depth = state.depth;
-        t.result.origin = ray.origin;
-        t.result.direction = ray.dir;
-        t.result.weight = state.weight;
-        tree->push_back(t);
-    }
+    // For the ray tree (rtrace -o...t), every ray records what it hits the way the input
+    // ray does (fillFirst in shadeLayer), in a record of its own.
+    RayResult treeRecord;
+    RayResult* record = first ? first : tree ? &treeRecord : nullptr;
     Ray r = ray;
     double travelled = 0;
     Color total, coef{1, 1, 1};
@@ -111,7 +105,7 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
             break;
         }
         Color passWeight;
-        Color c = shadeHit(r, *hit, state, first, passWeight);
+        Color c = shadeHit(r, *hit, state, record, passWeight);
         total += coef * c;
         if (passWeight.max() <= 0) {
             distance = travelled + hit->t;
@@ -124,9 +118,17 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
         if (ray.tmax < HUGE_VAL) r.tmax = std::max(0.0, ray.tmax - travelled);
     }
     if (tree) {
-        RayResult& t = (*tree)[treeIndex].result;
-        t.value = total;
-        t.distance = distance;
+        // RADIANCE compat (raytrace.c, rtrace.c ourtrace): a ray is reported once its
+        // value is known, so the rays it spawned come before it.
+        TracedRay t;
+        t.depth = state.depth;
+        t.result = *record;
+        t.result.origin = ray.origin;
+        t.result.direction = ray.dir;
+        t.result.weight = state.weight;
+        t.result.value = total;
+        t.result.distance = distance;
+        tree->push_back(t);
     }
     return total;
 }
