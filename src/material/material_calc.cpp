@@ -6,6 +6,7 @@
 #include <map>
 
 #include "calc/search_path.h"
+#include "material/function_space.h"
 #include "util/error.h"
 
 namespace rp::material {
@@ -197,18 +198,7 @@ void MaterialCalcEvaluator::setHit(int32_t material, const PatternPoint& at) {
              calc_.recordOf_[material] >= 0);
     rec_ = &calc_.records_[calc_.recordOf_[material]];
     // The same function-space values as patterns see (func.c setfunc).
-    const Transform& t = rec_->toObject;
-    ctx_ = calc::RayContext{};
-    ctx_.P = toVec(t.point(toArr(at.point)));
-    ctx_.D = toVec(t.direction(toArr(at.dir)));
-    ctx_.N = toVec(t.direction(toArr(at.normal)));
-    ctx_.T = at.distance * t.scale;
-    ctx_.Rdot = at.rdot;
-    ctx_.S = rec_->scale;
-    ctx_.Tvec = toVec(t.point({0, 0, 0}));
-    ctx_.I = toVec(t.direction({1, 0, 0}));
-    ctx_.J = toVec(t.direction({0, 1, 0}));
-    ctx_.K = toVec(t.direction({0, 0, 1}));
+    ctx_ = functionSpace(at, rec_->toObject);
     ctx_.args = rec_->rargs;
     eval_.setRay(ctx_);
     errorsAtHit_ = eval_.mathErrors();

@@ -3,13 +3,11 @@
 #include <algorithm>
 
 #include "calc/search_path.h"
+#include "material/function_space.h"
 
 namespace rp::material {
 
 namespace {
-
-Vec3 toVec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
-std::array<double, 3> toArr(const Vec3& v) { return {v.x, v.y, v.z}; }
 
 // Whether an expression's text names a ray variable that depends on the point (P, N, T,
 // Rdot) rather than only the direction. Only meaningful when no function file is loaded
@@ -58,7 +56,6 @@ PatternSet::PatternSet(const Scene& scene, std::vector<std::string> searchPath)
         }
         Transform forward = parseTransform(p.sargs, nfunc + 1, p.loc);
         pat.toObject = forward.inverse();
-        pat.scale = forward.scale;
         pat.usesPosition = false;
         for (size_t k = 0; k < nfunc; ++k) {
             pat.expr[k] = builder.addExpression(p.sargs[k], p.loc);
@@ -95,18 +92,7 @@ Color PatternEvaluator::chainColor(int32_t modifier, const PatternPoint& at) {
     for (int32_t m = modifier; m != kVoid; m = set_.scene_.prims[m].modifier) {
         const PatternSet::Pattern& pat = set_.patterns_[set_.patternOf_[m]];
         const Primitive& p = set_.scene_.prims[m];
-        calc::RayContext ctx;
-        const Transform& t = pat.toObject;
-        ctx.P = toVec(t.point(toArr(at.point)));
-        ctx.D = toVec(t.direction(toArr(at.dir)));
-        ctx.N = toVec(t.direction(toArr(at.normal)));
-        ctx.T = at.distance * t.scale;
-        ctx.Rdot = at.rdot;
-        ctx.S = pat.scale;
-        ctx.Tvec = toVec(t.point({0, 0, 0}));
-        ctx.I = toVec(t.direction({1, 0, 0}));
-        ctx.J = toVec(t.direction({0, 1, 0}));
-        ctx.K = toVec(t.direction({0, 0, 1}));
+        calc::RayContext ctx = functionSpace(at, pat.toObject);
         ctx.args = p.rargs;
         eval_.setRay(ctx);
         if (pat.colour) {

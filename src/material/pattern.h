@@ -52,7 +52,6 @@ private:
         bool colour = false;    // colorfunc (3 expressions) vs brightfunc (1)
         int expr[3] = {-1, -1, -1};
         Transform toObject;     // world -> the pattern's object space
-        double scale = 1;       // forward transform's scale (S)
         bool usesPosition = true;
     };
     const Scene& scene_;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "image/picture.h"
@@ -372,6 +373,27 @@ TEST_F(SurfaceChain, MaterialInsideAMaterialsChainConflicts) {
         EXPECT_EQ(e.loc().line, 4);
         EXPECT_NE(std::string(e.what()).find("not supported yet"), std::string::npos);
     }
+}
+
+// A luminaire distribution in inches (rect_fixture.rad's transform): the data's angle is
+// off the fixture's axis, read from a unit D, and the flat-source correction divides by
+// Rdot. Before directions were made unit again, acos(Dz) saw 1/0.0254 times D and read
+// the table at 0 degrees in every direction.
+TEST_F(SurfaceChain, LuminaireDataSeesUnitDirectionsThroughAScaledTransform) {
+    writeFile(f.dir.file("dist.dat"), "1\n0 90 3\n1 0.5 0\n");
+    writeFile(f.dir.file("flat.cal"), "flat(v) = v / Rdot;\ntheta = Acos(Dz) / DEGREE;\n");
+    f.load("void brightdata dist 8 flat dist.dat flat.cal theta -s 0.0254 -rz 90 0 0\n"
+           "dist light lamp 0 0 3 10 10 10\n");
+    PatternPoint pp;
+    pp.normal = {0, 0, -1};  // facing the floor
+    pp.dir = {0.5, 0, std::sqrt(0.75)};  // from the floor up to the lamp, 30 degrees off
+    pp.rdot = -dot(pp.dir, pp.normal);
+    f.chains->checkChain(f.mod("lamp"));
+    ChainResult r = f.eval->resolve(f.mod("lamp"), pp, f.rng);
+    ASSERT_EQ(r.count, 1);
+    // 30 degrees: two thirds of the way from 1 to 0.5 (at 0 and 45), divided by cos 30.
+    const double v = (2.0 / 3.0) / std::sqrt(0.75);
+    expectColor(r.layers[0].pattern, v, v, v);
 }
 
 }  // namespace rp::material
