@@ -5,11 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 
 #include "calc/search_path.h"
+#include "scene/scene_load.h"
+#include "util/warnings.h"
 #include "gen/genblinds.h"
 #include "gen/genrev.h"
 #include "gen/gensurf.h"
@@ -140,4 +143,28 @@ TEST(BuiltinCommands, OtherProgramsAndTheEnvironmentSwitchGoToTheShell) {
     unsetenv(kShellCommandsEnv);
 }
 
+// Every scene of ../shared/validation loads as the tools load it (generators such as
+// !genblinds | xform in-process, no PATH needed), without a warning.
+TEST(Validation, EverySharedSceneLoads) {
+    setWarningSink([](const std::string& m) { ADD_FAILURE() << "warning: " << m; });
+    std::filesystem::path root = std::filesystem::path(RP_SHARED_DIR) / "validation";
+    int scenes = 0;
+    for (const auto& dir : std::filesystem::directory_iterator(root)) {
+        if (!dir.is_directory()) continue;
+        for (const auto& f : std::filesystem::directory_iterator(dir.path())) {
+            if (f.path().extension() != ".rad") continue;
+            SCOPED_TRACE(f.path().string());
+            Scene s = loadScene({f.path().string()}, builtinLoadOptions());
+            EXPECT_GT(s.prims.size(), 0u);
+            ++scenes;
+        }
+    }
+    setWarningSink(nullptr);
+    EXPECT_GE(scenes, 6);
+    Scene cornell = loadScene({RP_SHARED_DIR "/validation/cornell/scene.rad"});
+    EXPECT_EQ(cornell.prims[0].name, "white");
+    EXPECT_EQ(cornell.prims[0].loc.line, 5);
+}
+
 }  // namespace rp::gen
+

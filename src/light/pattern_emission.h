@@ -1,19 +1,20 @@
-// Connects modified light sources (a glow or light whose material has a pattern chain,
-// e.g. gensky's `skyfunc`) to photon emission: an EmissionOptions::modifierFor that
-// evaluates the chain with the photon-origin ray variables of manual 3.1.2.
+// Connects modified light sources (a glow or light whose material has a pattern chain:
+// gensky's `skyfunc`, a luminaire's `brightdata` distribution) to photon emission: an
+// EmissionOptions::modifierFor that walks the chain with the renderer's own evaluator
+// (material/surface_chain.h), so photons leave a source as shadow rays see it.
 #pragma once
 
 #include <functional>
 
 #include "light/emitter.h"
-#include "material/pattern.h"
+#include "material/surface_chain.h"
 
 namespace rp::light {
 
-// For EmissionOptions::modifierFor. `patterns` must outlive the plan. The returned
-// modifiers are thread-safe (one PatternEvaluator per thread). Throws notSupportedYet
-// at the pattern's line for chains holding patterns that cannot be evaluated yet.
+// For EmissionOptions::modifierFor. `chains` must outlive the plan. The returned
+// modifiers are thread-safe (one evaluator per thread). Throws InputError or
+// notSupportedYet at the record's line for chains that cannot be evaluated.
 std::function<EmissionModifier(const LightSource&)> patternModifiers(
-    const material::PatternSet& patterns);
+    const material::SurfaceChains& chains);
 
 }  // namespace rp::light

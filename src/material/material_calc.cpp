@@ -6,6 +6,7 @@
 #include <map>
 
 #include "calc/search_path.h"
+#include "material/function_space.h"
 #include "util/error.h"
 
 namespace rp::material {
@@ -131,7 +132,6 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
         loader.functionFile(p, p.sargs[ff]);
         r.forward = parseTransform(p.sargs, xfFirst, p.loc);
         r.toObject = r.forward.inverse();
-        r.scale = r.forward.scale;
 
         int nexpr = r.kind == Kind::Aniso   ? 3
                     : r.kind == Kind::Brtd  ? 6
@@ -206,28 +206,19 @@ void MaterialCalcEvaluator::setHit(int32_t material, const PatternPoint& at,
     rec_ = &calc_.records_[calc_.recordOf_[material]];
     // The same function-space values as patterns see (func.c setfunc).
     const Transform& t = rec_->toObject;
-    ctx_ = calc::RayContext{};
-    ctx_.P = toVec(t.point(toArr(at.point)));
-    ctx_.D = toVec(t.direction(toArr(at.dir)));
-    ctx_.N = toVec(t.direction(toArr(at.normal)));
-    ctx_.T = at.distance * t.scale;
-    ctx_.Rdot = at.rdot;
+    ctx_ = functionSpace(at, t);
     if (at.rdot < 0 && (rec_->kind == MaterialCalc::Kind::Func ||
                         rec_->kind == MaterialCalc::Kind::Data)) {
         // m_brdf.c m_brdf2 turns the surface to the ray (flipsurface) before its
         // functions run, so on the back they see N and Rdot reversed; BRTDfunc does not.
         ctx_.N = -ctx_.N;
-        ctx_.Rdot = -at.rdot;
+        ctx_.Rdot = -ctx_.Rdot;
     }
-    ctx_.S = rec_->scale;
-    ctx_.Tvec = toVec(t.point({0, 0, 0}));
-    ctx_.I = toVec(t.direction({1, 0, 0}));
-    ctx_.J = toVec(t.direction({0, 1, 0}));
-    ctx_.K = toVec(t.direction({0, 0, 1}));
-    // m_brdf.c setbrdfunc: the perturbed normal through the same transform as N; the
-    // material colour (first three reals) times the pattern for *func/*data, the pattern
-    // alone for BRTDfunc. Both material routines orient the normal towards the ray.
-    ctx_.NP = toVec(t.direction(toArr(shadingNormal)));
+    // m_brdf.c setbrdfunc: the perturbed normal through the same transform as N (unit:
+    // divided by its scale); the material colour (first three reals) times the pattern
+    // for *func/*data, the pattern alone for BRTDfunc. Both material routines orient the
+    // normal towards the ray.
+    ctx_.NP = toVec(t.direction(toArr(shadingNormal))) / t.scale;
     ctx_.RdotP = std::clamp(-dot(at.dir, shadingNormal), -1.0, 1.0);
     ctx_.CP = {pattern.r, pattern.g, pattern.b};
     if (rec_->kind != MaterialCalc::Kind::Brtd && rec_->rargs.size() >= 3)
@@ -264,7 +255,7 @@ Redirection MaterialCalcEvaluator::redirect(int n, const Vec3& toSource) {
     RP_CHECK(rec_ && rec_->kind == MaterialCalc::Kind::Prism && n >= 0 &&
              4 * n + 3 < MaterialCalc::Record::kMaxExpr);
     // DxA..: the direction through the world -> function transform, as D (m_direct.c).
-    ctx_.DA = toVec(rec_->toObject.direction(toArr(toSource)));
+    ctx_.DA = toVec(rec_->toObject.direction(toArr(toSource))) / rec_->toObject.scale;
     eval_.setRay(ctx_);
     long before = eval_.mathErrors();
     double v[4];

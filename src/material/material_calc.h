@@ -65,7 +65,6 @@ private:
         PrimType type = PrimType::Plasfunc;
         Transform toObject;  // world -> function space
         Transform forward;   // function space -> world
-        double scale = 1;    // forward scale (S)
         std::vector<double> rargs;
         // aniso: ux uy uz; BRTDfunc: 6 colours; prism1: coef dx dy dz; prism2: two sets
         static constexpr int kMaxExpr = 8;

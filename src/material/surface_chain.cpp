@@ -4,9 +4,11 @@
 // surface_chain_eval.cpp.
 #include "material/surface_chain.h"
 
+#include <cctype>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string_view>
 
 #include "calc/search_path.h"
 #include "material/surface_chain_impl.h"
@@ -59,7 +61,7 @@ public:
     }
 
     // RADIANCE compat: function files share one context, each loaded once in order of
-    // first use after rayinit.cal (as PatternSet does).
+    // first use after rayinit.cal.
     void loadFunctionFile(const Primitive& p, const std::string& file) {
         if (file == "." || loadedFiles_.count(file)) return;
         try {
@@ -135,6 +137,20 @@ int32_t lookupModifier(const Scene& s, int32_t before, const std::string& name) 
     fail(s.prims[before], "undefined modifier '" + name + "'");
 }
 
+// Whether an expression's text names a ray variable that depends on the point rather
+// than only the direction. Only meaningful when no function file is loaded.
+bool mentionsPosition(const std::string& text) {
+    auto word = [](char c) { return std::isalnum((unsigned char)c) || c == '_'; };
+    for (std::string_view v : {"Px", "Py", "Pz", "Nx", "Ny", "Nz", "Rdot", "T", "Ts", "Lu", "Lv"}) {
+        for (size_t at = text.find(v); at != std::string::npos; at = text.find(v, at + 1)) {
+            size_t end = at + v.size();
+            if ((at == 0 || !word(text[at - 1])) && (end >= text.size() || !word(text[end])))
+                return true;
+        }
+    }
+    return false;
+}
+
 // Function file at `fileAt`, then `nexpr` expressions at `exprAt`, then the transform.
 void compileFunctions(Loader& ld, const Primitive& p, ChainRecord& r, size_t fileAt,
                       size_t exprAt, size_t nexpr, size_t xfAt) {
@@ -142,8 +158,11 @@ void compileFunctions(Loader& ld, const Primitive& p, ChainRecord& r, size_t fil
                                            " string arguments, got " +
                                            std::to_string(p.sargs.size()));
     ld.loadFunctionFile(p, p.sargs[fileAt]);
-    for (size_t k = 0; k < nexpr; ++k)
+    r.directional = p.sargs[fileAt] == ".";
+    for (size_t k = 0; k < nexpr; ++k) {
         r.exprIds.push_back(ld.builder.addExpression(p.sargs[exprAt + k], p.loc));
+        if (mentionsPosition(p.sargs[exprAt + k])) r.directional = false;
+    }
     r.forward = parseTransform(p.sargs, xfAt, p.loc);
     r.toObject = r.forward.inverse();
     r.hasTransform = !r.forward.isIdentity();
@@ -338,6 +357,15 @@ void SurfaceChains::checkChain(int32_t modifier) const {
 
 bool SurfaceChains::isPlain(int32_t modifier) const {
     return modifier == kVoid || impl_->plainMaterial[modifier] >= 0;
+}
+
+bool SurfaceChains::directionalOnly(int32_t modifier) const {
+    for (int32_t m = modifier; m != kVoid; m = impl_->scene->prims[m].modifier) {
+        const ChainRecord& r = impl_->records[m];
+        if ((r.kind != ChainKind::Func && r.kind != ChainKind::Data) || !r.directional)
+            return false;
+    }
+    return true;
 }
 
 int32_t SurfaceChains::plainMaterial(int32_t modifier) const {

@@ -81,6 +81,10 @@ public:
     bool isPlain(int32_t modifier) const;
     // The material reached when the chain is plain (kVoid if none).
     int32_t plainMaterial(int32_t modifier) const;
+    // True if the chain from `modifier` (a light's pattern chain, walked to void) holds
+    // only function and data patterns whose value depends on the ray direction D alone.
+    // A function file could read P under any name, so any file makes this false.
+    bool directionalOnly(int32_t modifier) const;
 
     const Scene& scene() const;
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "material/function_space.h"
 #include "material/surface_chain.h"
 #include "material/surface_chain_impl.h"
 
@@ -39,21 +40,9 @@ struct SurfaceChainEvaluator::Impl {
 
     const Primitive& prim(int32_t m) const { return chains.scene->prims[m]; }
 
-    // The ray variables as the record's function space sees them (ray.html, "Function
-    // Files"): P, D, N through the inverse of its transform.
+    // The ray variables as the record's function space sees them (functionSpace).
     void setRay(const ChainRecord& r, const Primitive& p) {
-        const Transform& t = r.toObject;
-        ctx = calc::RayContext{};
-        ctx.P = toVec(t.point(toArr(at->point)));
-        ctx.D = toVec(t.direction(toArr(at->dir)));
-        ctx.N = toVec(t.direction(toArr(at->normal)));
-        ctx.T = at->distance * t.scale;
-        ctx.Rdot = at->rdot;
-        ctx.S = r.forward.scale;
-        ctx.Tvec = toVec(t.point({0, 0, 0}));
-        ctx.I = toVec(t.direction({1, 0, 0}));
-        ctx.J = toVec(t.direction({0, 1, 0}));
-        ctx.K = toVec(t.direction({0, 0, 1}));
+        ctx = functionSpace(*at, r.toObject);
         ctx.args = p.rargs;
         eval.setRay(ctx);
     }

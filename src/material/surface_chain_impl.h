@@ -67,6 +67,10 @@ struct ChainRecord {
     Transform toObject;  // world -> the record's function space
     Transform forward;   // its transform arguments as written (object -> world)
     bool hasTransform = false;
+    // Func and Data records: the value depends on D alone (no function file, and no
+    // expression names P, N, T, Ts, Rdot, Lu or Lv). What lets the sources of a sky
+    // share one emission direction table.
+    bool directional = false;
 };
 
 struct SurfaceChains::Impl {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "image/picture.h"
@@ -372,6 +373,80 @@ TEST_F(SurfaceChain, MaterialInsideAMaterialsChainConflicts) {
         EXPECT_EQ(e.loc().line, 4);
         EXPECT_NE(std::string(e.what()).find("not supported yet"), std::string::npos);
     }
+}
+
+// A luminaire distribution in inches (rect_fixture.rad's transform): the data's angle is
+// off the fixture's axis, read from a unit D, and the flat-source correction divides by
+// Rdot. Before directions were made unit again, acos(Dz) saw 1/0.0254 times D and read
+// the table at 0 degrees in every direction.
+TEST_F(SurfaceChain, LuminaireDataSeesUnitDirectionsThroughAScaledTransform) {
+    writeFile(f.dir.file("dist.dat"), "1\n0 90 3\n1 0.5 0\n");
+    writeFile(f.dir.file("flat.cal"), "flat(v) = v / Rdot;\ntheta = Acos(Dz) / DEGREE;\n");
+    f.load("void brightdata dist 8 flat dist.dat flat.cal theta -s 0.0254 -rz 90 0 0\n"
+           "dist light lamp 0 0 3 10 10 10\n");
+    PatternPoint pp;
+    pp.normal = {0, 0, -1};  // facing the floor
+    pp.dir = {0.5, 0, std::sqrt(0.75)};  // from the floor up to the lamp, 30 degrees off
+    pp.rdot = -dot(pp.dir, pp.normal);
+    f.chains->checkChain(f.mod("lamp"));
+    ChainResult r = f.eval->resolve(f.mod("lamp"), pp, f.rng);
+    ASSERT_EQ(r.count, 1);
+    // 30 degrees: two thirds of the way from 1 to 0.5 (at 0 and 45), divided by cos 30.
+    const double v = (2.0 / 3.0) / std::sqrt(0.75);
+    expectColor(r.layers[0].pattern, v, v, v);
+}
+
+TEST_F(SurfaceChain, DirectionalOnlyWithoutFilesOrPositionVariables) {
+    writeFile(f.dir.file("d.dat"), "1\n0 1 2\n0 1\n");
+    writeFile(f.dir.file("any.cal"), "g = Dz;\n");
+    f.load("void colorfunc dirs 6 Dx Dy Dz . -rz 90 0 0\n"
+           "dirs brightfunc twice 2 2 . 0 0\n"
+           "twice light a 0 0 3 1 1 1\n"
+           "void brightdata dd 4 noop d.dat . Dz 0 0\n"
+           "dd light b 0 0 3 1 1 1\n"
+           "void brightfunc pos 2 A1*Px+Ts . 0 1 2\n"
+           "pos light c 0 0 3 1 1 1\n"
+           "void brightfunc file 2 g any.cal 0 0\n"
+           "file light d 0 0 3 1 1 1\n"
+           "void brightfunc half 2 .5 . 0 0\n"
+           "void mixfunc mx 4 half void .5 . 0 0\n"
+           "mx light e 0 0 3 1 1 1\n");
+    auto chainOf = [&](const char* light) { return f.scene->prims[f.mod(light)].modifier; };
+    EXPECT_TRUE(f.chains->directionalOnly(chainOf("a")));
+    EXPECT_TRUE(f.chains->directionalOnly(chainOf("b")));
+    EXPECT_FALSE(f.chains->directionalOnly(chainOf("c")));  // reads P and Ts
+    EXPECT_FALSE(f.chains->directionalOnly(chainOf("d")));  // a file could read P
+    EXPECT_FALSE(f.chains->directionalOnly(chainOf("e")));  // mixtures are not judged
+    EXPECT_TRUE(f.chains->directionalOnly(kVoid));
+    // Rotated +90 degrees about z, the world x axis is the object's -y axis; x 2.
+    PatternPoint pp;
+    pp.dir = {1, 0, 0};
+    expectColor(f.eval->resolve(f.mod("a"), pp, f.rng).layers[0].pattern, 0, -2, 0);
+}
+
+// gensky's skyfunc (skybright.cal) at the zenith against the CIE clear sky written out.
+TEST(SurfaceChainSky, DaylightSkyAtZenithMatchesCieClearSky) {
+    Scene s = loadScene({std::string(RP_SHARED_DIR) + "/validation/daylight/scene.rad"});
+    SurfaceChains chains(s, {std::string(RP_SOURCE_DIR) + "/lib"});
+    int32_t glow = indexOf(s, "sky_glow");
+    ASSERT_GE(glow, 0);
+    chains.checkChain(glow);
+    EXPECT_FALSE(chains.directionalOnly(s.prims[glow].modifier));  // skybright.cal
+    SurfaceChainEvaluator ev(chains);
+    Rng rng{7, RngDomain::Test, 0};
+    PatternPoint at;
+    at.dir = {0, 0, 1};
+    Color c = ev.resolve(glow, at, rng).layers[0].pattern;
+    // skyfunc args: 1 8.79 20.0 0.526 | sun 0.153855 -0.727432 0.668708 (gensky +s).
+    double zen = 8.79, ground = 20.0, norm = 0.526, cosg = 0.668708;
+    double gamma = std::acos(cosg);
+    double clear = zen * (0.91 + 10 * std::exp(-3 * gamma) + 0.45 * cosg * cosg) *
+                   (1 - std::exp(-0.32)) / norm;
+    double w = std::pow(2.01, 10);
+    double expected = (w * clear + ground / w) / (w + 1 / w);
+    EXPECT_NEAR(c.r, expected, 1e-9 * expected);
+    EXPECT_EQ(c.r, c.g);
+    EXPECT_EQ(c.g, c.b);
 }
 
 }  // namespace rp::material

@@ -18,7 +18,7 @@
 #include "light/pattern_emission.h"
 #include "calc/search_path.h"
 #include "material/material_calc.h"
-#include "material/pattern.h"
+#include "material/surface_chain.h"
 #include "pmap/contrib.h"
 #include "pmap/distribute.h"
 #include "pmap/photon_map.h"
@@ -89,9 +89,10 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         for (const std::string& s : o.portSpecs) specs.push_back(light::parsePortSpec(s));
         eo.ports = light::findPhotonPorts(scene, geometry, specs);
     }
-    // Pattern-modified sources (e.g. gensky's skyfunc) emit through their pattern chain.
-    material::PatternSet patterns(scene, calc::defaultSearchPath(projectLibDir()));
-    eo.modifierFor = light::patternModifiers(patterns);
+    // Pattern-modified sources (gensky's skyfunc, luminaire data) emit through their
+    // pattern chain.
+    material::SurfaceChains chains(scene, calc::defaultSearchPath(projectLibDir()));
+    eo.modifierFor = light::patternModifiers(chains);
     light::EmissionPlan plan(geometry, std::move(sources), eo);
 
     TraceSettings ts;
