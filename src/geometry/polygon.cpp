@@ -42,6 +42,9 @@ bool makePolygon(const Primitive& prim, int32_t primIndex, PolygonShape& shape,
             break;
         }
     shape.origin = loop[0];
+    shape.vertexMean = {};
+    for (const Vec3& v : loop) shape.vertexMean += v;
+    shape.vertexMean = shape.vertexMean / double(loop.size());
     shape.uAxis = {};
     for (size_t i = 1; i < loop.size(); ++i) {
         Vec3 e = loop[i] - loop[0];

@@ -270,6 +270,8 @@ PlanarRegion makePlanarRegion(const ShapeSet& shapes, size_t index) {
         cv += a * (uv[1] + uv[3] + uv[5]) / 3;
     }
     r.centroid = r.area > 0 ? r.at(cu / r.area, cv / r.area) : r.origin;
+    Vec3 rel = p.vertexMean - r.origin;
+    r.centre = r.contains(dot(rel, r.uAxis), dot(rel, r.vAxis)) ? p.vertexMean : r.centroid;
     return r;
 }
 

@@ -28,7 +28,9 @@ struct PlanarRegion {
     double u0 = 0, u1 = 0, v0 = 0, v1 = 0;  // bounding rectangle in (u, v)
     std::vector<std::array<double, 6>> tris;  // (u, v) of each triangle's corners, CCW
     double area = 0;
-    Vec3 centroid;          // area centroid (RADIANCE sloc for a polygon)
+    Vec3 centroid;          // area centroid
+    Vec3 centre;            // RADIANCE's source centre (fsetsrc sloc): the mean of the
+                            // outline's vertices, or the centroid if that lies outside
 
     Vec3 at(double u, double v) const { return origin + uAxis * u + vAxis * v; }
     // Whether in-plane point (u, v) lies in the polygon (on a triangle, edges included).

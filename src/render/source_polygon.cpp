@@ -138,6 +138,20 @@ void samplePolygon(const PlanarRegion& r, const Vec3& from, double ds, double we
     // Scratch kept per thread: this runs for every shaded point.
     thread_local std::vector<Cell> cells;
     thread_local std::vector<Piece> pieces;
+    if (ds <= 0) {
+        // RADIANCE compat (srcsamp.c nopart + nextssamp): without subdivision the source
+        // is a point at its centre, omega = area cos / d^2. For a large source close by
+        // that differs from its true solid angle (a 3 x 1 m window 1 m away: 3 sr
+        // instead of 1.5), but it is what -ds 0 means to RADIANCE users and their
+        // reference numbers.
+        const Vec3 d = r.centre - from;
+        const double dist = length(d);
+        if (!(dist > 0)) return;
+        const double cosSrc = std::fabs(dot(d / dist, r.normal));  // the caller checked the side
+        if (cosSrc <= 1e-4) return;  // nextssamp: behind the source
+        addSample(out, from, r.centre, r.area * cosSrc / (dist * dist));
+        return;
+    }
     cells.clear();
     Cell whole{r.u0, r.u1, r.v0, r.v1};
     if (ds > 0)
