@@ -42,11 +42,16 @@ inline Vec3 sampleCosine(const Vec3& n, Rng& rng) {
 // gaussamp/agaussamp/isoSpecPhotonScatter: the half vector h = n + d (cos p u + sin p v)
 // with d^2 = -ln(xi) / (cos^2 p / au^2 + sin^2 p / av^2), the outgoing ray is the
 // reflection about h. Up to kMaxIter tries for a direction above the geometric surface.
+// `spread` (rtrace -ss below 1, RADIANCE specjitter) narrows the facet distribution
+// toward the mirror direction: the slope's uniform draw xi becomes 1 - spread xi, so
+// 0 gives the ideal direction. 1 samples the full Ward-Gaussian lobe.
 bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const Vec3& v,
-                          double au, double av, const Vec3& geomN, Rng& rng, Vec3& out);
+                          double au, double av, const Vec3& geomN, Rng& rng, Vec3& out,
+                          double spread = 1);
 // Transmitted Gaussian lobe around `through` (RADIANCE's approximation: no half vector).
 bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, double au,
-                            double av, const Vec3& geomN, Rng& rng, Vec3& out);
+                            double av, const Vec3& geomN, Rng& rng, Vec3& out,
+                            double spread = 1);
 
 inline SpecularRay makeRay(const Vec3& dir, const Color& w, ScatterKind k, bool sampled = false,
                            const MediumChange& m = {}) {

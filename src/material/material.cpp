@@ -13,7 +13,8 @@ namespace detail {
 namespace {
 // One Ward-Gaussian facet slope (Walter 2005, as RADIANCE's normal.c/aniso.c sample it):
 // the in-plane azimuth (cosp, sinp) and tangent length d of the perturbed normal.
-void sampleWardSlope(double au, double av, Rng& rng, double& cosp, double& sinp, double& d) {
+void sampleWardSlope(double au, double av, Rng& rng, double spread, double& cosp, double& sinp,
+                     double& d) {
     double phi = 2 * kPi * rng.uniform();
     cosp = std::cos(phi) * au;
     sinp = std::sin(phi) * av;
@@ -21,6 +22,7 @@ void sampleWardSlope(double au, double av, Rng& rng, double& cosp, double& sinp,
     cosp /= len;
     sinp /= len;
     double xi = rng.uniform();
+    if (spread < 1) xi = 1 - spread * xi;
     d = xi <= kFtiny ? 1.0
                      : std::sqrt(-std::log(xi) /
                                  (cosp * cosp / (au * au) + sinp * sinp / (av * av)));
@@ -28,10 +30,11 @@ void sampleWardSlope(double au, double av, Rng& rng, double& cosp, double& sinp,
 }  // namespace
 
 bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const Vec3& v,
-                          double au, double av, const Vec3& geomN, Rng& rng, Vec3& out) {
+                          double au, double av, const Vec3& geomN, Rng& rng, Vec3& out,
+                          double spread) {
     for (int iter = 0; iter < kMaxIter; ++iter) {
         double cosp, sinp, d;
-        sampleWardSlope(au, av, rng, cosp, sinp, d);
+        sampleWardSlope(au, av, rng, spread, cosp, sinp, d);
         Vec3 h = n + (u * cosp + v * sinp) * d;  // |h|^2 = 1 + d^2
         Vec3 r = dir + h * (-2 * dot(h, dir) / (1 + d * d));
         if (dot(r, geomN) > kFtiny) {
@@ -43,10 +46,11 @@ bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const V
 }
 
 bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, double au,
-                            double av, const Vec3& geomN, Rng& rng, Vec3& out) {
+                            double av, const Vec3& geomN, Rng& rng, Vec3& out,
+                            double spread) {
     for (int iter = 0; iter < kMaxIter; ++iter) {
         double cosp, sinp, d;
-        sampleWardSlope(au, av, rng, cosp, sinp, d);
+        sampleWardSlope(au, av, rng, spread, cosp, sinp, d);
         Vec3 t = through + (u * cosp + v * sinp) * d;
         if (dot(t, geomN) < -kFtiny) {
             out = normalize(t);

@@ -230,6 +230,8 @@ Color evaluate(const MaterialParams& m, const SurfacePoint& sp, const Vec3& toLi
 
 struct ShadeOptions {
     double specThreshold = 0;  // rtrace -st: rough specular at or below this goes ambient
+    double specJitter = 1;     // rtrace -ss: below 1, sampled rough-specular rays are
+                               // drawn closer to the mirror direction (0: ideal)
     bool backVisible = true;   // rtrace -bv
 };
 

@@ -107,7 +107,7 @@ BackwardResult shadeWard(const WardHit& h, bool pure, const SurfacePoint& sp,
         } else if (opt.specThreshold >= h.tspec - kFtiny) {
             tblt = true;  // below -st: counted in the ambient instead
         } else if (sampleWardTransmission(h.prdir, h.u, h.v, h.au, h.av, sp.geomNormal, rng,
-                                          ray.dir)) {
+                                          ray.dir, opt.specJitter)) {
             ray.sampled = true;
             r.add(ray);
         }
@@ -123,7 +123,7 @@ BackwardResult shadeWard(const WardHit& h, bool pure, const SurfacePoint& sp,
         } else if (opt.specThreshold >= h.rspec - kFtiny) {
             rblt = true;
         } else if (sampleWardReflection(sp.dir, sp.normal, h.u, h.v, h.au, h.av,
-                                        sp.geomNormal, rng, ray.dir)) {
+                                        sp.geomNormal, rng, ray.dir, opt.specJitter)) {
             ray.sampled = true;
             r.add(ray);
         }

@@ -72,6 +72,18 @@ bool DirectLighting::isDistantSource(int32_t source) const {
            impl_->list.distantInList[size_t(source)];
 }
 
+// RADIANCE source.c passillum/illumblock: a shadow ray aimed at another source passes an
+// illum it meets, except from the illum's front toward a real illum or glow (one
+// secondary source must not relay another's light twice).
+namespace {
+bool passesIllum(const DirectSource& src, const Hit& hit) {
+    const auto kind = src.light.params.kind;
+    const bool weak = kind == material::LightParams::Kind::Illum ||
+                      kind == material::LightParams::Kind::Glow;
+    return !src.relays.empty() || !weak || !hit.front;
+}
+}  // namespace
+
 Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
                                   const Vec3* crossings, ShadowOracle& oracle) const {
     const DirectSource& src = list.sources[size_t(c.source)];
@@ -143,9 +155,9 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
                 advanced = true;
                 continue;
             }
-            ShadowEvent ev = oracle.event(*hit, dir);
-            if (last && !escape && hit->prim == src.light.prim)
-                return ev.kind == ShadowEvent::Kind::Emit ? through * ev.colour : Color{};
+            const bool target = last && !escape && hit->prim == src.light.prim;
+            ShadowEvent ev = oracle.event(*hit, dir, !target && passesIllum(src, *hit));
+            if (target) return ev.kind == ShadowEvent::Kind::Emit ? through * ev.colour : Color{};
             // Glass and trans pass light on; anything else (an opaque surface, another
             // source, a relay not on this path) blocks it.
             if (ev.kind != ShadowEvent::Kind::Transmit) return {};

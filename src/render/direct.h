@@ -42,8 +42,10 @@ public:
     // The first surface along `ray` (t < ray.tmax); antimatter and other invisible
     // surfaces are already skipped.
     virtual std::optional<Hit> closestHit(const Ray& ray) = 0;
-    // What a shadow ray travelling in `dir` does at `hit`.
-    virtual ShadowEvent event(const Hit& hit, const Vec3& dir) = 0;
+    // What a shadow ray travelling in `dir` does at `hit`. `passIllum`: the ray is aimed
+    // at another source, so an illum it meets is its alternate material (RADIANCE
+    // source.c passillum: a window's illum passes the sun through its glass).
+    virtual ShadowEvent event(const Hit& hit, const Vec3& dir, bool passIllum = false) = 0;
     // Radiance of distant source `source` (index into SceneGeometry::sources()) seen in
     // unit direction `dir` (patterns applied); zero if it is not a light source.
     virtual Color distantRadiance(int32_t source, const Vec3& dir) = 0;

@@ -24,7 +24,7 @@ public:
         ++rays;
         return geo_.closestHit(ray);
     }
-    ShadowEvent event(const Hit& hit, const Vec3&) override {
+    ShadowEvent event(const Hit& hit, const Vec3&, bool) override {
         int32_t mat = light::findMaterial(scene_, hit.prim);
         if (mat == kVoid) return {};
         const Primitive& m = scene_.prims[size_t(mat)];

@@ -97,6 +97,7 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
     // that a ray's result depends only on its input position.
     seed = o.uncorrelated ? (uint64_t(std::random_device{}()) << 32 | std::random_device{}()) : 0;
     shadeOptions.specThreshold = o.specular.threshold;
+    shadeOptions.specJitter = o.specular.sampling;
     shadeOptions.backVisible = o.backVisible;
 }
 

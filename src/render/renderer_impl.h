@@ -71,7 +71,7 @@ public:
 
     // ShadowOracle
     std::optional<Hit> closestHit(const Ray& ray) override;
-    ShadowEvent event(const Hit& hit, const Vec3& dir) override;
+    ShadowEvent event(const Hit& hit, const Vec3& dir, bool passIllum = false) override;
     Color distantRadiance(int32_t source, const Vec3& dir) override;
     material::Redirection redirect(const Hit& hit, const Vec3& dir, int projection,
                                    const Vec3& toSource) override;
@@ -120,8 +120,10 @@ private:
     // along `dir`; `isGlow`/`isLight` say what it was (both false: not a light).
     Color sourceRadiance(int32_t modifier, const Hit& at, const Vec3& dir, bool& isGlow,
                          bool& isLight);
-    ShadowEvent mixedEvent(const Hit& hit, const Vec3& dir);
-    ShadowEvent layerEvent(const Hit& hit, const Vec3& dir, const material::ShadingLayer& l);
+    ShadowEvent chainEvent(const material::ChainResult& chain, const Hit& hit, const Vec3& dir,
+                           bool passIllum);
+    ShadowEvent layerEvent(const Hit& hit, const Vec3& dir, const material::ShadingLayer& l,
+                           bool passIllum);
 
     // Sets materialCalc for `material` at the hit (when it has functions) and fills the
     // SurfacePoint fields they give: u orientation, BRTDfunc colours, directional part.

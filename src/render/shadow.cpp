@@ -16,7 +16,7 @@ std::optional<Hit> Renderer::Context::closestHit(const Ray& ray) {
 }
 
 ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
-                                          const material::ShadingLayer& layer) {
+                                          const material::ShadingLayer& layer, bool passIllum) {
     ShadowEvent ev;
     if (layer.material == kVoid) {
         ev.kind = ShadowEvent::Kind::Transmit;
@@ -32,8 +32,16 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
         if (!hit.front) sp.normal = -sp.normal;
     }
     if (e.isLight) {
-        material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
         const auto& light = std::get<material::LightParams>(params);
+        if (passIllum && light.kind == material::LightParams::Kind::Illum) {
+            if (e.alternate == kVoid) {
+                ev.kind = ShadowEvent::Kind::Transmit;
+                ev.colour = Color{1, 1, 1};
+                return ev;
+            }
+            return chainEvent(resolve(e.alternate, hit, dir), hit, dir, false);
+        }
+        material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
         if (light.kind == material::LightParams::Kind::Illum)
             b.emitted = light.radiance * layer.pattern;  // a source for shadow rays
         ev.kind = ShadowEvent::Kind::Emit;
@@ -88,8 +96,8 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
     return ev;  // opaque
 }
 
-ShadowEvent Renderer::Context::event(const Hit& hit, const Vec3& dir) {
-    ShadowEvent ev = mixedEvent(hit, dir);
+ShadowEvent Renderer::Context::event(const Hit& hit, const Vec3& dir, bool passIllum) {
+    ShadowEvent ev = chainEvent(resolve(hit.modifier, hit, dir), hit, dir, passIllum);
     if (shadowBlockedByTransparent_ && ev.kind != ShadowEvent::Kind::Emit) {
         // Photon-map mode: light through glass, trans or mirrors comes from the photons
         // (pmapmat.h shadowRayInPmap); antimatter and void still pass it.
@@ -106,9 +114,9 @@ ShadowEvent Renderer::Context::event(const Hit& hit, const Vec3& dir) {
     return ev;
 }
 
-ShadowEvent Renderer::Context::mixedEvent(const Hit& hit, const Vec3& dir) {
-    material::ChainResult chain = resolve(hit.modifier, hit, dir);
-    if (chain.count == 1) return layerEvent(hit, dir, chain.layers[0]);
+ShadowEvent Renderer::Context::chainEvent(const material::ChainResult& chain, const Hit& hit,
+                                          const Vec3& dir, bool passIllum) {
+    if (chain.count == 1) return layerEvent(hit, dir, chain.layers[0], passIllum);
     // Mixtures: emission wins (the shadow ray reached a source); otherwise the layers'
     // transmission (or reflection) is averaged by weight, opaque layers counting zero.
     ShadowEvent out;
@@ -117,7 +125,7 @@ ShadowEvent Renderer::Context::mixedEvent(const Hit& hit, const Vec3& dir) {
     ShadowEvent::Kind passKind = ShadowEvent::Kind::Transmit;
     for (int i = 0; i < chain.count; ++i) {
         const material::ShadingLayer& l = chain.layers[size_t(i)];
-        ShadowEvent ev = layerEvent(hit, dir, l);
+        ShadowEvent ev = layerEvent(hit, dir, l, passIllum);
         if (ev.kind == ShadowEvent::Kind::Emit) {
             anyEmit = true;
             emit += ev.colour * l.weight;
