@@ -88,8 +88,9 @@ struct SurfaceChainEvaluator::Impl {
 
     void addPerturbation(const ChainRecord& r, WalkState& st, Vec3 disp) {
         // RADIANCE compat (t_func.c): the perturbation is computed in function space and
-        // carried to world space by the forward transform, scale included.
-        if (r.hasTransform) disp = toVec(r.forward.direction(toArr(disp)));
+        // carried to world space by the forward transform's rotation: the scale is
+        // divided out (a texfunc under "-s 0.2" perturbs as much as without it).
+        if (r.hasTransform) disp = toVec(r.forward.direction(toArr(disp))) / r.forward.scale;
         st.pert += disp;
     }
 
