@@ -141,6 +141,8 @@ BackwardResult shadeLight(const LightParams& m, const SurfacePoint& sp) {
             r.transparent = true;
         return r;
     }
+    // RADIANCE compat (source.c m_light): a light seen from behind is black.
+    if (!sp.front) return r;
     Color L = m.radiance * sp.pattern;
     if (m.kind == LightParams::Kind::Spotlight) {
         // srcsupp.c spotout: outside the cone when 2 pi (1 - cos theta) > solid angle,

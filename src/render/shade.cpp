@@ -186,8 +186,11 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         const auto& light = std::get<material::LightParams>(params);
         bool source = impl.direct.isSourceSurface(hit.prim, ray.origin);
         // RADIANCE badcomponent: rays descended from ambient or sampled specular rays
-        // must not count light the direct calculation already gave.
-        if (state.indirect && source) {
+        // must not count light the direct calculation already gave; a glow with a
+        // negative radius contributes to no illumination at all (ray.html glow).
+        const bool darkGlow = light.kind == material::LightParams::Kind::Glow &&
+                              light.glowMaxRadius < 0 && hit.front;
+        if (state.indirect && (source || darkGlow)) {
             fillFirst(first);
             return {};
         }
