@@ -139,7 +139,9 @@ void sampleRing(const RingShape& r, const Vec3& from, const DirectOptions& opt, 
             Vec3 u = lengthSquared(inPlane) > 0 ? normalize(inPlane) : r.e1;
             p = r.centre + u * (0.5 * (r.r0 + r.r1));
         }
-        addAreaSample(from, p, r.normal, area, 1, out, true);
+        // With -ds 0 RADIANCE's point rule exactly (srcsamp.c: A cos / d^2); a single
+        // cell of a subdivided ring keeps the on-axis disk correction.
+        addAreaSample(from, p, r.normal, area, 1, out, opt.sampling > 0);
         return;
     }
     // Equal-area polar cells: uniform in angle and in radius squared.
