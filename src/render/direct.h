@@ -39,10 +39,12 @@ struct ShadowEvent {
 class ShadowOracle {
 public:
     virtual ~ShadowOracle() = default;
-    // The first surface along `ray` (t < ray.tmax); antimatter and other invisible
-    // surfaces are already skipped.
+    // The first surface along `ray` (t < ray.tmax).
     virtual std::optional<Hit> closestHit(const Ray& ray) = 0;
-    // What a shadow ray travelling in `dir` does at `hit`.
+    // A shadow ray is about to be traced from the point being lit: events that follow
+    // belong to it (the renderer resets what antimatter it is inside).
+    virtual void beginShadowRay() {}
+    // What a shadow ray travelling in `dir` does at `hit` (antimatter passes it, Transmit).
     virtual ShadowEvent event(const Hit& hit, const Vec3& dir) = 0;
     // Radiance of distant source `source` (index into SceneGeometry::sources()) seen in
     // unit direction `dir` (patterns applied); zero if it is not a light source.
