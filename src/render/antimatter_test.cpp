@@ -1,6 +1,7 @@
-// Antimatter in the backward pass: eye rays and shadow rays see through a hole cut by
-// antimatter, as RADIANCE does (the radiance-tests mirror model: sunlight through a
-// portal in the end wall, onto the walls). Truth is the sun's unshadowed irradiance L * omega.
+// Antimatter in the backward pass: eye rays, shadow rays and the -dp pretest of mirror
+// virtual sources see through a hole cut by antimatter, as RADIANCE does (the
+// radiance-tests mirror model: sunlight through a portal in the end wall, onto walls
+// and into a mirror). Truth is the sun's unshadowed irradiance L * omega.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,6 +90,25 @@ TEST(Antimatter, OnlyTheListedModifiersAreClipped) {
     EXPECT_EQ(f.irradiance({0, 0, 0}, {0, 0, 1}), 0);
     EXPECT_NEAR(f.irradiance({0.4, 0, 0}, {0, 0, 1}), kSunIrradiance, 1e-3 * kSunIrradiance);
     EXPECT_EQ(f.scene.prims[size_t(f.trace({0, 0, 1}, {0, 0, 1}).prim)].name, "lid");
+}
+
+TEST(Antimatter, MirrorLitThroughTheHoleMakesAVirtualSource) {
+    // A small mirror under the hole sees the sun only through it; the -dp pretest must
+    // follow its rays through the antimatter or the virtual sun is dropped.
+    const std::string mirror =
+        "void mirror silver 0 0 3 .9 .9 .9\n"
+        "silver polygon m 0 0 12  -0.2 -0.2 0  0.2 -0.2 0  0.2 0.2 0  -0.2 0.2 0\n";
+    const double want = 0.9 * kSunIrradiance;
+    Fixture f(kRoof + mirror);  // -dp 512
+    EXPECT_NEAR(f.irradiance({0, 0, 1}, {0, 0, -1}), want, 1e-3 * want);
+    RenderOptions noPretest;
+    noPretest.direct.pretest = 0;
+    Fixture g(kRoof + mirror, noPretest);
+    EXPECT_NEAR(g.irradiance({0, 0, 1}, {0, 0, -1}), want, 1e-3 * want);
+    // Without the hole the roof hides the sun from the mirror.
+    std::string solid = kRoof.substr(0, kRoof.find("void antimatter"));
+    Fixture h(solid + mirror);
+    EXPECT_EQ(h.irradiance({0, 0, 1}, {0, 0, -1}), 0);
 }
 
 }  // namespace
