@@ -89,6 +89,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
     const DirectSource& src = list.sources[size_t(c.source)];
     const size_t legs = src.relays.size() + 1;
     Vec3 dir = c.toLight;
+    oracle.beginShadowRay();
     Ray ray = at.hit ? spawnRay(*at.hit, dir) : Ray{at.point, dir, HUGE_VAL};
     // How far spawn offsets may have moved the ray off the straight line to the goal.
     double shift = at.hit ? at.hit->offset : 0;

@@ -39,12 +39,15 @@ struct ShadowEvent {
 class ShadowOracle {
 public:
     virtual ~ShadowOracle() = default;
-    // The first surface along `ray` (t < ray.tmax); antimatter and other invisible
-    // surfaces are already skipped.
+    // The first surface along `ray` (t < ray.tmax).
     virtual std::optional<Hit> closestHit(const Ray& ray) = 0;
-    // What a shadow ray travelling in `dir` does at `hit`. `passIllum`: the ray is aimed
-    // at another source, so an illum it meets is its alternate material (RADIANCE
-    // source.c passillum: a window's illum passes the sun through its glass).
+    // A shadow ray is about to be traced from the point being lit: events that follow
+    // belong to it (the renderer resets what antimatter it is inside).
+    virtual void beginShadowRay() {}
+    // What a shadow ray travelling in `dir` does at `hit` (antimatter passes it, Transmit).
+    // `passIllum`: the ray is aimed at another source, so an illum it meets is its
+    // alternate material (RADIANCE source.c passillum: a window's illum passes the sun
+    // through its glass).
     virtual ShadowEvent event(const Hit& hit, const Vec3& dir, bool passIllum = false) = 0;
     // Radiance of distant source `source` (index into SceneGeometry::sources()) seen in
     // unit direction `dir` (patterns applied); zero if it is not a light source.

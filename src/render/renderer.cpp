@@ -85,7 +85,8 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
                  material::MaterialCalcEvaluator ev(materialCalc);
                  return evalRedirect(scene, materialCalc, ev, hit, dir, projection, toSource);
              }),
-      ambient(ambientOptions, g.sceneCube().size, s, o.limits.minWeight) {
+      ambient(ambientOptions, g.sceneCube().size, s, o.limits.minWeight),
+      antimatter(s, true) {
     materials.resize(s.prims.size());
     for (size_t i = 0; i < s.prims.size(); ++i)
         if (primCategory(s.prims[i].type) == PrimCategory::Material)

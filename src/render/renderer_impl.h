@@ -13,6 +13,7 @@
 #include "material/material_calc.h"
 #include "material/surface_chain.h"
 #include "render/ambient.h"
+#include "render/clip_set.h"
 #include "render/direct.h"
 #include "render/photon_lighting.h"
 #include "render/renderer.h"
@@ -30,6 +31,7 @@ struct RayState {
     bool indirect = false;     // descended from an ambient or sampled specular ray
     bool primary = true;       // the input ray itself
     bool irradianceHit = false;  // -i: shade the first surface as white Lambertian
+    ClipSet clip;              // what antimatter hides from the ray (RADIANCE clipset)
 };
 
 // One material record, checked once. `error` holds the message for a record that cannot
@@ -63,6 +65,8 @@ struct Renderer::Impl {
     mutable std::atomic<long> rays{0};
 
     const MaterialEntry& material(int32_t index) const;  // throws for unusable records
+
+    AntimatterTable antimatter;  // what each antimatter clips (clip_set.h)
 };
 
 class Renderer::Context : public ShadowOracle, public HemisphereTracer {
@@ -72,6 +76,7 @@ public:
     // ShadowOracle
     std::optional<Hit> closestHit(const Ray& ray) override;
     ShadowEvent event(const Hit& hit, const Vec3& dir, bool passIllum = false) override;
+    void beginShadowRay() override { shadowClip_ = shadowBase_; }
     Color distantRadiance(int32_t source, const Vec3& dir) override;
     material::Redirection redirect(const Hit& hit, const Vec3& dir, int projection,
                                    const Vec3& toSource) override;
@@ -85,8 +90,10 @@ public:
     Color radiance(const Ray& ray, const RayState& state, RayResult* first, double& distance,
                    Vec3* hitNormal = nullptr);
 
-    // Irradiance at a point on a white Lambertian surface facing `normal`.
-    Color irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel, double weight);
+    // Irradiance at a point on a white Lambertian surface facing `normal`, for a ray
+    // whose clip set is `clip`.
+    Color irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel, double weight,
+                       const ClipSet& clip = {});
 
     const Renderer& renderer;
     const Impl& impl;
@@ -112,7 +119,7 @@ private:
                          int32_t alternate, RayResult* first, bool& passThrough);
     Color escaped(const Ray& ray, const RayState& state);
     Color directAt(const Hit& hit, const material::MaterialParams& params,
-                   const material::SurfacePoint& sp, bool transmits, double weight);
+                   const material::SurfacePoint& sp, bool transmits, const RayState& state);
     Color ambientAt(const Hit& hit, const Vec3& normal, int32_t modifier,
                     const RayState& state);
     material::ChainResult resolve(int32_t modifier, const Hit& hit, const Vec3& dir);
@@ -130,6 +137,10 @@ private:
     void applyMaterialCalc(int32_t material, const Hit& hit, const Vec3& dir,
                            material::SurfacePoint& sp);
     int sampleDepth_ = 0;  // depth of the ray whose ambient samples are being traced
+    ClipSet sampleClip_;    // and the clip set its samples start with
+    // Clip set of the shadow rays of the point being lit (set by directAt and
+    // irradianceAt), and of the shadow ray being traced (reset by beginShadowRay).
+    ClipSet shadowBase_, shadowClip_;
     // RADIANCE compat (pmapmat.h shadowRayInPmap): in photon-map mode a shadow ray is
     // stopped by transparent surfaces when the photons already carry that light.
     bool shadowBlockedByTransparent_ = false;

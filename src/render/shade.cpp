@@ -94,6 +94,9 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
     double travelled = 0;
     Color total, coef{1, 1, 1};
     distance = kNoHit;
+    // The state of the ray as it goes on: crossing antimatter changes its clip set
+    // (RADIANCE's transferred ray takes the antimatter hit's newcset).
+    RayState cur = state;
     // Transparent surfaces (antimatter, void mixtures, invisible illums) pass the ray on;
     // bounded so that a pathological stack of them cannot loop.
     for (int pass = 0; pass < 64; ++pass) {
@@ -101,11 +104,19 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
         if (!hit) {
             // A ray with a length limit (rtrace -ld) that ends short of every surface is
             // clipped: RADIANCE gives it no value, not the sources or sky behind.
-            if (!(r.tmax < HUGE_VAL)) total += coef * escaped(r, state);
+            if (!(r.tmax < HUGE_VAL)) total += coef * escaped(r, cur);
             break;
         }
         Color passWeight;
-        Color c = shadeHit(r, *hit, state, record, passWeight);
+        Color c;
+        if (cur.clip.contains(hit->modifier)) {
+            passWeight = Color{1, 1, 1};  // inside antimatter that clips it: invisible
+        } else if (const auto* clips = impl.antimatter.clips(hit->modifier)) {
+            cur.clip.cross(*clips, hit->front);
+            passWeight = Color{1, 1, 1};
+        } else {
+            c = shadeHit(r, *hit, cur, record, passWeight);
+        }
         total += coef * c;
         if (passWeight.max() <= 0) {
             distance = travelled + hit->t;
@@ -211,7 +222,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         }
         fillFirst(first);
         // -i: the first surface is white Lambertian; the value is its irradiance.
-        return irradianceAt(hit, n, state.ambientLevel, state.weight);
+        return irradianceAt(hit, n, state.ambientLevel, state.weight, state.clip);
     }
 
     if (e.hasAlternate && std::holds_alternative<material::MirrorParams>(params)) {
@@ -254,7 +265,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     for (int i = 0; i < (specularInPmap ? 0 : b.numRays); ++i) {
         const material::SpecularRay& sr = b.rays[size_t(i)];
         Color rc = sr.weight;
-        RayState child = state;
+        RayState child = state;  // the clip set too
         child.depth = state.depth + 1;
         child.weight = state.weight * rc.average();
         child.primary = false;
@@ -298,7 +309,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
             shadowBlockedByTransparent_ = shadowInPhotonMap(state);
         // Specular children may have used the function evaluator: set this hit again.
         if (sp.directional) applyMaterialCalc(layer.material, hit, ray.dir, sp);
-        value += directAt(hit, params, sp, transmits, state.weight);
+        value += directAt(hit, params, sp, transmits, state);
         }
     }
     if (b.ambientReflect.max() > 0)
@@ -331,9 +342,10 @@ Color Renderer::Context::shadeAlternate(const Ray& ray, const Hit& hit, const Ra
 
 Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams& params,
                                   const material::SurfacePoint& sp, bool transmits,
-                                  double weight) {
+                                  const RayState& state) {
     DirectPoint at;
-    at.weight = weight;
+    at.weight = state.weight;
+    shadowBase_ = shadowClip_ = state.clip;  // shadow rays start with the ray's set
     at.point = hit.point;
     at.normal = sp.normal;
     at.geomNormal = sp.geomNormal;
@@ -370,14 +382,17 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
             c += pm.causticDensity(*photonLookups, hit.point, normal);
     }
     int saved = sampleDepth_;
+    ClipSet savedClip = sampleClip_;
     sampleDepth_ = state.depth;
+    sampleClip_ = state.clip;
     c += impl.ambient.indirect(ap, *this, rng);
     sampleDepth_ = saved;
+    sampleClip_ = savedClip;
     return c;
 }
 
 Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel,
-                                      double weight) {
+                                      double weight, const ClipSet& clip) {
     // White Lambertian receiver: direct irradiance sum L cos omega, plus pi times the
     // ambient calculation's average radiance.
     DirectPoint at;
@@ -389,6 +404,7 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int am
     RayState here;
     here.ambientLevel = ambientLevel;
     shadowBlockedByTransparent_ = shadowInPhotonMap(here);
+    shadowBase_ = shadowClip_ = clip;
     Color e = impl.direct.compute(
         at,
         [&](const Vec3& toLight, double) {
@@ -400,6 +416,7 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int am
     st.ambientLevel = ambientLevel;
     st.weight = weight;
     st.depth = sampleDepth_;
+    st.clip = clip;
     return e + ambientAt(hit, normal, kVoid, st) * kPi;
 }
 

@@ -97,7 +97,18 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
 }
 
 ShadowEvent Renderer::Context::event(const Hit& hit, const Vec3& dir, bool passIllum) {
-    ShadowEvent ev = chainEvent(resolve(hit.modifier, hit, dir), hit, dir, passIllum);
+    // Antimatter as for any ray (shade.cpp radiance): clipped surfaces pass the shadow
+    // ray unchanged, and so do antimatter surfaces, changing what it clips.
+    ShadowEvent ev;
+    const bool clipped = shadowClip_.contains(hit.modifier);
+    const std::vector<int32_t>* clips = clipped ? nullptr : impl.antimatter.clips(hit.modifier);
+    if (clipped || clips) {
+        if (clips) shadowClip_.cross(*clips, hit.front);
+        ev.kind = ShadowEvent::Kind::Transmit;
+        ev.colour = Color{1, 1, 1};
+        return ev;
+    }
+    ev = chainEvent(resolve(hit.modifier, hit, dir), hit, dir, passIllum);
     if (shadowBlockedByTransparent_ && ev.kind != ShadowEvent::Kind::Emit) {
         // Photon-map mode: light through glass, trans or mirrors comes from the photons
         // (pmapmat.h shadowRayInPmap); antimatter and void still pass it.
@@ -223,6 +234,7 @@ HemisphereTracer::Sample Renderer::Context::trace(const Vec3& origin, const Vec3
     st.ambientLevel = ambientLevel;
     st.indirect = true;
     st.primary = false;
+    st.clip = sampleClip_;
     Sample s;
     double d = kNoHit;
     int saved = sampleDepth_;

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "material/material.h"
+#include "render/clip_set.h"
 
 namespace rp::render {
 
@@ -79,6 +80,7 @@ ModifierSet passableModifiers(const Scene& scene, const ShapeSet& shapes) {
         case PrimType::Plasdata:
         case PrimType::Metdata:
         case PrimType::Mirror:
+        case PrimType::Antimatter:  // the pretest follows it (clearPath)
             return;
         default: skip.add(modifier);
         }
@@ -90,11 +92,37 @@ ModifierSet passableModifiers(const Scene& scene, const ShapeSet& shapes) {
     return skip;
 }
 
+// Whether the segment from `origin` along unit `dir` (to `tmax`) is free of opaque
+// surfaces: those in `skip` are passed, and so are antimatter surfaces and what the
+// antimatter the segment is inside clips (clip_set.h), as for a shadow ray. The
+// segment starts outside all antimatter, as RADIANCE's pretest rays do.
+bool clearPath(const SceneGeometry& geometry, const ModifierSet& skip,
+               const AntimatterTable& antimatter, const Vec3& origin, const Vec3& dir,
+               double tmax) {
+    if (antimatter.empty()) return !geometry.occluded(origin, dir, tmax, &skip);
+    ClipSet clip;
+    Ray ray{origin, dir, tmax};
+    double travelled = 0;
+    for (int pass = 0; pass < 64; ++pass) {  // bounded like the renderer's pass loop
+        std::optional<Hit> hit = geometry.closestHit(ray, &skip, false);
+        if (!hit) return true;
+        if (!clip.contains(hit->modifier)) {
+            const std::vector<int32_t>* clips = antimatter.clips(hit->modifier);
+            if (!clips) return false;  // opaque
+            clip.cross(*clips, hit->front);
+        }
+        travelled += hit->t;
+        ray = spawnRay(*hit, dir, tmax < HUGE_VAL ? std::fmax(0.0, tmax - travelled) : tmax);
+    }
+    return false;
+}
+
 // RADIANCE's -dp pretest (virtuals.c vstestvis), geometric: whether some point of the
 // mirror sees the real source's centre past opaque surfaces. Sample count: `density`
 // per steradian of the mirror as seen from the source (at least 4, at most 256).
 bool mirrorSeesSource(const SceneGeometry& geometry, const ModifierSet& skip,
-                      const RelayPlane& m, const DirectSource& src, int side, int density) {
+                      const AntimatterTable& antimatter, const RelayPlane& m,
+                      const DirectSource& src, int side, int density) {
     const PlanarRegion& r = m.region;
     double omega = 2 * kPi;
     if (!src.distant()) {
@@ -116,7 +144,7 @@ bool mirrorSeesSource(const SceneGeometry& geometry, const ModifierSet& skip,
             // Light surfaces are passed (so the source's own never blocks); stop short
             // of the source's centre.
             double tmax = src.distant() ? HUGE_VAL : dist * (1 - 1e-6);
-            if (!geometry.occluded(p, dir, tmax, &skip)) return true;
+            if (clearPath(geometry, skip, antimatter, p, dir, tmax)) return true;
         }
     return false;
 }
@@ -334,6 +362,7 @@ SourceList buildSourceList(const Scene& scene, const SceneGeometry& geometry,
     if (list.relays.empty()) return list;
 
     const ModifierSet passable = passableModifiers(scene, shapes);
+    const AntimatterTable antimatter(scene);
     // Level by level (virtuals.c addvirtuals): each source of the previous level seen
     // through each relay other than the one it was last relayed by.
     size_t levelStart = 0, levelEnd = list.sources.size();
@@ -354,7 +383,7 @@ SourceList buildSourceList(const Scene& scene, const SceneGeometry& geometry,
                         if (!facesMirror(base, shapes, list.regions, m)) continue;
                         int side = reflectingSide(m, base);
                         if (options.pretest > 0 &&
-                            !mirrorSeesSource(geometry, passable, m, base, side,
+                            !mirrorSeesSource(geometry, passable, antimatter, m, base, side,
                                               options.pretest))
                             continue;
                     }
