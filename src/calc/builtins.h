@@ -21,12 +21,7 @@ std::span<const Builtin> builtins();
 // nullptr when `name` is not a builtin.
 const Builtin* findBuiltin(std::string_view name);
 
-// Pseudo-random value in [0,1) that depends only on x (calc's rand(x)).
+// Pseudo-random value in [0,1) that depends only on x: calc's rand(x), RADIANCE's values.
 double randOf(double x);
-
-// Gradient noise in about [-1,1] with its analytic gradient; `grad` may be null.
-double noise3(double x, double y, double z, double grad[3]);
-// Sum of noise3 octaves with halving amplitude, normalised to about [-1,1].
-double fnoise3(double x, double y, double z);
 
 }  // namespace rp::calc
