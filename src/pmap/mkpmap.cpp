@@ -104,6 +104,8 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
     ts.sensors = o.sensors;
     ts.include = o.include;
     ts.exclude = o.exclude;
+    // BRTDfunc's specular expressions at photon hits (pmapmat.c brdfPhotonScatter).
+    material::MaterialCalc functions(scene, calc::defaultSearchPath(projectLibDir()));
     auto t0 = Clock::now();
     DistributionResult dist;
     std::vector<PhotonPrimary> primaries;  // contribution map only
@@ -116,13 +118,12 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         cs.threads = o.nproc;
         cs.reportSeconds = o.reportSeconds;
         cs.progress = &diag;
-        ContribResult cr = distributeContrib(scene, geometry, plan, eo, ts, cs);
+        ContribResult cr = distributeContrib(scene, geometry, plan, eo, ts, cs, &functions);
         dist.photons[size_t(PhotonMapType::Contrib)] = std::move(cr.photons);
         primaries = std::move(cr.primaries);
         dist.emitted = cr.totalEmitted;
         dist.runaways = cr.runaways;
     } else {
-        material::MaterialCalc functions(scene, calc::defaultSearchPath(projectLibDir()));
         PhotonTracer tracer(scene, geometry, plan, ts, &functions);
         DistributionSettings ds;
         for (size_t t = 0; t < o.maps.size(); ++t)
