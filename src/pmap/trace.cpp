@@ -58,9 +58,10 @@ int8_t packNormal(double v) { return static_cast<int8_t>(127.0 * v); }
 
 PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
                            const light::EmissionPlan& plan, TraceSettings settings,
-                           const material::MaterialCalc* materialCalc)
-    : scene_(scene), geometry_(geometry), materialCalc_(materialCalc), plan_(plan),
-      settings_(std::move(settings)) {
+                           const material::MaterialCalc* materialCalc,
+                           const material::SurfaceChains* chains)
+    : scene_(scene), geometry_(geometry), materialCalc_(materialCalc), chains_(chains),
+      plan_(plan), settings_(std::move(settings)) {
     const auto& prims = scene.prims;
     modifiers_.resize(prims.size());
     std::unordered_set<std::string> include(settings_.include.begin(), settings_.include.end());
@@ -77,6 +78,12 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
     }
     if (!sensors.empty() && !sensorFound) throw InputError("no photon sensors found");
 
+    // Every material record once (the chain may reach any of them through a mixture);
+    // one whose arguments are wrong is reported when a photon reaches it.
+    for (size_t m = 0; m < prims.size(); ++m)
+        if (primCategory(prims[m].type) == PrimCategory::Material)
+            setMaterialInfo(int32_t(m), sensors);
+
     bool warnedPattern = false;
     for (size_t i = 0; i < prims.size(); ++i) {
         const Primitive& surf = prims[i];
@@ -86,52 +93,106 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
         info.resolved = true;
         const Primitive& mod = prims[size_t(surf.modifier)];
         info.storeAllowed = include.empty() ? !exclude.count(mod.name) : include.count(mod.name) > 0;
+        info.plain = !chains_ || chains_->isPlain(surf.modifier);
         // Walk past patterns and textures to the material (RADIANCE findmaterial).
         int32_t m = surf.modifier;
         for (size_t guard = 0; m != kVoid && guard < prims.size(); ++guard) {
             const Primitive& p = prims[size_t(m)];
             PrimCategory c = primCategory(p.type);
-            if (c == PrimCategory::Material) break;
-            if (c == PrimCategory::Mixture)
-                throw notSupportedYet(p.loc, "mixture '" + p.name + "' in photon maps");
-            if (!warnedPattern) {
+            if (c == PrimCategory::Material || c == PrimCategory::Mixture) break;
+            if (!chains_ && !warnedPattern) {
                 warn(p.loc, "pattern/texture '" + p.name +
-                                "' is ignored by photon scattering (not supported yet)");
+                                "' is ignored by photon scattering (no chains given)");
                 warnedPattern = true;
             }
             m = p.modifier;
         }
-        info.material = m;
-        if (m == kVoid) continue;  // void: photons pass (tracePhoton's OVOID transfer)
-        const Primitive& mat = prims[size_t(m)];
-        info.params = material::makeMaterial(mat);
-        // RADIANCE's photon tracer has no prism1/prism2 scattering (pmapmat.c leaves them
-        // to its default, an error); we say so at the material's line.
-        if (std::holds_alternative<material::PrismParams>(info.params))
-            throw notSupportedYet(mat.loc, std::string(primTypeName(mat.type)) +
-                                               " material in photon maps");
-        info.isLight = std::holds_alternative<material::LightParams>(info.params);
-        info.antimatter = mat.type == PrimType::Antimatter;
-        info.sensor = info.antimatter && sensors.count(mat.name) > 0;
-        info.backAbsorbs = opaqueBackAbsorbs(info.params);
-        // Of the function-driven materials only BRTDfunc's photon scattering reads its
-        // functions (the specular colours); *func and *data scatter diffusely.
-        info.functions = materialCalc_ && materialCalc_->uses(m) &&
-                         std::holds_alternative<material::BrtdParams>(info.params);
-        if (info.antimatter) {
-            // RADIANCE lastmod: the last definition of the name before the antimatter.
-            for (const std::string& name : mat.sargs) {
-                if (name == "void") continue;
-                for (int32_t k = m - 1; k >= 0; --k)
-                    if (isModifier(prims[size_t(k)].type) && prims[size_t(k)].name == name) {
-                        info.clips.push_back(k);
-                        break;
-                    }
-            }
+        if (m != kVoid && primCategory(prims[size_t(m)].type) == PrimCategory::Mixture) {
+            if (!chains_)
+                throw notSupportedYet(prims[size_t(m)].loc,
+                                      "mixture '" + prims[size_t(m)].name + "' in photon maps");
+        } else if (info.plain) {
+            if (chains_) m = chains_->plainMaterial(surf.modifier);
+            if (m != kVoid) checkUsable(m);
         }
+        if (chains_ && !info.plain) chains_->checkChain(surf.modifier);
+        info.material = m;
     }
     for (const light::LightSource& s : plan_.sources())
         sourceMaxDistance_.push_back(s.maxDistance);
+}
+
+void PhotonTracer::setMaterialInfo(int32_t m, const std::unordered_set<std::string>& sensors) {
+    const auto& prims = scene_.prims;
+    ModifierInfo& info = modifiers_[size_t(m)];
+    const Primitive& mat = prims[size_t(m)];
+    try {
+        info.params = material::makeMaterial(mat);
+    } catch (const InputError& e) {
+        info.error = e.what();
+        return;
+    }
+    // RADIANCE's photon tracer has no prism1/prism2 scattering (pmapmat.c leaves them to
+    // its default, an error); we say so at the material's line.
+    if (std::holds_alternative<material::PrismParams>(info.params)) {
+        info.error = notSupportedYet(mat.loc, std::string(primTypeName(mat.type)) +
+                                                  " material in photon maps")
+                         .what();
+        return;
+    }
+    info.isMaterial = true;
+    info.isLight = std::holds_alternative<material::LightParams>(info.params);
+    info.antimatter = mat.type == PrimType::Antimatter;
+    info.sensor = info.antimatter && sensors.count(mat.name) > 0;
+    info.backAbsorbs = opaqueBackAbsorbs(info.params);
+    // Of the function-driven materials only BRTDfunc's photon scattering reads its
+    // functions (the specular colours); *func and *data scatter diffusely.
+    info.functions = materialCalc_ && materialCalc_->uses(m) &&
+                     std::holds_alternative<material::BrtdParams>(info.params);
+    if (info.antimatter) {
+        // RADIANCE lastmod: the last definition of the name before the antimatter.
+        for (const std::string& name : mat.sargs) {
+            if (name == "void") continue;
+            for (int32_t k = m - 1; k >= 0; --k)
+                if (isModifier(prims[size_t(k)].type) && prims[size_t(k)].name == name) {
+                    info.clips.push_back(k);
+                    break;
+                }
+        }
+    }
+}
+
+const PhotonTracer::ModifierInfo& PhotonTracer::checkUsable(int32_t m) const {
+    const ModifierInfo& info = modifiers_[size_t(m)];
+    if (!info.isMaterial) {
+        if (!info.error.empty()) throw InputError(info.error);
+        throw InputError(scene_.prims[size_t(m)].loc,
+                         "'" + scene_.prims[size_t(m)].name + "' is not a material");
+    }
+    return info;
+}
+
+int32_t PhotonTracer::resolveChain(int32_t modifier, const Hit& hit, const Vec3& dir,
+                                   std::optional<material::SurfaceChainEvaluator>& eval,
+                                   Rng& rng, Color& pattern, Vec3& perturbation) const {
+    if (!eval) eval.emplace(*chains_);
+    material::PatternPoint at;
+    at.dir = dir;
+    at.point = hit.point;
+    at.normal = hit.normal;
+    at.distance = hit.t;
+    at.rdot = -dot(dir, hit.normal);
+    material::ChainResult c = eval->resolve(modifier, at, rng);
+    if (c.count <= 0) return kVoid;
+    int pick = 0;
+    if (c.count > 1) {
+        double u = rng.uniform();
+        while (pick + 1 < c.count && (u -= c.layers[size_t(pick)].weight) >= 0) ++pick;
+    }
+    const material::ShadingLayer& l = c.layers[size_t(pick)];
+    pattern = l.pattern;
+    perturbation = l.perturbation;
+    return l.material;
 }
 
 void PhotonTracer::setFunctionValues(int32_t material, const Hit& hit, const Vec3& dir,
@@ -144,7 +205,7 @@ void PhotonTracer::setFunctionValues(int32_t material, const Hit& hit, const Vec
     at.normal = hit.normal;
     at.distance = hit.t;
     at.rdot = -dot(dir, hit.normal);
-    eval->setHit(material, at, sp.normal, Color{1, 1, 1});
+    eval->setHit(material, at, sp.normal, sp.pattern);
     Color refl, trans;
     eval->brtdSpecular(refl, trans);
     sp.brtdSpecularReflection = refl;
@@ -230,11 +291,12 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     bool firstSegment = true;
     double travelled = 0;
     ClipSet clip;
-    // Set per hit below (setSurfaceHit); its other fields keep their defaults, since
-    // scattering only reads it. One per thread: default-constructing its ~220 bytes per
+    // Set per hit below (setSurfaceHit, pattern, normal); its other fields keep their
+    // defaults, since scattering only reads it. One per thread: default-constructing its ~220 bytes per
     // photon was a memset call on every path.
     static thread_local material::SurfacePoint sp;
     std::optional<material::MaterialCalcEvaluator> calcEval;  // made at the first use
+    std::optional<material::SurfaceChainEvaluator> chainEval;  // idem
     auto causticNow = [&] {
         return scatters > 0 && lastSpecular;
     };
@@ -275,17 +337,30 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         }
 
         const int32_t modIndex = hit->modifier;
-        const ModifierInfo* mi = modIndex == kVoid ? nullptr : &modifiers_[size_t(modIndex)];
-        if (!mi || mi->material == kVoid || clip.contains(modIndex)) {
+        const ModifierInfo* surf = modIndex == kVoid ? nullptr : &modifiers_[size_t(modIndex)];
+        if (!surf || surf->material == kVoid || clip.contains(modIndex)) {
             // Void modifier or clipped by antimatter: transfer unchanged (PMAP_XFER).
             ray = spawnRay(*hit, ray.dir);
             ++passes;
             continue;
         }
+        // The chain at this hit: patterns colour the albedo, textures tilt the scattering
+        // normal (the stored photon keeps the surface's own), a mixture picks a material.
+        Color pattern{1, 1, 1};
+        Vec3 perturbation;
+        const int32_t matIndex =
+            surf->plain ? surf->material
+                        : resolveChain(modIndex, *hit, ray.dir, chainEval, rng, pattern, perturbation);
+        if (matIndex == kVoid) {
+            ray = spawnRay(*hit, ray.dir);
+            ++passes;
+            continue;
+        }
+        const ModifierInfo* mi = surf->plain ? &modifiers_[size_t(matIndex)] : &checkUsable(matIndex);
         if (mi->antimatter) {
             // pmapmat.c clipPhotonScatter: a sensor stores photons entering it (front
             // side) and passes them on unscattered, like any antimatter.
-            if (hit->front && mi->sensor && mi->storeAllowed)
+            if (hit->front && mi->sensor && surf->storeAllowed)
                 deposit(*hit, true, flux, scatters > 0 || fromPort, causticNow(),
                         prob, storeRng, out);
             for (int32_t c : mi->clips) hit->front ? clip.add(c) : clip.remove(c);
@@ -296,13 +371,17 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         if (mi->isLight) return;  // "Light sources doan' reflect"; nothing stored
         if (!hit->front && !settings_.backVisible && mi->backAbsorbs) return;
 
-        // No pattern or texture in photon scattering: the other fields keep their defaults.
-        material::setSurfaceHit(sp, ray.dir, hit->front ? hit->normal : -hit->normal,
-                                hit->front);
-        if (mi->functions) setFunctionValues(mi->material, *hit, ray.dir, calcEval, sp);
+        const Vec3 facing = hit->front ? hit->normal : -hit->normal;
+        material::setSurfaceHit(sp, ray.dir, facing, hit->front);
+        sp.pattern = pattern;
+        if (lengthSquared(perturbation) > 0) {  // RADIANCE raynormal, turned to the photon
+            Vec3 n = normalize(hit->normal + perturbation);
+            sp.normal = hit->front ? n : -n;
+        }
+        if (mi->functions) setFunctionValues(matIndex, *hit, ray.dir, calcEval, sp);
         material::PhotonScatter s = material::scatterPhoton(mi->params, sp, rng);
         if (mi->functions) sp.brtdSpecularReflection = sp.brtdSpecularTransmission = std::nullopt;
-        if (s.store && mi->storeAllowed)
+        if (s.store && surf->storeAllowed)
             deposit(*hit, hit->front, flux, scatters > 0 || fromPort,
                     causticNow(), prob, storeRng, out);
         if (s.kind == ScatterKind::Absorbed) return;

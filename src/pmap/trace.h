@@ -8,12 +8,14 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "geometry/scene_geometry.h"
 #include "light/emitter.h"
 #include "material/material.h"
 #include "material/material_calc.h"
+#include "material/surface_chain.h"
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon.h"
 #include "scene/primitive.h"
@@ -55,14 +57,19 @@ struct PhotonBins {
 class PhotonTracer {
 public:
     // Resolves materials, sensors and include/exclude sets once. Throws InputError for
-    // a sensor modifier that is not antimatter, sensors that match nothing, material
-    // argument errors, and notSupportedYet for mixtures on surfaces.
+    // a sensor modifier that is not antimatter, sensors that match nothing, and argument
+    // errors of the materials plain chains reach (those reached only through a mixture
+    // are reported when a photon reaches them).
     // `materialCalc` (may be null when the scene has no function-driven materials)
     // evaluates BRTDfunc's specular colour expressions at photon hits, as pmapmat.c
     // brdfPhotonScatter does; it must outlive the tracer.
+    // `chains` (may be null: patterns and textures are then skipped, mixtures refused)
+    // evaluates the surfaces' modifier chains at photon hits, the same compiled chains
+    // backward shading and emission use. Both must outlive the tracer.
     PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
                  const light::EmissionPlan& plan, TraceSettings settings,
-                 const material::MaterialCalc* materialCalc = nullptr);
+                 const material::MaterialCalc* materialCalc = nullptr,
+                 const material::SurfaceChains* chains = nullptr);
 
     // Emits photon `index` of the run keyed by `seed` and traces it. A deposit for map
     // type t is kept when its storage draw u < storeProbability[t]. Thread-safe.
@@ -74,19 +81,39 @@ public:
     const light::EmissionPlan& plan() const { return plan_; }
 
 private:
-    // What the tracer needs to know about a surface's modifier, computed once.
+    // What the tracer needs to know about a modifier record, computed once. Entries are
+    // indexed by prim: a surface's modifier fills the first group, a material the second
+    // (a plain material is both).
     struct ModifierInfo {
+        // As a surface's modifier:
         bool resolved = false;
-        int32_t material = kVoid;  // the material record after patterns/textures
+        bool plain = true;          // no pattern, texture or mixture on the chain
+        int32_t material = kVoid;   // the material reached (RADIANCE findmaterial; for a
+                                    // chain with a mixture: the mixture, for port tests)
+        bool storeAllowed = true;   // include/exclude sets
+        // As a material:
+        bool isMaterial = false;
+        std::string error;          // why the record cannot scatter (reported when reached)
         material::MaterialParams params;
         bool isLight = false;
         bool antimatter = false;
         bool sensor = false;
-        bool storeAllowed = true;   // include/exclude sets
         bool backAbsorbs = false;   // opaque material: back face black unless -bv
         bool functions = false;     // BRTDfunc with specular expressions (materialCalc_)
         std::vector<int32_t> clips;  // antimatter: modifiers clipped inside it
     };
+
+    void setMaterialInfo(int32_t m, const std::unordered_set<std::string>& sensors);
+    // The material a photon meets at `hit` and what the chain did to it: for a plain
+    // chain the material alone; otherwise the chain is evaluated at the hit, and of a
+    // mixture's materials one is chosen with its weight's probability (pmapmat.c
+    // mx_funcPhotonScatter draws one). Returns kVoid for an invisible surface.
+    int32_t resolveChain(int32_t modifier, const Hit& hit, const Vec3& dir,
+                         std::optional<material::SurfaceChainEvaluator>& eval, Rng& rng,
+                         Color& pattern, Vec3& perturbation) const;
+    // The material entry of `m`; throws its deferred argument error, or that `m` is no
+    // material.
+    const ModifierInfo& checkUsable(int32_t m) const;
 
     void deposit(const Hit& hit, bool front, const Color& flux, bool indirect,
                  bool caustic, const std::array<double, kNumPhotonMapTypes>& prob,
@@ -99,6 +126,7 @@ private:
     const Scene& scene_;
     const SceneGeometry& geometry_;
     const material::MaterialCalc* materialCalc_;
+    const material::SurfaceChains* chains_;
     const light::EmissionPlan& plan_;
     TraceSettings settings_;
     std::vector<ModifierInfo> modifiers_;  // indexed by modifier (prim) index

@@ -10,6 +10,7 @@
 #include "light/emitter.h"
 #include "light/light_sources.h"
 #include "material/material_calc.h"
+#include "material/surface_chain.h"
 #include "pmap/distribute.h"
 #include "pmap/trace.h"
 #include "scene/reader.h"
@@ -22,10 +23,12 @@ struct Run {
     std::unique_ptr<SceneGeometry> geometry;
     std::unique_ptr<light::EmissionPlan> plan;
     std::unique_ptr<material::MaterialCalc> functions;
+    std::unique_ptr<material::SurfaceChains> chains;
     std::unique_ptr<PhotonTracer> tracer;
 };
 
-// `functions`: evaluate function-driven materials (files along the project's lib/).
+// `functions`: evaluate function-driven materials and modifier chains (patterns,
+// textures, mixtures; files along the project's lib/).
 inline std::unique_ptr<Run> makeRun(Scene scene, TraceSettings ts,
                                     const std::vector<std::string>& ports = {},
                                     bool functions = false) {
@@ -40,11 +43,13 @@ inline std::unique_ptr<Run> makeRun(Scene scene, TraceSettings ts,
     }
     r->plan = std::make_unique<light::EmissionPlan>(
         *r->geometry, light::findLightSources(r->scene, *r->geometry), eo);
-    if (functions)
-        r->functions = std::make_unique<material::MaterialCalc>(
-            r->scene, std::vector<std::string>{std::string(RP_SOURCE_DIR) + "/lib"});
+    if (functions) {
+        std::vector<std::string> path{std::string(RP_SOURCE_DIR) + "/lib"};
+        r->functions = std::make_unique<material::MaterialCalc>(r->scene, path);
+        r->chains = std::make_unique<material::SurfaceChains>(r->scene, path);
+    }
     r->tracer = std::make_unique<PhotonTracer>(r->scene, *r->geometry, *r->plan, std::move(ts),
-                                               r->functions.get());
+                                               r->functions.get(), r->chains.get());
     return r;
 }
 
