@@ -290,8 +290,7 @@ bool callsWithThree(PrimType t, const calc::Function& f) {
 }  // namespace
 
 SurfaceChains::SurfaceChains(const Scene& scene, std::vector<std::string> searchPath)
-    : impl_(std::make_unique<Impl>()) {
-    impl_->scene = &scene;
+    : impl_(std::make_unique<Impl>(scene)) {
     size_t n = scene.prims.size();
     impl_->records.resize(n);
     impl_->plainMaterial.assign(n, -2);
@@ -319,6 +318,8 @@ SurfaceChains::SurfaceChains(const Scene& scene, std::vector<std::string> search
 SurfaceChains::~SurfaceChains() = default;
 
 const Scene& SurfaceChains::scene() const { return *impl_->scene; }
+
+const MaterialTable& SurfaceChains::materials() const { return impl_->materials; }
 
 namespace {
 

@@ -14,6 +14,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "material/material_table.h"
 #include "material/pattern.h"
 #include "scene/primitive.h"
 #include "util/color.h"
@@ -87,6 +88,9 @@ public:
     bool directionalOnly(int32_t modifier) const;
 
     const Scene& scene() const;
+    // The material records the chains end at (backward shading, shadow rays, photon
+    // scattering and emission all read them here).
+    const MaterialTable& materials() const;
 
 private:
     friend class SurfaceChainEvaluator;

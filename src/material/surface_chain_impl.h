@@ -74,7 +74,9 @@ struct ChainRecord {
 };
 
 struct SurfaceChains::Impl {
+    explicit Impl(const Scene& s) : scene(&s), materials(s) {}
     const Scene* scene = nullptr;
+    MaterialTable materials;
     std::vector<ChainRecord> records;   // one per scene primitive
     std::vector<int32_t> plainMaterial; // per primitive: the material if plain, else -2
     std::shared_ptr<const calc::Program> program;

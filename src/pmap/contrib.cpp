@@ -109,8 +109,8 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
                                 const light::EmissionPlan& plan,
                                 const light::EmissionOptions& emission, TraceSettings trace,
                                 const ContribSettings& settings,
-                                const material::MaterialCalc* materialCalc,
-                                const material::SurfaceChains* chains) {
+                                const material::SurfaceChains& chains,
+                                const material::MaterialCalc* materialCalc) {
     const auto& sources = plan.sources();
     const size_t nsrc = sources.size();
     if (nsrc > size_t(INT16_MAX))
@@ -134,7 +134,7 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
             continue;
         }
         light::EmissionPlan single(geometry, {sources[s]}, emission);
-        PhotonTracer tracer(scene, geometry, single, trace, materialCalc, chains);
+        PhotonTracer tracer(scene, geometry, single, trace, chains, materialCalc);
         const uint64_t seed = mix64(settings.seed + 0x632be59bd9b4e019ULL * (s + 1));
 
         // Prepass: a fraction of the source's share, doubled while nothing is stored.

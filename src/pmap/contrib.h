@@ -45,12 +45,12 @@ struct ContribResult {
 // flux, and sources that store nothing after -apM prepasses, are skipped with a warning
 // (as RADIANCE). Throws InputError if nothing is stored at all or there are more sources
 // than a 16-bit source index holds. The result does not depend on `threads`.
-// `materialCalc` and `chains` as for PhotonTracer (may be null).
+// `chains` and `materialCalc` as for PhotonTracer.
 ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometry,
                                 const light::EmissionPlan& plan,
                                 const light::EmissionOptions& emission, TraceSettings trace,
                                 const ContribSettings& settings,
-                                const material::MaterialCalc* materialCalc = nullptr,
-                                const material::SurfaceChains* chains = nullptr);
+                                const material::SurfaceChains& chains,
+                                const material::MaterialCalc* materialCalc = nullptr);
 
 }  // namespace rp::pmap

@@ -118,13 +118,13 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         cs.threads = o.nproc;
         cs.reportSeconds = o.reportSeconds;
         cs.progress = &diag;
-        ContribResult cr = distributeContrib(scene, geometry, plan, eo, ts, cs, &functions, &chains);
+        ContribResult cr = distributeContrib(scene, geometry, plan, eo, ts, cs, chains, &functions);
         dist.photons[size_t(PhotonMapType::Contrib)] = std::move(cr.photons);
         primaries = std::move(cr.primaries);
         dist.emitted = cr.totalEmitted;
         dist.runaways = cr.runaways;
     } else {
-        PhotonTracer tracer(scene, geometry, plan, ts, &functions, &chains);
+        PhotonTracer tracer(scene, geometry, plan, ts, chains, &functions);
         DistributionSettings ds;
         for (size_t t = 0; t < o.maps.size(); ++t)
             if (o.maps[t]) ds.targets[t] = o.maps[t]->target;

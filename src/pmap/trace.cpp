@@ -40,142 +40,83 @@ struct ClipSet {
     }
 };
 
-bool opaqueBackAbsorbs(const material::MaterialParams& m) {
-    // pmapmat.c normalPhotonScatter / anisoPhotonScatter: the back of an opaque
-    // material absorbs unless -bv; trans* is lit from both sides.
-    if (auto* p = std::get_if<material::NormalParams>(&m))
-        return p->kind != material::NormalParams::Kind::Trans;
-    if (auto* p = std::get_if<material::AnisoParams>(&m))
-        return p->kind != material::AnisoParams::Kind::Trans2;
-    if (auto* p = std::get_if<material::FuncParams>(&m))
-        return p->type != PrimType::Transfunc && p->type != PrimType::Transdata;
-    return false;
-}
-
 int8_t packNormal(double v) { return static_cast<int8_t>(127.0 * v); }
 
 }  // namespace
 
 PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
                            const light::EmissionPlan& plan, TraceSettings settings,
-                           const material::MaterialCalc* materialCalc,
-                           const material::SurfaceChains* chains)
-    : scene_(scene), geometry_(geometry), materialCalc_(materialCalc), chains_(chains),
+                           const material::SurfaceChains& chains,
+                           const material::MaterialCalc* materialCalc)
+    : scene_(scene), geometry_(geometry), chains_(chains), materials_(chains.materials()),
+      materialCalc_(materialCalc),
       plan_(plan), settings_(std::move(settings)) {
     const auto& prims = scene.prims;
-    modifiers_.resize(prims.size());
+    surfaces_.resize(prims.size());
+    roles_.assign(prims.size(), 0);
     std::unordered_set<std::string> include(settings_.include.begin(), settings_.include.end());
     std::unordered_set<std::string> exclude(settings_.exclude.begin(), settings_.exclude.end());
     std::unordered_set<std::string> sensors(settings_.sensors.begin(), settings_.sensors.end());
 
     // Sensors: every modifier of that name must be antimatter (pmapmat.c getPhotonSensors).
     bool sensorFound = false;
-    for (const Primitive& p : prims) {
+    for (size_t i = 0; i < prims.size(); ++i) {
+        const Primitive& p = prims[i];
+        if (isModifier(p.type) && materialCalc_ && materialCalc_->uses(int32_t(i)) &&
+            p.type == PrimType::BRTDfunc)
+            roles_[i] |= kFunctions;  // only BRTDfunc's scattering reads its functions
         if (!isModifier(p.type) || !sensors.count(p.name)) continue;
         if (p.type != PrimType::Antimatter)
             throw InputError(p.loc, "photon sensor modifier " + p.name + " is not antimatter");
+        roles_[i] |= kSensor;
         sensorFound = true;
     }
     if (!sensors.empty() && !sensorFound) throw InputError("no photon sensors found");
 
-    // Every material record once (the chain may reach any of them through a mixture);
-    // one whose arguments are wrong is reported when a photon reaches it.
-    for (size_t m = 0; m < prims.size(); ++m)
-        if (primCategory(prims[m].type) == PrimCategory::Material)
-            setMaterialInfo(int32_t(m), sensors);
-
-    bool warnedPattern = false;
     for (size_t i = 0; i < prims.size(); ++i) {
         const Primitive& surf = prims[i];
         if (!isSurface(surf.type) || surf.modifier == kVoid) continue;
-        ModifierInfo& info = modifiers_[size_t(surf.modifier)];
+        SurfaceModifier& info = surfaces_[size_t(surf.modifier)];
         if (info.resolved) continue;
         info.resolved = true;
         const Primitive& mod = prims[size_t(surf.modifier)];
         info.storeAllowed = include.empty() ? !exclude.count(mod.name) : include.count(mod.name) > 0;
-        info.plain = !chains_ || chains_->isPlain(surf.modifier);
-        // Walk past patterns and textures to the material (RADIANCE findmaterial).
+        info.plain = chains_.isPlain(surf.modifier);
+        if (info.plain) {
+            info.material = chains_.plainMaterial(surf.modifier);
+            if (info.material != kVoid) scatterer(info.material);  // errors now, at its line
+            continue;
+        }
+        chains_.checkChain(surf.modifier);
+        // For the port test: the material (or mixture) past patterns and textures
+        // (RADIANCE findmaterial).
         int32_t m = surf.modifier;
         for (size_t guard = 0; m != kVoid && guard < prims.size(); ++guard) {
-            const Primitive& p = prims[size_t(m)];
-            PrimCategory c = primCategory(p.type);
+            PrimCategory c = primCategory(prims[size_t(m)].type);
             if (c == PrimCategory::Material || c == PrimCategory::Mixture) break;
-            if (!chains_ && !warnedPattern) {
-                warn(p.loc, "pattern/texture '" + p.name +
-                                "' is ignored by photon scattering (no chains given)");
-                warnedPattern = true;
-            }
-            m = p.modifier;
+            m = prims[size_t(m)].modifier;
         }
-        if (m != kVoid && primCategory(prims[size_t(m)].type) == PrimCategory::Mixture) {
-            if (!chains_)
-                throw notSupportedYet(prims[size_t(m)].loc,
-                                      "mixture '" + prims[size_t(m)].name + "' in photon maps");
-        } else if (info.plain) {
-            if (chains_) m = chains_->plainMaterial(surf.modifier);
-            if (m != kVoid) checkUsable(m);
-        }
-        if (chains_ && !info.plain) chains_->checkChain(surf.modifier);
         info.material = m;
     }
     for (const light::LightSource& s : plan_.sources())
         sourceMaxDistance_.push_back(s.maxDistance);
 }
 
-void PhotonTracer::setMaterialInfo(int32_t m, const std::unordered_set<std::string>& sensors) {
-    const auto& prims = scene_.prims;
-    ModifierInfo& info = modifiers_[size_t(m)];
-    const Primitive& mat = prims[size_t(m)];
-    try {
-        info.params = material::makeMaterial(mat);
-    } catch (const InputError& e) {
-        info.error = e.what();
-        return;
-    }
+const material::MaterialRecord& PhotonTracer::scatterer(int32_t m) const {
+    const material::MaterialRecord& r = materials_.at(m);
     // RADIANCE's photon tracer has no prism1/prism2 scattering (pmapmat.c leaves them to
     // its default, an error); we say so at the material's line.
-    if (std::holds_alternative<material::PrismParams>(info.params)) {
-        info.error = notSupportedYet(mat.loc, std::string(primTypeName(mat.type)) +
-                                                  " material in photon maps")
-                         .what();
-        return;
+    if (std::holds_alternative<material::PrismParams>(*r.params)) {
+        const Primitive& p = scene_.prims[size_t(m)];
+        throw notSupportedYet(p.loc, std::string(primTypeName(p.type)) + " material in photon maps");
     }
-    info.isMaterial = true;
-    info.isLight = std::holds_alternative<material::LightParams>(info.params);
-    info.antimatter = mat.type == PrimType::Antimatter;
-    info.sensor = info.antimatter && sensors.count(mat.name) > 0;
-    info.backAbsorbs = opaqueBackAbsorbs(info.params);
-    // Of the function-driven materials only BRTDfunc's photon scattering reads its
-    // functions (the specular colours); *func and *data scatter diffusely.
-    info.functions = materialCalc_ && materialCalc_->uses(m) &&
-                     std::holds_alternative<material::BrtdParams>(info.params);
-    if (info.antimatter) {
-        // RADIANCE lastmod: the last definition of the name before the antimatter.
-        for (const std::string& name : mat.sargs) {
-            if (name == "void") continue;
-            for (int32_t k = m - 1; k >= 0; --k)
-                if (isModifier(prims[size_t(k)].type) && prims[size_t(k)].name == name) {
-                    info.clips.push_back(k);
-                    break;
-                }
-        }
-    }
-}
-
-const PhotonTracer::ModifierInfo& PhotonTracer::checkUsable(int32_t m) const {
-    const ModifierInfo& info = modifiers_[size_t(m)];
-    if (!info.isMaterial) {
-        if (!info.error.empty()) throw InputError(info.error);
-        throw InputError(scene_.prims[size_t(m)].loc,
-                         "'" + scene_.prims[size_t(m)].name + "' is not a material");
-    }
-    return info;
+    return r;
 }
 
 int32_t PhotonTracer::resolveChain(int32_t modifier, const Hit& hit, const Vec3& dir,
                                    std::optional<material::SurfaceChainEvaluator>& eval,
                                    Rng& rng, Color& pattern, Vec3& perturbation) const {
-    if (!eval) eval.emplace(*chains_);
+    if (!eval) eval.emplace(chains_);
     material::PatternPoint at;
     at.dir = dir;
     at.point = hit.point;
@@ -319,8 +260,8 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
             if (hit->prim != e.portPrim) {
                 int32_t pm = scene_.prims[size_t(e.portPrim)].modifier;
                 int32_t hm = hit->modifier;
-                int32_t portMat = pm == kVoid ? kVoid : modifiers_[size_t(pm)].material;
-                int32_t hitMat = hm == kVoid ? kVoid : modifiers_[size_t(hm)].material;
+                int32_t portMat = pm == kVoid ? kVoid : surfaces_[size_t(pm)].material;
+                int32_t hitMat = hm == kVoid ? kVoid : surfaces_[size_t(hm)].material;
                 if (portMat != hitMat) return;
             }
         }
@@ -337,7 +278,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         }
 
         const int32_t modIndex = hit->modifier;
-        const ModifierInfo* surf = modIndex == kVoid ? nullptr : &modifiers_[size_t(modIndex)];
+        const SurfaceModifier* surf = modIndex == kVoid ? nullptr : &surfaces_[size_t(modIndex)];
         if (!surf || surf->material == kVoid || clip.contains(modIndex)) {
             // Void modifier or clipped by antimatter: transfer unchanged (PMAP_XFER).
             ray = spawnRay(*hit, ray.dir);
@@ -356,20 +297,23 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
             ++passes;
             continue;
         }
-        const ModifierInfo* mi = surf->plain ? &modifiers_[size_t(matIndex)] : &checkUsable(matIndex);
-        if (mi->antimatter) {
+        // Plain chains' materials were checked in the constructor.
+        const material::MaterialRecord& mi =
+            surf->plain ? materials_[matIndex] : scatterer(matIndex);
+        const uint8_t role = roles_[size_t(matIndex)];
+        if (mi.antimatter) {
             // pmapmat.c clipPhotonScatter: a sensor stores photons entering it (front
             // side) and passes them on unscattered, like any antimatter.
-            if (hit->front && mi->sensor && surf->storeAllowed)
+            if (hit->front && (role & kSensor) && surf->storeAllowed)
                 deposit(*hit, true, flux, scatters > 0 || fromPort, causticNow(),
                         prob, storeRng, out);
-            for (int32_t c : mi->clips) hit->front ? clip.add(c) : clip.remove(c);
+            for (int32_t c : mi.clips) hit->front ? clip.add(c) : clip.remove(c);
             ray = spawnRay(*hit, ray.dir);
             ++passes;
             continue;
         }
-        if (mi->isLight) return;  // "Light sources doan' reflect"; nothing stored
-        if (!hit->front && !settings_.backVisible && mi->backAbsorbs) return;
+        if (mi.isLight) return;  // "Light sources doan' reflect"; nothing stored
+        if (!hit->front && !settings_.backVisible && mi.backAbsorbs) return;
 
         const Vec3 facing = hit->front ? hit->normal : -hit->normal;
         material::setSurfaceHit(sp, ray.dir, facing, hit->front);
@@ -378,9 +322,10 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
             Vec3 n = normalize(hit->normal + perturbation);
             sp.normal = hit->front ? n : -n;
         }
-        if (mi->functions) setFunctionValues(matIndex, *hit, ray.dir, calcEval, sp);
-        material::PhotonScatter s = material::scatterPhoton(mi->params, sp, rng);
-        if (mi->functions) sp.brtdSpecularReflection = sp.brtdSpecularTransmission = std::nullopt;
+        const bool functions = role & kFunctions;
+        if (functions) setFunctionValues(matIndex, *hit, ray.dir, calcEval, sp);
+        material::PhotonScatter s = material::scatterPhoton(*mi.params, sp, rng);
+        if (functions) sp.brtdSpecularReflection = sp.brtdSpecularTransmission = std::nullopt;
         if (s.store && surf->storeAllowed)
             deposit(*hit, hit->front, flux, scatters > 0 || fromPort,
                     causticNow(), prob, storeRng, out);

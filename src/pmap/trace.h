@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <unordered_set>
 #include <vector>
 
 #include "geometry/scene_geometry.h"
@@ -60,16 +59,15 @@ public:
     // a sensor modifier that is not antimatter, sensors that match nothing, and argument
     // errors of the materials plain chains reach (those reached only through a mixture
     // are reported when a photon reaches them).
-    // `materialCalc` (may be null when the scene has no function-driven materials)
-    // evaluates BRTDfunc's specular colour expressions at photon hits, as pmapmat.c
-    // brdfPhotonScatter does; it must outlive the tracer.
-    // `chains` (may be null: patterns and textures are then skipped, mixtures refused)
-    // evaluates the surfaces' modifier chains at photon hits, the same compiled chains
-    // backward shading and emission use. Both must outlive the tracer.
+    // `chains`: the surfaces' compiled modifier chains and their materials, the same
+    // ones backward shading and emission use, evaluated at photon hits. `materialCalc`
+    // (may be null when the scene has no function-driven materials) evaluates BRTDfunc's
+    // specular colour expressions, as pmapmat.c brdfPhotonScatter does. Both must
+    // outlive the tracer.
     PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
                  const light::EmissionPlan& plan, TraceSettings settings,
-                 const material::MaterialCalc* materialCalc = nullptr,
-                 const material::SurfaceChains* chains = nullptr);
+                 const material::SurfaceChains& chains,
+                 const material::MaterialCalc* materialCalc = nullptr);
 
     // Emits photon `index` of the run keyed by `seed` and traces it. A deposit for map
     // type t is kept when its storage draw u < storeProbability[t]. Thread-safe.
@@ -81,29 +79,19 @@ public:
     const light::EmissionPlan& plan() const { return plan_; }
 
 private:
-    // What the tracer needs to know about a modifier record, computed once. Entries are
-    // indexed by prim: a surface's modifier fills the first group, a material the second
-    // (a plain material is both).
-    struct ModifierInfo {
-        // As a surface's modifier:
+    // What the tracer needs to know about a surface's modifier, computed once; the
+    // materials themselves are the chains' (chains_.materials()).
+    struct SurfaceModifier {
         bool resolved = false;
         bool plain = true;          // no pattern, texture or mixture on the chain
         int32_t material = kVoid;   // the material reached (RADIANCE findmaterial; for a
                                     // chain with a mixture: the mixture, for port tests)
         bool storeAllowed = true;   // include/exclude sets
-        // As a material:
-        bool isMaterial = false;
-        std::string error;          // why the record cannot scatter (reported when reached)
-        material::MaterialParams params;
-        bool isLight = false;
-        bool antimatter = false;
-        bool sensor = false;
-        bool backAbsorbs = false;   // opaque material: back face black unless -bv
-        bool functions = false;     // BRTDfunc with specular expressions (materialCalc_)
-        std::vector<int32_t> clips;  // antimatter: modifiers clipped inside it
     };
+    // What this run's settings make of a material: a photon sensor (-aps), a BRTDfunc
+    // whose specular colours are expressions (materialCalc_).
+    enum MaterialRole : uint8_t { kSensor = 1, kFunctions = 2 };
 
-    void setMaterialInfo(int32_t m, const std::unordered_set<std::string>& sensors);
     // The material a photon meets at `hit` and what the chain did to it: for a plain
     // chain the material alone; otherwise the chain is evaluated at the hit, and of a
     // mixture's materials one is chosen with its weight's probability (pmapmat.c
@@ -111,9 +99,9 @@ private:
     int32_t resolveChain(int32_t modifier, const Hit& hit, const Vec3& dir,
                          std::optional<material::SurfaceChainEvaluator>& eval, Rng& rng,
                          Color& pattern, Vec3& perturbation) const;
-    // The material entry of `m`; throws its deferred argument error, or that `m` is no
-    // material.
-    const ModifierInfo& checkUsable(int32_t m) const;
+    // The record of material `m` if photons can scatter there; throws its argument
+    // error, or "not supported yet" for prisms.
+    const material::MaterialRecord& scatterer(int32_t m) const;
 
     void deposit(const Hit& hit, bool front, const Color& flux, bool indirect,
                  bool caustic, const std::array<double, kNumPhotonMapTypes>& prob,
@@ -125,11 +113,13 @@ private:
 
     const Scene& scene_;
     const SceneGeometry& geometry_;
+    const material::SurfaceChains& chains_;
+    const material::MaterialTable& materials_;  // chains_.materials()
     const material::MaterialCalc* materialCalc_;
-    const material::SurfaceChains* chains_;
     const light::EmissionPlan& plan_;
     TraceSettings settings_;
-    std::vector<ModifierInfo> modifiers_;  // indexed by modifier (prim) index
+    std::vector<SurfaceModifier> surfaces_;  // indexed by modifier (prim) index
+    std::vector<uint8_t> roles_;             // MaterialRole bits, indexed by prim
     std::vector<double> sourceMaxDistance_;  // per emission source: glow radius or 0
 };
 

@@ -27,8 +27,8 @@ struct Run {
     std::unique_ptr<PhotonTracer> tracer;
 };
 
-// `functions`: evaluate function-driven materials and modifier chains (patterns,
-// textures, mixtures; files along the project's lib/).
+// Modifier chains are evaluated (files along the project's lib/); `functions`: also
+// the function-driven materials' expressions.
 inline std::unique_ptr<Run> makeRun(Scene scene, TraceSettings ts,
                                     const std::vector<std::string>& ports = {},
                                     bool functions = false) {
@@ -43,13 +43,11 @@ inline std::unique_ptr<Run> makeRun(Scene scene, TraceSettings ts,
     }
     r->plan = std::make_unique<light::EmissionPlan>(
         *r->geometry, light::findLightSources(r->scene, *r->geometry), eo);
-    if (functions) {
-        std::vector<std::string> path{std::string(RP_SOURCE_DIR) + "/lib"};
-        r->functions = std::make_unique<material::MaterialCalc>(r->scene, path);
-        r->chains = std::make_unique<material::SurfaceChains>(r->scene, path);
-    }
+    std::vector<std::string> path{std::string(RP_SOURCE_DIR) + "/lib"};
+    r->chains = std::make_unique<material::SurfaceChains>(r->scene, path);
+    if (functions) r->functions = std::make_unique<material::MaterialCalc>(r->scene, path);
     r->tracer = std::make_unique<PhotonTracer>(r->scene, *r->geometry, *r->plan, std::move(ts),
-                                               r->functions.get(), r->chains.get());
+                                               *r->chains, r->functions.get());
     return r;
 }
 

@@ -1,9 +1,7 @@
 // Which modifiers lead to antimatter and what it clips (see clip_set.h).
 #include "render/clip_set.h"
 
-#include <algorithm>
-
-#include "util/warnings.h"
+#include "material/material_table.h"
 
 namespace rp::render {
 
@@ -14,23 +12,7 @@ AntimatterTable::AntimatterTable(const Scene& scene, bool warnUnknown) {
     for (size_t i = 0; i < prims.size(); ++i) {
         if (prims[i].type != PrimType::Antimatter) continue;
         listOf[i] = int32_t(lists_.size());
-        std::vector<int32_t>& clips = lists_.emplace_back();
-        for (const std::string& name : prims[i].sargs) {
-            if (name == "void") continue;
-            int32_t m = kVoid;
-            for (size_t k = i; k-- > 0;)
-                if (isModifier(prims[k].type) && prims[k].name == name) {
-                    m = int32_t(k);
-                    break;
-                }
-            if (m == kVoid) {
-                if (warnUnknown)
-                    warn(prims[i].loc,
-                         "antimatter '" + prims[i].name + "': unknown modifier '" + name + "'");
-                continue;
-            }
-            if (std::find(clips.begin(), clips.end(), m) == clips.end()) clips.push_back(m);
-        }
+        lists_.push_back(material::antimatterClips(scene, int32_t(i), warnUnknown));
     }
     if (lists_.empty()) return;
     for (size_t i = 0; i < prims.size(); ++i) {

@@ -10,44 +10,6 @@ namespace rp::render {
 
 namespace {
 
-bool isLightType(PrimType t) {
-    return t == PrimType::Light || t == PrimType::Illum || t == PrimType::Glow ||
-           t == PrimType::Spotlight;
-}
-
-// Materials whose material::evaluate can be non-zero: they take direct light.
-bool takesDirect(const material::MaterialParams& m) {
-    return std::holds_alternative<material::NormalParams>(m) ||
-           std::holds_alternative<material::AnisoParams>(m) ||
-           std::holds_alternative<material::FuncParams>(m) ||
-           std::holds_alternative<material::BrtdParams>(m);
-}
-
-MaterialEntry makeEntry(const Scene& scene, int32_t index) {
-    MaterialEntry e;
-    const Primitive& p = scene.prims[size_t(index)];
-    e.isLight = isLightType(p.type);
-    try {
-        e.params = material::makeMaterial(p);
-    } catch (const InputError& err) {
-        e.error = err.what();
-        return e;
-    }
-    e.diffuseLike = takesDirect(*e.params);
-    std::optional<std::string> alt;
-    if (auto* m = std::get_if<material::MirrorParams>(&*e.params)) alt = m->alternate;
-    if (auto* l = std::get_if<material::LightParams>(&*e.params)) alt = l->alternate;
-    if (alt) {
-        e.hasAlternate = true;
-        e.alternate = lastModifier(scene, index, *alt);
-        if (e.alternate == kVoid && *alt != "void")
-            e.error = InputError(p.loc, std::string(primTypeName(p.type)) + " '" + p.name +
-                                            "': undefined alternate material '" + *alt + "'")
-                          .what();
-    }
-    return e;
-}
-
 // Photon-map mode with a global map (manual 5.1, RADIANCE 5.4): the ambient calculation
 // makes one bounce (final gather) whose sample hits read the global map; any positive
 // -ab acts as 1, and so does -ab 0 (RADIANCE 5.4 raises it to 1, see the caustic and mist
@@ -59,15 +21,6 @@ AmbientOptions photonAmbientOptions(const RenderOptions& o, const PhotonLighting
 }
 
 }  // namespace
-
-int32_t lastModifier(const Scene& scene, int32_t before, const std::string& name) {
-    if (name == "void") return kVoid;
-    for (int32_t i = before - 1; i >= 0; --i) {
-        const Primitive& p = scene.prims[size_t(i)];
-        if (isModifier(p.type) && p.name == name) return i;
-    }
-    return kVoid;
-}
 
 Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions& o,
                      std::vector<std::string> searchPath)
@@ -87,10 +40,6 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
              }),
       ambient(ambientOptions, g.sceneCube().size, s, o.limits.minWeight),
       antimatter(s, true) {
-    materials.resize(s.prims.size());
-    for (size_t i = 0; i < s.prims.size(); ++i)
-        if (primCategory(s.prims[i].type) == PrimCategory::Material)
-            materials[i] = makeEntry(s, int32_t(i));
     // Every surface's chain must be evaluable (RADIANCE checks modifiers as it loads).
     for (const Primitive& p : s.prims)
         if (isSurface(p.type) && p.type != PrimType::Source) chains.checkChain(p.modifier);
@@ -100,16 +49,6 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
     shadeOptions.specThreshold = o.specular.threshold;
     shadeOptions.specJitter = o.specular.sampling;
     shadeOptions.backVisible = o.backVisible;
-}
-
-const MaterialEntry& Renderer::Impl::material(int32_t index) const {
-    const MaterialEntry& e = materials[size_t(index)];
-    if (!e.params) {
-        if (!e.error.empty()) throw InputError(e.error);
-        throw InputError(scene.prims[size_t(index)].loc,
-                         "'" + scene.prims[size_t(index)].name + "' is not a material");
-    }
-    return e;
 }
 
 Renderer::Renderer(const Scene& scene, const SceneGeometry& geometry,

@@ -37,15 +37,6 @@ struct RayState {
 // One material record, checked once. `error` holds the message for a record that cannot
 // be used (not supported yet, bad values): thrown when a ray first meets it, as RADIANCE
 // reports problems with materials when they are used.
-struct MaterialEntry {
-    std::optional<material::MaterialParams> params;
-    std::string error;
-    int32_t alternate = kVoid;  // mirror/illum alternate material record (kVoid: void)
-    bool hasAlternate = false;
-    bool isLight = false;       // light, illum, glow, spotlight
-    bool diffuseLike = false;   // material::evaluate can be non-zero (direct light applies)
-};
-
 struct Renderer::Impl {
     Impl(const Scene& scene, const SceneGeometry& geometry, const RenderOptions& options,
          std::vector<std::string> searchPath);
@@ -55,7 +46,6 @@ struct Renderer::Impl {
     const RenderOptions& options;
     material::SurfaceChains chains;
     material::MaterialCalc materialCalc;   // .cal functions of function-driven materials
-    std::vector<MaterialEntry> materials;  // indexed by prim (only material records used)
     PhotonLighting photons;                // -ap maps (inactive without)
     AmbientOptions ambientOptions;         // -a options as used (photon mode adjusts -ab)
     DirectLighting direct;
@@ -64,7 +54,10 @@ struct Renderer::Impl {
     uint64_t seed = 0;  // base of every ray's random stream
     mutable std::atomic<long> rays{0};
 
-    const MaterialEntry& material(int32_t index) const;  // throws for unusable records
+    // The material record (chains.materials()); throws for unusable records.
+    const material::MaterialRecord& material(int32_t index) const {
+        return chains.materials().at(index);
+    }
 
     AntimatterTable antimatter;  // what each antimatter clips (clip_set.h)
 };
@@ -156,6 +149,5 @@ material::Redirection evalRedirect(const Scene& scene, const material::MaterialC
 
 // The record named `name` most recently defined before record `before` (RADIANCE
 // lastmod); kVoid for "void" or when none.
-int32_t lastModifier(const Scene& scene, int32_t before, const std::string& name);
 
 }  // namespace rp::render

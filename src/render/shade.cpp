@@ -165,7 +165,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         passThrough = true;
         return {};
     }
-    const MaterialEntry& e = impl.material(layer.material);
+    const material::MaterialRecord& e = impl.material(layer.material);
     const material::MaterialParams& params = *e.params;
 
     // Shading point: RADIANCE raynormal (perturbed normal flipped to the ray's side).

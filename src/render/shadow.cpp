@@ -23,7 +23,7 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
         ev.colour = Color{1, 1, 1};
         return ev;
     }
-    const MaterialEntry& e = impl.material(layer.material);
+    const material::MaterialRecord& e = impl.material(layer.material);
     const material::MaterialParams& params = *e.params;
     Vec3 ng = hit.front ? hit.normal : -hit.normal;
     material::SurfacePoint sp = material::makeSurfacePoint(dir, ng, hit.front, layer.pattern);
@@ -163,7 +163,7 @@ Color Renderer::Context::sourceRadiance(int32_t modifier, const Hit& at, const V
     for (int i = 0; i < chain.count; ++i) {
         const material::ShadingLayer& l = chain.layers[size_t(i)];
         if (l.material == kVoid) continue;
-        const MaterialEntry& e = impl.material(l.material);
+        const material::MaterialRecord& e = impl.material(l.material);
         if (!e.isLight) continue;
         const auto& light = std::get<material::LightParams>(*e.params);
         if (light.kind == material::LightParams::Kind::Glow)

@@ -1,0 +1,60 @@
+// Every material record of a scene, checked once and shared read-only by backward
+// shading, shadow rays, photon scattering and emission (through SurfaceChains, which
+// owns it: the chains end at these records). What each record is for the light
+// transport - light, antimatter, opaque back, alternate - is decided here, once.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "material/material.h"
+#include "scene/primitive.h"
+
+namespace rp::material {
+
+struct MaterialRecord {
+    std::optional<MaterialParams> params;  // empty: `error` says why
+    std::string error;
+    int32_t alternate = kVoid;  // mirror/illum alternate material record (kVoid: void)
+    bool hasAlternate = false;
+    bool isLight = false;       // light, illum, glow, spotlight
+    bool diffuseLike = false;   // material::evaluate can be non-zero (direct light applies)
+    bool antimatter = false;
+    bool backAbsorbs = false;   // opaque: photons meeting the back are absorbed unless -bv
+    std::vector<int32_t> clips; // antimatter: the modifiers it clips (RADIANCE lastmod)
+};
+
+// The last modifier named `name` defined before record `before` (RADIANCE lastmod);
+// kVoid for "void" or an unknown name.
+int32_t lastModifier(const Scene& scene, int32_t before, const std::string& name);
+
+// The modifiers the antimatter record `index` clips: each of its names resolved with
+// lastModifier, "void" and repeats skipped; unknown names are warned about with
+// `warnUnknown` (RADIANCE warns and goes on without them).
+std::vector<int32_t> antimatterClips(const Scene& scene, int32_t index, bool warnUnknown);
+
+class MaterialTable {
+public:
+    // Argument errors are kept and thrown when the record is used (`at`), so that a
+    // scene may hold unused broken materials, as RADIANCE allows. With `warnUnknown`,
+    // antimatter names that match no modifier are reported once here.
+    explicit MaterialTable(const Scene& scene, bool warnUnknown = false);
+
+    // The record of material `index`; throws its argument error, or that it is no
+    // material.
+    const MaterialRecord& at(int32_t index) const;
+    // The record of `index`, unchecked: for callers that checked it with at() before.
+    const MaterialRecord& operator[](int32_t index) const { return records_[size_t(index)]; }
+    // Whether `index` is a material whose arguments are fine.
+    bool usable(int32_t index) const {
+        return index >= 0 && size_t(index) < records_.size() && records_[size_t(index)].params;
+    }
+
+private:
+    const Scene& scene_;
+    std::vector<MaterialRecord> records_;  // indexed by prim; only material records set
+};
+
+}  // namespace rp::material
