@@ -7,6 +7,7 @@
 #include <unordered_set>
 
 #include "light/light_sources.h"
+#include "material/clip_set.h"
 #include "util/error.h"
 #include "util/warnings.h"
 
@@ -15,30 +16,6 @@ namespace rp::pmap {
 namespace {
 
 using material::ScatterKind;
-
-// Modifiers clipped by the antimatter volumes a photon is inside (RADIANCE's clipset).
-// Fixed capacity: nested antimatter deeper than this is vanishingly rare, and RADIANCE's
-// MAXSET bound is an error too; overflowing entries are ignored.
-struct ClipSet {
-    static constexpr int kCapacity = 16;
-    int32_t mods[kCapacity];
-    int n = 0;
-    bool contains(int32_t m) const {
-        for (int i = 0; i < n; ++i)
-            if (mods[i] == m) return true;
-        return false;
-    }
-    void add(int32_t m) {
-        if (!contains(m) && n < kCapacity) mods[n++] = m;
-    }
-    void remove(int32_t m) {
-        for (int i = 0; i < n; ++i)
-            if (mods[i] == m) {
-                mods[i] = mods[--n];
-                return;
-            }
-    }
-};
 
 int8_t packNormal(double v) { return static_cast<int8_t>(127.0 * v); }
 
@@ -231,7 +208,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     bool lastSpecular = false;
     bool firstSegment = true;
     double travelled = 0;
-    ClipSet clip;
+    material::ClipSet clip;
     // Set per hit below (setSurfaceHit, pattern, normal); its other fields keep their
     // defaults, since scattering only reads it. One per thread: default-constructing its ~220 bytes per
     // photon was a memset call on every path.
@@ -307,7 +284,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
             if (hit->front && (role & kSensor) && surf->storeAllowed)
                 deposit(*hit, true, flux, scatters > 0 || fromPort, causticNow(),
                         prob, storeRng, out);
-            for (int32_t c : mi.clips) hit->front ? clip.add(c) : clip.remove(c);
+            clip.cross(mi.clips, hit->front);
             ray = spawnRay(*hit, ray.dir);
             ++passes;
             continue;
