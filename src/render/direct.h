@@ -82,9 +82,10 @@ using DirectCoefficient = std::function<Color(const Vec3& toLight, double omega)
 
 // Where we differ from RADIANCE, and why (details beside the code):
 //  - subdivision (source_sampling.h): polygon cells are clipped exactly against the
-//    polygon and get their exact solid angle (RADIANCE aims at bounding-box cells and
-//    scales the whole source's area); spheres and distant sources use equal-solid-angle
-//    cells of their direction cone; at most 64 cells per source (MAXSPART) throughout;
+//    polygon, each weighted with its own covered area (area cos / d^2 at its sample, as
+//    RADIANCE weighs a cell; RADIANCE aims at bounding-box cells and scales the whole
+//    source's area); spheres and distant sources use equal-solid-angle cells of their
+//    direction cone; at most 64 cells per source (MAXSPART) throughout;
 //  - untested samples (-dt) are scaled by this call's found/estimated brightness ratio,
 //    not by RADIANCE's per-source hit statistics gathered over the run (those depend on
 //    the order rays are traced in, i.e. on threads);

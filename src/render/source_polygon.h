@@ -1,6 +1,6 @@
 // Flat polygon sources seen from a point: RADIANCE's binary subdivision of the source's
 // bounding rectangle (srcsamp.c flt_partit) with each cell clipped exactly against the
-// polygon, so that concave polygons and holes get the right solid angle. Used by
+// polygon, so that concave polygons and holes get the right area. Used by
 // source_sampling.cpp; separate because clipping is most of it.
 #pragma once
 

@@ -29,7 +29,9 @@ struct SourceSample {
 // Per shape:
 //  - polygon: RADIANCE's binary subdivision of the bounding rectangle (flt_partit); each
 //    cell is clipped exactly against the polygon's triangles (concave polygons and holes
-//    work), omega is the exact solid angle of the covered part, the sample its centroid
+//    work), omega is the covered area times cos over d^2 at the sample (RADIANCE's
+//    nextssamp; -ds 0: one sample at the centre for the whole source), the sample the
+//    covered part's centroid
 //    (jittered toward a uniform point of the covered part; a jittered point that leaves
 //    a non-convex covered part falls back to that uniform point);
 //  - sphere: equal-solid-angle cells of the cone of directions it subtends (exact total
