@@ -9,7 +9,6 @@
 #include "light/light_sources.h"
 #include "material/clip_set.h"
 #include "util/error.h"
-#include "util/warnings.h"
 
 namespace rp::pmap {
 
@@ -210,8 +209,8 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     double travelled = 0;
     material::ClipSet clip;
     // Set per hit below (setSurfaceHit, pattern, normal); its other fields keep their
-    // defaults, since scattering only reads it. One per thread: default-constructing its ~220 bytes per
-    // photon was a memset call on every path.
+    // defaults, since scattering only reads it. One per thread: default-constructing
+    // its ~220 bytes per photon was a memset call on every path.
     static thread_local material::SurfacePoint sp;
     std::optional<material::MaterialCalcEvaluator> calcEval;  // made at the first use
     std::optional<material::SurfaceChainEvaluator> chainEval;  // idem
