@@ -27,7 +27,10 @@ struct Triangulation {
 // Triangulates the loop verts[0..n) whose front side faces `normal` (counter-clockwise
 // seen from the front, RADIANCE's convention). The triangles cover exactly the points
 // with an odd crossing count, each once, and share every edge point they touch (no
-// T-junctions). Zero-area triangles are dropped. A fan in O(n) for convex loops.
+// T-junctions). Zero-area triangles are dropped. A fan in O(n) for convex loops; else
+// each slab costs O(e log e) for the e edges crossing it: walls with thousands of windows
+// take milliseconds (99k vertices: 0.05 s), but an outline that a horizontal line crosses
+// O(n) times is quadratic (a random 10,000-spike star: 1 s).
 Triangulation triangulatePolygon(std::span<const Vec3> verts, const Vec3& normal);
 
 }  // namespace rp
