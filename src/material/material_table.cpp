@@ -69,6 +69,17 @@ int32_t lastModifier(const Scene& scene, int32_t before, const std::string& name
     return kVoid;
 }
 
+int32_t chainMaterial(const Scene& scene, int32_t modifier) {
+    int32_t m = modifier;
+    // Bounded walk: the reader resolves aliases, so chains are short and acyclic.
+    for (size_t guard = 0; m != kVoid && guard < scene.prims.size(); ++guard) {
+        PrimCategory c = primCategory(scene.prims[size_t(m)].type);
+        if (c == PrimCategory::Material || c == PrimCategory::Mixture) return m;
+        m = scene.prims[size_t(m)].modifier;
+    }
+    return kVoid;
+}
+
 std::vector<int32_t> antimatterClips(const Scene& scene, int32_t index, bool warnUnknown) {
     const Primitive& p = scene.prims[size_t(index)];
     std::vector<int32_t> clips;

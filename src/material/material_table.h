@@ -30,6 +30,10 @@ struct MaterialRecord {
 // kVoid for "void" or an unknown name.
 int32_t lastModifier(const Scene& scene, int32_t before, const std::string& name);
 
+// The first material or mixture on the modifier chain from `modifier`, past patterns,
+// textures and aliases (RADIANCE findmaterial); kVoid if the chain ends in void.
+int32_t chainMaterial(const Scene& scene, int32_t modifier);
+
 // The modifiers the antimatter record `index` clips: each of its names resolved with
 // lastModifier, "void" and repeats skipped; unknown names are warned about with
 // `warnUnknown` (RADIANCE warns and goes on without them).

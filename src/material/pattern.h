@@ -17,6 +17,12 @@ struct PatternPoint {
     double distance = 0;  // T (undefined for emission: 0)
     double rdot = 0;      // Rdot = -D.N: positive in front; at a light, the cosine between
                           // the emitted direction and the surface normal
+
+    // Where a ray travelling `dir` met a surface at `distance`: Rdot follows from D and N.
+    static PatternPoint atHit(const Vec3& dir, const Vec3& point, const Vec3& normal,
+                              double distance) {
+        return {dir, point, normal, distance, -dot(dir, normal)};
+    }
 };
 
 }  // namespace rp::material

@@ -64,15 +64,7 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
             continue;
         }
         chains_.checkChain(surf.modifier);
-        // For the port test: the material (or mixture) past patterns and textures
-        // (RADIANCE findmaterial).
-        int32_t m = surf.modifier;
-        for (size_t guard = 0; m != kVoid && guard < prims.size(); ++guard) {
-            PrimCategory c = primCategory(prims[size_t(m)].type);
-            if (c == PrimCategory::Material || c == PrimCategory::Mixture) break;
-            m = prims[size_t(m)].modifier;
-        }
-        info.material = m;
+        info.material = material::chainMaterial(scene, surf.modifier);  // for the port test
     }
     for (const light::LightSource& s : plan_.sources())
         sourceMaxDistance_.push_back(s.maxDistance);
@@ -93,12 +85,7 @@ int32_t PhotonTracer::resolveChain(int32_t modifier, const Hit& hit, const Vec3&
                                    std::optional<material::SurfaceChainEvaluator>& eval,
                                    Rng& rng, Color& pattern, Vec3& perturbation) const {
     if (!eval) eval.emplace(chains_);
-    material::PatternPoint at;
-    at.dir = dir;
-    at.point = hit.point;
-    at.normal = hit.normal;
-    at.distance = hit.t;
-    at.rdot = -dot(dir, hit.normal);
+    const auto at = material::PatternPoint::atHit(dir, hit.point, hit.normal, hit.t);
     material::ChainResult c = eval->resolve(modifier, at, rng);
     if (c.count <= 0) return kVoid;
     int pick = 0;
@@ -116,12 +103,7 @@ void PhotonTracer::setFunctionValues(int32_t material, const Hit& hit, const Vec
                                      std::optional<material::MaterialCalcEvaluator>& eval,
                                      material::SurfacePoint& sp) const {
     if (!eval) eval.emplace(*materialCalc_);
-    material::PatternPoint at;
-    at.dir = dir;
-    at.point = hit.point;
-    at.normal = hit.normal;
-    at.distance = hit.t;
-    at.rdot = -dot(dir, hit.normal);
+    const auto at = material::PatternPoint::atHit(dir, hit.point, hit.normal, hit.t);
     eval->setHit(material, at, sp.normal, sp.pattern);
     Color refl, trans;
     eval->brtdSpecular(refl, trans);

@@ -11,6 +11,7 @@ namespace rp::pmap {
 namespace {
 
 using testing::boxRoom;
+using testing::boxRoomSurfaces;
 using testing::distribute;
 using testing::makeRun;
 using testing::mapsFor;
@@ -268,17 +269,10 @@ TEST(TraceChains, TextureTiltsTheScatteringNormal) {
         std::string floor = tilt ? "void texfunc tilt 4 0.6 0 0 . 0 0\n"
                                    "tilt plastic floormat 0 0 5 0.9 0.9 0.9 0 0\n"
                                  : "void plastic floormat 0 0 5 0.9 0.9 0.9 0 0\n";
-        std::string text = floor + R"(
-void plastic wallmat 0 0 5 0.1 0.1 0.1 0 0
-void light lamp 0 0 3 10 10 10
-floormat polygon floor 0 0 12  0 0 0  4 0 0  4 4 0  0 4 0
-wallmat polygon ceiling 0 0 12  0 0 4  0 4 4  4 4 4  4 0 4
-wallmat polygon wall_s 0 0 12  0 0 0  0 0 4  4 0 4  4 0 0
-wallmat polygon wall_n 0 0 12  0 4 0  4 4 0  4 4 4  0 4 4
-wallmat polygon wall_w 0 0 12  0 0 0  0 4 0  0 4 4  0 0 4
-wallmat polygon wall_e 0 0 12  4 0 0  4 0 4  4 4 4  4 4 0
-lamp polygon panel 0 0 12  1.5 1.5 3.99  1.5 2.5 3.99  2.5 2.5 3.99  2.5 1.5 3.99
-)";
+        std::string text = floor +
+                           "void plastic wallmat 0 0 5 0.1 0.1 0.1 0 0\n"
+                           "void light lamp 0 0 3 10 10 10\n" +
+                           boxRoomSurfaces();
         auto run = makeRun(sceneFromText(text), mapsFor(true, false, false), {}, true);
         DistributionResult r = distribute(*run, 20000, 0, 0);
         double east = 0, west = 0;

@@ -79,13 +79,11 @@ inline TraceSettings mapsFor(bool global, bool caustic, bool direct) {
     return ts;
 }
 
-// A closed 4 m cube room: plastic 0.5 walls/ceiling, separate floor modifier, a
-// light panel under the ceiling facing down. All room surfaces face inward.
-inline std::string boxRoom(const std::string& extra = "") {
+// The surfaces of a closed 4 m cube room: walls and ceiling of modifier `wallmat`, the
+// floor of `floormat`, a light panel (`lamp`) under the ceiling facing down; all room
+// surfaces face inward. The modifiers are the caller's.
+inline std::string boxRoomSurfaces() {
     return R"(
-void plastic wallmat 0 0 5 0.5 0.5 0.5 0 0
-void plastic floormat 0 0 5 0.5 0.5 0.5 0 0
-void light lamp 0 0 3 10 10 10
 floormat polygon floor 0 0 12  0 0 0  4 0 0  4 4 0  0 4 0
 wallmat polygon ceiling 0 0 12  0 0 4  0 4 4  4 4 4  4 0 4
 wallmat polygon wall_s 0 0 12  0 0 0  0 0 4  4 0 4  4 0 0
@@ -93,7 +91,16 @@ wallmat polygon wall_n 0 0 12  0 4 0  4 4 0  4 4 4  0 4 4
 wallmat polygon wall_w 0 0 12  0 0 0  0 4 0  0 4 4  0 0 4
 wallmat polygon wall_e 0 0 12  4 0 0  4 0 4  4 4 4  4 4 0
 lamp polygon panel 0 0 12  1.5 1.5 3.99  1.5 2.5 3.99  2.5 2.5 3.99  2.5 1.5 3.99
-)" + extra;
+)";
+}
+
+// That room with plastic 0.5 walls, ceiling and floor and a lamp of radiance 10.
+inline std::string boxRoom(const std::string& extra = "") {
+    return R"(
+void plastic wallmat 0 0 5 0.5 0.5 0.5 0 0
+void plastic floormat 0 0 5 0.5 0.5 0.5 0 0
+void light lamp 0 0 3 10 10 10
+)" + boxRoomSurfaces() + extra;
 }
 
 }  // namespace rp::pmap::testing

@@ -17,12 +17,7 @@ AntimatterTable::AntimatterTable(const Scene& scene, bool warnUnknown) {
     if (lists_.empty()) return;
     for (size_t i = 0; i < prims.size(); ++i) {
         if (!isModifier(prims[i].type)) continue;
-        int32_t m = int32_t(i);
-        for (size_t guard = 0; m != kVoid && guard < prims.size(); ++guard) {
-            PrimCategory c = primCategory(prims[size_t(m)].type);
-            if (c == PrimCategory::Material || c == PrimCategory::Mixture) break;
-            m = prims[size_t(m)].modifier;
-        }
+        int32_t m = material::chainMaterial(scene, int32_t(i));
         if (m != kVoid) of_[i] = listOf[size_t(m)];
     }
 }

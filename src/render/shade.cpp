@@ -26,13 +26,7 @@ constexpr double kNoHit = 1e10;
 
 // The function-space view of a hit that patterns and material functions see.
 material::PatternPoint patternPoint(const Hit& hit, const Vec3& dir) {
-    material::PatternPoint at;
-    at.dir = dir;
-    at.point = hit.point;
-    at.normal = hit.normal;
-    at.distance = hit.t;
-    at.rdot = -dot(dir, hit.normal);
-    return at;
+    return material::PatternPoint::atHit(dir, hit.point, hit.normal, hit.t);
 }
 
 }  // namespace
