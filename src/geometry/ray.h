@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <vector>
 
+#include "scene/xform.h"
 #include "util/fast_minmax.h"
 #include "util/vec.h"
 
@@ -34,17 +35,20 @@ struct Hit {
     // ring: its direction vector). It is NOT flipped toward the ray: see `front`.
     Vec3 normal;
     bool front = true;  // dot(dir, normal) < 0: the ray arrived on the front side
-    int32_t prim = -1;      // index into Scene::prims of the surface
-    int32_t modifier = -1;  // its modifier index (kVoid = -1)
-    // Local surface coordinates:
-    //   polygon:           (u, v) in world units in the polygon's plane, origin at its
-    //                      first vertex, u along the first non-degenerate edge, v = n x u;
-    //                      independent of how the polygon was triangulated.
-    //   sphere/bubble:     u = azimuth/(2 pi) about +z in [0,1), v = polar angle/pi from +z.
-    //   cone family:       u = angle about the axis/(2 pi) in [0,1), v = 0 at the first
-    //                      end point, 1 at the second (fraction of axis length).
-    //   ring:              u = angle about the normal/(2 pi), v = (r - r0)/(r1 - r0).
+    // The surface as shading sees it (RADIANCE ray.ro): index into Scene::prims of the
+    // surface, or inside an instance with a modifier of its own that instance, or for a
+    // mesh the mesh primitive; and the modifier that applies (kVoid = -1).
+    int32_t prim = -1;
+    int32_t modifier = -1;
+    // RADIANCE's local coordinates (ray.uv, Lu and Lv): a mesh's interpolated (u, v)
+    // where its three vertices have them, 0 everywhere else.
     double u = 0, v = 0;
+    // A mesh's interpolated vertex normal minus the geometric normal (RADIANCE ray.pert,
+    // to which textures add); zero elsewhere.
+    Vec3 perturbation;
+    // Inside an instance or mesh: the object space its function files see (RADIANCE
+    // ray.rox); null for world space.
+    const TransformPair* objectSpace = nullptr;
     // Distance by which a ray leaving this point must start off the surface so that it
     // can neither re-hit it through rounding nor tunnel through a neighbouring surface
     // farther than this (see spawnRay).

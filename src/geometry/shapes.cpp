@@ -5,9 +5,9 @@
 
 namespace rp {
 
-ShapeSet buildShapes(const Scene& scene) {
+ShapeSet buildShapes(const Scene& scene, int32_t begin, int32_t end) {
     ShapeSet set;
-    for (size_t i = 0; i < scene.prims.size(); ++i) {
+    for (size_t i = size_t(begin); i < size_t(end); ++i) {
         const Primitive& p = scene.prims[i];
         if (!isSurface(p.type)) continue;
         int32_t index = int32_t(i);
@@ -56,12 +56,12 @@ ShapeSet buildShapes(const Scene& scene) {
         }
         case PrimType::Source: {
             DistantSource src;
-            if (makeSource(p, index, src)) set.sources.push_back(src);
+            if (makeSource(p, index, src) && p.object < 0) set.sources.push_back(src);
             break;
         }
         case PrimType::Instance:
         case PrimType::Mesh:
-            throw notSupportedYet(p.loc, std::string(primTypeName(p.type)) + " '" + p.name + "'");
+            break;
         default:
             RP_CHECK(false);  // every surface type is handled above
         }

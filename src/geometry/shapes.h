@@ -15,8 +15,9 @@
 
 namespace rp {
 
-// Shape families, also the accelerator's geometry ids.
-enum class ShapeKind : uint8_t { Polygon = 0, Sphere = 1, Cone = 2, Ring = 3 };
+// Shape families, also the accelerator's geometry ids. Mesh triangles occur only in
+// placed objects (geometry/placement.h).
+enum class ShapeKind : uint8_t { Polygon = 0, Sphere = 1, Cone = 2, Ring = 3, Mesh = 4 };
 
 struct ShapeSet {
     std::vector<PolygonShape> polygons;
@@ -30,9 +31,13 @@ struct ShapeSet {
     Bounds3 bounds;  // of every traced shape (sources excluded)
 };
 
-// Builds the shapes of every surface primitive. Modifiers are ignored; `instance` and
-// `mesh` throw notSupportedYet; bad arguments throw InputError; degenerate shapes are
-// skipped with a warning naming their loc.
-ShapeSet buildShapes(const Scene& scene);
+// Builds the shapes of the surface primitives among scene.prims[begin, end): the scene's
+// own records or one placed octree's. Modifiers are ignored, and so are instances and
+// meshes (they are placements); bad arguments throw InputError; degenerate shapes are
+// skipped with a warning naming their loc. Distant sources count only in the scene's
+// own records (RADIANCE: no light sources inside instances).
+ShapeSet buildShapes(const Scene& scene, int32_t begin, int32_t end);
+// The scene's own records.
+inline ShapeSet buildShapes(const Scene& scene) { return buildShapes(scene, 0, scene.ownCount()); }
 
 }  // namespace rp

@@ -73,13 +73,13 @@ TEST(Shapes, BadArgumentCountsNameTheLocation) {
     }
 }
 
-TEST(Shapes, InstanceAndMeshNotSupportedYet) {
+TEST(Shapes, InstancesAndMeshesArePlacementsNotShapes) {
     SceneBuilder b;
     b.surface(PrimType::Instance, {}, kVoid, "chair");
-    EXPECT_NE(errorOf(b.scene()).find("not supported yet: instance 'chair'"), std::string::npos);
-    SceneBuilder m;
-    m.surface(PrimType::Mesh, {}, kVoid, "m");
-    EXPECT_NE(errorOf(m.scene()).find("not supported yet: mesh"), std::string::npos);
+    b.surface(PrimType::Mesh, {}, kVoid, "m");
+    ShapeSet s = buildShapes(b.scene());
+    EXPECT_TRUE(s.polygons.empty() && s.spheres.empty() && s.cones.empty() && s.rings.empty());
+    EXPECT_TRUE(s.bounds.empty());
 }
 
 TEST(Shapes, DegenerateShapesAreSkippedWithWarning) {

@@ -11,8 +11,19 @@ std::array<double, 3> toArr(const Vec3& v) { return {v.x, v.y, v.z}; }
 
 }  // namespace
 
+Transform functionTransform(const PatternPoint& at, const Transform& toObject) {
+    return at.object ? toObject * at.object->backward : toObject;
+}
+
+Vec3 functionToWorld(const PatternPoint& at, const Transform* forward, Vec3 v) {
+    if (forward) v = toVec(forward->direction(toArr(v))) / forward->scale;
+    if (at.object) v = toVec(at.object->forward.direction(toArr(v))) / at.object->forward.scale;
+    return v;
+}
+
 calc::RayContext functionSpace(const PatternPoint& at, const Transform& toObject) {
-    const Transform& t = toObject;
+    const Transform composed = at.object ? functionTransform(at, toObject) : Transform{};
+    const Transform& t = at.object ? composed : toObject;
     // RADIANCE transforms are similarities: dividing by the scale leaves a rotation (and
     // perhaps a mirror), which keeps unit vectors unit.
     const double unit = 1.0 / t.scale;
@@ -31,6 +42,8 @@ calc::RayContext functionSpace(const PatternPoint& at, const Transform& toObject
     ctx.I = toVec(t.direction({1, 0, 0})) * unit;
     ctx.J = toVec(t.direction({0, 1, 0})) * unit;
     ctx.K = toVec(t.direction({0, 0, 1})) * unit;
+    ctx.Lu = at.lu;
+    ctx.Lv = at.lv;
     return ctx;
 }
 

@@ -20,6 +20,16 @@ namespace rp::material {
 //  - T, Ts: distances in function-space units (times toObject's scale);
 //  - S: toObject's scale ("world scale": one world unit measured in function units);
 //  - Rdot: as given, clamped to [-1, 1]; not transformed.
+// Inside an instance or mesh (at.object), world -> object space comes first, as RADIANCE
+// composes ray.rox with the modifier's own transform (func.c setfunc).
 calc::RayContext functionSpace(const PatternPoint& at, const Transform& toObject);
+
+// world -> function space for `at`: toObject after the object's space, if any.
+Transform functionTransform(const PatternPoint& at, const Transform& toObject);
+
+// A vector computed in function space (a texture's perturbation) carried back to world
+// space as RADIANCE's t_func.c does: the modifier's forward rotation, then the object's,
+// each scale divided out.
+Vec3 functionToWorld(const PatternPoint& at, const Transform* forward, Vec3 v);
 
 }  // namespace rp::material

@@ -205,8 +205,8 @@ void MaterialCalcEvaluator::setHit(int32_t material, const PatternPoint& at,
              calc_.recordOf_[material] >= 0);
     rec_ = &calc_.records_[calc_.recordOf_[material]];
     // The same function-space values as patterns see (func.c setfunc).
-    const Transform& t = rec_->toObject;
-    ctx_ = functionSpace(at, t);
+    const Transform t = functionTransform(at, rec_->toObject);
+    ctx_ = functionSpace(at, rec_->toObject);
     if (at.rdot < 0 && (rec_->kind == MaterialCalc::Kind::Func ||
                         rec_->kind == MaterialCalc::Kind::Data)) {
         // m_brdf.c m_brdf2 turns the surface to the ray (flipsurface) before its

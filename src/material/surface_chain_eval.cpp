@@ -90,8 +90,7 @@ struct SurfaceChainEvaluator::Impl {
         // RADIANCE compat (t_func.c): the perturbation is computed in function space and
         // carried to world space by the forward transform's rotation: the scale is
         // divided out (a texfunc under "-s 0.2" perturbs as much as without it).
-        if (r.hasTransform) disp = toVec(r.forward.direction(toArr(disp))) / r.forward.scale;
-        st.pert += disp;
+        st.pert += functionToWorld(*at, r.hasTransform ? &r.forward : nullptr, disp);
     }
 
     void push(int32_t material, double weight, const WalkState& st) {

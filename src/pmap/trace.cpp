@@ -85,7 +85,7 @@ int32_t PhotonTracer::resolveChain(int32_t modifier, const Hit& hit, const Vec3&
                                    std::optional<material::SurfaceChainEvaluator>& eval,
                                    Rng& rng, Color& pattern, Vec3& perturbation) const {
     if (!eval) eval.emplace(chains_);
-    const auto at = material::PatternPoint::atHit(dir, hit.point, hit.normal, hit.t);
+    const auto at = material::PatternPoint::atHit(dir, hit);
     material::ChainResult c = eval->resolve(modifier, at, rng);
     if (c.count <= 0) return kVoid;
     int pick = 0;
@@ -103,7 +103,7 @@ void PhotonTracer::setFunctionValues(int32_t material, const Hit& hit, const Vec
                                      std::optional<material::MaterialCalcEvaluator>& eval,
                                      material::SurfacePoint& sp) const {
     if (!eval) eval.emplace(*materialCalc_);
-    const auto at = material::PatternPoint::atHit(dir, hit.point, hit.normal, hit.t);
+    const auto at = material::PatternPoint::atHit(dir, hit);
     eval->setHit(material, at, sp.normal, sp.pattern);
     Color refl, trans;
     eval->brtdSpecular(refl, trans);
@@ -207,7 +207,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         }
         ray.tmax = pathLimit - travelled;
         if (!(ray.tmax > 0)) return;
-        std::optional<Hit> hit = geometry_.closestHit(ray, nullptr, /*surfaceCoords=*/false);
+        std::optional<Hit> hit = geometry_.closestHit(ray);
         if (!hit) return;
         travelled += hit->t;
 
@@ -250,6 +250,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         const int32_t matIndex =
             surf->plain ? surf->material
                         : resolveChain(modIndex, *hit, ray.dir, chainEval, rng, pattern, perturbation);
+        perturbation += hit->perturbation;  // a mesh's vertex normals (RADIANCE o_mesh.c)
         if (matIndex == kVoid) {
             ray = spawnRay(*hit, ray.dir);
             ++passes;

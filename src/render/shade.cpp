@@ -26,7 +26,7 @@ constexpr double kNoHit = 1e10;
 
 // The function-space view of a hit that patterns and material functions see.
 material::PatternPoint patternPoint(const Hit& hit, const Vec3& dir) {
-    return material::PatternPoint::atHit(dir, hit.point, hit.normal, hit.t);
+    return material::PatternPoint::atHit(dir, hit);
 }
 
 }  // namespace
@@ -34,7 +34,7 @@ material::PatternPoint patternPoint(const Hit& hit, const Vec3& dir) {
 material::Redirection evalRedirect(const Scene& scene, const material::MaterialCalc& calc,
                                    material::MaterialCalcEvaluator& ev, const Hit& hit,
                                    const Vec3& dir, int projection, const Vec3& toSource) {
-    int32_t mat = light::findMaterial(scene, hit.prim);
+    int32_t mat = material::chainMaterial(scene, hit.modifier);
     if (mat == kVoid || !calc.uses(mat)) return {};
     const PrimType t = scene.prims[size_t(mat)].type;
     if (t != PrimType::Prism1 && t != PrimType::Prism2) return {};
@@ -72,9 +72,14 @@ void Renderer::Context::applyMaterialCalc(int32_t material, const Hit& hit, cons
 
 material::ChainResult Renderer::Context::resolve(int32_t modifier, const Hit& hit,
                                                  const Vec3& dir) {
-    if (impl.chains.isPlain(modifier))
-        return material::ChainResult::plain(impl.chains.plainMaterial(modifier));
-    return chains.resolve(modifier, patternPoint(hit, dir), rng);
+    material::ChainResult r =
+        impl.chains.isPlain(modifier) ? material::ChainResult::plain(impl.chains.plainMaterial(modifier))
+                                      : chains.resolve(modifier, patternPoint(hit, dir), rng);
+    // RADIANCE compat (o_mesh.c): a mesh's vertex normals perturb the surface first,
+    // textures add to that.
+    if (lengthSquared(hit.perturbation) > 0)
+        for (int i = 0; i < r.count; ++i) r.layers[size_t(i)].perturbation += hit.perturbation;
+    return r;
 }
 
 Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResult* first,

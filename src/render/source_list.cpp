@@ -104,7 +104,7 @@ bool clearPath(const SceneGeometry& geometry, const ModifierSet& skip,
     Ray ray{origin, dir, tmax};
     double travelled = 0;
     for (int pass = 0; pass < 64; ++pass) {  // bounded like the renderer's pass loop
-        std::optional<Hit> hit = geometry.closestHit(ray, &skip, false);
+        std::optional<Hit> hit = geometry.closestHit(ray, &skip);
         if (!hit) return true;
         if (!clip.contains(hit->modifier)) {
             const std::vector<int32_t>* clips = antimatter.clips(hit->modifier);

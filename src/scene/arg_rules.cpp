@@ -256,8 +256,6 @@ size_t transformStart(const Primitive& p) {
 }
 
 bool checkArgs(Primitive& p) {
-    if (p.type == PrimType::Instance) throw notSupportedYet(p.loc, "instance");
-    if (p.type == PrimType::Mesh) throw notSupportedYet(p.loc, "mesh");
     const ArgRule& r = argRule(p.type);
     checkCount(p, r.strings, p.sargs.size(), "string");
     checkCount(p, r.integers, p.iargs.size(), "integer");

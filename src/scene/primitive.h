@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -54,6 +55,23 @@ struct Primitive {
     std::vector<long> iargs;        // integer arguments
     std::vector<double> rargs;      // real arguments
     SourceLoc loc;                  // where it was defined
+    // Set by attachObjects (scene_load.h): the Scene::objects entry this record belongs
+    // to (-1: the scene itself), and for instance and mesh primitives the object placed.
+    int32_t object = -1;
+    int32_t placed = -1;
+};
+
+struct MeshData;
+
+// An octree or mesh file that instance and mesh primitives place, loaded once however
+// often it is placed. Its records follow the scene's own in Scene::prims, modifier
+// indices resolved within them: an octree's surfaces and modifiers, a mesh's materials.
+struct SceneObject {
+    enum class Kind : uint8_t { Octree, Mesh };
+    Kind kind = Kind::Octree;
+    std::string path;                       // as found on the search path
+    int32_t firstPrim = 0, endPrim = 0;     // its records in Scene::prims
+    std::shared_ptr<const MeshData> mesh;   // Kind::Mesh: the triangles
 };
 
 // A file the scene was read from, for the photon map stale check.
@@ -65,6 +83,12 @@ struct SceneInput {
 struct Scene {
     std::vector<Primitive> prims;    // surfaces and modifiers in input order
     std::vector<SceneInput> inputs;  // files read, in order
+    std::vector<SceneObject> objects;  // what instances and meshes place (attachObjects)
+
+    // The scene's own records come first, then the objects'.
+    int32_t ownCount() const {
+        return objects.empty() ? int32_t(prims.size()) : objects.front().firstPrim;
+    }
 };
 
 }  // namespace rp

@@ -223,9 +223,10 @@ TEST(ReaderErrors, FailingCommand) {
               "plastic w 0 0 1 2)");
 }
 
-TEST(ReaderErrors, InstanceAndMeshNotSupportedYet) {
-    EXPECT_EQ(errorOf("void instance i 1 o.oct 0 0\n"), "t.rad:1: not supported yet: instance");
-    EXPECT_EQ(errorOf("void mesh m 1 m.msh 0 0\n"), "t.rad:1: not supported yet: mesh");
+TEST(ReaderErrors, InstanceAndMeshArguments) {
+    EXPECT_EQ(errorOf("void instance i 0 0 0\n"),
+              "t.rad:1: instance 'i': expected at least 1 string argument, got 0");
+    EXPECT_EQ(errorOf("void mesh m 3 m.rtm -s x 0 0\n").substr(0, 17), "t.rad:1: mesh 'm'");
 }
 
 }  // namespace

@@ -11,10 +11,21 @@
 
 namespace rp {
 
-// Reads the inputs in order into one Scene. Scene::inputs lists every file read with its
-// mtime: for a frozen scene file, the inputs recorded in it and then the file itself;
-// for a RADIANCE octree, the scene files it names and then the octree.
+// Reads the inputs in order into one Scene and attaches the objects its instances and
+// meshes place (attachObjects). Scene::inputs lists every file read with its mtime: for
+// a frozen scene file, the inputs recorded in it and then the file itself; for a
+// RADIANCE octree, the scene files it names and then the octree; then each placed
+// octree's inputs and the octree, and each mesh file.
 Scene loadScene(const std::vector<std::string>& paths, const LoadOptions& options = {});
+
+// Loads, once per file, every octree (ours or RADIANCE's, frozen or not) and mesh that an
+// instance or mesh primitive of the scene names, and those that their instances name,
+// appending their records to scene.prims (SceneObject, Primitive::object and ::placed).
+// Files are found on `searchPath` as RADIANCE's getpath finds them. A missing file, one
+// that is not an octree (instance) or mesh, an octree that places itself, and a light
+// material as an instance's or mesh's modifier are InputErrors at the primitive.
+void attachObjects(Scene& scene, const std::vector<std::string>& searchPath,
+                   const LoadOptions& options = {});
 
 struct OconvRequest {
     std::vector<std::string> files;  // scene descriptions, "-" or "!command"

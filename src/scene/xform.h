@@ -41,6 +41,13 @@ struct Transform {
     bool isIdentity() const;
 };
 
+// A transform and its inverse (RADIANCE FULLXF): object to world and back.
+struct TransformPair {
+    Transform forward;   // object -> world
+    Transform backward;  // world -> object
+    static TransformPair of(const Transform& forward) { return {forward, forward.inverse()}; }
+};
+
 // True if `arg` is one of the transform options above (exact spelling).
 bool isTransformOption(const std::string& arg);
 

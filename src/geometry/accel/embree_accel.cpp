@@ -11,6 +11,13 @@
 //    filter costs traversal speed, so the common case runs without it.
 // Modifier skipping uses the same context filter (triangles) and the user intersectors
 // (quadrics) reading the context: no per-geometry filter, so no cost when unused.
+//
+// Placed objects. Each object (an octree's shapes, a mesh) is one Embree scene; each
+// placement an Embree instance of it (geometry id kFirstPlacement + index). Callbacks
+// inside an instance see Embree's instance id in their context and take the query's
+// double ray into that object's space (localRay), so the double-precision tests above
+// hold inside instances too; t is the same parameter in both spaces (object-space
+// directions are not renormalised).
 #include "geometry/accel/embree_accel.h"
 #include "util/fast_minmax.h"
 
@@ -30,17 +37,69 @@ namespace rp {
 
 namespace {
 
+constexpr unsigned kFirstPlacement = 8;  // geometry ids below are the scene's own ShapeKinds
+
+inline Vec3 xfPoint(const Transform& t, const Vec3& p) {
+    auto r = t.point({p.x, p.y, p.z});
+    return {r[0], r[1], r[2]};
+}
+inline Vec3 xfDir(const Transform& t, const Vec3& d) {
+    auto r = t.direction({d.x, d.y, d.z});
+    return {r[0], r[1], r[2]};
+}
+
 struct QueryContext {
     RTCIntersectContext rtc;  // first member: Embree hands callbacks &rtc
-    const ShapeSet* shapes;
+    const ShapeSet* shapes;   // the scene's own
+    const std::vector<AccelObject>* objects;
+    const std::vector<AccelPlacement>* placements;
     Vec3 org, dir;
     double tmax;
     const ModifierSet* skip;  // null or non-empty
     bool checkTriangles;      // filter applies the double-precision plane test
     double userT;             // double t of the last user-geometry hit accepted
+    unsigned localInst;       // instance whose object-space ray localOrg/localDir hold
+    Vec3 localOrg, localDir;
 };
 
 QueryContext* queryContext(RTCIntersectContext* c) { return reinterpret_cast<QueryContext*>(c); }
+
+inline const AccelPlacement& placementOf(const QueryContext& ctx, unsigned inst) {
+    return (*ctx.placements)[inst - kFirstPlacement];
+}
+
+// The query's double ray in the space of the geometry Embree is testing: the world, or
+// the object space of instance `inst` (computed once per query and instance).
+inline void localRay(QueryContext& ctx, unsigned inst, Vec3& o, Vec3& d) {
+    if (inst == RTC_INVALID_GEOMETRY_ID) {
+        o = ctx.org;
+        d = ctx.dir;
+        return;
+    }
+    if (inst != ctx.localInst) {
+        const AccelPlacement& p = placementOf(ctx, inst);
+        ctx.localOrg = xfPoint(p.toObject, ctx.org);
+        ctx.localDir = xfDir(p.toObject, ctx.dir);
+        ctx.localInst = inst;
+    }
+    o = ctx.localOrg;
+    d = ctx.localDir;
+}
+
+inline const ShapeSet& shapesIn(const QueryContext& ctx, unsigned inst) {
+    if (inst == RTC_INVALID_GEOMETRY_ID) return *ctx.shapes;
+    return *(*ctx.objects)[placementOf(ctx, inst).object].shapes;
+}
+
+// Whether the skip set passes through a surface with modifier `own` inside `inst`.
+inline bool skipped(const QueryContext& ctx, unsigned inst, int32_t own) {
+    if (!ctx.skip) return false;
+    if (inst != RTC_INVALID_GEOMETRY_ID) {
+        const AccelPlacement& p = placementOf(ctx, inst);
+        if (p.fixed) own = p.fixedModifier;
+    }
+    return ctx.skip->contains(own);
+}
 
 // t of the ray against the polygon's exact plane; false if the ray lies in the plane.
 inline bool planeT(const PolygonShape& p, const Vec3& o, const Vec3& d, double& t) {
@@ -50,27 +109,60 @@ inline bool planeT(const PolygonShape& p, const Vec3& o, const Vec3& d, double& 
     return true;
 }
 
-inline bool validPolygonHit(const QueryContext& ctx, uint32_t tri, uint32_t& polygon, double& t) {
-    polygon = ctx.shapes->trianglePolygon[tri];
-    return planeT(ctx.shapes->polygons[polygon], ctx.org, ctx.dir, t) && t > 0 && t < ctx.tmax;
+inline bool validPolygonHit(QueryContext& ctx, unsigned inst, uint32_t tri, uint32_t& polygon,
+                            double& t) {
+    const ShapeSet& shapes = shapesIn(ctx, inst);
+    polygon = shapes.trianglePolygon[tri];
+    Vec3 o, d;
+    localRay(ctx, inst, o, d);
+    return planeT(shapes.polygons[polygon], o, d, t) && t > 0 && t < ctx.tmax;
+}
+
+// A mesh triangle's plane in double from its float vertices (which are the surface).
+inline bool validMeshHit(QueryContext& ctx, unsigned inst, uint32_t tri, double& t) {
+    const MeshData& m = *(*ctx.objects)[placementOf(ctx, inst).object].mesh;
+    auto vertex = [&](int k) {
+        const float* p = &m.positions[3 * size_t(m.triangles[3 * size_t(tri) + size_t(k)])];
+        return Vec3{p[0], p[1], p[2]};
+    };
+    const Vec3 v0 = vertex(0);
+    const Vec3 n = cross(vertex(1) - v0, vertex(2) - v0);
+    Vec3 o, d;
+    localRay(ctx, inst, o, d);
+    const double dn = dot(n, d);
+    if (dn == 0) return false;
+    t = dot(v0 - o, n) / dn;
+    return t > 0 && t < ctx.tmax;
+}
+
+inline int32_t meshModifier(const QueryContext& ctx, unsigned inst, uint32_t tri) {
+    const AccelPlacement& p = placementOf(ctx, inst);
+    if (p.fixed) return p.fixedModifier;
+    int32_t m = (*ctx.objects)[p.object].mesh->materialOf(tri);
+    return m == kVoid ? kVoid : p.meshMaterialBase + m;
 }
 
 void contextFilter(const RTCFilterFunctionNArguments* args) {
-    const QueryContext* ctx = queryContext(args->context);
+    QueryContext* ctx = queryContext(args->context);
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] == 0) continue;
-        if (RTCHitN_geomID(args->hit, args->N, i) != unsigned(ShapeKind::Polygon)) continue;
-        uint32_t tri = RTCHitN_primID(args->hit, args->N, i);
-        uint32_t polygon = ctx->shapes->trianglePolygon[tri];
-        if (ctx->skip && ctx->skip->contains(ctx->shapes->polygons[polygon].modifier)) {
-            args->valid[i] = 0;
-            continue;
-        }
+        const unsigned geom = RTCHitN_geomID(args->hit, args->N, i);
+        const unsigned inst = RTCHitN_instID(args->hit, args->N, i, 0);
+        const uint32_t tri = RTCHitN_primID(args->hit, args->N, i);
         double t;
-        if (ctx->checkTriangles && !validPolygonHit(*ctx, tri, polygon, t)) args->valid[i] = 0;
+        if (geom == unsigned(ShapeKind::Polygon)) {
+            const ShapeSet& shapes = shapesIn(*ctx, inst);
+            uint32_t polygon = shapes.trianglePolygon[tri];
+            if (skipped(*ctx, inst, shapes.polygons[polygon].modifier) ||
+                (ctx->checkTriangles && !validPolygonHit(*ctx, inst, tri, polygon, t)))
+                args->valid[i] = 0;
+        } else if (geom == unsigned(ShapeKind::Mesh)) {
+            if ((ctx->skip && ctx->skip->contains(meshModifier(*ctx, inst, tri))) ||
+                (ctx->checkTriangles && !validMeshHit(*ctx, inst, tri, t)))
+                args->valid[i] = 0;
+        }
     }
 }
-
 // ---- user geometry: one Embree geometry per analytic family -------------------------
 
 struct SphereFamily {
@@ -134,12 +226,16 @@ void boundsFunc(const RTCBoundsFunctionArguments* args) {
     o->upper_z = up(b.max.z + pad);
 }
 
-// A shape's exact test from the query's double ray (t in (0, tmax)), unless its modifier
-// is skipped: for Embree's user-geometry callbacks and the directly tested shapes alike.
+// A shape's exact test from the query's double ray (t in (0, tmax)) in the space of
+// `inst`, unless its modifier is skipped: for Embree's user-geometry callbacks and the
+// directly tested shapes alike.
 template <class F>
-bool hitUserShape(const typename F::Shape& s, const QueryContext& ctx, double tmax, double& t) {
-    if (ctx.skip && ctx.skip->contains(s.modifier)) return false;
-    return F::hit(s, ctx.org, ctx.dir, tmax, t);
+bool hitUserShape(const typename F::Shape& s, QueryContext& ctx, unsigned inst, double tmax,
+                  double& t) {
+    if (skipped(ctx, inst, s.modifier)) return false;
+    Vec3 o, d;
+    localRay(ctx, inst, o, d);
+    return F::hit(s, o, d, tmax, t);
 }
 
 template <class F>
@@ -151,7 +247,8 @@ void intersectFunc(const RTCIntersectFunctionNArguments* args) {
     QueryContext* ctx = queryContext(args->context);
     RTCRayHit* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
     double t;
-    if (!hitUserShape<F>(shapes[args->primID], *ctx, fastMin(ctx->tmax, double(rh->ray.tfar)), t))
+    if (!hitUserShape<F>(shapes[args->primID], *ctx, args->context->instID[0],
+                         fastMin(ctx->tmax, double(rh->ray.tfar)), t))
         return;
     rh->ray.tfar = float(t);  // rounding is monotonic, so still <= the previous tfar
     rh->hit.Ng_x = rh->hit.Ng_y = rh->hit.Ng_z = 0;  // completed in double by the caller
@@ -168,10 +265,11 @@ void occludedFunc(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     const auto& shapes = shapesOf<F>(args->geometryUserPtr);
     if (args->primID >= shapes.size()) return;  // a culling stand-in (addUser)
-    const QueryContext* ctx = queryContext(args->context);
+    QueryContext* ctx = queryContext(args->context);
     RTCRay* ray = reinterpret_cast<RTCRay*>(args->ray);
     double t;
-    if (hitUserShape<F>(shapes[args->primID], *ctx, std::fmin(ctx->tmax, double(ray->tfar)), t))
+    if (hitUserShape<F>(shapes[args->primID], *ctx, args->context->instID[0],
+                        std::fmin(ctx->tmax, double(ray->tfar)), t))
         ray->tfar = -HUGE_VALF;  // Embree's "occluded" mark
 }
 
@@ -198,37 +296,66 @@ void errorCallback(void*, RTCError code, const char* message) {
 
 struct EmbreeAccel::Impl {
     const ShapeSet& shapes;
+    std::vector<AccelObject> objects;
+    std::vector<AccelPlacement> placements;
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
+    std::vector<RTCScene> objectScenes;  // per object; null for an empty one
     bool embreeEmpty = true;  // no geometry attached: queries skip Embree
     std::vector<DirectShape> direct;  // analytic shapes tested outside Embree
 
-    explicit Impl(const ShapeSet& s) : shapes(s) {}
+    Impl(const ShapeSet& s, std::vector<AccelObject> o, std::vector<AccelPlacement> p)
+        : shapes(s), objects(std::move(o)), placements(std::move(p)) {}
     ~Impl() {
         if (scene) rtcReleaseScene(scene);
+        for (RTCScene s : objectScenes)
+            if (s) rtcReleaseScene(s);
         if (device) rtcReleaseDevice(device);
     }
 
-    void addTriangles() {
-        if (shapes.triangles.empty()) return;
+    RTCScene newScene(RTCBuildQuality quality, bool compact) const {
+        RTCScene sc = rtcNewScene(device);
+        // Context filters carry the modifier skip set and the double-precision retry.
+        rtcSetSceneFlags(sc, compact ? RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_COMPACT
+                                     : RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+        rtcSetSceneBuildQuality(sc, quality);
+        return sc;
+    }
+
+    // Polygons' triangles, converted to float (the double vertices stay in the ShapeSet).
+    bool addTriangles(RTCScene sc, const ShapeSet& set) {
+        if (set.triangles.empty()) return false;
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
         auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), shapes.vertices.size()));
-        for (size_t i = 0; i < shapes.vertices.size(); ++i) {
-            v[3 * i] = float(shapes.vertices[i].x);
-            v[3 * i + 1] = float(shapes.vertices[i].y);
-            v[3 * i + 2] = float(shapes.vertices[i].z);
+            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), set.vertices.size()));
+        for (size_t i = 0; i < set.vertices.size(); ++i) {
+            v[3 * i] = float(set.vertices[i].x);
+            v[3 * i + 1] = float(set.vertices[i].y);
+            v[3 * i + 2] = float(set.vertices[i].z);
         }
         auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), shapes.triangles.size()));
-        for (size_t i = 0; i < shapes.triangles.size(); ++i)
-            for (int k = 0; k < 3; ++k) idx[3 * i + k] = shapes.triangles[i][k];
-        attach(g, ShapeKind::Polygon);
+            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), set.triangles.size()));
+        for (size_t i = 0; i < set.triangles.size(); ++i)
+            for (int k = 0; k < 3; ++k) idx[3 * i + k] = set.triangles[i][k];
+        attach(sc, g, unsigned(ShapeKind::Polygon));
+        return true;
+    }
+
+    // A mesh's own float arrays as Embree's buffers: the mesh is not copied.
+    bool addMesh(RTCScene sc, const MeshData& m) {
+        if (m.triangleCount() == 0) return false;
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, m.positions.data(),
+                                   0, 3 * sizeof(float), m.vertexCount());
+        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, m.triangles.data(),
+                                   0, 3 * sizeof(uint32_t), m.triangleCount());
+        attach(sc, g, unsigned(ShapeKind::Mesh));
+        return true;
     }
 
     template <class F>
-    void addUser(const std::vector<typename F::Shape>& list, ShapeKind kind) {
-        if (list.empty()) return;
+    bool addUser(RTCScene sc, const std::vector<typename F::Shape>& list, ShapeKind kind) {
+        if (list.empty()) return false;
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
         // Embree builds no node over a geometry of one primitive: the root is its leaf,
         // so every ray called the shape's intersector (a lone glass sphere: 9.9 M calls
@@ -240,52 +367,95 @@ struct EmbreeAccel::Impl {
         rtcSetGeometryBoundsFunction(g, boundsFunc<F>, nullptr);
         rtcSetGeometryIntersectFunction(g, intersectFunc<F>);
         rtcSetGeometryOccludedFunction(g, occludedFunc<F>);
-        attach(g, kind);
+        attach(sc, g, unsigned(kind));
+        return true;
     }
 
-    // hitUserShape for a direct shape.
-    bool hitDirect(const DirectShape& d, const QueryContext& ctx, double tmax, double& t) const {
+    bool addAllUser(RTCScene sc, const ShapeSet& set) {
+        bool any = addUser<SphereFamily>(sc, set.spheres, ShapeKind::Sphere);
+        any |= addUser<ConeFamily>(sc, set.cones, ShapeKind::Cone);
+        any |= addUser<RingFamily>(sc, set.rings, ShapeKind::Ring);
+        return any;
+    }
+
+    // An object's Embree scene, or null if it has nothing to trace. Meshes are built
+    // compact at medium quality: they are the large ones, and memory is their limit.
+    RTCScene buildObject(const AccelObject& o) {
+        const bool mesh = o.mesh != nullptr;
+        RTCScene sc = newScene(mesh ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_HIGH, mesh);
+        bool any = mesh ? addMesh(sc, *o.mesh) : addTriangles(sc, *o.shapes) | addAllUser(sc, *o.shapes);
+        if (!any) {
+            rtcReleaseScene(sc);
+            return nullptr;
+        }
+        rtcCommitScene(sc);
+        return sc;
+    }
+
+    void addPlacements() {
+        for (const AccelObject& o : objects) objectScenes.push_back(buildObject(o));
+        for (size_t i = 0; i < placements.size(); ++i) {
+            const AccelPlacement& p = placements[i];
+            RTCScene inner = objectScenes[p.object];
+            if (!inner) continue;
+            RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+            rtcSetGeometryInstancedScene(g, inner);
+            rtcSetGeometryTimeStepCount(g, 1);
+            float xfm[12];  // 3x4, column-major: the linear part's columns, then the translation
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 3; ++r) xfm[3 * c + r] = float(p.toWorld.m[size_t(r)][size_t(c)]);
+            rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+            attach(scene, g, kFirstPlacement + unsigned(i));
+        }
+    }
+
+    // hitUserShape for a direct shape (the scene's own, never inside an instance).
+    bool hitDirect(const DirectShape& d, QueryContext& ctx, double tmax, double& t) const {
+        const unsigned top = RTC_INVALID_GEOMETRY_ID;
         switch (d.kind) {
-        case ShapeKind::Sphere: return hitUserShape<SphereFamily>(shapes.spheres[d.index], ctx, tmax, t);
-        case ShapeKind::Cone: return hitUserShape<ConeFamily>(shapes.cones[d.index], ctx, tmax, t);
-        case ShapeKind::Ring: return hitUserShape<RingFamily>(shapes.rings[d.index], ctx, tmax, t);
-        case ShapeKind::Polygon: break;
+        case ShapeKind::Sphere: return hitUserShape<SphereFamily>(shapes.spheres[d.index], ctx, top, tmax, t);
+        case ShapeKind::Cone: return hitUserShape<ConeFamily>(shapes.cones[d.index], ctx, top, tmax, t);
+        case ShapeKind::Ring: return hitUserShape<RingFamily>(shapes.rings[d.index], ctx, top, tmax, t);
+        case ShapeKind::Polygon:
+        case ShapeKind::Mesh: break;
         }
         return false;
     }
     // Nearest direct shape closer than `hit` (or than the ray's tmax when !found).
-    bool nearestDirect(const QueryContext& ctx, bool found, AccelHit& hit) const {
+    bool nearestDirect(QueryContext& ctx, bool found, AccelHit& hit) const {
         double tmax = found ? hit.t : ctx.tmax;
         for (const DirectShape& d : direct) {
             double t;
             if (!hitDirect(d, ctx, tmax, t)) continue;
-            hit = {d.kind, d.index, 0, t};
+            hit = {d.kind, d.index, 0, -1, t};
             tmax = t;
             found = true;
         }
         return found;
     }
 
-    void attach(RTCGeometry g, ShapeKind kind) {
-        embreeEmpty = false;
+    void attach(RTCScene sc, RTCGeometry g, unsigned id) {
+        if (sc == scene) embreeEmpty = false;
         rtcCommitGeometry(g);
-        rtcAttachGeometryByID(scene, g, unsigned(kind));
+        rtcAttachGeometryByID(sc, g, id);
         rtcReleaseGeometry(g);  // the scene holds the reference now
     }
 
     void initContext(QueryContext& ctx, const Ray& ray, const ModifierSet* skip) const {
         rtcInitIntersectContext(&ctx.rtc);
         ctx.shapes = &shapes;
+        ctx.objects = &objects;
+        ctx.placements = &placements;
         ctx.org = ray.origin;
         ctx.dir = ray.dir;
         ctx.tmax = ray.tmax;
         ctx.skip = skip && !skip->empty() ? skip : nullptr;
         ctx.checkTriangles = false;
         ctx.userT = 0;
+        ctx.localInst = RTC_INVALID_GEOMETRY_ID;
         if (ctx.skip) ctx.rtc.filter = contextFilter;
     }
 };
-
 namespace {
 #if defined(__SSE2__)
 // (v.x, v.y, v.z, 0) as floats, rounded as float(double) rounds.
@@ -329,15 +499,24 @@ bool intersectEmbree(RTCScene scene, QueryContext& ctx, const Ray& ray, AccelHit
         rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(scene, &ctx.rtc, &rh);
         if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-        auto kind = ShapeKind(rh.hit.geomID);
-        if (kind != ShapeKind::Polygon) {
-            hit = {kind, rh.hit.primID, 0, ctx.userT};
-            return true;
-        }
-        uint32_t polygon;
+        const auto kind = ShapeKind(rh.hit.geomID);
+        const unsigned inst = rh.hit.instID[0];
+        const int32_t placement = inst == RTC_INVALID_GEOMETRY_ID ? -1 : int32_t(inst - kFirstPlacement);
+        const uint32_t prim = rh.hit.primID;
         double t;
-        if (validPolygonHit(ctx, rh.hit.primID, polygon, t)) {
-            hit = {kind, polygon, rh.hit.primID, t};
+        if (kind == ShapeKind::Polygon) {
+            uint32_t polygon;
+            if (validPolygonHit(ctx, inst, prim, polygon, t)) {
+                hit = {kind, polygon, prim, placement, t};
+                return true;
+            }
+        } else if (kind == ShapeKind::Mesh) {
+            if (validMeshHit(ctx, inst, prim, t)) {
+                hit = {kind, prim, prim, placement, t};
+                return true;
+            }
+        } else {
+            hit = {kind, prim, 0, placement, ctx.userT};
             return true;
         }
         // The float test found a triangle that the exact plane disowns: trace again with
@@ -350,27 +529,25 @@ bool intersectEmbree(RTCScene scene, QueryContext& ctx, const Ray& ray, AccelHit
 
 }  // namespace
 
-EmbreeAccel::EmbreeAccel(const ShapeSet& shapes) : impl_(std::make_unique<Impl>(shapes)) {
+EmbreeAccel::EmbreeAccel(const ShapeSet& shapes, std::vector<AccelObject> objects,
+                         std::vector<AccelPlacement> placements)
+    : impl_(std::make_unique<Impl>(shapes, std::move(objects), std::move(placements))) {
     Impl& m = *impl_;
     m.device = rtcNewDevice(nullptr);
     if (!m.device)
         throw std::runtime_error("embree: cannot create device (error " +
                                  std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
     rtcSetDeviceErrorFunction(m.device, errorCallback, nullptr);
-    m.scene = rtcNewScene(m.device);
-    // Context filters carry the modifier skip set and the double-precision retry.
-    rtcSetSceneFlags(m.scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
-    rtcSetSceneBuildQuality(m.scene, RTC_BUILD_QUALITY_HIGH);
-    m.addTriangles();
+    m.scene = m.newScene(RTC_BUILD_QUALITY_HIGH, false);
+    m.addTriangles(m.scene, shapes);
     if (shapes.spheres.size() + shapes.cones.size() + shapes.rings.size() <= kDirectShapes) {
         for (uint32_t i = 0; i < shapes.spheres.size(); ++i) m.direct.push_back({ShapeKind::Sphere, i});
         for (uint32_t i = 0; i < shapes.cones.size(); ++i) m.direct.push_back({ShapeKind::Cone, i});
         for (uint32_t i = 0; i < shapes.rings.size(); ++i) m.direct.push_back({ShapeKind::Ring, i});
     } else {
-        m.addUser<SphereFamily>(shapes.spheres, ShapeKind::Sphere);
-        m.addUser<ConeFamily>(shapes.cones, ShapeKind::Cone);
-        m.addUser<RingFamily>(shapes.rings, ShapeKind::Ring);
+        m.addAllUser(m.scene, shapes);
     }
+    m.addPlacements();
     rtcCommitScene(m.scene);
 }
 
