@@ -1,0 +1,141 @@
+// The .rtm writer against files that RADIANCE 5.4's obj2mesh writes byte for byte
+// (tests/data/obj2mesh/README.md says how they were checked), and its building blocks.
+#include "scene/mesh_write.h"
+
+#include <gtest/gtest.h>
+
+#include "util/warnings.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "scene/mesh_build.h"
+#include "scene/obj_file.h"
+#include "scene/radiance_objects.h"
+#include "scene/reader.h"
+
+namespace rp {
+namespace {
+
+// Collects warnings for the test's duration (the default sink may have been cleared
+// by another test in this binary).
+struct CaptureWarnings {
+    std::vector<std::string> lines;
+    CaptureWarnings() { setWarningSink([this](const std::string& m) { lines.push_back(m); }); }
+    ~CaptureWarnings() { setWarningSink([](const std::string&) {}); }
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+const std::string kData = std::string(RP_SOURCE_DIR) + "/tests/data/obj2mesh/";
+
+std::string convert(const std::string& name, bool withMaterials, MeshStats* stats = nullptr) {
+    Scene mats;
+    if (withMaterials) mats = parseScene(slurp(kData + "cube.rad"), "cube.rad");
+    ObjMesh obj = parseObj(slurp(kData + name + ".obj"), name + ".obj");
+    assignObjMaterials(obj, mats);
+    MeshSource src{obj.triangles, mats};
+    std::string cmd = "obj2mesh " + std::string(withMaterials ? "-a cube.rad " : "") + name + ".obj";
+    return encodeMeshFile(src, MeshWriteOptions{}, {cmd}, stats);
+}
+
+TEST(MeshWrite, CubeMatchesRadianceBytes) {
+    CaptureWarnings warnings;
+    EXPECT_EQ(convert("cube", true), slurp(kData + "cube.rtm"));
+}
+
+// 676 vertices: three patches, single and double joiner triangles, two materials.
+TEST(MeshWrite, GridMatchesRadianceBytes) {
+    CaptureWarnings warnings;
+    MeshStats s;
+    EXPECT_EQ(convert("grid", true, &s), slurp(kData + "grid.rtm"));
+    EXPECT_EQ(s.patches, 3);
+    EXPECT_GT(s.joinerTris, 0);
+    EXPECT_EQ(s.materials, 2);
+    EXPECT_EQ(s.withNormal, 676);
+}
+
+// 5046 triangles: RADIANCE obj2mesh -v printed these numbers for dense.obj.
+TEST(MeshWrite, DenseOctreeStatsMatchRadiance) {
+    CaptureWarnings warnings;
+    MeshStats s;
+    convert("dense", false, &s);
+    EXPECT_EQ(formatMeshStats(s),
+              "Mesh statistics:\n\t0 materials\n\t10 patches (0.05 MBytes)\n"
+              "\t2532 vertices (0.0% w/ normals, 0.0% w/ uv)\n"
+              "\t5046 triangles (79.7% local, 19.7% joiner)\n"
+              "\t12552 leaves in octree (45.6% empty, 4.92 avg. set size)\n");
+}
+
+TEST(MeshWrite, MeshDataPathGivesTheSameFile) {
+    CaptureWarnings warnings;
+    Scene mats = parseScene(slurp(kData + "cube.rad"), "cube.rad");
+    ObjMesh obj = parseObj(slurp(kData + "cube.obj"), "cube.obj");
+    assignObjMaterials(obj, mats);
+    MeshData d = objToMeshData(obj, mats);  // cube coordinates are exact floats
+    EXPECT_EQ(encodeMeshFile(d, 9, 16384, {"obj2mesh -a cube.rad cube.obj"}),
+              slurp(kData + "cube.rtm"));
+}
+
+TEST(MeshWrite, DegenerateAndEmptyInput) {
+    CaptureWarnings warnings;
+    MeshSource src;
+    MeshTriangleInput t;
+    t.v = {{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}};  // collinear: zero area, dropped
+    src.triangles.push_back(t);
+    EXPECT_THROW(encodeMeshFile(src, {}, {}), InputError);
+    t.material = 3;  // out of range
+    t.v = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
+    src.triangles = {t};
+    EXPECT_THROW(encodeMeshFile(src, {}, {}), InputError);
+}
+
+// dircode.c's code for the axes and a diagonal, worked by hand from its rule.
+TEST(MeshWrite, DirectionCode) {
+    CaptureWarnings warnings;
+    using meshbuild::encodeDirection;
+    // The largest component is implied; the two others are stored.
+    EXPECT_EQ(encodeDirection({0, 0, 1}), 010);
+    EXPECT_EQ(encodeDirection({0, 0, -1}), 04 | 010);
+    EXPECT_EQ(encodeDirection({1, 0, 0}), 020 | (0 << 5) | (0 << 18));
+    double r = 1 / std::sqrt(3.0);
+    int c = static_cast<int>(r * 11584.5 + .5);
+    EXPECT_EQ(encodeDirection({r, r, r}), 010 | c << 5 | 020 | c << 18);
+    EXPECT_EQ(encodeDirection({0, 0, 0}), 0);
+}
+
+TEST(RadianceObjects, RecordLayout) {
+    CaptureWarnings warnings;
+    Scene s = parseScene("void plastic red 0 0 5 .5 0 0 0 0\nred plastic b 0 0 5 -2 0 0 0 0\n");
+    std::string out;
+    encodeRadianceObjects(s, 4, out);
+    std::string table;
+    for (const char* n : {"polygon", "cone", "sphere"}) table += std::string(n) + '\0';
+    EXPECT_EQ(out.substr(0, table.size()), table);
+    size_t start = out.find(std::string("ashik2\0\0", 8)) + 8;
+    // plastic is type 12; void is -1 in 4 bytes; 5 reals: .5 = 0.5*2^0 -> mantissa
+    // 0x3fffffff, exponent 0.
+    std::string rec = out.substr(start);
+    ASSERT_GE(rec.size(), 20u);
+    EXPECT_EQ(static_cast<unsigned char>(rec[0]), 12);
+    EXPECT_EQ(rec.substr(1, 4), std::string("\xff\xff\xff\xff", 4));
+    EXPECT_EQ(rec.substr(5, 4), std::string("red\0", 4));
+    EXPECT_EQ(rec.substr(9, 4), std::string("\0\0\0\x05", 4));  // 0 sargs, 5 rargs
+    EXPECT_EQ(rec.substr(13, 5), std::string("\x3f\xff\xff\xff\x00", 5));
+    // second record: modifier 0 (red); -2 = -0.5*2^2, mantissa truncated toward zero
+    const size_t second = 38;
+    EXPECT_EQ(static_cast<unsigned char>(rec[second]), 12);
+    EXPECT_EQ(rec.substr(second + 1, 4), std::string("\0\0\0\0", 4));
+    EXPECT_EQ(rec.substr(second + 5, 2), std::string("b\0", 2));
+    EXPECT_EQ(rec.substr(second + 11, 5), std::string("\xc0\x00\x00\x01\x02", 5));
+    EXPECT_EQ(static_cast<unsigned char>(out.back()), 0xff);  // end mark
+}
+
+}  // namespace
+}  // namespace rp
