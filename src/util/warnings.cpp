@@ -7,15 +7,15 @@ namespace rp {
 
 namespace {
 std::mutex sinkMutex;
+void toStderr(const std::string& m) { std::fprintf(stderr, "warning: %s\n", m.c_str()); }
 WarningSink& sink() {
-    static WarningSink s = [](const std::string& m) {
-        std::fprintf(stderr, "warning: %s\n", m.c_str());
-    };
+    static WarningSink s = toStderr;
     return s;
 }
 }  // namespace
 
-void setWarningSink(WarningSink s) { sink() = std::move(s); }
+// An empty sink restores the default (tests reset theirs that way).
+void setWarningSink(WarningSink s) { sink() = s ? std::move(s) : WarningSink(toStderr); }
 
 void warn(const std::string& message) {
     std::lock_guard<std::mutex> lock(sinkMutex);
