@@ -46,6 +46,16 @@ std::string dimensions(std::istream& in) {
     return s + "\n";
 }
 
+// Our oconv's scene file (scene/scene_file.h kSceneFileFormat; image/ does not depend on
+// scene/) holds records only: no octree, so no cube for -d to print.
+constexpr const char* kSceneFileFormat = "radphoton_scene";
+
+bool hasNoCube(const Header& h, const std::string& name, std::ostream& err) {
+    if (h.format() != kSceneFileFormat) return false;
+    err << "getinfo: " << name << ": a radphoton scene file has no bounding cube\n";
+    return true;
+}
+
 void printTabbedHeader(std::ostream& out, const std::string& name, const Header& h) {
     out << name << ":\n\t" << kHeaderMagic << '\n';
     for (const auto& l : h.lines) out << '\t' << l << '\n';
@@ -122,7 +132,9 @@ int runGetinfo(const GetinfoOptions& opt, std::istream& in, std::ostream& out, s
         // RADIANCE compat: from standard input the header is printed untabbed, then an
         // empty line.
         if (opt.mode != Mode::kDimensions) writeHeader(out, h);
-        if (opt.mode != Mode::kHeader) out << dimensions(in);
+        if (opt.mode == Mode::kHeader) return 0;
+        if (hasNoCube(h, kStdinName, err)) return 1;
+        out << dimensions(in);
         return 0;
     }
 
@@ -140,10 +152,19 @@ int runGetinfo(const GetinfoOptions& opt, std::istream& in, std::ostream& out, s
             continue;
         }
         if (opt.mode == Mode::kDimensions) {
+            if (hasNoCube(h, name, err)) {
+                status = 1;
+                continue;
+            }
             out << name << ": " << dimensions(f);
         } else {
             printTabbedHeader(out, name, h);
-            if (opt.mode == Mode::kBoth) out << '\t' << dimensions(f);
+            if (opt.mode != Mode::kBoth) continue;
+            out.flush();
+            if (hasNoCube(h, name, err))
+                status = 1;
+            else
+                out << '\t' << dimensions(f);
         }
     }
     out.flush();

@@ -12,7 +12,7 @@ namespace rp {
 struct GetinfoOptions {
     enum class Mode {
         kHeader,      // getinfo [file ..]: headers
-        kDimensions,  // getinfo -d [file ..]: "file: -Y N +X M" (octree: bounding cube)
+        kDimensions,  // getinfo -d [file ..]: "file: -Y N +X M" (octree, mesh: bounding cube)
         kBoth,        // getinfo +d [file ..]: header, then a tab and the dimensions
         kStrip,       // getinfo [-d] -: copy stdin without its header (and resolution, -d)
         kAppend,      // getinfo -a line ..: copy stdin with lines added to its header

@@ -1,7 +1,22 @@
-// TEMPORARY stand-in until the mesh reader lands.
+// Reading RADIANCE's compiled triangle meshes (.rtm, FORMAT=Radiance_tmesh, written by
+// obj2mesh; common/readmesh.c) into MeshData (mesh_data.h).
 #pragma once
+
 #include <string>
+#include <string_view>
+
 #include "scene/mesh_data.h"
+
 namespace rp {
+
+constexpr const char* kRadianceMeshFormat = "Radiance_tmesh";
+
+// Reads and decodes the file at `path`. Every problem (missing file, wrong format,
+// truncation, damage) is an InputError naming the file.
 MeshData readMeshFile(const std::string& path);
-}
+
+// Decodes a whole mesh file's bytes, header included; `what` names it in errors and
+// becomes MeshData::path.
+MeshData decodeMeshFile(std::string_view bytes, const std::string& what);
+
+}  // namespace rp

@@ -19,6 +19,9 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "scene/portable_reader.h"
+#include "scene/radiance_objects.h"
+
 namespace rp {
 
 namespace {
@@ -244,28 +247,67 @@ bool splitHeader(std::string_view bytes, Header& header, std::string_view& rest)
     return true;
 }
 
-std::vector<std::string> radianceOctreeFiles(std::string_view bin, const std::string& what) {
-    // octree.h: OCTMAGIC = 4*MAXOBJSIZ+251 with MAXOBJSIZ 8; writeoct() stores
-    // OCTMAGIC + sizeof(OBJECT) as a 2-byte big-endian integer (portio.c putint).
-    constexpr int kOctMagic = 4 * 8 + 251;
-    SourceLoc loc{what, 0};
-    if (bin.size() < 2) throw InputError(loc, "truncated octree");
-    int magic = (static_cast<unsigned char>(bin[0]) << 8) | static_cast<unsigned char>(bin[1]);
-    int objSize = magic - kOctMagic;
-    if (objSize <= 0 || objSize > 8) throw InputError(loc, "incompatible octree format");
-    size_t pos = 2;
-    auto nextString = [&]() {
-        size_t end = bin.find('\0', pos);
-        if (end == std::string_view::npos) throw InputError(loc, "truncated octree");
-        std::string s(bin.substr(pos, end - pos));
-        pos = end + 1;
-        return s;
-    };
-    for (int i = 0; i < 4; ++i) nextString();  // cube origin x y z and size, as text
+namespace {
+// octree.h OCTMAGIC and mesh.h MESHMAGIC with MAXOBJSIZ 8: the writers store the magic
+// plus sizeof(OBJECT) as a 2-byte big-endian integer (portio.c putint).
+constexpr int kOctMagic = 4 * 8 + 251;
+constexpr int kMeshMagic = 1 * 8 + 311;
+
+// Reads the magic number and returns the object size it gives.
+int readMagic(PortableReader& r, bool mesh, const std::string& what) {
+    int64_t objSize = r.integer(2, "the magic number") - (mesh ? kMeshMagic : kOctMagic);
+    if (objSize <= 0 || objSize > 8)
+        throw InputError(SourceLoc{what, 0}, mesh ? "incompatible mesh file format"
+                                                  : "incompatible octree format");
+    return static_cast<int>(objSize);
+}
+
+struct OctreeStart {
+    int objSize = 0;
+    RadianceCube cube;
     std::vector<std::string> files;
-    for (std::string name = nextString(); !name.empty(); name = nextString())
-        files.push_back(name);
-    return files;
+};
+
+OctreeStart readOctreeStart(PortableReader& r, const std::string& what) {
+    OctreeStart s;
+    s.objSize = readMagic(r, false, what);
+    s.cube.text = readRadianceCube(r, s.cube.origin, s.cube.size);
+    for (std::string name = r.str("the scene file names"); !name.empty();
+         name = r.str("the scene file names"))
+        s.files.push_back(std::move(name));
+    return s;
+}
+}  // namespace
+
+std::vector<std::string> radianceOctreeFiles(std::string_view bin, const std::string& what) {
+    size_t pos = 0;
+    PortableReader r(bin, pos, what, "octree");
+    return readOctreeStart(r, what).files;
+}
+
+Scene decodeRadianceFrozenOctree(std::string_view bin, const std::string& what) {
+    size_t pos = 0;
+    PortableReader r(bin, pos, what, "octree");
+    OctreeStart start = readOctreeStart(r, what);
+    if (!start.files.empty()) r.fail("not a frozen octree: it names scene files");
+    // Each object takes at least 1 + objsize + 1 + 2 + 2 bytes.
+    auto count = static_cast<int64_t>(r.count(start.objSize, 6 + start.objSize, "object count"));
+    skipRadianceTree(r, start.objSize, count);
+    Scene scene = decodeRadianceObjects(bin, pos, start.objSize, what);
+    if (static_cast<int64_t>(scene.prims.size()) != count)
+        r.fail(std::to_string(scene.prims.size()) + " objects, the octree says " +
+               std::to_string(count));
+    if (r.left() != 0) r.fail(std::to_string(r.left()) + " unexpected bytes after the objects");
+    return scene;
+}
+
+RadianceCube radianceCube(std::string_view bin, bool mesh, const std::string& what) {
+    size_t pos = 0;
+    PortableReader r(bin, pos, what, mesh ? "mesh file" : "octree");
+    readMagic(r, mesh, what);
+    RadianceCube cube;
+    cube.text = readRadianceCube(r, cube.origin, cube.size);
+    return cube;
 }
 
 }  // namespace rp

@@ -4,6 +4,7 @@
 // Deciding which kind a file is, and loading it, is loadScene() in scene_load.h.
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,5 +40,23 @@ bool splitHeader(std::string_view bytes, Header& header, std::string_view& rest)
 // names ending with an empty one). Empty for a frozen octree (oconv -f, or input from
 // standard input), whose objects are stored in binary instead.
 std::vector<std::string> radianceOctreeFiles(std::string_view binary, const std::string& what);
+
+// The objects of a frozen RADIANCE octree (readoct.c): after the file list (empty), the
+// object count, the octree (skipped; its structure and object references are checked),
+// then the binary object records (radiance_objects.h), which must number as many as the
+// count says. Throws InputError naming `what` for anything truncated or damaged.
+Scene decodeRadianceFrozenOctree(std::string_view binary, const std::string& what);
+
+// The cube of a RADIANCE octree or compiled mesh: what follows the 2-byte magic number
+// in both (the origin x, y, z and the side as decimal strings). `text` keeps the strings
+// as stored, which getinfo -d prints. Throws InputError naming `what` if the magic
+// number is not that of an octree (mesh = false) or a mesh (mesh = true), or the cube
+// is truncated or not numbers.
+struct RadianceCube {
+    std::array<double, 3> origin{};
+    double size = 0;
+    std::array<std::string, 4> text;
+};
+RadianceCube radianceCube(std::string_view binary, bool mesh, const std::string& what);
 
 }  // namespace rp

@@ -28,7 +28,11 @@ std::string readWholeFile(const std::string& path) {
 
 void loadRadianceOctree(SceneReader& reader, const std::string& path, std::string_view binary) {
     std::vector<std::string> files = radianceOctreeFiles(binary, path);
-    if (files.empty()) throw notSupportedYet(SourceLoc{path, 0}, "frozen RADIANCE octree");
+    if (files.empty()) {
+        // oconv -f: the objects are stored in the octree itself.
+        reader.append(decodeRadianceFrozenOctree(binary, path));
+        return;
+    }
     for (const auto& f : files) {
         // RADIANCE's readoct() opens the names as stored, relative to the current folder.
         if (f[0] != '!' && ::access(f.c_str(), R_OK) != 0)

@@ -47,4 +47,23 @@ head -n 1 out_err > out_err_first
 printf 'pic.hdr:\n' > expect_err_first
 check "later files still printed" expect_err_first out_err_first
 
+# -d on octrees and meshes prints the cube strings stored after the magic number. The
+# cube is woman.rtm's: RADIANCE's `getinfo -d woman.rtm` printed the expected line.
+printf '#?RADIANCE\nobj2mesh -a woman.mat\nFORMAT=Radiance_tmesh\n\n\001\103-0.35954959\000-0.00265538\000-0.34914834\0000.71904138\000\000' > w.rtm
+printf '#?RADIANCE\noconv -f x.rad\nFORMAT=Radiance_octree\n\n\001\037-1.5\0000\0002\00010\000\000' > x.oct
+printf 'w.rtm: -0.35954959 -0.00265538 -0.34914834 0.71904138\nx.oct: -1.5 0 2 10\n' > expect_cube
+"$GETINFO" -d w.rtm x.oct > out_cube
+check "-d cube output" expect_cube out_cube
+
+# Our scene files have no octree: an error line for that file, the others still
+# printed, non-zero exit.
+printf '#?RADIANCE\noconv x.rad\nFORMAT=radphoton_scene\n\nRPSCENE\000' > s.oct
+"$GETINFO" -d s.oct x.oct > out_scene 2> err_scene
+st=$?
+[ "$st" -ne 0 ] || { echo "FAIL: exit status 0 for -d on a scene file"; fail=1; }
+printf 'getinfo: s.oct: a radphoton scene file has no bounding cube\n' > expect_scene_err
+check "-d scene file error" expect_scene_err err_scene
+printf 'x.oct: -1.5 0 2 10\n' > expect_scene_out
+check "-d after a scene file" expect_scene_out out_scene
+
 exit $fail
