@@ -25,6 +25,22 @@ double bHermite(const double* a, int) {
            a[3] * (t3 - t2);
 }
 
+// RADIANCE compat (calfunc.c l_max, l_min): the first argument, then the others from
+// the last down, replacing it only when strictly greater (smaller), so NaN in the first
+// place survives and NaN elsewhere never wins.
+double bMax(const double* a, int n) {
+    double m = a[0];
+    for (int i = n - 1; i >= 1; --i)
+        if (m < a[i]) m = a[i];
+    return m;
+}
+double bMin(const double* a, int n) {
+    double m = a[0];
+    for (int i = n - 1; i >= 1; --i)
+        if (m > a[i]) m = a[i];
+    return m;
+}
+
 double fSqrt(double x) { return std::sqrt(x); }
 double fSin(double x) { return std::sin(x); }
 double fCos(double x) { return std::cos(x); }
@@ -54,6 +70,7 @@ const std::array kBuiltins = {
     Builtin{"noise3x", 3, 3, nullptr, bNoiseX}, Builtin{"noise3y", 3, 3, nullptr, bNoiseY},
     Builtin{"noise3z", 3, 3, nullptr, bNoiseZ}, Builtin{"fnoise3", 3, 3, nullptr, bFnoise},
     Builtin{"hermite", 5, 5, nullptr, bHermite},
+    Builtin{"max", 1, 255, nullptr, bMax},      Builtin{"min", 1, 255, nullptr, bMin},
 };
 
 }  // namespace

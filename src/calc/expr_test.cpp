@@ -74,6 +74,11 @@ const Case kCases[] = {
     {"", "if(-1, 2, 3)", 3},
     {"", "if(1e-300, 2, 3)", 2},
     {"", "select(2, 10, 20, 30)", 20},
+    // RADIANCE 5.4 calfunc.c's min and max, any number of arguments
+    {"", "max(3)", 3},
+    {"", "max(1, 7, -2)", 7},
+    {"", "min(4, 2, 9, -1.5)", -1.5},
+    {"", "min(.25, 1)", .25},
     {"", "select(0, 10, 20, 30)", 3},
     {"", "select(1.4, 10, 20)", 10},
     {"", "select(1.6, 10, 20)", 20},

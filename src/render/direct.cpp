@@ -98,6 +98,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
     // necessarily through the sample: it must meet the source itself (a distant one
     // within its disk, RADIANCE sourcehit), wherever that is.
     bool redirected = false;
+    Color extinction;  // of the medium the ray is in (inside a dielectric)
     for (size_t leg = 0; leg < legs; ++leg) {
         const bool last = leg + 1 == legs;
         const bool escape = last && src.distant();
@@ -156,6 +157,8 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
                 advanced = true;
                 continue;
             }
+            if (extinction.max() > 0)
+                for (int k = 0; k < 3; ++k) through[k] *= std::exp(-extinction[k] * hit->t);
             const bool target = last && !escape && hit->prim == src.light.prim;
             ShadowEvent ev = oracle.event(*hit, dir, !target && passesIllum(src, *hit));
             if (target) return ev.kind == ShadowEvent::Kind::Emit ? through * ev.colour : Color{};
@@ -164,6 +167,14 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
             if (ev.kind != ShadowEvent::Kind::Transmit) return {};
             through *= ev.colour;
             if (through.isBlack()) return {};
+            if (ev.medium.kind == material::MediumChange::Kind::Given) extinction = ev.medium.extinction;
+            if (ev.medium.kind == material::MediumChange::Kind::Global) extinction = Color{};
+            if (lengthSquared(ev.bent) > 0) {
+                // Refracted: only a distant source can still be met, within its disk.
+                if (!escape) return {};
+                dir = ev.bent;
+                redirected = true;
+            }
             ray = spawnRay(*hit, dir);
             shift = std::fmax(shift, hit->offset);
         }

@@ -33,6 +33,10 @@ struct ShadowEvent {
         Emit,      // a light source surface: `colour` is its radiance toward the ray origin
     } kind = Kind::Opaque;
     Color colour;
+    // Transmit through a refracting dielectric: the new direction (zero: straight on)
+    // and the medium the ray enters (its extinction applies up to the next surface).
+    Vec3 bent;
+    material::MediumChange medium;
 };
 
 // Per-thread access to materials for shadow rays. Implemented by the renderer core.

@@ -33,9 +33,9 @@ public:
         case PrimType::Spotlight:
         case PrimType::Glow:
         case PrimType::Illum:
-            return {ShadowEvent::Kind::Emit, {m.rargs[0], m.rargs[1], m.rargs[2]}};
-        case PrimType::Glass: return {ShadowEvent::Kind::Transmit, Color::grey(0.9)};
-        case PrimType::Mirror: return {ShadowEvent::Kind::Reflect, Color::grey(0.9)};
+            return {ShadowEvent::Kind::Emit, {m.rargs[0], m.rargs[1], m.rargs[2]}, {}, {}};
+        case PrimType::Glass: return {ShadowEvent::Kind::Transmit, Color::grey(0.9), {}, {}};
+        case PrimType::Mirror: return {ShadowEvent::Kind::Reflect, Color::grey(0.9), {}, {}};
         default: return {};
         }
     }

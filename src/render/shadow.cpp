@@ -83,12 +83,13 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
         }
         for (int i = 0; i < b.numRays; ++i) {
             const material::SpecularRay& r = b.rays[size_t(i)];
-            // Only unbent transmission relays light to a source sample (RADIANCE traces
-            // shadow rays straight; a refracting dielectric blocks them).
-            if (r.kind == material::ScatterKind::SpecularTransmission &&
-                dot(r.dir, dir) > 1 - 1e-9) {
+            // RADIANCE dielectric.c: a shadow ray goes on in the refracted direction
+            // (and is not reflected), losing the Fresnel reflection and absorbed inside.
+            if (r.kind == material::ScatterKind::SpecularTransmission) {
                 ev.kind = ShadowEvent::Kind::Transmit;
                 ev.colour = r.weight;
+                if (dot(r.dir, dir) <= 1 - 1e-9) ev.bent = r.dir;
+                ev.medium = r.medium;
             }
         }
         return ev;
@@ -143,6 +144,8 @@ ShadowEvent Renderer::Context::chainEvent(const material::ChainResult& chain, co
         } else if (ev.kind != ShadowEvent::Kind::Opaque) {
             passKind = ev.kind;
             pass += ev.colour * l.weight;
+            out.bent = ev.bent;
+            out.medium = ev.medium;
         }
     }
     if (anyEmit) {
