@@ -182,8 +182,9 @@ void RayWriter::record(std::string& out, const std::string& letters, const RayRe
         case 'l': real(out, r.effectiveLength); break;
         case 'L': real(out, r.distance); break;
         case 'c': real(out, hit ? r.u : 0.0); real(out, hit ? r.v : 0.0); break;
-        // RADIANCE compat (oputp/oputn/oputN): zeros when nothing was hit.
-        case 'p': vec(r.point, hit); break;
+        // RADIANCE compat (rtrace.c oputp, oputn, oputN): the ray origin for the point of
+        // a ray that hit nothing, zero normals.
+        case 'p': vec(hit ? r.point : r.origin, true); break;
         case 'n': vec(r.normal, hit); break;
         case 'N': vec(r.unperturbedNormal, hit); break;
         case 's': name(out, r.prim, hit && r.prim >= 0); break;

@@ -24,6 +24,22 @@ bool passesIrradiance(const material::MaterialParams& m) {
 
 constexpr double kNoHit = 1e10;
 
+// What rtrace reports of the first surface a ray meets (-o p n N s m M ...); `normal` is
+// the perturbed one as RADIANCE reports it (ron + pert, unflipped).
+void recordFirst(RayResult* f, const Hit& hit, const Vec3& normal, int32_t material) {
+    if (!f || f->hit) return;
+    f->hit = true;
+    f->distance = f->effectiveLength = hit.t;
+    f->point = hit.point;
+    f->normal = normal;
+    f->unperturbedNormal = hit.normal;
+    f->u = hit.u;
+    f->v = hit.v;
+    f->prim = hit.prim;
+    f->modifier = hit.modifier;
+    f->material = material;
+}
+
 // The function-space view of a hit that patterns and material functions see.
 material::PatternPoint patternPoint(const Hit& hit, const Vec3& dir) {
     return material::PatternPoint::atHit(dir, hit);
@@ -161,6 +177,8 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
                                     const material::ShadingLayer& layer, RayResult* first,
                                     bool& passThrough) {
     if (layer.material == kVoid) {
+        // RADIANCE compat (raytrace.c raytrans): the ray reports the surface it passed.
+        recordFirst(first, hit, hit.normal, kVoid);
         passThrough = true;
         return {};
     }
@@ -178,19 +196,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     sp.normal = n;
     sp.flat = isPlanar(impl.scene.prims[size_t(hit.prim)].type);
 
-    auto fillFirst = [&](RayResult* f) {
-        if (!f || f->hit) return;
-        f->hit = true;
-        f->distance = f->effectiveLength = hit.t;
-        f->point = hit.point;
-        f->normal = hit.front ? n : -n;  // RADIANCE reports ron + pert, unflipped
-        f->unperturbedNormal = hit.normal;
-        f->u = hit.u;
-        f->v = hit.v;
-        f->prim = hit.prim;
-        f->modifier = hit.modifier;
-        f->material = layer.material;
-    };
+    auto fillFirst = [&](RayResult* f) { recordFirst(f, hit, hit.front ? n : -n, layer.material); };
 
     if (e.isLight) {
         const auto& light = std::get<material::LightParams>(params);
