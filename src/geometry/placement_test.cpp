@@ -303,7 +303,7 @@ TEST(Placement, MissingAndWrongFiles) {
     writeOctree(dir.file("self.oct"), "void instance me 1 self.oct 0 0\n", "self");
     EXPECT_NE(err("void instance i 1 self.oct 0 0\n").find("places itself"), std::string::npos);
     EXPECT_NE(err("void light l 0 0 3 1 1 1\nl instance i 1 self.oct 0 0\n")
-                  .find("a light material cannot modify an instance"),
+                  .find("instance 'i': cannot be modified by light material 'l'"),
               std::string::npos);
 }
 

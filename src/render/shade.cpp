@@ -201,12 +201,14 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     if (e.isLight) {
         const auto& light = std::get<material::LightParams>(params);
         bool source = impl.direct.isSourceSurface(hit.prim, ray.origin);
-        // RADIANCE badcomponent: rays descended from ambient or sampled specular rays
-        // must not count light the direct calculation already gave; a glow with a
-        // negative radius contributes to no illumination at all (ray.html glow).
-        const bool darkGlow = light.kind == material::LightParams::Kind::Glow &&
-                              light.glowMaxRadius < 0 && hit.front;
-        if (state.indirect && (source || darkGlow)) {
+        // RADIANCE compat (source.c badcomponent, distglow): a ray descended from an
+        // ambient or sampled specular ray sees every light material from the front as
+        // black, source or not (lights inside instances are not), since the direct
+        // calculation counts sources; only a glow farther than its radius shows, and a
+        // glow with a negative radius never does (ray.html glow).
+        const bool distantGlow = light.kind == material::LightParams::Kind::Glow &&
+                                 light.glowMaxRadius >= -1e-6 && hit.t > light.glowMaxRadius;
+        if (state.indirect && hit.front && !distantGlow) {
             fillFirst(first);
             return {};
         }

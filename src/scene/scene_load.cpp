@@ -108,8 +108,8 @@ private:
         // so a light modifier on the placing primitive itself would emit nothing.
         if (p.modifier != kVoid && isLightType(scene_.prims[size_t(p.modifier)].type))
             throw InputError(p.loc, std::string(primTypeName(p.type)) + " '" + p.name +
-                                        "': a light material cannot modify an " +
-                                        std::string(primTypeName(p.type)));
+                                        "': cannot be modified by light material '" +
+                                        scene_.prims[size_t(p.modifier)].name + "'");
     }
 
     int32_t objectFor(int32_t placing) {
