@@ -8,9 +8,11 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "scene/mesh_build.h"
+#include "scene/mesh_file.h"
 #include "scene/obj_file.h"
 #include "scene/radiance_objects.h"
 #include "scene/reader.h"
@@ -135,6 +137,104 @@ TEST(RadianceObjects, RecordLayout) {
     EXPECT_EQ(rec.substr(second + 5, 2), std::string("b\0", 2));
     EXPECT_EQ(rec.substr(second + 11, 5), std::string("\xc0\x00\x00\x01\x02", 5));
     EXPECT_EQ(static_cast<unsigned char>(out.back()), 0xff);  // end mark
+}
+
+}  // namespace
+}  // namespace rp
+
+namespace rp {
+namespace {
+
+// OBJ -> our obj2mesh -> our mesh reader: every OBJ triangle comes back once, with its
+// corners in the same cyclic order (orientation), positions within the 32-bit
+// quantisation of the mesh cube (and float), normals within the 32-bit direction code,
+// (u, v) within the quantisation of their range.
+struct Corner {
+    std::array<double, 3> p, n;
+    std::array<double, 2> uv;
+};
+using Tri = std::array<Corner, 3>;
+
+double dist(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::fmax(std::fabs(a[0] - b[0]), std::fmax(std::fabs(a[1] - b[1]), std::fabs(a[2] - b[2])));
+}
+
+// The corner of `w` that corner 0 of `got` is (cyclic order kept, or reversed when
+// `reversed`), if every corner lies within tol; -1 otherwise.
+int matchCorners(const Tri& got, const Tri& w, bool reversed, double tol) {
+    for (int s = 0; s < 3; ++s) {
+        bool ok = true;
+        for (int k = 0; k < 3 && ok; ++k) {
+            int j = reversed ? (s - k + 3) % 3 : (s + k) % 3;
+            ok = dist(got[size_t(k)].p, w[size_t(j)].p) <= tol;
+        }
+        if (ok) return s;
+    }
+    return -1;
+}
+
+void expectRoundTrip(const std::string& name, bool materials) {
+    CaptureWarnings quiet;
+    ObjMesh obj = parseObj(slurp(kData + name + ".obj"), name + ".obj");
+    MeshData back = decodeMeshFile(convert(name, materials), name + ".rtm");
+    std::vector<Tri> want;
+    std::vector<bool> faceAway;  // RADIANCE turns such triangles over (cvmesh.c cvtri)
+    for (const MeshTriangleInput& t : obj.triangles) {
+        Tri tri;
+        for (size_t k = 0; k < 3; ++k)
+            tri[k] = {t.v[k], t.hasNormals ? t.n[k] : std::array<double, 3>{},
+                      t.hasUV ? t.uv[k] : std::array<double, 2>{}};
+        want.push_back(tri);
+        bool away = t.hasNormals;
+        const std::array<double, 3> e1{t.v[1][0] - t.v[0][0], t.v[1][1] - t.v[0][1], t.v[1][2] - t.v[0][2]};
+        const std::array<double, 3> e2{t.v[2][0] - t.v[1][0], t.v[2][1] - t.v[1][1], t.v[2][2] - t.v[1][2]};
+        const std::array<double, 3> fn{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                                       e1[0] * e2[1] - e1[1] * e2[0]};
+        for (size_t k = 0; k < 3 && away; ++k)
+            away = fn[0] * t.n[k][0] + fn[1] * t.n[k][1] + fn[2] * t.n[k][2] < 0;
+        faceAway.push_back(away);
+    }
+    ASSERT_EQ(back.triangleCount(), obj.triangles.size()) << name;
+    const double tol = 1e-6 * back.cubeSize + 1e-6;  // 32-bit cube positions, then float
+    std::vector<bool> used(want.size(), false);
+    int withNormals = 0, withUV = 0;
+    for (size_t i = 0; i < back.triangleCount(); ++i) {
+        Tri got;
+        uint8_t flags = 0xff;
+        for (size_t k = 0; k < 3; ++k) {
+            uint32_t v = back.triangles[3 * i + k];
+            const float* p = &back.positions[3 * size_t(v)];
+            got[k].p = {p[0], p[1], p[2]};
+            flags &= back.flagsOf(v);
+            if (!back.normals.empty()) got[k].n = {back.normals[v][0], back.normals[v][1], back.normals[v][2]};
+            if (!back.uvs.empty()) got[k].uv = {back.uvs[v][0], back.uvs[v][1]};
+        }
+        size_t j = 0;
+        int s = -1;
+        for (; j < want.size() && s < 0; ++j)
+            if (!used[j]) s = matchCorners(got, want[j], faceAway[j], tol);
+        ASSERT_GE(s, 0) << name << ": triangle " << i << " not in the OBJ (or turned over)";
+        --j;
+        used[j] = true;
+        for (int k = 0; k < 3; ++k) {
+            const Corner& a = got[size_t(k)];
+            const Corner& b = want[j][size_t(faceAway[j] ? (s - k + 3) % 3 : (s + k) % 3)];
+            if (flags & MeshData::kHasNormal)
+                for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.n[size_t(c)], b.n[size_t(c)], 2e-4) << name;
+            if (flags & MeshData::kHasUV)
+                for (int c = 0; c < 2; ++c) EXPECT_NEAR(a.uv[size_t(c)], b.uv[size_t(c)], 1e-6) << name;
+        }
+        withNormals += (flags & MeshData::kHasNormal) != 0;
+        withUV += (flags & MeshData::kHasUV) != 0;
+    }
+    std::printf("%s: %zu triangles back, %d with normals, %d with (u, v)\n", name.c_str(),
+                back.triangleCount(), withNormals, withUV);
+}
+
+TEST(MeshRoundTrip, ObjThroughObj2meshAndTheReader) {
+    expectRoundTrip("cube", true);
+    expectRoundTrip("grid", true);
+    expectRoundTrip("dense", false);
 }
 
 }  // namespace

@@ -42,4 +42,20 @@ err=$("$BIN/rtrace" -h cut.oct < /dev/null 2>&1); rc=$?
 echo "$err"
 [ $rc -ne 0 ] && [ "$(echo "$err" | wc -l)" -eq 1 ] && echo "$err" | grep -q "cut.rad:1: mesh 'cut': .*cut.rtm" ||
     { echo "FAIL: truncated mesh"; fail=1; }
+# Photons land on meshes; a map older than a mesh the scene places is stale.
+cat > lit.rad <<'END'
+void plastic white 0 0 5 .6 .6 .6 0 0
+white mesh m 1 grid.rtm 0 0
+void light lamp 0 0 3 100 100 100
+lamp sphere bulb 0 0 4 0 0 3 .1
+END
+"$BIN/oconv" lit.rad > lit.oct
+"$BIN/mkpmap" -apg lit.pm 2k lit.oct 2>/dev/null || { echo "FAIL: mkpmap on a mesh"; fail=1; }
+n=$("$BIN/pmapdump" -a lit.pm 2>/dev/null | grep -c .)
+echo "photons stored on the mesh: $n"
+[ "$n" -gt 1000 ] || { echo "FAIL: too few photons on the mesh"; fail=1; }
+touch -d "@$(( $(date +%s) + 5 ))" grid.rtm
+err=$(echo "0 0 2 0 0 -1" | "$BIN/rtrace" -h -ab 1 -ap lit.pm 50 lit.oct 2>&1 >/dev/null); rc=$?
+echo "$err"
+[ $rc -ne 0 ] && echo "$err" | grep -q "older than scene file .*grid.rtm" || { echo "FAIL: stale map not noticed"; fail=1; }
 exit $fail
