@@ -62,6 +62,11 @@ struct QueryContext {
     Vec3 localOrg, localDir;
 };
 
+struct LocalRay {
+    const Vec3& o;
+    const Vec3& d;
+};
+
 QueryContext* queryContext(RTCIntersectContext* c) { return reinterpret_cast<QueryContext*>(c); }
 
 inline const AccelPlacement& placementOf(const QueryContext& ctx, unsigned inst) {
@@ -69,24 +74,20 @@ inline const AccelPlacement& placementOf(const QueryContext& ctx, unsigned inst)
 }
 
 // The query's double ray in the space of the geometry Embree is testing: the world, or
-// the object space of instance `inst` (computed once per query and instance).
-inline void localRay(QueryContext& ctx, unsigned inst, Vec3& o, Vec3& d) {
-    if (inst == RTC_INVALID_GEOMETRY_ID) {
-        o = ctx.org;
-        d = ctx.dir;
-        return;
-    }
+// the object space of instance `inst` (computed once per query and instance; not
+// copied for the world, which is most rays).
+[[gnu::always_inline]] inline LocalRay localRay(QueryContext& ctx, unsigned inst) {
+    if (inst == RTC_INVALID_GEOMETRY_ID) return {ctx.org, ctx.dir};
     if (inst != ctx.localInst) {
         const AccelPlacement& p = placementOf(ctx, inst);
         ctx.localOrg = xfPoint(p.toObject, ctx.org);
         ctx.localDir = xfDir(p.toObject, ctx.dir);
         ctx.localInst = inst;
     }
-    o = ctx.localOrg;
-    d = ctx.localDir;
+    return {ctx.localOrg, ctx.localDir};
 }
 
-inline const ShapeSet& shapesIn(const QueryContext& ctx, unsigned inst) {
+[[gnu::always_inline]] inline const ShapeSet& shapesIn(const QueryContext& ctx, unsigned inst) {
     if (inst == RTC_INVALID_GEOMETRY_ID) return *ctx.shapes;
     return *(*ctx.objects)[placementOf(ctx, inst).object].shapes;
 }
@@ -109,13 +110,13 @@ inline bool planeT(const PolygonShape& p, const Vec3& o, const Vec3& d, double& 
     return true;
 }
 
-inline bool validPolygonHit(QueryContext& ctx, unsigned inst, uint32_t tri, uint32_t& polygon,
-                            double& t) {
+// Forced inline: out of line it cost a call per photon bounce (mkpmap on the Cornell box).
+[[gnu::always_inline]] inline bool validPolygonHit(QueryContext& ctx, unsigned inst, uint32_t tri,
+                                                   uint32_t& polygon, double& t) {
     const ShapeSet& shapes = shapesIn(ctx, inst);
     polygon = shapes.trianglePolygon[tri];
-    Vec3 o, d;
-    localRay(ctx, inst, o, d);
-    return planeT(shapes.polygons[polygon], o, d, t) && t > 0 && t < ctx.tmax;
+    const LocalRay r = localRay(ctx, inst);
+    return planeT(shapes.polygons[polygon], r.o, r.d, t) && t > 0 && t < ctx.tmax;
 }
 
 // A mesh triangle's plane in double from its float vertices (which are the surface).
@@ -127,11 +128,10 @@ inline bool validMeshHit(QueryContext& ctx, unsigned inst, uint32_t tri, double&
     };
     const Vec3 v0 = vertex(0);
     const Vec3 n = cross(vertex(1) - v0, vertex(2) - v0);
-    Vec3 o, d;
-    localRay(ctx, inst, o, d);
-    const double dn = dot(n, d);
+    const LocalRay r = localRay(ctx, inst);
+    const double dn = dot(n, r.d);
     if (dn == 0) return false;
-    t = dot(v0 - o, n) / dn;
+    t = dot(v0 - r.o, n) / dn;
     return t > 0 && t < ctx.tmax;
 }
 
@@ -233,9 +233,8 @@ template <class F>
 bool hitUserShape(const typename F::Shape& s, QueryContext& ctx, unsigned inst, double tmax,
                   double& t) {
     if (skipped(ctx, inst, s.modifier)) return false;
-    Vec3 o, d;
-    localRay(ctx, inst, o, d);
-    return F::hit(s, o, d, tmax, t);
+    const LocalRay r = localRay(ctx, inst);
+    return F::hit(s, r.o, r.d, tmax, t);
 }
 
 template <class F>
