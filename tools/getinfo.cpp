@@ -1,18 +1,36 @@
 // getinfo: print the information header of RADIANCE files (see src/image/getinfo.h).
 #include "image/getinfo.h"
 
+#include <cstdio>
 #include <iostream>
 
+#include "gen/builtin_commands.h"
+#include "geometry/scene_geometry.h"
+#include "scene/scene_load.h"
 #include "util/error.h"
+
+namespace {
+// -d on our scene files: the cube RADIANCE's oconv would store, printed as its
+// writeoct prints one.
+std::string sceneCube(const std::string& path) {
+    rp::Scene scene = rp::loadScene({path}, rp::gen::builtinLoadOptions());
+    rp::SceneCube c = rp::SceneGeometry(scene).sceneCube();
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%.12g %.12g %.12g %.12g", c.origin.x, c.origin.y, c.origin.z,
+                  c.size);
+    return buf;
+}
+}  // namespace
 
 int main(int argc, char** argv) {
     std::ios::sync_with_stdio(false);
     try {
         rp::GetinfoOptions opt = rp::parseGetinfoArgs(argc, argv);
+        opt.sceneCube = sceneCube;
         int status = rp::runGetinfo(opt, std::cin, std::cout, std::cerr);
         std::cout.flush();
         return status;
-    } catch (const rp::InputError& e) {
+    } catch (const std::exception& e) {
         std::cout.flush();
         std::cerr << "getinfo: " << e.what() << '\n';
         return 1;

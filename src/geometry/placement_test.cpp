@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 #include "scene/mesh_data.h"
@@ -305,6 +306,38 @@ TEST(Placement, MissingAndWrongFiles) {
     EXPECT_NE(err("void light l 0 0 3 1 1 1\nl instance i 1 self.oct 0 0\n")
                   .find("instance 'i': cannot be modified by light material 'l'"),
               std::string::npos);
+}
+
+}  // namespace
+}  // namespace rp
+
+namespace rp {
+namespace {
+
+// RADIANCE's oconv bounds a placement by its object's cube, placed: the scene cubes of
+// RADIANCE's porsches.rad (two instances of the frozen porsche.octf) and vase.rad (a
+// mesh), from RADIANCE 5.4's `oconv porsches.rad > p.oct; getinfo -d p.oct` (and
+// vase.rad) in ../shared/radiance-tests/renders.
+TEST(Placement, SceneCubeAsRadianceOconv) {
+    const std::string dir = std::string(RP_SHARED_DIR) + "/radiance-tests/renders";
+    if (!std::filesystem::exists(dir + "/porsche.octf")) GTEST_SKIP() << "no " << dir;
+    struct Case {
+        const char* file;
+        double cube[4];
+    };
+    for (const Case& c : {Case{"porsches.rad", {-5.5527577, 0.947721475, -0.549466025, 3.10455705}},
+                          Case{"vase.rad", {-4.11501005, 2.38498995, 0.99998995, 0.2300201}}}) {
+        // The objects are found in the models' folder, not along RAYPATH.
+        SceneReader reader;
+        reader.readFile(dir + "/" + c.file);
+        Scene s = reader.take();
+        attachObjects(s, {dir});
+        SceneCube cube = SceneGeometry(s).sceneCube();
+        EXPECT_NEAR(cube.origin.x, c.cube[0], 1e-7) << c.file;
+        EXPECT_NEAR(cube.origin.y, c.cube[1], 1e-7) << c.file;
+        EXPECT_NEAR(cube.origin.z, c.cube[2], 1e-7) << c.file;
+        EXPECT_NEAR(cube.size, c.cube[3], 1e-7) << c.file;
+    }
 }
 
 }  // namespace

@@ -372,7 +372,7 @@ SceneCube sceneCubeFor(const Bounds3& bounds) {
     return cube;
 }
 
-SceneCube SceneGeometry::sceneCube() const { return sceneCubeFor(shapes_->bounds); }
+SceneCube SceneGeometry::sceneCube() const { return sceneCubeFor(bounds_); }
 
 std::vector<int32_t> SceneGeometry::sourcesInDirection(const Vec3& dir) const {
     std::vector<int32_t> out;

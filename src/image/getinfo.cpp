@@ -47,13 +47,29 @@ std::string dimensions(std::istream& in) {
 }
 
 // Our oconv's scene file (scene/scene_file.h kSceneFileFormat; image/ does not depend on
-// scene/) holds records only: no octree, so no cube for -d to print.
+// scene/) holds records only: its cube comes from GetinfoOptions::sceneCube.
 constexpr const char* kSceneFileFormat = "radphoton_scene";
 
-bool hasNoCube(const Header& h, const std::string& name, std::ostream& err) {
-    if (h.format() != kSceneFileFormat) return false;
-    err << "getinfo: " << name << ": a radphoton scene file has no bounding cube\n";
-    return true;
+// The dimensions line of a file whose header has been read (and its name for errors);
+// false after an error line.
+bool dimensionsOf(const GetinfoOptions& opt, const Header& h, const std::string& name,
+                  bool fromStdin, std::istream& in, std::string& line, std::ostream& err) {
+    if (h.format() != kSceneFileFormat) {
+        line = dimensions(in);
+        return true;
+    }
+    if (!opt.sceneCube || fromStdin) {
+        err << "getinfo: " << name << ": a radphoton scene file has no bounding cube"
+            << (fromStdin ? " (give the file's name)" : "") << "\n";
+        return false;
+    }
+    try {
+        line = opt.sceneCube(name) + "\n";
+        return true;
+    } catch (const InputError& e) {
+        err << "getinfo: " << e.what() << "\n";
+        return false;
+    }
 }
 
 void printTabbedHeader(std::ostream& out, const std::string& name, const Header& h) {
@@ -133,8 +149,9 @@ int runGetinfo(const GetinfoOptions& opt, std::istream& in, std::ostream& out, s
         // empty line.
         if (opt.mode != Mode::kDimensions) writeHeader(out, h);
         if (opt.mode == Mode::kHeader) return 0;
-        if (hasNoCube(h, kStdinName, err)) return 1;
-        out << dimensions(in);
+        std::string line;
+        if (!dimensionsOf(opt, h, kStdinName, true, in, line, err)) return 1;
+        out << line;
         return 0;
     }
 
@@ -151,21 +168,15 @@ int runGetinfo(const GetinfoOptions& opt, std::istream& in, std::ostream& out, s
             status = 1;
             continue;
         }
-        if (opt.mode == Mode::kDimensions) {
-            if (hasNoCube(h, name, err)) {
-                status = 1;
-                continue;
-            }
-            out << name << ": " << dimensions(f);
-        } else {
-            printTabbedHeader(out, name, h);
-            if (opt.mode != Mode::kBoth) continue;
-            out.flush();
-            if (hasNoCube(h, name, err))
-                status = 1;
-            else
-                out << '\t' << dimensions(f);
+        if (opt.mode != Mode::kDimensions) printTabbedHeader(out, name, h);
+        if (opt.mode == Mode::kHeader) continue;
+        out.flush();
+        std::string line;
+        if (!dimensionsOf(opt, h, name, false, f, line, err)) {
+            status = 1;
+            continue;
         }
+        out << (opt.mode == Mode::kDimensions ? name + ": " : std::string("\t")) << line;
     }
     out.flush();
     return status;

@@ -3,6 +3,7 @@
 // header (-) or add lines to one (-a). tools/getinfo.cpp only wires up the streams.
 #pragma once
 
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -21,6 +22,10 @@ struct GetinfoOptions {
     bool skipResolution = false;        // kStrip with -d
     std::vector<std::string> files;     // empty: standard input
     std::vector<std::string> addLines;  // kAppend
+    // For -d on our scene files, which store records but no octree: "xmin ymin zmin
+    // size" of the cube RADIANCE's oconv would give the scene (the tool supplies it; it
+    // needs the geometry). Throws InputError. Unset: such a file is an error line.
+    std::function<std::string(const std::string& path)> sceneCube;
 };
 
 // RADIANCE's argument order: an optional -d/+d first, then "-a line ..", "-" or files.
