@@ -34,8 +34,10 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "scene/portable_reader.h"
 #include "scene/radiance_objects.h"
@@ -80,7 +82,8 @@ struct PatchInfo {
 };
 }  // namespace
 
-MeshData decodeMeshFile(std::string_view bytes, const std::string& what) {
+MeshData decodeMeshFile(std::string_view bytes, const std::string& what,
+                        const std::function<void(size_t)>& consumed) {
     const SourceLoc loc{what, 0};
     Header header;
     std::string_view rest;
@@ -90,6 +93,7 @@ MeshData decodeMeshFile(std::string_view bytes, const std::string& what) {
         throw InputError(loc, "not a RADIANCE mesh file (FORMAT=" + header.format() + ")");
 
     size_t pos = 0;
+    const size_t offset = size_t(rest.data() - bytes.data());  // of rest in bytes
     PortableReader r(rest, pos, what, "mesh file");
     int64_t objsize = r.integer(2, "the magic number") - kMeshMagic;
     if (objsize <= 0 || objsize > 8)
@@ -107,6 +111,7 @@ MeshData decodeMeshFile(std::string_view bytes, const std::string& what) {
                            m.uvLimits[1][1] - m.uvLimits[0][1] > kTiny;
     // Octree leaves hold triangle IDs, non-negative OBJECTs.
     skipRadianceTree(r, static_cast<int>(objsize), int64_t{1} << 31);
+    if (consumed) consumed(offset + r.pos());
     m.materials = decodeRadianceObjects(rest, pos, static_cast<int>(objsize), what);
     const auto nmats = static_cast<int64_t>(m.materials.prims.size());
     for (const auto& p : m.materials.prims)
@@ -118,7 +123,6 @@ MeshData decodeMeshFile(std::string_view bytes, const std::string& what) {
     if (npatches > (size_t{1} << 22)) r.fail(std::to_string(npatches) + " patches");  // 22-bit IDs
     std::vector<PatchInfo> patches(npatches);
     // Triangles hold vertex IDs until every patch is known (joiners may point ahead).
-    std::vector<uint32_t> ids;
     std::vector<int32_t> mats;
     std::vector<std::array<float, 3>> normals;
     std::vector<std::array<float, 2>> uvs;
@@ -126,32 +130,56 @@ MeshData decodeMeshFile(std::string_view bytes, const std::string& what) {
     bool anyNormal = false, anyUV = false;
     uint32_t nextBase = 0;
 
+    // Room for as many vertices and triangles as the patches and the bytes left can hold
+    // (a vertex takes at least 12 bytes, a triangle 3): reserved, not touched, so it
+    // costs no memory, and nothing is copied as the arrays grow.
+    const size_t maxVerts = std::min(256 * npatches, r.left() / 12);
+    const size_t maxTris = std::min(1024 * npatches, r.left() / 3);
+    m.positions.reserve(3 * maxVerts + 1);
+    flags.reserve(maxVerts);
+    normals.reserve(maxVerts);
+    uvs.reserve(maxVerts);
+    m.triangles.reserve(3 * maxTris);
+    mats.reserve(maxTris);
+    std::vector<uint32_t>& ids = m.triangles;  // vertex IDs, made indices at the end
+    // Materials per triangle only once two differ (most meshes have one).
+    size_t materialCount = 0;
+    int32_t sole = kVoid;
+    auto addMaterial = [&](int32_t mat) {
+        if (materialCount == 0) sole = mat;
+        if (mats.empty() && mat != sole) mats.assign(materialCount, sole);
+        if (!mats.empty()) mats.push_back(mat);
+        ++materialCount;
+    };
+    std::string patch;
     for (size_t pn = 0; pn < npatches; ++pn) {
-        const std::string patch = "patch " + std::to_string(pn);
-        auto material = [&](const std::string& field) {
-            int64_t mat = r.integer(2, field + " in " + patch);
+        if (pn % 1024 == 0 && consumed) consumed(offset + r.pos());
+        patch = "patch " + std::to_string(pn);
+        r.setContext(&patch);
+        auto material = [&](const char* field) {
+            int64_t mat = r.integer(2, field);
             if (mat != kVoid && (mat < 0 || mat >= nmats))
                 r.fail("material " + std::to_string(mat) + " of a triangle in " + patch +
                        " out of range (" + std::to_string(nmats) + " materials)");
             return static_cast<int32_t>(mat);
         };
-        auto local = [&](int64_t nverts, const std::string& field) {
-            int v = r.byte(field + " in " + patch);
+        auto local = [&](int64_t nverts, const char* field) {
+            int v = r.byte(field);
             if (v >= nverts)
                 r.fail("vertex " + std::to_string(v) + " of a triangle in " + patch +
                        " out of range (" + std::to_string(nverts) + " vertices)");
             return (static_cast<uint32_t>(pn) << 8) | static_cast<uint32_t>(v);
         };
-        auto joined = [&](const std::string& field) {
-            int64_t id = r.integer(4, field + " in " + patch);
+        auto joined = [&](const char* field) {
+            int64_t id = r.integer(4, field);
             if (id < 0) r.fail("joiner vertex ID " + std::to_string(id) + " in " + patch);
             return static_cast<uint32_t>(id);
         };
 
-        int fl = r.byte("the flags of " + patch);
+        int fl = r.byte("the flags");
         if (!(fl & kFlagV) || (fl & ~(kFlagV | kFlagN | kFlagUV)))
             r.fail("flags " + std::to_string(fl) + " of " + patch);
-        int64_t nverts = r.integer(2, "the vertex count of " + patch);
+        int64_t nverts = r.integer(2, "the vertex count");
         if (nverts <= 0 || nverts > 256)
             r.fail(std::to_string(nverts) + " vertices in " + patch);
         if ((fl & kFlagUV) && !uvBounded) r.fail(patch + " has (u, v) but the limits are empty");
@@ -161,16 +189,17 @@ MeshData decodeMeshFile(std::string_view bytes, const std::string& what) {
         const double unit = m.cubeSize / 4294967296.0;
         for (int64_t i = 0; i < nverts; ++i)
             for (int j = 0; j < 3; ++j) {
-                uint32_t q = r.u32("the vertices of " + patch);
+                uint32_t q = r.u32("the vertices");
                 m.positions.push_back(static_cast<float>(m.cubeOrigin[j] + (q + 0.5) * unit));
             }
-        const size_t first = flags.size();
-        flags.resize(first + nverts, 0);
-        normals.resize(first + nverts, {0, 0, 0});
-        uvs.resize(first + nverts, {0, 0});
+        // Per-vertex arrays only once some patch has normals or (u, v).
+        const size_t first = patches[pn].base;
+        if (fl & (kFlagN | kFlagUV)) flags.resize(first + nverts, 0);
+        if (fl & kFlagN) normals.resize(first + nverts, {0, 0, 0});
+        if (fl & kFlagUV) uvs.resize(first + nverts, {0, 0});
         if (fl & kFlagN)
             for (int64_t i = 0; i < nverts; ++i) {
-                uint32_t code = r.u32("the normals of " + patch);
+                uint32_t code = r.u32("the normals");
                 if (code == 0) continue;
                 normals[first + i] = decodeDirection(code);
                 flags[first + i] |= MeshData::kHasNormal;
@@ -179,7 +208,7 @@ MeshData decodeMeshFile(std::string_view bytes, const std::string& what) {
         if (fl & kFlagUV)
             for (int64_t i = 0; i < nverts; ++i) {
                 uint32_t q[2];
-                for (auto& c : q) c = r.u32("the (u, v) of " + patch);
+                for (auto& c : q) c = r.u32("the (u, v)");
                 if (q[0] == 0) continue;  // mesh.c getmeshvert: only u is tested
                 for (int j = 0; j < 2; ++j)
                     uvs[first + i][j] = static_cast<float>(
@@ -189,67 +218,105 @@ MeshData decodeMeshFile(std::string_view bytes, const std::string& what) {
                 anyUV = true;
             }
 
-        int64_t ntris = r.integer(2, "the triangle count of " + patch);
+        int64_t ntris = r.integer(2, "the triangle count");
         if (ntris < 0 || ntris > 512)
             r.fail(std::to_string(ntris) + " local triangles in " + patch);
         for (int64_t t = 0; t < ntris; ++t)
             for (int k = 0; k < 3; ++k) ids.push_back(local(nverts, "the local triangles"));
-        if (r.integer(2, "the material count of " + patch) > 1) {
-            for (int64_t t = 0; t < ntris; ++t) mats.push_back(material("the triangle materials"));
+        if (r.integer(2, "the material count") > 1) {
+            for (int64_t t = 0; t < ntris; ++t) addMaterial(material("the triangle materials"));
         } else {
             int32_t sole = material("the sole material");
-            mats.insert(mats.end(), ntris, sole);
+            for (int64_t t = 0; t < ntris; ++t) addMaterial(sole);
         }
 
-        int64_t nj1 = r.integer(2, "the joiner count of " + patch);
+        int64_t nj1 = r.integer(2, "the joiner count");
         if (nj1 < 0 || nj1 > 256) r.fail(std::to_string(nj1) + " joiner triangles in " + patch);
         for (int64_t t = 0; t < nj1; ++t) {
             ids.push_back(joined("the joiner triangles"));
             ids.push_back(local(nverts, "the joiner triangles"));
             ids.push_back(local(nverts, "the joiner triangles"));
-            mats.push_back(material("the joiner triangles"));
+            addMaterial(material("the joiner triangles"));
         }
-        int64_t nj2 = r.integer(2, "the double joiner count of " + patch);
+        int64_t nj2 = r.integer(2, "the double joiner count");
         if (nj2 < 0 || nj2 > 256)
             r.fail(std::to_string(nj2) + " double joiner triangles in " + patch);
         for (int64_t t = 0; t < nj2; ++t) {
             ids.push_back(joined("the double joiner triangles"));
             ids.push_back(joined("the double joiner triangles"));
             ids.push_back(local(nverts, "the double joiner triangles"));
-            mats.push_back(material("the double joiner triangles"));
+            addMaterial(material("the double joiner triangles"));
         }
     }
+    r.setContext(nullptr);
     if (r.left() != 0)
         r.fail(std::to_string(r.left()) + " unexpected bytes after the last patch");
 
-    m.triangles.resize(ids.size());
     for (size_t i = 0; i < ids.size(); ++i) {
         uint32_t pn = ids[i] >> 8, v = ids[i] & 0xff;
         if (pn >= npatches || v >= patches[pn].count)
             r.fail("triangle " + std::to_string(i / 3) + " refers to vertex " +
                    std::to_string(v) + " of patch " + std::to_string(pn) + ", which does not exist");
-        m.triangles[i] = patches[pn].base + v;
+        ids[i] = patches[pn].base + v;
     }
     m.positions.push_back(0.0f);  // the pad that Embree's 16-byte loads read
-    if (anyNormal) m.normals = std::move(normals);
-    if (anyUV) m.uvs = std::move(uvs);
-    if (anyNormal || anyUV) m.vertexFlags = std::move(flags);
-    if (!mats.empty() && std::all_of(mats.begin(), mats.end(),
-                                     [&](int32_t x) { return x == mats.front(); }))
-        m.soleMaterial = mats.front();
-    else if (!mats.empty())
+    const size_t nv = m.vertexCount();
+    if (anyNormal) {
+        normals.resize(nv, {0, 0, 0});
+        m.normals = std::move(normals);
+    }
+    if (anyUV) {
+        uvs.resize(nv, {0, 0});
+        m.uvs = std::move(uvs);
+    }
+    if (anyNormal || anyUV) {
+        flags.resize(nv, 0);
+        m.vertexFlags = std::move(flags);
+    }
+    if (mats.empty())
+        m.soleMaterial = sole;
+    else
         m.triangleMaterial = std::move(mats);
     return m;
 }
 
 MeshData readMeshFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw InputError(SourceLoc{path, 0},
-                         std::string("cannot open mesh file (") + std::strerror(errno) + ")");
-    std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) throw InputError(SourceLoc{path, 0}, "cannot read mesh file");
-    return decodeMeshFile(bytes, path);
+    // Mapped rather than read: the octree that RADIANCE stores first (most of the file)
+    // and the patches already decoded are handed back as decoding goes on, so a mesh
+    // file of hundreds of megabytes never sits in memory beside its mesh.
+    const SourceLoc loc{path, 0};
+    int fd = ::open(path.c_str(), O_RDONLY);
+    if (fd < 0)
+        throw InputError(loc, std::string("cannot open mesh file (") + std::strerror(errno) + ")");
+    struct stat st;
+    if (::fstat(fd, &st) != 0 || st.st_size <= 0) {
+        ::close(fd);
+        throw InputError(loc, st.st_size == 0 ? "empty mesh file" : "cannot read mesh file");
+    }
+    const size_t size = size_t(st.st_size);
+    void* map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+    ::close(fd);
+    if (map == MAP_FAILED)
+        throw InputError(loc, std::string("cannot read mesh file (") + std::strerror(errno) + ")");
+    ::madvise(map, size, MADV_SEQUENTIAL);
+    const size_t page = size_t(::sysconf(_SC_PAGESIZE));
+    size_t released = 0;
+    auto consumed = [&](size_t upTo) {
+        size_t end = upTo / page * page;
+        if (end > released) {
+            ::madvise(static_cast<char*>(map) + released, end - released, MADV_DONTNEED);
+            released = end;
+        }
+    };
+    try {
+        MeshData m = decodeMeshFile(std::string_view(static_cast<const char*>(map), size), path,
+                                    consumed);
+        ::munmap(map, size);
+        return m;
+    } catch (...) {
+        ::munmap(map, size);
+        throw;
+    }
 }
 
 }  // namespace rp

@@ -2,6 +2,7 @@
 // obj2mesh; common/readmesh.c) into MeshData (mesh_data.h).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -16,7 +17,9 @@ constexpr const char* kRadianceMeshFormat = "Radiance_tmesh";
 MeshData readMeshFile(const std::string& path);
 
 // Decodes a whole mesh file's bytes, header included; `what` names it in errors and
-// becomes MeshData::path.
-MeshData decodeMeshFile(std::string_view bytes, const std::string& what);
+// becomes MeshData::path. `consumed`, if given, hears now and then how far into `bytes`
+// decoding has got (what lies before is not read again).
+MeshData decodeMeshFile(std::string_view bytes, const std::string& what,
+                        const std::function<void(size_t)>& consumed = {});
 
 }  // namespace rp

@@ -26,16 +26,24 @@ public:
     [[noreturn]] void fail(const std::string& why) const {
         throw InputError(SourceLoc{what_, 0}, "damaged " + std::string(kind_) + " (" + why + ")");
     }
-    [[noreturn]] void truncated(const std::string& where) const {
+    [[noreturn]] void truncated(const char* where) const {
         throw InputError(SourceLoc{what_, 0},
-                         "truncated " + std::string(kind_) + " (ends inside " + where + ")");
+                         "truncated " + std::string(kind_) + " (ends inside " + describe(where) + ")");
+    }
+
+    // What the values being read belong to ("patch 3", "object 12 'chair'"), named in
+    // messages as "<where> of <context>"; null for nothing. Set once per record rather
+    // than built for each value, so that reading allocates nothing.
+    void setContext(const std::string* context) { context_ = context; }
+    std::string describe(const char* where) const {
+        return context_ ? std::string(where) + " of " + *context_ : std::string(where);
     }
 
     size_t left() const { return in_.size() - pos_; }
     size_t pos() const { return pos_; }
 
     // A `size`-byte integer, sign-extended as RADIANCE's getint() does.
-    int64_t integer(int size, const std::string& where) {
+    int64_t integer(int size, const char* where) {
         if (left() < static_cast<size_t>(size)) truncated(where);
         auto byte = [&](size_t i) { return static_cast<unsigned char>(in_[pos_ + i]); };
         uint64_t v = byte(0);
@@ -45,12 +53,12 @@ public:
         return static_cast<int64_t>(v);
     }
     // The same 4 bytes as an unsigned value (mesh vertex coordinates).
-    uint32_t u32(const std::string& where) { return static_cast<uint32_t>(integer(4, where)); }
-    int byte(const std::string& where) { return static_cast<int>(integer(1, where) & 0xff); }
+    uint32_t u32(const char* where) { return static_cast<uint32_t>(integer(4, where)); }
+    int byte(const char* where) { return static_cast<int>(integer(1, where) & 0xff); }
 
     // portio.c's float: mantissa m (4 bytes) scaled by 1/(2^31-1), rounded away from
     // zero by half a unit, times 2^e (1 byte); m == 0 is exactly 0 whatever e is.
-    double real(const std::string& where) {
+    double real(const char* where) {
         int64_t m = integer(4, where);
         int64_t e = integer(1, where);
         if (m == 0) return 0.0;
@@ -58,7 +66,7 @@ public:
         return std::ldexp(d, static_cast<int>(e));
     }
 
-    std::string str(const std::string& where) {
+    std::string str(const char* where) {
         size_t end = in_.find('\0', pos_);
         if (end == std::string_view::npos) truncated(where);
         std::string s(in_.substr(pos_, end - pos_));
@@ -68,10 +76,10 @@ public:
 
     // A count read as `size` bytes, each counted element needing at least `minBytes`:
     // negative counts and counts the remaining bytes cannot hold are damage.
-    size_t count(int size, size_t minBytes, const std::string& where) {
+    size_t count(int size, size_t minBytes, const char* where) {
         int64_t n = integer(size, where);
         if (n < 0 || static_cast<uint64_t>(n) * minBytes > left())
-            fail("impossible " + where + " " + std::to_string(n));
+            fail("impossible " + describe(where) + " " + std::to_string(n));
         return static_cast<size_t>(n);
     }
 
@@ -80,6 +88,7 @@ private:
     size_t& pos_;
     const std::string& what_;
     const char* kind_;
+    const std::string* context_ = nullptr;
 };
 
 // The tree that precedes the objects of an octree and the patches of a mesh

@@ -52,8 +52,9 @@ Scene decodeRadianceObjects(std::string_view bytes, size_t& pos, int objsize,
     std::unordered_map<std::string, int32_t> modifiers;  // name -> latest index
     for (;;) {
         const size_t index = scene.prims.size();
-        const std::string where = "object " + std::to_string(index);
-        int64_t typeIndex = r.integer(1, "the type of " + where);
+        std::string where = "object " + std::to_string(index);
+        r.setContext(&where);
+        int64_t typeIndex = r.integer(1, "the type");
         if (typeIndex == -1) break;
         if (typeIndex < 0 || static_cast<size_t>(typeIndex) >= types.size())
             r.fail("type index " + std::to_string(typeIndex) + " of " + where + " out of range");
@@ -62,7 +63,7 @@ Scene decodeRadianceObjects(std::string_view bytes, size_t& pos, int objsize,
             throw InputError(SourceLoc{what, 0},
                              "unknown object type '" + type.name + "' in " + where);
 
-        int64_t mod = r.integer(objsize, "the modifier of " + where);
+        int64_t mod = r.integer(objsize, "the modifier");
         if (mod != kVoid) {
             if (mod < 0 || static_cast<uint64_t>(mod) >= index)
                 r.fail("modifier reference " + std::to_string(mod) + " of " + where +
@@ -72,17 +73,18 @@ Scene decodeRadianceObjects(std::string_view bytes, size_t& pos, int objsize,
         }
         Primitive p;
         p.type = type.type;
-        p.name = r.str("the name of " + where);
+        p.name = r.str("the name");
         p.loc = SourceLoc{what, 0};
         p.modifier = static_cast<int32_t>(mod);
         p.modifierName = mod == kVoid ? "void" : scene.prims[mod].name;
 
         const std::string whose = " of " + where + " '" + p.name + "'";
+        where += " '" + p.name + "'";
         // Each string needs at least its NUL, each real 5 bytes.
-        p.sargs.resize(r.count(2, 1, "string argument count" + whose));
-        for (auto& s : p.sargs) s = r.str("a string argument" + whose);
-        p.rargs.resize(r.count(2, 5, "real argument count" + whose));
-        for (auto& v : p.rargs) v = r.real("a real argument" + whose);
+        p.sargs.resize(r.count(2, 1, "string argument count"));
+        for (auto& s : p.sargs) s = r.str("a string argument");
+        p.rargs.resize(r.count(2, 5, "real argument count"));
+        for (auto& v : p.rargs) v = r.real("a real argument");
 
         if (p.type == PrimType::Alias) {
             if (!p.rargs.empty() || p.sargs.size() > 1)
@@ -110,6 +112,7 @@ Scene decodeRadianceObjects(std::string_view bytes, size_t& pos, int objsize,
         if (isModifier(p.type)) modifiers[p.name] = static_cast<int32_t>(index);
         scene.prims.push_back(std::move(p));
     }
+    r.setContext(nullptr);  // `where` is gone
     return scene;
 }
 
