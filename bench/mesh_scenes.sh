@@ -8,6 +8,8 @@
 #   inst.oct                     chair.oct placed 1000 times (40x25 grid, rotated) + sun + sky
 #   one.oct                      chair.oct placed once (memory baseline for inst.oct)
 #   big.rays / inst.rays         200 k rays from above the surface, random downward directions
+#   bigroom.oct / instroom.oct   big / inst closed in a room with four lamps (for mkpmap:
+#                                the open scenes let reflected photons escape)
 # All with radphoton's tools (build/tools). For a comparison with another implementation,
 # run its oconv on the same .rtm files and .rad scenes in a directory of its own (its
 # instances need a chair.oct from its own `oconv -f chair.rad`): see bench/README_mesh.md.
@@ -82,5 +84,22 @@ T "oconv tiny" "$bin/oconv" sky.rad tiny.rad > tiny.oct
 T "oconv chair" "$bin/oconv" -f chair.rad > chair.oct
 T "oconv inst" "$bin/oconv" sky.rad inst.rad > inst.oct
 T "oconv one" "$bin/oconv" sky.rad one.rad > one.oct
+
+# Closed rooms with four lamps around the big mesh and around the 1000 instances.
+room() {  # room NAME X Y Z LAMP_RADIANCE LAMP_RADIUS LAMP_X LAMP_Y LAMP_Z
+    cat > "$1.rad" <<RAD
+void plastic wall 0 0 5 .5 .5 .5 0 0
+!genbox wall room $2 $3 $4 -i | xform -t -$(( $2 / 2 )) -$(( $3 / 2 )) -5
+void light lamp 0 0 3 $5 $5 $5
+lamp sphere l1 0 0 4 -$7 -$8 $9 $6
+lamp sphere l2 0 0 4 $7 -$8 $9 $6
+lamp sphere l3 0 0 4 -$7 $8 $9 $6
+lamp sphere l4 0 0 4 $7 $8 $9 $6
+RAD
+}
+room room 110 110 25 2e4 .5 20 20 15
+room instroom 6200 4000 60 2e6 2 1500 1000 45
+PATH="$bin:$PATH" T "oconv bigroom" "$bin/oconv" room.rad big.rad > bigroom.oct
+PATH="$bin:$PATH" T "oconv instroom" "$bin/oconv" instroom.rad inst.rad > instroom.oct
 
 ls -l "$dir"
