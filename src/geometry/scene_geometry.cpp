@@ -83,15 +83,6 @@ void insetIntoTriangle(Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c,
 
 namespace {
 
-inline Vec3 xfPoint(const Transform& t, const Vec3& p) {
-    auto r = t.point({p.x, p.y, p.z});
-    return {r[0], r[1], r[2]};
-}
-inline Vec3 xfDir(const Transform& t, const Vec3& d) {
-    auto r = t.direction({d.x, d.y, d.z});
-    return {r[0], r[1], r[2]};
-}
-
 template <class Inset>
 std::vector<Inset> polygonInsets(const ShapeSet& s) {
     std::vector<Inset> insets;
@@ -110,7 +101,7 @@ Bounds3 cubeBoundsIn(const Vec3& origin, double size, const Transform& toWorld) 
     for (int c = 0; c < 8; ++c) {
         Vec3 corner{origin.x + ((c & 1) ? size : 0), origin.y + ((c & 2) ? size : 0),
                     origin.z + ((c & 4) ? size : 0)};
-        b.extend(xfPoint(toWorld, corner));
+        b.extend(toWorld.mapPoint(corner));
     }
     return b;
 }
@@ -323,7 +314,7 @@ Hit SceneGeometry::completePlacedHit(const Ray& ray, const AccelHit& a) const {
     const Placement& pl = placements_[size_t(a.placement)];
     const ObjectGeometry& og = objects_[size_t(pl.object)];
     const Transform& fwd = pl.xf.forward;
-    const Ray local{xfPoint(pl.xf.backward, ray.origin), xfDir(pl.xf.backward, ray.dir), ray.tmax};
+    const Ray local{pl.xf.backward.mapPoint(ray.origin), pl.xf.backward.mapDirection(ray.dir), ray.tmax};
     // The next ray starts from world coordinates rounded to float: the point must be
     // inset and offset by that rounding too (in object units).
     const double minOffset = kFloatOffsetRel * maxAbs(ray.origin + ray.dir * a.t) / fwd.scale;
@@ -345,15 +336,15 @@ Hit SceneGeometry::completePlacedHit(const Ray& ray, const AccelHit& a) const {
     }
     h.modifier = modifier;
     const double invScale = 1.0 / fwd.scale;
-    h.normal = xfDir(fwd, h.normal) * invScale;
+    h.normal = fwd.mapDirection(h.normal) * invScale;
     if (lengthSquared(shading) > 0) {
         // RADIANCE o_mesh.c: the interpolated normal, normalised in world space, minus
         // the geometric normal.
-        Vec3 s = xfDir(fwd, shading);
+        Vec3 s = fwd.mapDirection(shading);
         double len = length(s);
         if (len > 0) h.perturbation = s / len - h.normal;
     }
-    h.point = xfPoint(fwd, h.point);
+    h.point = fwd.mapPoint(h.point);
     h.offset *= fwd.scale;
     h.front = dot(ray.dir, h.normal) < 0;
     h.objectSpace = pl.patternSpace ? &*pl.patternSpace : nullptr;

@@ -11,6 +11,7 @@
 
 #include "geometry/scene_geometry.h"
 #include "geometry/test_scenes.h"
+#include "util/warning_capture_for_tests.h"
 #include "util/warnings.h"
 
 namespace rp {
@@ -18,22 +19,6 @@ namespace {
 
 using testing::SceneBuilder;
 
-// Collects warnings for the duration of a test.
-class WarningCapture {
-public:
-    WarningCapture() {
-        setWarningSink([this](const std::string& m) { messages.push_back(m); });
-    }
-    ~WarningCapture() {
-        setWarningSink([](const std::string& m) { std::fprintf(stderr, "warning: %s\n", m.c_str()); });
-    }
-    bool any(const std::string& part) const {
-        for (const auto& m : messages)
-            if (m.find(part) != std::string::npos) return true;
-        return false;
-    }
-    std::vector<std::string> messages;
-};
 
 std::string errorOf(const Scene& s) {
     try {
@@ -107,7 +92,7 @@ TEST(Shapes, DegenerateShapesAreSkippedWithWarning) {
     EXPECT_TRUE(w.any("ring 'nodir'"));
     EXPECT_TRUE(w.any("polygon 'line': zero area"));
     EXPECT_TRUE(w.any("source 'nowhere'"));
-    EXPECT_EQ(w.messages.size(), 7u);
+    EXPECT_EQ(w.lines.size(), 7u);
 }
 
 TEST(Shapes, NegativeRadiiFlipOrientation) {
@@ -128,7 +113,7 @@ TEST(Shapes, NegativeRadiiFlipOrientation) {
     ASSERT_EQ(s.rings.size(), 1u);
     EXPECT_EQ(s.rings[0].r0, 1);
     EXPECT_EQ(s.rings[0].r1, 2);
-    EXPECT_EQ(w.messages.size(), 3u);
+    EXPECT_EQ(w.lines.size(), 3u);
 }
 
 TEST(Shapes, NonPlanarPolygonWarns) {

@@ -16,8 +16,6 @@ constexpr double kFtiny = 1e-6;  // RADIANCE FTINY: mixture sides below this are
 constexpr int kBufferLayers = 64;
 constexpr int kMaxDepth = 200;
 
-Vec3 toVec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
-std::array<double, 3> toArr(const Vec3& v) { return {v.x, v.y, v.z}; }
 
 // What the chain has done so far to the ray (RADIANCE r->pcol, r->pert).
 struct WalkState {

@@ -4,10 +4,13 @@
 #include <limits>
 
 #include "pmap/on_demand_photons.h"
-#include "pmap/portable_io.h"
+#include "util/portable_io.h"
 #include "util/error.h"
 
 namespace rp::pmap {
+
+using portable::putFlt;
+using portable::getFlt;
 
 namespace {
 // The value a double becomes after putflt/getflt, so that in-memory == on-disk.

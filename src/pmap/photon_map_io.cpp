@@ -28,6 +28,15 @@
 
 namespace rp::pmap {
 
+using portable::putInt;
+using portable::putFlt;
+using portable::putStr;
+using portable::getInt32;
+using portable::getInt;
+using portable::getFlt;
+using portable::ByteReader;
+using portable::kPortableFloatSize;
+
 namespace {
 
 constexpr size_t kPrimaryRecordSize = 2;

@@ -12,12 +12,15 @@
 #include <limits>
 #include <sstream>
 
-#include "pmap/portable_io.h"
+#include "util/portable_io.h"
 #include "util/error.h"
 #include "pmap/pmap_test_util.h"
 #include "util/temp_dir_for_tests.h"
 
 namespace rp::pmap {
+
+using portable::putInt;
+using portable::putFlt;
 namespace {
 
 namespace fs = std::filesystem;

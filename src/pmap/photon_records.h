@@ -7,12 +7,12 @@
 #include <string>
 
 #include "pmap/photon.h"
-#include "pmap/portable_io.h"
+#include "util/portable_io.h"
 
 namespace rp::pmap {
 
 // pos 3 flt | norm 3 x 1 B | RGBE 4 x 1 B | primary 4 B | flags 1 B.
-constexpr size_t kPhotonRecordSize = 3 * kPortableFloatSize + 3 + 4 + 4 + 1;  // 27
+constexpr size_t kPhotonRecordSize = 3 * portable::kPortableFloatSize + 3 + 4 + 4 + 1;  // 27
 
 // The photon in the kPhotonRecordSize bytes at b (no checks: see checkPhotonRecords).
 Photon decodePhoton(const unsigned char* b);

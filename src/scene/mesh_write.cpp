@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "scene/mesh_build.h"
-#include "scene/portable_out.h"
+#include "util/portable_io.h"
 #include "scene/radiance_objects.h"
 #include "util/error.h"
 

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "util/warnings.h"
+#include "util/warning_capture_for_tests.h"
 
 #include <cmath>
 #include <fstream>
@@ -19,14 +19,6 @@
 
 namespace rp {
 namespace {
-
-// Collects warnings for the test's duration (the default sink may have been cleared
-// by another test in this binary).
-struct CaptureWarnings {
-    std::vector<std::string> lines;
-    CaptureWarnings() { setWarningSink([this](const std::string& m) { lines.push_back(m); }); }
-    ~CaptureWarnings() { setWarningSink([](const std::string&) {}); }
-};
 
 std::string slurp(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -48,13 +40,13 @@ std::string convert(const std::string& name, bool withMaterials, MeshStats* stat
 }
 
 TEST(MeshWrite, CubeMatchesRadianceBytes) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     EXPECT_EQ(convert("cube", true), slurp(kData + "cube.rtm"));
 }
 
 // 676 vertices: three patches, single and double joiner triangles, two materials.
 TEST(MeshWrite, GridMatchesRadianceBytes) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     MeshStats s;
     EXPECT_EQ(convert("grid", true, &s), slurp(kData + "grid.rtm"));
     EXPECT_EQ(s.patches, 3);
@@ -65,7 +57,7 @@ TEST(MeshWrite, GridMatchesRadianceBytes) {
 
 // 5046 triangles: RADIANCE obj2mesh -v printed these numbers for dense.obj.
 TEST(MeshWrite, DenseOctreeStatsMatchRadiance) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     MeshStats s;
     convert("dense", false, &s);
     EXPECT_EQ(formatMeshStats(s),
@@ -76,7 +68,7 @@ TEST(MeshWrite, DenseOctreeStatsMatchRadiance) {
 }
 
 TEST(MeshWrite, MeshDataPathGivesTheSameFile) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     Scene mats = parseScene(slurp(kData + "cube.rad"), "cube.rad");
     ObjMesh obj = parseObj(slurp(kData + "cube.obj"), "cube.obj");
     assignObjMaterials(obj, mats);
@@ -86,7 +78,7 @@ TEST(MeshWrite, MeshDataPathGivesTheSameFile) {
 }
 
 TEST(MeshWrite, DegenerateAndEmptyInput) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     MeshSource src;
     MeshTriangleInput t;
     t.v = {{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}};  // collinear: zero area, dropped
@@ -100,7 +92,7 @@ TEST(MeshWrite, DegenerateAndEmptyInput) {
 
 // dircode.c's code for the axes and a diagonal, worked by hand from its rule.
 TEST(MeshWrite, DirectionCode) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     using meshbuild::encodeDirection;
     // The largest component is implied; the two others are stored.
     EXPECT_EQ(encodeDirection({0, 0, 1}), 010);
@@ -113,7 +105,7 @@ TEST(MeshWrite, DirectionCode) {
 }
 
 TEST(RadianceObjects, RecordLayout) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     Scene s = parseScene("void plastic red 0 0 5 .5 0 0 0 0\nred plastic b 0 0 5 -2 0 0 0 0\n");
     std::string out;
     encodeRadianceObjects(s, 4, out);
@@ -174,7 +166,7 @@ int matchCorners(const Tri& got, const Tri& w, bool reversed, double tol) {
 }
 
 void expectRoundTrip(const std::string& name, bool materials) {
-    CaptureWarnings quiet;
+    WarningCapture quiet;
     ObjMesh obj = parseObj(slurp(kData + name + ".obj"), name + ".obj");
     MeshData back = decodeMeshFile(convert(name, materials), name + ".rtm");
     std::vector<Tri> want;
@@ -219,10 +211,12 @@ void expectRoundTrip(const std::string& name, bool materials) {
         for (int k = 0; k < 3; ++k) {
             const Corner& a = got[size_t(k)];
             const Corner& b = want[j][size_t(faceAway[j] ? (s - k + 3) % 3 : (s + k) % 3)];
-            if (flags & MeshData::kHasNormal)
+            if (flags & MeshData::kHasNormal) {
                 for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.n[size_t(c)], b.n[size_t(c)], 2e-4) << name;
-            if (flags & MeshData::kHasUV)
+            }
+            if (flags & MeshData::kHasUV) {
                 for (int c = 0; c < 2; ++c) EXPECT_NEAR(a.uv[size_t(c)], b.uv[size_t(c)], 1e-6) << name;
+            }
         }
         withNormals += (flags & MeshData::kHasNormal) != 0;
         withUV += (flags & MeshData::kHasUV) != 0;

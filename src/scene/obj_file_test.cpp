@@ -4,20 +4,12 @@
 
 #include <gtest/gtest.h>
 
-#include "util/warnings.h"
+#include "util/warning_capture_for_tests.h"
 
 #include "scene/reader.h"
 
 namespace rp {
 namespace {
-
-// Collects warnings for the test's duration (the default sink may have been cleared
-// by another test in this binary).
-struct CaptureWarnings {
-    std::vector<std::string> lines;
-    CaptureWarnings() { setWarningSink([this](const std::string& m) { lines.push_back(m); }); }
-    ~CaptureWarnings() { setWarningSink([](const std::string&) {}); }
-};
 
 const char* kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
@@ -33,7 +25,7 @@ std::array<int, 3> ids(const ObjMesh& m, size_t t) {
 }
 
 TEST(ObjFile, FaceFormsAndNegativeIndices) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     std::string text = std::string(kSquare) +
                        "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 2\n"
                        "f 1 2 3\nf 1/1 2/2 3/3\nf 1//1 2//1 3//1\nf 1/1/1 2/2/1 3/3/1\n"
@@ -54,7 +46,7 @@ TEST(ObjFile, FaceFormsAndNegativeIndices) {
 // (4 1 2) (2 3 4), a pentagon 1..5 becomes (5 1 2) (2 3 4) (4 5 2); a clockwise
 // polygon is split the same way and its triangles keep its orientation.
 TEST(ObjFile, PolygonsSplitAsRadiance) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     ObjMesh q = parseObj(std::string(kSquare) + "f 1 2 3 4\n", "q.obj");
     ASSERT_EQ(q.triangles.size(), 2u);
     EXPECT_EQ(ids(q, 0), (std::array<int, 3>{3, 1, 2}));  // vertex 4 is (0,1): id 3
@@ -84,7 +76,7 @@ TEST(ObjFile, PolygonsSplitAsRadiance) {
 }
 
 TEST(ObjFile, MaterialsFollowUsemtlThenGroup) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     std::string text = std::string(kSquare) +
                        "f 1 2 3\ng walls\nf 1 2 3\nusemtl red\nf 1 2 3\nusemtl blue\nf 1 2 3\n"
                        "usemtl void\nf 1 2 3\nmtllib x.mtl\ns 1\n";
@@ -108,7 +100,7 @@ TEST(ObjFile, MaterialsFollowUsemtlThenGroup) {
 }
 
 TEST(ObjFile, UndefinedMaterialIsAnErrorAtTheFace) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     ObjMesh m = parseObj(std::string(kSquare) + "usemtl green\nf 1 2 3\n", "g.obj");
     Scene mats = parseScene("void plastic red 0 0 5 1 0 0 0 0\n");
     try {
@@ -120,7 +112,7 @@ TEST(ObjFile, UndefinedMaterialIsAnErrorAtTheFace) {
 }
 
 TEST(ObjFile, LineContinuationAndComments) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     ObjMesh m = parseObj(std::string(kSquare) + "f 1 \\\n 2 3 # a comment\n# f 1 2 4\nf 1 2 4\n", "c.obj");
     ASSERT_EQ(m.triangles.size(), 2u);
     EXPECT_EQ(m.triangles[1].loc.line, 8);
@@ -136,7 +128,7 @@ void expectError(const std::string& text, const std::string& message) {
 }
 
 TEST(ObjFile, BadInputsNameFileAndLine) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     expectError("v 0 0 x\n", "bad.obj:1: bad vertex 'x'");
     expectError("v 0 0\n", "bad.obj:1: bad vertex");
     expectError("vn 0 0 0\n", "bad.obj:1: zero normal");
@@ -151,7 +143,7 @@ TEST(ObjFile, BadInputsNameFileAndLine) {
 }
 
 TEST(ObjFile, MeshDataMergesEqualVertices) {
-    CaptureWarnings warnings;
+    WarningCapture warnings;
     ObjMesh m = parseObj(std::string(kSquare) + "f 1 2 3 4\n", "q.obj");
     assignObjMaterials(m, Scene{});
     MeshData d = objToMeshData(m, Scene{});

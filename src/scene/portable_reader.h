@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "util/error.h"
+#include "util/portable_io.h"
 
 namespace rp {
 
@@ -45,25 +46,20 @@ public:
     // A `size`-byte integer, sign-extended as RADIANCE's getint() does.
     int64_t integer(int size, const char* where) {
         if (left() < static_cast<size_t>(size)) truncated(where);
-        auto byte = [&](size_t i) { return static_cast<unsigned char>(in_[pos_ + i]); };
-        uint64_t v = byte(0);
-        if (v & 0x80) v |= ~uint64_t{0xff};
-        for (int i = 1; i < size; ++i) v = (v << 8) | byte(i);
+        int64_t v = portable::getInt(here(), size);
         pos_ += size;
-        return static_cast<int64_t>(v);
+        return v;
     }
     // The same 4 bytes as an unsigned value (mesh vertex coordinates).
     uint32_t u32(const char* where) { return static_cast<uint32_t>(integer(4, where)); }
     int byte(const char* where) { return static_cast<int>(integer(1, where) & 0xff); }
 
-    // portio.c's float: mantissa m (4 bytes) scaled by 1/(2^31-1), rounded away from
-    // zero by half a unit, times 2^e (1 byte); m == 0 is exactly 0 whatever e is.
+    // portio.c's float (util/portable_io.h getFlt).
     double real(const char* where) {
-        int64_t m = integer(4, where);
-        int64_t e = integer(1, where);
-        if (m == 0) return 0.0;
-        double d = (static_cast<double>(m) + (m < 0 ? -0.5 : 0.5)) * (1.0 / 0x7fffffff);
-        return std::ldexp(d, static_cast<int>(e));
+        if (left() < size_t(portable::kPortableFloatSize)) truncated(where);
+        double v = portable::getFlt(here());
+        pos_ += portable::kPortableFloatSize;
+        return v;
     }
 
     std::string str(const char* where) {
@@ -84,6 +80,9 @@ public:
     }
 
 private:
+    const unsigned char* here() const {
+        return reinterpret_cast<const unsigned char*>(in_.data()) + pos_;
+    }
     std::string_view in_;
     size_t& pos_;
     const std::string& what_;

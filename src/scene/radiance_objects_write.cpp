@@ -3,7 +3,7 @@
 #include <array>
 #include <string_view>
 
-#include "scene/portable_out.h"
+#include "util/portable_io.h"
 #include "scene/radiance_objects.h"
 #include "util/error.h"
 

@@ -7,19 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "util/warnings.h"
+#include "util/warning_capture_for_tests.h"
 
 namespace rp {
 namespace {
 
-// Captures warnings for the duration of a test.
-struct WarningCapture {
-    std::vector<std::string> lines;
-    WarningCapture() {
-        setWarningSink([this](const std::string& m) { lines.push_back(m); });
-    }
-    ~WarningCapture() { setWarningSink(nullptr); }
-};
 
 std::string errorOf(const std::string& text, const std::string& file = "t.rad",
                     const LoadOptions& options = {}) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "util/error.h"
+#include "util/vec.h"
 
 namespace rp {
 
@@ -33,6 +34,15 @@ struct Transform {
 
     std::array<double, 3> point(const std::array<double, 3>& p) const;
     std::array<double, 3> direction(const std::array<double, 3>& v) const;
+    // The same for Vec3 (named apart: brace-initialised arrays would be ambiguous).
+    Vec3 mapPoint(const Vec3& p) const {
+        auto r = point(std::array<double, 3>{p.x, p.y, p.z});
+        return {r[0], r[1], r[2]};
+    }
+    Vec3 mapDirection(const Vec3& v) const {
+        auto r = direction(std::array<double, 3>{v.x, v.y, v.z});
+        return {r[0], r[1], r[2]};
+    }
     // The inverse (world to object space). RADIANCE transforms are similarities (rotation,
     // mirror, uniform scale, translation), so the linear part inverts as L^T / scale^2.
     Transform inverse() const;

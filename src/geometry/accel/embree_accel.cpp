@@ -39,15 +39,6 @@ namespace {
 
 constexpr unsigned kFirstPlacement = 8;  // geometry ids below are the scene's own ShapeKinds
 
-inline Vec3 xfPoint(const Transform& t, const Vec3& p) {
-    auto r = t.point({p.x, p.y, p.z});
-    return {r[0], r[1], r[2]};
-}
-inline Vec3 xfDir(const Transform& t, const Vec3& d) {
-    auto r = t.direction({d.x, d.y, d.z});
-    return {r[0], r[1], r[2]};
-}
-
 struct QueryContext {
     RTCIntersectContext rtc;  // first member: Embree hands callbacks &rtc
     const ShapeSet* shapes;   // the scene's own
@@ -80,8 +71,8 @@ inline const AccelPlacement& placementOf(const QueryContext& ctx, unsigned inst)
     if (inst == RTC_INVALID_GEOMETRY_ID) return {ctx.org, ctx.dir};
     if (inst != ctx.localInst) {
         const AccelPlacement& p = placementOf(ctx, inst);
-        ctx.localOrg = xfPoint(p.toObject, ctx.org);
-        ctx.localDir = xfDir(p.toObject, ctx.dir);
+        ctx.localOrg = p.toObject.mapPoint(ctx.org);
+        ctx.localDir = p.toObject.mapDirection(ctx.dir);
         ctx.localInst = inst;
     }
     return {ctx.localOrg, ctx.localDir};

@@ -1,6 +1,7 @@
 // RADIANCE's "portable" binary encodings (src/common/portio.c): big-endian integers of n
 // bytes, floats as a 4-byte signed mantissa plus a 1-byte exponent, NUL-terminated strings.
-// Used by photon map files; the file layout itself lives in photon_map_io.cpp.
+// Used by photon map files (layout in pmap/photon_map_io.cpp), compiled meshes and binary
+// scene records (scene/mesh_write.cpp, scene/radiance_objects_write.cpp).
 #pragma once
 
 #include <cstddef>
@@ -9,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace rp::pmap {
+namespace rp::portable {
 
 constexpr int kPortableFloatSize = 5;  // bytes written by putFlt
 
@@ -65,4 +66,4 @@ private:
     bool ok_ = true;
 };
 
-}  // namespace rp::pmap
+}  // namespace rp::portable

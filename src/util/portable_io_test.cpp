@@ -1,5 +1,5 @@
 // Portable I/O against bytes worked out by hand from portio.c's definitions.
-#include "pmap/portable_io.h"
+#include "util/portable_io.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-namespace rp::pmap {
+namespace rp::portable {
 namespace {
 
 std::vector<int> bytes(const std::string& s) {
@@ -189,4 +189,4 @@ TEST(PortableIo, PutStrAndByteReader) {
 }
 
 }  // namespace
-}  // namespace rp::pmap
+}  // namespace rp::portable

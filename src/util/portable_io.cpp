@@ -1,5 +1,5 @@
 // RADIANCE portable binary encodings (see portable_io.h for the contracts).
-#include "pmap/portable_io.h"
+#include "util/portable_io.h"
 
 #include <array>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "util/fast_frexp.h"
 
-namespace rp::pmap {
+namespace rp::portable {
 
 namespace {
 constexpr double kMantissaScale = 0x7fffffff;
@@ -101,14 +101,14 @@ bool ByteReader::take(size_t n) {
 
 int64_t ByteReader::getInt(int size) {
     if (!take(size)) return 0;
-    int64_t v = pmap::getInt(p_, size);
+    int64_t v = portable::getInt(p_, size);
     p_ += size;
     return v;
 }
 
 double ByteReader::getFlt() {
     if (!take(kPortableFloatSize)) return 0;
-    double v = pmap::getFlt(p_);
+    double v = portable::getFlt(p_);
     p_ += kPortableFloatSize;
     return v;
 }
@@ -124,4 +124,4 @@ std::string ByteReader::getStr(size_t maxLen) {
     return s;
 }
 
-}  // namespace rp::pmap
+}  // namespace rp::portable
