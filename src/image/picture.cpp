@@ -8,7 +8,7 @@
 #include <ostream>
 #include <sstream>
 
-#include "image/file_write.h"
+#include "util/file_write.h"
 #include "util/error.h"
 
 namespace rp {

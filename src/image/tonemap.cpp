@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "image/file_write.h"
+#include "util/file_write.h"
 #include "image/png.h"
 #include "util/error.h"
 

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "scene/mesh_build.h"
+#include "util/file_write.h"
 #include "util/portable_io.h"
 #include "scene/radiance_objects.h"
 #include "util/error.h"
@@ -194,20 +195,7 @@ std::string encodeMeshFile(const MeshData& mesh, int objlim, int maxres,
 }
 
 void saveMeshFile(const std::string& path, const std::string& bytes) {
-    std::string tmp = path + ".tmp" + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.close();
-        if (!out) {
-            std::remove(tmp.c_str());
-            throw InputError(SourceLoc{path, 0}, "cannot write mesh file");
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        throw InputError(SourceLoc{path, 0}, "cannot rename temporary file into place");
-    }
+    writeFileAtomically(path, bytes);
 }
 
 }  // namespace rp

@@ -11,6 +11,8 @@
 // does not depend on the order of PrimType.
 #include "scene/scene_file.h"
 
+#include "util/file_write.h"
+
 #include <unistd.h>
 
 #include <cstdio>
@@ -218,21 +220,7 @@ std::string sceneFileBytes(const Scene& scene, const std::vector<std::string>& h
 
 void saveSceneFile(const std::string& path, const Scene& scene,
                    const std::vector<std::string>& headerLines) {
-    std::string bytes = sceneFileBytes(scene, headerLines);
-    std::string tmp = path + ".tmp" + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.close();
-        if (!out) {
-            std::remove(tmp.c_str());
-            throw InputError(SourceLoc{path, 0}, "cannot write scene file");
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        throw InputError(SourceLoc{path, 0}, "cannot rename temporary file into place");
-    }
+    writeFileAtomically(path, sceneFileBytes(scene, headerLines));
 }
 
 bool splitHeader(std::string_view bytes, Header& header, std::string_view& rest) {

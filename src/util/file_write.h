@@ -1,6 +1,6 @@
 // Writing output files safely: data goes to a temporary file in the target folder and is
-// renamed over the target only when complete (STYLE.md, Errors). Used by pictures and
-// PNG previews; nothing here knows about file formats.
+// renamed over the target only when complete (STYLE.md, Errors). Used by pictures, PNG
+// previews, scene files and meshes; nothing here knows about file formats.
 #pragma once
 
 #include <string>

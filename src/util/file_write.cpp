@@ -1,5 +1,5 @@
 // Temporary-file-and-rename output (see file_write.h).
-#include "image/file_write.h"
+#include "util/file_write.h"
 
 #include <fcntl.h>
 #include <unistd.h>
