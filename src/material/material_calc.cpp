@@ -207,6 +207,7 @@ void MaterialCalcEvaluator::setHit(int32_t material, const PatternPoint& at,
     // The same function-space values as patterns see (func.c setfunc).
     const Transform t = functionTransform(at, rec_->toObject);
     ctx_ = functionSpace(at, rec_->toObject);
+    object_ = at.object;
     if (at.rdot < 0 && (rec_->kind == MaterialCalc::Kind::Func ||
                         rec_->kind == MaterialCalc::Kind::Data)) {
         // m_brdf.c m_brdf2 turns the surface to the ray (flipsurface) before its
@@ -254,8 +255,10 @@ void MaterialCalcEvaluator::brtdSpecular(Color& reflection, Color& transmission)
 Redirection MaterialCalcEvaluator::redirect(int n, const Vec3& toSource) {
     RP_CHECK(rec_ && rec_->kind == MaterialCalc::Kind::Prism && n >= 0 &&
              4 * n + 3 < MaterialCalc::Record::kMaxExpr);
-    // DxA..: the direction through the world -> function transform, as D (m_direct.c).
-    ctx_.DA = toVec(rec_->toObject.direction(toArr(toSource))) / rec_->toObject.scale;
+    // DxA..: the direction through the world -> function transform, as D (m_direct.c);
+    // inside an instance through the object's space first.
+    const Transform t = object_ ? rec_->toObject * object_->backward : rec_->toObject;
+    ctx_.DA = t.mapDirection(toSource) / t.scale;
     eval_.setRay(ctx_);
     long before = eval_.mathErrors();
     double v[4];
@@ -266,7 +269,10 @@ Redirection MaterialCalcEvaluator::redirect(int n, const Vec3& toSource) {
     }
     Redirection r;
     if (eval_.mathErrors() != before) return r;  // m_direct.c: "compute error"
-    Vec3 d = toVec(rec_->forward.direction({v[1], v[2], v[3]}));
+    // Back to world space by the forward transforms (m_direct.c: the modifier's, then
+    // the object's).
+    Vec3 d = rec_->forward.mapDirection(Vec3{v[1], v[2], v[3]});
+    if (object_) d = object_->forward.mapDirection(d);
     double len = length(d);
     if (!(len > 0) || !std::isfinite(len) || !std::isfinite(v[0])) return r;
     r.coef = v[0];

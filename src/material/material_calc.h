@@ -132,6 +132,7 @@ private:
     calc::Evaluator eval_;
     calc::RayContext ctx_;
     const MaterialCalc::Record* rec_ = nullptr;
+    const TransformPair* object_ = nullptr;  // the hit's object space (PatternPoint::object)
     long errorsAtHit_ = 0;
 };
 

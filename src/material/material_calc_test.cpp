@@ -46,9 +46,11 @@ struct Fixture {
     // A hit on the plane z = 0 (normal +z); `shading` is the perturbed normal on the
     // ray's side (the plain one when not given).
     int32_t hit(const std::string& name, const Vec3& dir = {0, 0, -1},
-                std::optional<Vec3> shading = std::nullopt, Color pattern = {1, 1, 1}) {
+                std::optional<Vec3> shading = std::nullopt, Color pattern = {1, 1, 1},
+                const TransformPair* object = nullptr) {
         int32_t m = indexOf(*scene, name);
         PatternPoint at;
+        at.object = object;
         at.dir = dir;
         at.point = {0.5, 0.25, 0};
         at.normal = {0, 0, 1};
@@ -341,6 +343,24 @@ TEST(MaterialCalc, PrismRedirectionsSeeDxAAndTheTransform) {
     EXPECT_NEAR(r2.coef, 0.3, kEps);
     EXPECT_NEAR(length(r2.dir - Vec3{0, 1, 0}), 0, 1e-9);  // made unit, back in world
     EXPECT_NEAR(f.eval->redirect(1, {1, 0, 0}).coef, 1, kEps);  // DyA = -1
+}
+
+// Inside an instance (object space turned by +90 degrees about z: object +x is world +y)
+// the prism's functions see DxA in object space and their directions come back through
+// the object's rotation (m_direct.c, RADIANCE ray.rox).
+TEST(MaterialCalc, PrismRedirectionsInsideAnInstance) {
+    Fixture f;
+    f.write("p.cal", "c1 = if(DyA*DyA - .5, -DyA, A1); x1 = 2; y1 = 0; z1 = 0;\n");
+    f.load("void prism1 p 5 c1 x1 y1 z1 p.cal 0 1 .3\n");
+    const TransformPair object = TransformPair::of(Transform::rotateZ(90));
+    f.hit("p", normalize(Vec3{0.3, 0.4, -1}), std::nullopt, {1, 1, 1}, &object);
+    Redirection r = f.eval->redirect(0, {1, 0, 0});  // world +x is object -y: DyA = -1
+    ASSERT_TRUE(r.ok);
+    EXPECT_NEAR(r.coef, 1, kEps);
+    EXPECT_NEAR(length(r.dir - Vec3{0, 1, 0}), 0, 1e-9);  // object +x, world +y
+    f.hit("p", normalize(Vec3{0.3, 0.4, -1}));           // world space: DyA = 0
+    EXPECT_NEAR(f.eval->redirect(0, {1, 0, 0}).coef, 0.3, kEps);
+    EXPECT_NEAR(length(f.eval->redirect(0, {1, 0, 0}).dir - Vec3{1, 0, 0}), 0, 1e-9);
 }
 
 TEST(MaterialCalc, PrismErrorsAtTheRecord) {
