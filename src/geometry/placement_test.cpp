@@ -461,3 +461,25 @@ TEST(Placement, MeshEdgesAreAlmostWatertight) {
 
 }  // namespace
 }  // namespace rp
+
+namespace rp {
+namespace {
+
+// Rays that start beyond what Embree handles (|coordinate| above about 1.8e18, where it
+// aborts) or hold NaN are misses, as outside RADIANCE's octree cube; never a crash.
+TEST(Placement, RaysFromBeyondTheAcceleratorsRangeMiss) {
+    TempDir dir;
+    writeOctree(dir.file("box.oct"), kBox, "box");
+    Scene s = sceneWithObjects(std::string(kBox) + placing("void", "instance", "b", "box.oct", "-t 5 0 0"), dir);
+    SceneGeometry g(s);
+    ASSERT_TRUE(g.closestHit({{0.5, 0.5, 5}, {0, 0, -1}}));
+    for (const Vec3& o : {Vec3{2e18, 0.5, 0.5}, Vec3{0.5, -3e30, 0.5}, Vec3{0.5, 0.5, NAN},
+                          Vec3{1e308, 1e308, 1e308}}) {
+        EXPECT_FALSE(g.closestHit({o, {-1, 0, 0}}));
+        EXPECT_FALSE(g.occluded(o, {-1, 0, 0}, 1e30));
+    }
+    EXPECT_FALSE(g.closestHit({{0.5, 0.5, 5}, {0, NAN, -1}}));
+}
+
+}  // namespace
+}  // namespace rp

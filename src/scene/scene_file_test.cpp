@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "scene/scene_load.h"
 #include "util/warnings.h"
@@ -85,6 +86,34 @@ TEST(SceneFile, SavedFileLoadsByHeader) {
     EXPECT_EQ(back.inputs[1].path, oct);
     back.inputs.pop_back();
     expectSameScene(s, back);
+}
+
+// A scene file whose magic line lost its first byte to a "!" (one flipped bit) has no
+// header: it must be refused as binary data, not read as scene text whose first line
+// would go to /bin/sh.
+TEST(SceneFile, DamagedMagicLineIsNotShellInput) {
+    TempDir dir;
+    std::string rad = dir.file("room.rad", kRoom);
+    std::string marker = (fs::path(rad).parent_path() / "ran").string();
+    Scene s = loadScene({rad});
+    std::string oct = (fs::path(rad).parent_path() / "room.oct").string();
+    saveSceneFile(oct, s, {"oconv room.rad"});
+    std::string bytes;
+    {
+        std::ifstream in(oct, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    bytes.replace(0, std::string("#?RADIANCE").size(), "!touch " + marker + ";#");
+    { std::ofstream(oct, std::ios::binary | std::ios::trunc) << bytes; }
+    try {
+        loadScene({oct});
+        ADD_FAILURE() << "a damaged scene file was loaded";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("binary data, not a scene description"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_FALSE(fs::exists(marker)) << "the damaged file's first line ran as a command";
 }
 
 TEST(SceneFile, TruncatedOrCorruptedIsInputError) {

@@ -53,6 +53,12 @@ std::vector<std::string> loadOne(SceneReader& reader, const std::string& path) {
     Header header;
     std::string_view rest;
     if (!splitHeader(bytes, header, rest)) {
+        // Scene text has no NUL bytes; scene files and octrees do. One whose header was
+        // damaged must not be read as text, whose "!" lines would go to the shell.
+        if (bytes.find('\0') != std::string::npos)
+            throw InputError(SourceLoc{path, 0},
+                             "binary data, not a scene description (a scene file or octree "
+                             "with a damaged header?)");
         reader.readContents(path, bytes);
         return {};
     }

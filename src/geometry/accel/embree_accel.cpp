@@ -554,8 +554,24 @@ EmbreeAccel::~EmbreeAccel() = default;
 
 size_t EmbreeAccel::triangleCount() const { return impl_->shapes.triangles.size(); }
 
+namespace {
+// Embree handles coordinates up to about 1.8e18 (its FLT_LARGE) and aborts on larger ones;
+// a ray that starts farther out than any scene can reach is a miss, as a ray outside
+// RADIANCE's octree cube is (raytrace.c localhit).
+constexpr double kLargestCoordinate = 1e18;
+// (NaN fails every comparison: such a ray is not traced either.)
+inline bool traceable(const Ray& ray) {
+    auto ok = [](const Vec3& v) {
+        return std::fabs(v.x) <= kLargestCoordinate && std::fabs(v.y) <= kLargestCoordinate &&
+               std::fabs(v.z) <= kLargestCoordinate;
+    };
+    return ok(ray.origin) && ok(ray.dir);
+}
+}  // namespace
+
 bool EmbreeAccel::intersect(const Ray& ray, const ModifierSet* skip, AccelHit& hit) const {
     const Impl& m = *impl_;
+    if (!traceable(ray)) return false;
     QueryContext ctx;
     m.initContext(ctx, ray, skip);
     const bool found = !m.embreeEmpty && intersectEmbree(m.scene, ctx, ray, hit);
@@ -564,6 +580,7 @@ bool EmbreeAccel::intersect(const Ray& ray, const ModifierSet* skip, AccelHit& h
 
 bool EmbreeAccel::occluded(const Ray& ray, const ModifierSet* skip) const {
     const Impl& m = *impl_;
+    if (!traceable(ray)) return false;
     QueryContext ctx;
     m.initContext(ctx, ray, skip);
     // Embree first: most shadow rays that are blocked at all are blocked by triangles,
