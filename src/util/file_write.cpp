@@ -41,10 +41,20 @@ void writeFileAtomically(const std::string& path, const std::string& data) {
         }
         done += static_cast<size_t>(n);
     }
-    if (::close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    // On the disk before the name points at it: a crash after the rename must not leave
+    // a complete-looking name over a file whose data never arrived.
+    if (::fsync(fd) != 0 || ::close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
         int err = errno;
         ::unlink(tmp.c_str());
         throw InputError(SourceLoc{path, 0}, std::string("cannot write: ") + std::strerror(err));
+    }
+    // And the rename itself (the folder's entry); failure here loses nothing written.
+    const size_t slash = path.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+    int dfd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dfd >= 0) {
+        ::fsync(dfd);
+        ::close(dfd);
     }
 }
 
