@@ -176,9 +176,9 @@ TEST(SceneFile, OconvAddsToExistingSceneFile) {
     TempDir dir;
     std::string a = dir.file("a.rad", "void plastic m 0 0 5 1 1 1 0 0\n");
     std::string b = dir.file("b.rad", "m sphere s 0 0 4 0 0 0 1\n");
-    std::string first = oconvOutput({{a}, "", "oconv a.rad"});
+    std::string first = oconvOutput({{a}, "", "oconv a.rad", {}});
     std::string oct = dir.file("a.oct", first);
-    std::string second = oconvOutput({{b}, oct, "oconv -i a.oct b.rad"});
+    std::string second = oconvOutput({{b}, oct, "oconv -i a.oct b.rad", {}});
     EXPECT_EQ(second.rfind("#?RADIANCE\noconv a.rad\noconv -i a.oct b.rad\nFORMAT=radphoton_scene\n\n", 0), 0u);
     Scene s = loadScene({dir.file("b.oct", second)});
     ASSERT_EQ(s.prims.size(), 2u);

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <unordered_map>
 
 #include "calc/search_path.h"
@@ -86,6 +87,17 @@ Scene loadScene(const std::vector<std::string>& paths, const LoadOptions& option
 
 namespace {
 
+// Where an instance's octree or a mesh primitive's mesh file is, as RADIANCE's getpath
+// finds it; an InputError at the primitive if nowhere.
+std::string findPlacedFile(const Primitive& p, const std::vector<std::string>& dirs) {
+    const std::string what = p.type == PrimType::Mesh ? "mesh" : "octree";
+    const std::string header = std::string(primTypeName(p.type)) + " '" + p.name + "': ";
+    if (p.sargs.empty()) throw InputError(p.loc, header + "no " + what + " file");
+    auto found = calc::findFile(p.sargs[0], dirs);
+    if (!found) throw InputError(p.loc, header + "cannot find " + what + " file '" + p.sargs[0] + "'");
+    return *found;
+}
+
 bool isLightType(PrimType t) {
     return t == PrimType::Light || t == PrimType::Illum || t == PrimType::Glow ||
            t == PrimType::Spotlight;
@@ -121,12 +133,9 @@ private:
     int32_t objectFor(int32_t placing) {
         const Primitive& p = scene_.prims[size_t(placing)];
         const bool mesh = p.type == PrimType::Mesh;
-        const std::string what = mesh ? "mesh" : "octree";
         const SourceLoc loc = p.loc;
         const std::string header = std::string(primTypeName(p.type)) + " '" + p.name + "': ";
-        if (p.sargs.empty()) throw InputError(loc, header + "no " + what + " file");
-        auto found = calc::findFile(p.sargs[0], dirs_);
-        if (!found) throw InputError(loc, header + "cannot find " + what + " file '" + p.sargs[0] + "'");
+        const std::optional<std::string> found = findPlacedFile(p, dirs_);
         const std::string key = (mesh ? "m:" : "o:") + *found;
         for (const auto& open : loading_)
             if (open == *found)
@@ -207,6 +216,13 @@ std::string oconvOutput(const OconvRequest& request, const LoadOptions& options)
         std::erase_if(lines, [](const std::string& l) { return l.rfind("FORMAT=", 0) == 0; });
     }
     for (const auto& f : request.files) loadOne(reader, f);
+    // RADIANCE's oconv reads what instances and meshes place (for their bounds): a file
+    // it cannot find stops it here, not only the renderer later.
+    const std::vector<std::string> dirs = request.searchPath.empty()
+                                              ? calc::defaultSearchPath(projectLibDir())
+                                              : request.searchPath;
+    for (const Primitive& p : reader.scene().prims)
+        if (p.type == PrimType::Instance || p.type == PrimType::Mesh) findPlacedFile(p, dirs);
     lines.push_back(request.commandLine);
     return sceneFileBytes(reader.scene(), lines);
 }

@@ -31,10 +31,14 @@ struct OconvRequest {
     std::vector<std::string> files;  // scene descriptions, "-" or "!command"
     std::string addTo;               // -i: existing scene file or octree to add to
     std::string commandLine;         // goes into the header, as RADIANCE's printargs
+    // Where instance octrees and meshes are looked for (RADIANCE's getpath); empty: RAYPATH
+    // or "." and the project's library.
+    std::vector<std::string> searchPath;
 };
 
 // What oconv writes: the header (an -i input's header lines first, as RADIANCE's oconv
-// copies them) and the frozen scene.
+// copies them) and the frozen scene. As RADIANCE's oconv, it stops at an instance or mesh
+// whose file cannot be found (InputError at the primitive).
 std::string oconvOutput(const OconvRequest& request, const LoadOptions& options = {});
 
 }  // namespace rp
