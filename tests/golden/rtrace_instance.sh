@@ -29,6 +29,18 @@ for v in 0 1; do
     echo "inst.v$v (plastic for ashik2): $share of rays match RADIANCE"
     awk -v s="$share" 'BEGIN { exit !(s >= 0.98) }' || { echo "FAIL: inst.v$v below 98 %"; fail=1; }
 done
+# RADIANCE's own octrees as instances, non-frozen (it names its scene file, read relative
+# to the current folder as RADIANCE's readoct reads it) and frozen: the same answers as
+# RADIANCE gave (distance, normal, material, value).
+cd "$DATA" || exit 1
+"$BIN/oconv" placed.rad > "$tmp/placed.oct" || fail=1
+"$BIN/rtrace" -h -ab 0 -oLnMv "$tmp/placed.oct" < placed.rays > "$tmp/placed.out" || fail=1
+if cmp -s "$tmp/placed.out" placed.ref; then
+    echo "RADIANCE octrees (frozen and not) as instances: $(wc -l < placed.ref) rays as RADIANCE"
+else
+    echo "FAIL: RADIANCE octrees as instances differ from RADIANCE"; diff "$tmp/placed.out" placed.ref; fail=1
+fi
+cd "$TESTS/renders" || exit 1
 # A missing instanced octree stops oconv, as RADIANCE's: one line naming the scene file,
 # line and octree.
 printf 'void instance gone 1 nowhere.oct\n0\n0\n' > "$tmp/gone.rad"
