@@ -82,6 +82,188 @@ struct PatchInfo {
 };
 }  // namespace
 
+namespace {
+
+// The patches of a mesh file decoded into a MeshData, one at a time. Triangles hold
+// vertex IDs (patch << 8 | local vertex) until finish(), since joiners may point ahead;
+// per-vertex normals, (u, v) and flags, and per-triangle materials, are kept only once
+// some patch has them.
+class PatchDecoder {
+public:
+    PatchDecoder(PortableReader& r, MeshData& m, size_t npatches)
+        : r_(r), m_(m), patches_(npatches), nmats_(int64_t(m.materials.prims.size())),
+          uvBounded_(m.uvLimits[1][0] - m.uvLimits[0][0] > kTiny &&
+                     m.uvLimits[1][1] - m.uvLimits[0][1] > kTiny) {
+        // Room for as many vertices and triangles as the patches and the bytes left can
+        // hold (a vertex takes at least 12 bytes, a triangle 3): reserved, not touched,
+        // so it costs no memory, and nothing is copied as the arrays grow.
+        const size_t maxVerts = std::min(256 * npatches, r.left() / 12);
+        const size_t maxTris = std::min(1024 * npatches, r.left() / 3);
+        m.positions.reserve(3 * maxVerts + 1);
+        flags_.reserve(maxVerts);
+        normals_.reserve(maxVerts);
+        uvs_.reserve(maxVerts);
+        m.triangles.reserve(3 * maxTris);
+        mats_.reserve(maxTris);
+    }
+
+    void patch(size_t pn) {
+        name_ = "patch " + std::to_string(pn);
+        r_.setContext(&name_);
+        int fl = r_.byte("the flags");
+        if (!(fl & kFlagV) || (fl & ~(kFlagV | kFlagN | kFlagUV)))
+            r_.fail("flags " + std::to_string(fl) + " of " + name_);
+        int64_t nverts = r_.integer(2, "the vertex count");
+        if (nverts <= 0 || nverts > 256) r_.fail(std::to_string(nverts) + " vertices in " + name_);
+        if ((fl & kFlagUV) && !uvBounded_) r_.fail(name_ + " has (u, v) but the limits are empty");
+        patches_[pn] = {nextBase_, static_cast<uint32_t>(nverts)};
+        nextBase_ += static_cast<uint32_t>(nverts);
+        vertices(patches_[pn].base, fl, nverts);
+        triangles(pn, nverts);
+        r_.setContext(nullptr);
+    }
+
+    void finish() {
+        std::vector<uint32_t>& ids = m_.triangles;
+        for (size_t i = 0; i < ids.size(); ++i) {
+            uint32_t pn = ids[i] >> 8, v = ids[i] & 0xff;
+            if (pn >= patches_.size() || v >= patches_[pn].count)
+                r_.fail("triangle " + std::to_string(i / 3) + " refers to vertex " +
+                        std::to_string(v) + " of patch " + std::to_string(pn) +
+                        ", which does not exist");
+            ids[i] = patches_[pn].base + v;
+        }
+        m_.positions.push_back(0.0f);  // the pad that Embree's 16-byte loads read
+        const size_t nv = m_.vertexCount();
+        if (anyNormal_) {
+            normals_.resize(nv, {0, 0, 0});
+            m_.normals = std::move(normals_);
+        }
+        if (anyUV_) {
+            uvs_.resize(nv, {0, 0});
+            m_.uvs = std::move(uvs_);
+        }
+        if (anyNormal_ || anyUV_) {
+            flags_.resize(nv, 0);
+            m_.vertexFlags = std::move(flags_);
+        }
+        if (mats_.empty())
+            m_.soleMaterial = sole_;
+        else
+            m_.triangleMaterial = std::move(mats_);
+    }
+
+private:
+    void vertices(size_t first, int fl, int64_t nverts) {
+        const double unit = m_.cubeSize / 4294967296.0;
+        for (int64_t i = 0; i < nverts; ++i)
+            for (int j = 0; j < 3; ++j) {
+                uint32_t q = r_.u32("the vertices");
+                m_.positions.push_back(static_cast<float>(m_.cubeOrigin[j] + (q + 0.5) * unit));
+            }
+        if (fl & (kFlagN | kFlagUV)) flags_.resize(first + nverts, 0);
+        if (fl & kFlagN) {
+            normals_.resize(first + nverts, {0, 0, 0});
+            for (int64_t i = 0; i < nverts; ++i) {
+                uint32_t code = r_.u32("the normals");
+                if (code == 0) continue;
+                normals_[first + i] = decodeDirection(code);
+                flags_[first + i] |= MeshData::kHasNormal;
+                anyNormal_ = true;
+            }
+        }
+        if (fl & kFlagUV) {
+            uvs_.resize(first + nverts, {0, 0});
+            for (int64_t i = 0; i < nverts; ++i) {
+                uint32_t q[2];
+                for (auto& c : q) c = r_.u32("the (u, v)");
+                if (q[0] == 0) continue;  // mesh.c getmeshvert: only u is tested
+                for (int j = 0; j < 2; ++j)
+                    uvs_[first + i][j] = static_cast<float>(
+                        m_.uvLimits[0][j] +
+                        (m_.uvLimits[1][j] - m_.uvLimits[0][j]) * (q[j] + 0.5) / 4294967296.0);
+                flags_[first + i] |= MeshData::kHasUV;
+                anyUV_ = true;
+            }
+        }
+    }
+
+    void triangles(size_t pn, int64_t nverts) {
+        std::vector<uint32_t>& ids = m_.triangles;
+        int64_t ntris = r_.integer(2, "the triangle count");
+        if (ntris < 0 || ntris > 512) r_.fail(std::to_string(ntris) + " local triangles in " + name_);
+        for (int64_t t = 0; t < ntris; ++t)
+            for (int k = 0; k < 3; ++k) ids.push_back(local(pn, nverts, "the local triangles"));
+        if (r_.integer(2, "the material count") > 1) {
+            for (int64_t t = 0; t < ntris; ++t) addMaterial(material("the triangle materials"));
+        } else {
+            const int32_t patchMaterial = material("the sole material");
+            for (int64_t t = 0; t < ntris; ++t) addMaterial(patchMaterial);
+        }
+        int64_t nj1 = r_.integer(2, "the joiner count");
+        if (nj1 < 0 || nj1 > 256) r_.fail(std::to_string(nj1) + " joiner triangles in " + name_);
+        for (int64_t t = 0; t < nj1; ++t) {
+            ids.push_back(joined("the joiner triangles"));
+            ids.push_back(local(pn, nverts, "the joiner triangles"));
+            ids.push_back(local(pn, nverts, "the joiner triangles"));
+            addMaterial(material("the joiner triangles"));
+        }
+        int64_t nj2 = r_.integer(2, "the double joiner count");
+        if (nj2 < 0 || nj2 > 256)
+            r_.fail(std::to_string(nj2) + " double joiner triangles in " + name_);
+        for (int64_t t = 0; t < nj2; ++t) {
+            ids.push_back(joined("the double joiner triangles"));
+            ids.push_back(joined("the double joiner triangles"));
+            ids.push_back(local(pn, nverts, "the double joiner triangles"));
+            addMaterial(material("the double joiner triangles"));
+        }
+    }
+
+    int32_t material(const char* field) {
+        int64_t mat = r_.integer(2, field);
+        if (mat != kVoid && (mat < 0 || mat >= nmats_))
+            r_.fail("material " + std::to_string(mat) + " of a triangle in " + name_ +
+                    " out of range (" + std::to_string(nmats_) + " materials)");
+        return static_cast<int32_t>(mat);
+    }
+    uint32_t local(size_t pn, int64_t nverts, const char* field) {
+        int v = r_.byte(field);
+        if (v >= nverts)
+            r_.fail("vertex " + std::to_string(v) + " of a triangle in " + name_ +
+                    " out of range (" + std::to_string(nverts) + " vertices)");
+        return (static_cast<uint32_t>(pn) << 8) | static_cast<uint32_t>(v);
+    }
+    uint32_t joined(const char* field) {
+        int64_t id = r_.integer(4, field);
+        if (id < 0) r_.fail("joiner vertex ID " + std::to_string(id) + " in " + name_);
+        return static_cast<uint32_t>(id);
+    }
+    // Materials per triangle only once two differ (most meshes have one).
+    void addMaterial(int32_t mat) {
+        if (materialCount_ == 0) sole_ = mat;
+        if (mats_.empty() && mat != sole_) mats_.assign(materialCount_, sole_);
+        if (!mats_.empty()) mats_.push_back(mat);
+        ++materialCount_;
+    }
+
+    PortableReader& r_;
+    MeshData& m_;
+    std::vector<PatchInfo> patches_;
+    const int64_t nmats_;
+    const bool uvBounded_;
+    std::vector<int32_t> mats_;
+    std::vector<std::array<float, 3>> normals_;
+    std::vector<std::array<float, 2>> uvs_;
+    std::vector<uint8_t> flags_;
+    bool anyNormal_ = false, anyUV_ = false;
+    uint32_t nextBase_ = 0;
+    size_t materialCount_ = 0;
+    int32_t sole_ = kVoid;
+    std::string name_;  // "patch N", the reader's context for messages
+};
+
+}  // namespace
+
 MeshData decodeMeshFile(std::string_view bytes, const std::string& what,
                         const std::function<void(size_t)>& consumed) {
     const SourceLoc loc{what, 0};
@@ -107,13 +289,10 @@ MeshData decodeMeshFile(std::string_view bytes, const std::string& what,
         m.uvLimits[0][i] = r.real("the (u, v) limits");
         m.uvLimits[1][i] = r.real("the (u, v) limits");
     }
-    const bool uvBounded = m.uvLimits[1][0] - m.uvLimits[0][0] > kTiny &&
-                           m.uvLimits[1][1] - m.uvLimits[0][1] > kTiny;
     // Octree leaves hold triangle IDs, non-negative OBJECTs.
     skipRadianceTree(r, static_cast<int>(objsize), int64_t{1} << 31);
     if (consumed) consumed(offset + r.pos());
     m.materials = decodeRadianceObjects(rest, pos, static_cast<int>(objsize), what);
-    const auto nmats = static_cast<int64_t>(m.materials.prims.size());
     for (const auto& p : m.materials.prims)
         if (isSurface(p.type))
             r.fail("surface " + std::string(primTypeName(p.type)) + " '" + p.name +
@@ -121,162 +300,14 @@ MeshData decodeMeshFile(std::string_view bytes, const std::string& what,
 
     size_t npatches = r.count(4, kMinPatchBytes, "patch count");
     if (npatches > (size_t{1} << 22)) r.fail(std::to_string(npatches) + " patches");  // 22-bit IDs
-    std::vector<PatchInfo> patches(npatches);
-    // Triangles hold vertex IDs until every patch is known (joiners may point ahead).
-    std::vector<int32_t> mats;
-    std::vector<std::array<float, 3>> normals;
-    std::vector<std::array<float, 2>> uvs;
-    std::vector<uint8_t> flags;
-    bool anyNormal = false, anyUV = false;
-    uint32_t nextBase = 0;
-
-    // Room for as many vertices and triangles as the patches and the bytes left can hold
-    // (a vertex takes at least 12 bytes, a triangle 3): reserved, not touched, so it
-    // costs no memory, and nothing is copied as the arrays grow.
-    const size_t maxVerts = std::min(256 * npatches, r.left() / 12);
-    const size_t maxTris = std::min(1024 * npatches, r.left() / 3);
-    m.positions.reserve(3 * maxVerts + 1);
-    flags.reserve(maxVerts);
-    normals.reserve(maxVerts);
-    uvs.reserve(maxVerts);
-    m.triangles.reserve(3 * maxTris);
-    mats.reserve(maxTris);
-    std::vector<uint32_t>& ids = m.triangles;  // vertex IDs, made indices at the end
-    // Materials per triangle only once two differ (most meshes have one).
-    size_t materialCount = 0;
-    int32_t sole = kVoid;
-    auto addMaterial = [&](int32_t mat) {
-        if (materialCount == 0) sole = mat;
-        if (mats.empty() && mat != sole) mats.assign(materialCount, sole);
-        if (!mats.empty()) mats.push_back(mat);
-        ++materialCount;
-    };
-    std::string patch;
+    PatchDecoder patches(r, m, npatches);
     for (size_t pn = 0; pn < npatches; ++pn) {
         if (pn % 1024 == 0 && consumed) consumed(offset + r.pos());
-        patch = "patch " + std::to_string(pn);
-        r.setContext(&patch);
-        auto material = [&](const char* field) {
-            int64_t mat = r.integer(2, field);
-            if (mat != kVoid && (mat < 0 || mat >= nmats))
-                r.fail("material " + std::to_string(mat) + " of a triangle in " + patch +
-                       " out of range (" + std::to_string(nmats) + " materials)");
-            return static_cast<int32_t>(mat);
-        };
-        auto local = [&](int64_t nverts, const char* field) {
-            int v = r.byte(field);
-            if (v >= nverts)
-                r.fail("vertex " + std::to_string(v) + " of a triangle in " + patch +
-                       " out of range (" + std::to_string(nverts) + " vertices)");
-            return (static_cast<uint32_t>(pn) << 8) | static_cast<uint32_t>(v);
-        };
-        auto joined = [&](const char* field) {
-            int64_t id = r.integer(4, field);
-            if (id < 0) r.fail("joiner vertex ID " + std::to_string(id) + " in " + patch);
-            return static_cast<uint32_t>(id);
-        };
-
-        int fl = r.byte("the flags");
-        if (!(fl & kFlagV) || (fl & ~(kFlagV | kFlagN | kFlagUV)))
-            r.fail("flags " + std::to_string(fl) + " of " + patch);
-        int64_t nverts = r.integer(2, "the vertex count");
-        if (nverts <= 0 || nverts > 256)
-            r.fail(std::to_string(nverts) + " vertices in " + patch);
-        if ((fl & kFlagUV) && !uvBounded) r.fail(patch + " has (u, v) but the limits are empty");
-        patches[pn] = {nextBase, static_cast<uint32_t>(nverts)};
-        nextBase += static_cast<uint32_t>(nverts);
-
-        const double unit = m.cubeSize / 4294967296.0;
-        for (int64_t i = 0; i < nverts; ++i)
-            for (int j = 0; j < 3; ++j) {
-                uint32_t q = r.u32("the vertices");
-                m.positions.push_back(static_cast<float>(m.cubeOrigin[j] + (q + 0.5) * unit));
-            }
-        // Per-vertex arrays only once some patch has normals or (u, v).
-        const size_t first = patches[pn].base;
-        if (fl & (kFlagN | kFlagUV)) flags.resize(first + nverts, 0);
-        if (fl & kFlagN) normals.resize(first + nverts, {0, 0, 0});
-        if (fl & kFlagUV) uvs.resize(first + nverts, {0, 0});
-        if (fl & kFlagN)
-            for (int64_t i = 0; i < nverts; ++i) {
-                uint32_t code = r.u32("the normals");
-                if (code == 0) continue;
-                normals[first + i] = decodeDirection(code);
-                flags[first + i] |= MeshData::kHasNormal;
-                anyNormal = true;
-            }
-        if (fl & kFlagUV)
-            for (int64_t i = 0; i < nverts; ++i) {
-                uint32_t q[2];
-                for (auto& c : q) c = r.u32("the (u, v)");
-                if (q[0] == 0) continue;  // mesh.c getmeshvert: only u is tested
-                for (int j = 0; j < 2; ++j)
-                    uvs[first + i][j] = static_cast<float>(
-                        m.uvLimits[0][j] +
-                        (m.uvLimits[1][j] - m.uvLimits[0][j]) * (q[j] + 0.5) / 4294967296.0);
-                flags[first + i] |= MeshData::kHasUV;
-                anyUV = true;
-            }
-
-        int64_t ntris = r.integer(2, "the triangle count");
-        if (ntris < 0 || ntris > 512)
-            r.fail(std::to_string(ntris) + " local triangles in " + patch);
-        for (int64_t t = 0; t < ntris; ++t)
-            for (int k = 0; k < 3; ++k) ids.push_back(local(nverts, "the local triangles"));
-        if (r.integer(2, "the material count") > 1) {
-            for (int64_t t = 0; t < ntris; ++t) addMaterial(material("the triangle materials"));
-        } else {
-            int32_t sole = material("the sole material");
-            for (int64_t t = 0; t < ntris; ++t) addMaterial(sole);
-        }
-
-        int64_t nj1 = r.integer(2, "the joiner count");
-        if (nj1 < 0 || nj1 > 256) r.fail(std::to_string(nj1) + " joiner triangles in " + patch);
-        for (int64_t t = 0; t < nj1; ++t) {
-            ids.push_back(joined("the joiner triangles"));
-            ids.push_back(local(nverts, "the joiner triangles"));
-            ids.push_back(local(nverts, "the joiner triangles"));
-            addMaterial(material("the joiner triangles"));
-        }
-        int64_t nj2 = r.integer(2, "the double joiner count");
-        if (nj2 < 0 || nj2 > 256)
-            r.fail(std::to_string(nj2) + " double joiner triangles in " + patch);
-        for (int64_t t = 0; t < nj2; ++t) {
-            ids.push_back(joined("the double joiner triangles"));
-            ids.push_back(joined("the double joiner triangles"));
-            ids.push_back(local(nverts, "the double joiner triangles"));
-            addMaterial(material("the double joiner triangles"));
-        }
+        patches.patch(pn);
     }
-    r.setContext(nullptr);
     if (r.left() != 0)
         r.fail(std::to_string(r.left()) + " unexpected bytes after the last patch");
-
-    for (size_t i = 0; i < ids.size(); ++i) {
-        uint32_t pn = ids[i] >> 8, v = ids[i] & 0xff;
-        if (pn >= npatches || v >= patches[pn].count)
-            r.fail("triangle " + std::to_string(i / 3) + " refers to vertex " +
-                   std::to_string(v) + " of patch " + std::to_string(pn) + ", which does not exist");
-        ids[i] = patches[pn].base + v;
-    }
-    m.positions.push_back(0.0f);  // the pad that Embree's 16-byte loads read
-    const size_t nv = m.vertexCount();
-    if (anyNormal) {
-        normals.resize(nv, {0, 0, 0});
-        m.normals = std::move(normals);
-    }
-    if (anyUV) {
-        uvs.resize(nv, {0, 0});
-        m.uvs = std::move(uvs);
-    }
-    if (anyNormal || anyUV) {
-        flags.resize(nv, 0);
-        m.vertexFlags = std::move(flags);
-    }
-    if (mats.empty())
-        m.soleMaterial = sole;
-    else
-        m.triangleMaterial = std::move(mats);
+    patches.finish();
     return m;
 }
 
