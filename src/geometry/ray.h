@@ -47,7 +47,7 @@ struct Hit {
     // to which textures add); zero elsewhere.
     Vec3 perturbation;
     // Inside an instance or mesh: the object space its function files see (RADIANCE
-    // ray.rox); null for world space.
+    // ray.rox), held by the SceneGeometry that made the hit; null for world space.
     const TransformPair* objectSpace = nullptr;
     // Distance by which a ray leaving this point must start off the surface so that it
     // can neither re-hit it through rounding nor tunnel through a neighbouring surface
