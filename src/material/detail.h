@@ -99,6 +99,10 @@ Color evaluateAniso(const AnisoParams&, const SurfacePoint&, const Vec3&, double
 BackwardResult shadeAniso(const AnisoParams&, const SurfacePoint&, const ShadeOptions&, Rng&);
 PhotonScatter scatterAniso(const AnisoParams&, const SurfacePoint&, Rng&);
 
+Color evaluateAshik(const AshikParams&, const SurfacePoint&, const Vec3&);
+BackwardResult shadeAshik(const AshikParams&, const SurfacePoint&, const ShadeOptions&, Rng&);
+PhotonScatter scatterAshik(const AshikParams&, const SurfacePoint&, Rng&);
+
 BackwardResult shadeMirror(const MirrorParams&, const SurfacePoint&, const ShadeOptions&);
 PhotonScatter scatterMirror(const MirrorParams&, const SurfacePoint&, Rng&);
 

@@ -172,6 +172,7 @@ Color evaluate(const MaterialParams& m, const SurfacePoint& sp, const Vec3& toLi
         Overloaded{
             [&](const NormalParams& p) { return evaluateNormal(p, sp, toLight, sourceOmega); },
             [&](const AnisoParams& p) { return evaluateAniso(p, sp, toLight, sourceOmega); },
+            [&](const AshikParams& p) { return evaluateAshik(p, sp, toLight); },
             [&](const FuncParams& p) { return evaluateFunc(p, sp, toLight); },
             [&](const BrtdParams& p) { return evaluateBrtd(p, sp, toLight); },
             // Purely specular, emitting or invisible: nothing for a direct-light sample.
@@ -186,6 +187,7 @@ BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
         Overloaded{
             [&](const NormalParams& p) { return shadeNormal(p, sp, opt, rng); },
             [&](const AnisoParams& p) { return shadeAniso(p, sp, opt, rng); },
+            [&](const AshikParams& p) { return shadeAshik(p, sp, opt, rng); },
             [&](const MirrorParams& p) { return shadeMirror(p, sp, opt); },
             [&](const GlassParams& p) { return shadeGlass(p, sp, opt); },
             [&](const DielectricParams& p) { return shadeDielectric(p, sp); },
@@ -207,6 +209,7 @@ PhotonScatter scatterPhoton(const MaterialParams& m, const SurfacePoint& sp, Rng
         Overloaded{
             [&](const NormalParams& p) { return scatterNormal(p, sp, rng); },
             [&](const AnisoParams& p) { return scatterAniso(p, sp, rng); },
+            [&](const AshikParams& p) { return scatterAshik(p, sp, rng); },
             [&](const MirrorParams& p) { return scatterMirror(p, sp, rng); },
             [&](const GlassParams& p) { return scatterGlass(p, sp, rng); },
             [&](const DielectricParams& p) { return scatterDielectric(p, sp, rng); },
@@ -240,6 +243,7 @@ bool storesPhotons(const MaterialParams& m) {
                 return p.diffuseReflectance.average() > kFtiny ||
                        p.diffuseTransmittance.average() > kFtiny;
             },
+            [](const AshikParams& p) { return p.diffuse.average() > kFtiny; },
             [](const FuncParams& p) {
                 return p.diffuseReflectance.average() > kFtiny ||
                        p.diffuseTransmittance.average() > kFtiny;

@@ -78,6 +78,20 @@ struct AnisoParams {
     Color specularColor, diffuseReflectance, diffuseTransmittance, specularTransmittance;
 };
 
+// ashik2: anisotropic Ashikhmin-Shirley BRDF (RADIANCE ashikhmin.c; Ashikhmin & Shirley
+// 2000). The u orientation is given as for plastic2 (ux uy uz funcfile transform; the
+// evaluated vector arrives in SurfacePoint::uDir). Diffuse and specular colours are the
+// reflectances at normal incidence; Schlick's Fresnel term raises the specular one
+// towards white at grazing view and takes the light's share out of the diffuse part.
+struct AshikParams {
+    std::array<std::string, 3> uExpr;  // ux uy uz expressions
+    std::string funcFile;              // "." for none
+    std::vector<std::string> transform;
+    Color diffuse;   // real args 0-2 (before the pattern)
+    Color specular;  // real args 3-5 (before Fresnel)
+    double uPower = 0, vPower = 0;  // real args 6-7: Phong-like exponents along u and v
+};
+
 struct MirrorParams {
     Color color;
     std::optional<std::string> alternate;  // material for non-source rays ("void": invisible)
@@ -148,13 +162,13 @@ struct PrismParams {
     int redirections = 1;  // prism1: 1; prism2: 2
 };
 
-using MaterialParams = std::variant<NormalParams, AnisoParams, MirrorParams, GlassParams,
-                                    DielectricParams, LightParams, AntimatterParams,
-                                    FuncParams, BrtdParams, PrismParams>;
+using MaterialParams = std::variant<NormalParams, AnisoParams, AshikParams, MirrorParams,
+                                    GlassParams, DielectricParams, LightParams,
+                                    AntimatterParams, FuncParams, BrtdParams, PrismParams>;
 
 // Checks p's arguments (counts were checked by the reader; values here) and derives the
 // constants. Throws InputError at p.loc for bad values and notSupportedYet for mist,
-// BSDF, aBSDF, ashik2, WGMDfunc; InputError for non-material types.
+// BSDF, aBSDF, WGMDfunc; InputError for non-material types.
 MaterialParams makeMaterial(const Primitive& p);
 
 // ---------------------------------------------------------------------------------------
@@ -176,7 +190,7 @@ struct SurfacePoint {
     bool front = true;  // the ray hit the surface's front (RADIANCE: rod > 0)
     bool flat = false;  // planar surface (RADIANCE SP_FLAT: source size widens highlights)
     Color pattern{1, 1, 1};  // pattern colour modulation (r->pcol)
-    Vec3 uDir;          // plastic2/metal2/trans2: evaluated u orientation (world)
+    Vec3 uDir;          // plastic2/metal2/trans2/ashik2: evaluated u orientation (world)
     std::optional<Color> brtdSpecularReflection, brtdSpecularTransmission;  // BRTDfunc
     // plasfunc/metfunc/transfunc/..data: the specular function's value for light from a
     // unit world direction (grey); BRTDfunc: rbrtd gbrtd bbrtd. Null: no such part
@@ -222,7 +236,7 @@ struct MediumChange {
 
 // BRDF/BTDF times |cos(light, normal)| for light arriving from direction `toLight`
 // (unit, pointing away from the surface) at a point seen along sp.dir; RADIANCE's
-// direct-light coefficient (normal.c dirnorm, aniso.c diraniso) divided by the source
+// direct-light coefficient (normal.c dirnorm, aniso.c diraniso, ashikhmin.c) divided by the source
 // solid angle. `sourceOmega` widens highlights as RADIANCE does for flat surfaces.
 // Ideal (mirror-like) components are not included: they come from shadeBackward rays.
 Color evaluate(const MaterialParams& m, const SurfacePoint& sp, const Vec3& toLight,

@@ -37,7 +37,8 @@ size_t funcFileIndex(PrimType t) {
     switch (t) {
     case PrimType::Plastic2:
     case PrimType::Metal2:
-    case PrimType::Trans2: return 3;   // ux uy uz funcfile transform
+    case PrimType::Trans2:
+    case PrimType::Ashik2: return 3;   // ux uy uz funcfile transform
     case PrimType::Plasdata:
     case PrimType::Metdata:
     case PrimType::Transdata: return 2;  // func datafile funcfile x1 .. xN transform
@@ -101,7 +102,8 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
         switch (p.type) {
         case PrimType::Plastic2:
         case PrimType::Metal2:
-        case PrimType::Trans2: r.kind = Kind::Aniso; break;
+        case PrimType::Trans2:
+        case PrimType::Ashik2: r.kind = Kind::Aniso; break;
         case PrimType::Plasfunc:
         case PrimType::Metfunc:
         case PrimType::Transfunc: r.kind = Kind::Func; break;

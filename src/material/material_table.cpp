@@ -17,6 +17,7 @@ bool isLightType(PrimType t) {
 
 bool takesDirect(const MaterialParams& m) {
     return std::holds_alternative<NormalParams>(m) || std::holds_alternative<AnisoParams>(m) ||
+           std::holds_alternative<AshikParams>(m) ||
            std::holds_alternative<FuncParams>(m) || std::holds_alternative<BrtdParams>(m);
 }
 
@@ -25,6 +26,7 @@ bool opaqueBackAbsorbs(const MaterialParams& m) {
     // material absorbs unless -bv; trans* is lit from both sides.
     if (auto* p = std::get_if<NormalParams>(&m)) return p->kind != NormalParams::Kind::Trans;
     if (auto* p = std::get_if<AnisoParams>(&m)) return p->kind != AnisoParams::Kind::Trans2;
+    if (std::holds_alternative<AshikParams>(m)) return true;  // ashik2 is opaque
     if (auto* p = std::get_if<FuncParams>(&m))
         return p->type != PrimType::Transfunc && p->type != PrimType::Transdata;
     return false;

@@ -106,6 +106,21 @@ AnisoParams makeAniso(const Primitive& p) {
     return m;
 }
 
+AshikParams makeAshik(const Primitive& p) {
+    AshikParams m;
+    for (int i = 0; i < 3; ++i) m.uExpr[i] = p.sargs[i];
+    m.funcFile = p.sargs[3];
+    m.transform.assign(p.sargs.begin() + 4, p.sargs.end());
+    m.diffuse = rgb(p, 0);
+    m.specular = rgb(p, 3);
+    m.uPower = p.rargs[6];
+    m.vPower = p.rargs[7];
+    // Deliberately stricter than ashikhmin.c, which takes any value: a negative exponent
+    // makes the lobe's normalisation sqrt((nu + 1)(nv + 1)) meaningless or NaN.
+    if (!(m.uPower >= 0) || !(m.vPower >= 0)) fail(p, "u-power and v-power must not be negative");
+    return m;
+}
+
 GlassParams makeGlass(const Primitive& p) {
     GlassParams m;
     m.transmission = rgb(p, 0);
@@ -206,6 +221,8 @@ MaterialParams makeMaterial(const Primitive& p) {
     case PrimType::Metal2:
     case PrimType::Trans2:
         return makeAniso(p);
+    case PrimType::Ashik2:
+        return makeAshik(p);
     case PrimType::Mirror: {
         MirrorParams m{rgb(p, 0), alternateOf(p), {}};
         const detail::Component c{ScatterKind::SpecularReflection, m.color};
@@ -240,7 +257,6 @@ MaterialParams makeMaterial(const Primitive& p) {
     case PrimType::Mist:
     case PrimType::BSDF:
     case PrimType::ABSDF:
-    case PrimType::Ashik2:
     case PrimType::WGMDfunc:
         throw notSupportedYet(p.loc, std::string(primTypeName(p.type)) + " material");
     default:

@@ -142,7 +142,6 @@ TEST(MaterialParams, NotSupportedYet) {
         {PrimType::Mist, {}, {}, "mist material"},
         {PrimType::BSDF, {}, {"0", "f.xml", "0", "0", "1", "."}, "BSDF material"},
         {PrimType::ABSDF, {}, {"f.xml", "0", "0", "1", "."}, "aBSDF material"},
-        {PrimType::Ashik2, {.5, .5, .5, .1, .1, .1, 10, 10}, {"1", "0", "0", "."}, "ashik2 material"},
         {PrimType::WGMDfunc, {1, 1, 1, 1, 1, 1, 1, 1, 1},
          {"0", ".1", ".1", ".1", "0", ".1", ".1", ".1", "1", "0", "0", "."}, "WGMDfunc material"},
     };

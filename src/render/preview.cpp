@@ -28,6 +28,7 @@ Pixel previewColour(const Scene& scene, int32_t modifier) {
         }
         case PrimType::Plastic: case PrimType::Metal: case PrimType::Trans:
         case PrimType::Plastic2: case PrimType::Metal2: case PrimType::Trans2:
+        case PrimType::Ashik2:
         case PrimType::Mirror: case PrimType::Glass: case PrimType::Dielectric:
         case PrimType::Interface: case PrimType::Plasfunc: case PrimType::Metfunc:
         case PrimType::Transfunc:

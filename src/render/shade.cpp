@@ -73,7 +73,8 @@ void Renderer::Context::applyMaterialCalc(int32_t material, const Hit& hit, cons
     if (!impl.materialCalc.uses(material)) return;
     materialCalc.setHit(material, patternPoint(hit, dir), sp.normal, sp.pattern);
     const material::MaterialParams& p = *impl.material(material).params;
-    if (std::holds_alternative<material::AnisoParams>(p)) {
+    if (std::holds_alternative<material::AnisoParams>(p) ||
+        std::holds_alternative<material::AshikParams>(p)) {
         sp.uDir = materialCalc.anisoU();
     } else if (std::holds_alternative<material::BrtdParams>(p)) {
         Color refl, trans;

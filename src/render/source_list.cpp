@@ -75,6 +75,7 @@ ModifierSet passableModifiers(const Scene& scene, const ShapeSet& shapes) {
         case PrimType::Metal:
         case PrimType::Plastic2:
         case PrimType::Metal2:
+        case PrimType::Ashik2:
         case PrimType::Plasfunc:
         case PrimType::Metfunc:
         case PrimType::Plasdata:

@@ -10,17 +10,17 @@ TESTS="${RP_SHARED_DIR:?RP_SHARED_DIR not set}/radiance-tests"
 fail=0
 bad() { echo "FAIL: $*"; fail=1; }
 
-out=$("$TESTS/compare" "$BIN" glass mirror patterns tfunc trans trans2 mesh dielectric prism1 prism2 2>&1)
+out=$("$TESTS/compare" "$BIN" glass mirror patterns tfunc trans trans2 mesh dielectric prism1 prism2 inst 2>&1)
 echo "$out"
 views=$(echo "$out" | grep -c '^[a-z0-9]*\.v[0-9]')
-[ "$views" -eq 20 ] || bad "expected 20 views, got $views"
+[ "$views" -eq 22 ] || bad "expected 22 views, got $views"
 echo "$out" | awk '/^[a-z0-9]*\.v[0-9]/ { if ($2 == "-" || $2 < 0.98) print }' | while read -r line; do
     echo "FAIL: below 98 %: $line"
 done | grep . && fail=1
 
 # Later features: one line, naming what is missing, from oconv (geometry) or from
 # rtrace (materials, which load when rendering).
-declare -A needs=([inst]=ashik2 [combined]=mist [mixtex]=BSDF [mist]=mist)
+declare -A needs=([combined]=mist [mixtex]=BSDF [mist]=mist)
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 for n in "${!needs[@]}"; do
     mapfile -t files < "$TESTS/cases/$n.files"

@@ -1,8 +1,8 @@
 #!/bin/bash
 # Octree instances against RADIANCE: the inst model of ../shared/radiance-tests (RADIANCE's
 # frozen porsche.octf placed twice, once keeping its own materials, once overridden by the
-# instance's modifier) with a plastic for the ashik2 that is not supported yet
-# (tests/data/instance/README.md). Each view must match RADIANCE 5.4's answer by the
+# instance's modifier) with a plastic in place of the ashik2 (radiance_scenes.sh runs the
+# model with ashik2; tests/data/instance/README.md). Each view must match RADIANCE 5.4's answer by the
 # README rule; a missing instance file must stop oconv or rtrace with one line.
 set -u
 BIN="${RP_BIN:?RP_BIN not set}"
