@@ -25,6 +25,7 @@
 #include "pmap/photon_records.h"
 #include "util/bulk_memory.h"
 #include "util/error.h"
+#include "util/file_write.h"
 
 namespace rp::pmap {
 
@@ -184,41 +185,18 @@ void PhotonMap::save(const std::string& path, const std::string& commandLine,
     if (!overwrite && fs::exists(path, ec))
         throw InputError(loc, "photon map file exists; use -fo to overwrite it");
 
-    // Temporary file beside the target so the final rename stays on one file system.
-    const fs::path target(path);
-    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    std::random_device rd;
-    std::string tmp;
-    int fd = -1;
-    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
-        tmp = (dir / fmt::format(".{}.{:08x}.tmp", target.filename().string(), rd())).string();
-        fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0666);  // umask applies
-        if (fd < 0 && errno != EEXIST)
-            throw InputError(
-                loc, fmt::format("can't create temporary file {}: {}", tmp, std::strerror(errno)));
-    }
-    if (fd < 0) throw InputError(loc, "can't create a temporary file beside it");
-    ::close(fd);
-
-    struct RemoveOnFailure {
-        std::string file;
-        bool armed = true;
-        ~RemoveOnFailure() {
-            if (armed) std::remove(file.c_str());
-        }
-    } guard{tmp};
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw InputError(loc, "can't write temporary file " + tmp);
+    // Written completely or not at all, and a killed run leaves no temporary file.
+    AtomicFile file(path);
+    AtomicFileBuf buf(file);
+    std::ostream out(&buf);
+    out.exceptions(std::ios::badbit);
+    try {
         write(out, commandLine);
         out.flush();
-        if (!out) throw InputError(loc, "error writing photon map (disk full?)");
+    } catch (const std::ios_base::failure&) {
+        throw InputError(loc, "error writing photon map (disk full?)");
     }
-    if (!overwrite && fs::exists(path, ec))
-        throw InputError(loc, "photon map file exists; use -fo to overwrite it");
-    if (std::rename(tmp.c_str(), path.c_str()) != 0)
-        throw InputError(loc, fmt::format("can't rename {} to it: {}", tmp, std::strerror(errno)));
-    guard.armed = false;
+    file.commit(overwrite);
 }
 
 Photon decodePhoton(const unsigned char* b) {

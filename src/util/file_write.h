@@ -1,15 +1,78 @@
-// Writing output files safely: data goes to a temporary file in the target folder and is
-// renamed over the target only when complete (STYLE.md, Errors). Used by pictures, PNG
-// previews, scene files and meshes; nothing here knows about file formats.
+// Writing output files safely: a file is either written completely or not at all
+// (STYLE.md, Errors). Its data goes to an unnamed file in the target's folder (Linux
+// O_TMPFILE, so a killed run leaves nothing behind; a hidden temporary name where the
+// file system lacks it), is synced to the disk, and only then takes the target's name.
+// Used by pictures, PNG previews, scene files, meshes and photon maps; nothing here
+// knows about file formats.
 #pragma once
 
+#include <cstddef>
+#include <streambuf>
 #include <string>
+#include <vector>
 
 namespace rp {
 
-// Writes `data` to `path` via a temporary sibling file and rename(2). Throws InputError
-// naming `path` when the folder is not writable or the disk fills; the temporary file is
-// removed on failure.
+class AtomicFile {
+public:
+    // Opens the unnamed file beside `path`. Throws InputError naming `path` when the
+    // folder is not writable.
+    explicit AtomicFile(std::string path);
+    // Discards the data unless commit() succeeded.
+    ~AtomicFile();
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+
+    // Whether the data has no name until commit() (O_TMPFILE): then a killed run leaves
+    // nothing at all.
+    bool unnamed() const { return tmpName_.empty() && !committed_; }
+    // Writes all of data; throws InputError on a write error (disk full).
+    void write(const void* data, size_t size);
+    // Syncs the data, gives it the target's name (replacing an existing file unless
+    // `replace` is false, when an existing target is an InputError) and syncs the folder.
+    void commit(bool replace = true);
+
+private:
+    std::string path_;
+    std::string tmpName_;  // only where O_TMPFILE was not available
+    int fd_ = -1;
+    bool committed_ = false;
+};
+
+// A stream buffer writing to an AtomicFile (std::ostream out(&buf)); flush() it before
+// committing. Write errors surface as InputError from the stream's operations.
+class AtomicFileBuf : public std::streambuf {
+public:
+    explicit AtomicFileBuf(AtomicFile& file) : file_(file), buffer_(1 << 16) {
+        setp(buffer_.data(), buffer_.data() + buffer_.size());
+    }
+    // Writes what is buffered.
+    void flush() {
+        file_.write(pbase(), size_t(pptr() - pbase()));
+        setp(buffer_.data(), buffer_.data() + buffer_.size());
+    }
+
+protected:
+    int_type overflow(int_type c) override {
+        flush();
+        if (!traits_type::eq_int_type(c, traits_type::eof())) {
+            *pptr() = traits_type::to_char_type(c);
+            pbump(1);
+        }
+        return traits_type::not_eof(c);
+    }
+    int sync() override {
+        flush();
+        return 0;
+    }
+
+private:
+    AtomicFile& file_;
+    std::vector<char> buffer_;
+};
+
+// Writes `data` to `path` as an AtomicFile. Throws InputError naming `path` when the
+// folder is not writable or the disk fills.
 void writeFileAtomically(const std::string& path, const std::string& data);
 
 }  // namespace rp
