@@ -85,19 +85,14 @@ bool intersectCone(const ConeShape& c, const Vec3& o, const Vec3& d, double tmin
     return smallestRoot(qa, qb, qc, tmin, tmax, onSegment, t);
 }
 
-SurfacePoint coneSurface(const ConeShape& c, const Vec3& p) {
+Vec3 coneNormal(const ConeShape& c, const Vec3& p) {
     Vec3 w = p - c.p0;
-    double h = dot(w, c.axis);
-    Vec3 radial = w - c.axis * h;
+    Vec3 radial = w - c.axis * dot(w, c.axis);
     double rl = length(radial);
     Vec3 rho = rl > 0 ? radial / rl : c.e1;  // at a cone's apex any radial direction
-    SurfacePoint sp;
     // Gradient of |q| - k h: outward normal tilts back along the axis as radius grows.
     Vec3 n = normalize(rho - c.axis * c.slope);
-    sp.normal = c.inward ? -n : n;
-    sp.u = turnFraction(rho, c.e1, c.e2);
-    sp.v = std::fmax(0.0, std::fmin(1.0, h / c.length));
-    return sp;
+    return c.inward ? -n : n;
 }
 
 Bounds3 diskBounds(const Vec3& centre, const Vec3& n, double r) {

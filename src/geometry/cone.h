@@ -31,7 +31,8 @@ bool makeCone(const Primitive& prim, int32_t primIndex, ConeShape& shape);
 bool intersectCone(const ConeShape& c, const Vec3& o, const Vec3& d, double tmin,
                    double tmax, double& t);
 
-SurfacePoint coneSurface(const ConeShape& c, const Vec3& p);
+// The unit normal at p (outward for cone and cylinder, inward for cup and tube).
+Vec3 coneNormal(const ConeShape& c, const Vec3& p);
 
 Bounds3 coneBounds(const ConeShape& c);
 

@@ -54,16 +54,6 @@ bool intersectRing(const RingShape& r, const Vec3& o, const Vec3& d, double tmin
     return true;
 }
 
-SurfacePoint ringSurface(const RingShape& r, const Vec3& p) {
-    Vec3 rel = p - r.centre;
-    rel -= r.normal * dot(rel, r.normal);
-    SurfacePoint sp;
-    sp.normal = r.normal;
-    sp.u = turnFraction(rel, r.e1, r.e2);
-    sp.v = (length(rel) - r.r0) / (r.r1 - r.r0);
-    return sp;
-}
-
 Bounds3 ringBounds(const RingShape& r) { return diskBounds(r.centre, r.normal, r.r1); }
 
 }  // namespace rp

@@ -25,8 +25,6 @@ bool makeRing(const Primitive& prim, int32_t primIndex, RingShape& shape);
 bool intersectRing(const RingShape& r, const Vec3& o, const Vec3& d, double tmin,
                    double tmax, double& t);
 
-SurfacePoint ringSurface(const RingShape& r, const Vec3& p);
-
 Bounds3 ringBounds(const RingShape& r);
 
 }  // namespace rp

@@ -232,7 +232,7 @@ Hit shapeHit(const ShapeSet& shapes, const std::vector<Inset>& insets, const Ray
     }
     case ShapeKind::Cone: {
         const ConeShape& c = shapes.cones[index];
-        h.normal = coneSurface(c, h.point).normal;
+        h.normal = coneNormal(c, h.point);
         h.prim = c.prim;
         h.modifier = c.modifier;
         h.offset = kDoubleOffsetRel * std::fmax(scale, c.length + std::fmax(c.r0, c.r1));
@@ -240,7 +240,7 @@ Hit shapeHit(const ShapeSet& shapes, const std::vector<Inset>& insets, const Ray
     }
     case ShapeKind::Ring: {
         const RingShape& r = shapes.rings[index];
-        h.normal = ringSurface(r, h.point).normal;
+        h.normal = r.normal;
         h.prim = r.prim;
         h.modifier = r.modifier;
         h.offset = kDoubleOffsetRel * fastMax(scale, r.r1);

@@ -69,17 +69,6 @@ Vec3 sphereNormal(const SphereShape& s, const Vec3& p) {
     return s.inward ? -n : n;
 }
 
-SurfacePoint sphereSurface(const SphereShape& s, const Vec3& p) {
-    Vec3 n = (p - s.center) / s.radius;
-    n = normalize(n);
-    SurfacePoint sp;
-    sp.normal = s.inward ? -n : n;
-    double phi = std::atan2(n.y, n.x) / (2 * kPi);
-    sp.u = phi < 0 ? phi + 1 : phi;
-    sp.v = std::acos(std::fmax(-1.0, std::fmin(1.0, n.z))) / kPi;
-    return sp;
-}
-
 Bounds3 sphereBounds(const SphereShape& s) {
     Vec3 r{s.radius, s.radius, s.radius};
     return Bounds3{s.center - r, s.center + r};

@@ -25,9 +25,7 @@ bool makeSphere(const Primitive& prim, int32_t primIndex, SphereShape& shape);
 bool intersectSphere(const SphereShape& s, const Vec3& o, const Vec3& d, double tmin,
                      double tmax, double& t);
 
-SurfacePoint sphereSurface(const SphereShape& s, const Vec3& p);
-// sphereSurface's normal alone (the same bits), for callers that need no (u, v): the
-// photon tracer, which would otherwise pay an atan2 and an acos per sphere hit.
+// The unit normal at p (outward for a sphere, inward for a bubble).
 Vec3 sphereNormal(const SphereShape& s, const Vec3& p);
 
 Bounds3 sphereBounds(const SphereShape& s);

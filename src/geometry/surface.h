@@ -1,6 +1,4 @@
-// Small helpers shared by the analytic shapes (sphere.h, cone.h, ring.h): the local
-// surface record they return and the angle about a frame (orthonormalFrame, vec.h) used
-// for their u coordinate.
+// Small helpers shared by the analytic shapes (sphere.h, cone.h, ring.h).
 #pragma once
 
 #include <cmath>
@@ -8,18 +6,6 @@
 #include "util/vec.h"
 
 namespace rp {
-
-// Normal and (u, v) at a point of a shape; see Hit in ray.h for what u, v mean.
-struct SurfacePoint {
-    Vec3 normal;
-    double u = 0, v = 0;
-};
-
-// Angle of radial vector r about the frame, as a fraction of a turn in [0, 1).
-inline double turnFraction(const Vec3& r, const Vec3& e1, const Vec3& e2) {
-    double f = std::atan2(dot(r, e2), dot(r, e1)) / (2 * kPi);
-    return f < 0 ? f + 1 : f;
-}
 
 // Smallest root of a*t^2 + 2*bHalf*t + c in (tmin, tmax) accepted by `keep`, using the
 // cancellation-free form of the quadratic formula. Returns false if none.

@@ -224,9 +224,6 @@ std::optional<DirectSource> prismImage(const SourceList& list, size_t s, size_t 
     at.front = oldDot < 0;
     at.prim = m.prim;
     at.modifier = m.modifier;
-    Vec3 rel = centre - m.region.origin;
-    at.u = dot(rel, m.region.uAxis);
-    at.v = dot(rel, m.region.vAxis);
     at.offset = 1e-6 * std::fmax(1.0, maxAbs(centre));
     material::Redirection r = redirect(at, old, k, Vec3{});
     if (!r.ok || r.coef <= kFtiny) return std::nullopt;  // insignificant

@@ -191,7 +191,7 @@ void sampleCone(const ConeShape& c, const Vec3& from, const DirectOptions& opt, 
             double rad = c.r0 + (c.r1 - c.r0) * v;
             Vec3 radialDir = e1 * std::cos(phi) + e2 * std::sin(phi);
             Vec3 p = c.p0 + c.axis * (v * c.length) + radialDir * rad;
-            addAreaSample(from, p, coneSurface(c, p).normal, area, cosFactor, out);
+            addAreaSample(from, p, coneNormal(c, p), area, cosFactor, out);
         }
 }
 
@@ -280,41 +280,35 @@ Hit sourceSurfaceHit(const DirectSource& src, const ShapeSet& shapes,
     h.prim = src.light.prim;
     double scale = maxAbs(p);
     size_t i = size_t(src.light.shapeIndex);
-    SurfacePoint sp;
+    // Hit::u, v stay 0: RADIANCE's uv, which only meshes have.
     switch (src.light.shape) {
     case light::EmitterShape::Polygon: {
         const PolygonShape& poly = shapes.polygons[i];
-        Vec3 rel = p - poly.origin;
-        sp.normal = poly.normal;
-        sp.u = dot(rel, poly.uAxis);
-        sp.v = dot(rel, cross(poly.normal, poly.uAxis));
+        h.normal = poly.normal;
         h.modifier = poly.modifier;
         h.offset = kFloatOffsetRel * std::fmax(scale, poly.scale);
         (void)regions;
         break;
     }
     case light::EmitterShape::Sphere:
-        sp = sphereSurface(shapes.spheres[i], p);
+        h.normal = sphereNormal(shapes.spheres[i], p);
         h.modifier = shapes.spheres[i].modifier;
         h.offset = kDoubleOffsetRel * std::fmax(scale, shapes.spheres[i].radius);
         break;
     case light::EmitterShape::Cone: {
         const ConeShape& c = shapes.cones[i];
-        sp = coneSurface(c, p);
+        h.normal = coneNormal(c, p);
         h.modifier = c.modifier;
         h.offset = kDoubleOffsetRel * std::fmax(scale, c.length + std::fmax(c.r0, c.r1));
         break;
     }
     case light::EmitterShape::Ring:
-        sp = ringSurface(shapes.rings[i], p);
+        h.normal = shapes.rings[i].normal;
         h.modifier = shapes.rings[i].modifier;
         h.offset = kDoubleOffsetRel * std::fmax(scale, shapes.rings[i].r1);
         break;
     case light::EmitterShape::Distant: h.modifier = shapes.sources[i].modifier; break;
     }
-    h.normal = sp.normal;
-    h.u = sp.u;
-    h.v = sp.v;
     h.front = dot(dir, h.normal) < 0;
     return h;
 }
@@ -326,9 +320,6 @@ Hit relaySurfaceHit(const RelayPlane& m, const Vec3& p, const Vec3& dir, double 
     h.prim = m.prim;
     h.modifier = m.modifier;
     h.normal = m.region.normal;
-    Vec3 rel = p - m.region.origin;
-    h.u = dot(rel, m.region.uAxis);
-    h.v = dot(rel, m.region.vAxis);
     h.front = dot(dir, h.normal) < 0;
     h.offset = kFloatOffsetRel * maxAbs(p);
     return h;
