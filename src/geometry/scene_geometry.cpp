@@ -144,9 +144,7 @@ SceneGeometry::SceneGeometry(const Scene& scene)
     std::vector<AccelObject> objects;
     for (const ObjectGeometry& og : objects_) objects.push_back({og.shapes.get(), og.mesh.get()});
     std::vector<AccelPlacement> placements;
-    for (const Placement& p : placements_)
-        placements.push_back({uint32_t(p.object), p.xf.forward, p.xf.backward, p.fixed,
-                              p.modifier, p.materialBase});
+    for (const Placement& p : placements_) placements.push_back(p.where);
     accel_ = std::make_unique<EmbreeAccel>(*shapes_, std::move(objects), std::move(placements));
 }
 
@@ -166,32 +164,32 @@ void SceneGeometry::place(const Scene& scene, int32_t begin, int32_t end, const 
             throw InputError(p.loc, "instance '" + p.name + "': instances nested more than " +
                                         std::to_string(kMaxInstanceDepth) + " deep");
         Placement pl;
-        pl.object = p.placed;
-        pl.xf = TransformPair::of(outer * parseTransform(p.sargs, 1, p.loc));
+        pl.where.object = uint32_t(p.placed);
+        pl.where.xf = TransformPair::of(outer * parseTransform(p.sargs, 1, p.loc));
         const SceneObject& so = scene.objects[size_t(p.placed)];
         std::optional<TransformPair> outerSpace;
         if (!outer.isIdentity()) outerSpace = TransformPair::of(outer);
         if (fixedBy) {
-            pl.fixed = true;
+            pl.where.fixed = true;
             pl.prim = fixedBy->prim;
-            pl.modifier = fixedBy->modifier;
+            pl.where.fixedModifier = fixedBy->where.fixedModifier;
             pl.patternSpace = fixedBy->patternSpace;
         } else if (p.modifier != kVoid) {
-            pl.fixed = true;
+            pl.where.fixed = true;
             pl.prim = i;
-            pl.modifier = p.modifier;
+            pl.where.fixedModifier = p.modifier;
             pl.patternSpace = outerSpace;
         } else {
             pl.prim = i;
-            pl.patternSpace = pl.xf;
+            pl.patternSpace = pl.where.xf;
         }
-        pl.materialBase = so.firstPrim;
+        pl.where.meshMaterialBase = so.firstPrim;
         const ObjectGeometry& og = objects_[size_t(p.placed)];
-        bounds_.extend(cubeBoundsIn(og.cubeOrigin, og.cubeSize, pl.xf.forward));
+        bounds_.extend(cubeBoundsIn(og.cubeOrigin, og.cubeSize, pl.where.xf.forward));
         placements_.push_back(pl);
         if (so.kind == SceneObject::Kind::Octree) {
             const Placement copy = placements_.back();  // the vector may grow below
-            place(scene, so.firstPrim, so.endPrim, copy.xf.forward, copy.fixed ? &copy : nullptr,
+            place(scene, so.firstPrim, so.endPrim, copy.where.xf.forward, copy.where.fixed ? &copy : nullptr,
                   depth + 1);
         }
     }
@@ -312,29 +310,24 @@ Hit meshHit(const MeshData& m, const Ray& local, const AccelHit& a, double minOf
 // object's float rounding and that of the world coordinates the next ray starts from.
 Hit SceneGeometry::completePlacedHit(const Ray& ray, const AccelHit& a) const {
     const Placement& pl = placements_[size_t(a.placement)];
-    const ObjectGeometry& og = objects_[size_t(pl.object)];
-    const Transform& fwd = pl.xf.forward;
-    const Ray local{pl.xf.backward.mapPoint(ray.origin), pl.xf.backward.mapDirection(ray.dir), ray.tmax};
+    const ObjectGeometry& og = objects_[size_t(pl.where.object)];
+    const Transform& fwd = pl.where.xf.forward;
+    const Transform& back = pl.where.xf.backward;
+    const Ray local{back.mapPoint(ray.origin), back.mapDirection(ray.dir), ray.tmax};
     // The next ray starts from world coordinates rounded to float: the point must be
     // inset and offset by that rounding too (in object units).
     const double minOffset = kFloatOffsetRel * maxAbs(ray.origin + ray.dir * a.t) / fwd.scale;
     Hit h;
     Vec3 shading;
-    int32_t modifier = kVoid;
     if (a.kind == ShapeKind::Mesh) {
         h = meshHit<TriangleInset>(*og.mesh, local, a, minOffset, shading);
         h.prim = pl.prim;
-        const int32_t m = og.mesh->materialOf(a.index);
-        modifier = m == kVoid ? kVoid : pl.materialBase + m;
+        h.modifier = pl.where.meshModifier(*og.mesh, a.index);
     } else {
         h = shapeHit(*og.shapes, og.insets, local, a, minOffset);
-        modifier = h.modifier;
+        h.modifier = pl.where.modifierOf(h.modifier);
+        if (pl.where.fixed) h.prim = pl.prim;
     }
-    if (pl.fixed) {
-        h.prim = pl.prim;
-        modifier = pl.modifier;
-    }
-    h.modifier = modifier;
     const double invScale = 1.0 / fwd.scale;
     h.normal = fwd.mapDirection(h.normal) * invScale;
     if (lengthSquared(shading) > 0) {

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "geometry/accel/embree_accel.h"
 #include "geometry/ray.h"
 #include "geometry/shapes.h"
 #include "scene/primitive.h"
@@ -59,21 +60,6 @@ public:
     size_t triangleCount() const { return shapes_->triangles.size(); }
     size_t placementCount() const { return placements_.size(); }
 
-    // One placed copy of an object and how the surfaces inside report themselves
-    // (RADIANCE o_instance.c, o_mesh.c).
-    struct Placement {
-        int32_t object = 0;  // Scene::objects index
-        TransformPair xf;    // object <-> world
-        // `fixed`: every surface inside reports prim/modifier: an instance with a modifier
-        // of its own (or one inside such an instance), or a mesh with one.
-        bool fixed = false;
-        int32_t prim = -1;      // fixed: the primitive reported; mesh: the mesh primitive
-        int32_t modifier = kVoid;
-        int32_t materialBase = 0;  // mesh: Scene index of its first material
-        // RADIANCE ray.rox: the object space function files see; none for world space.
-        std::optional<TransformPair> patternSpace;
-    };
-
     // Per triangle, what moving a hit point inside it needs (scene_geometry.cpp
     // insetIntoTriangle): the in-plane unit inward normal of each edge and the smallest
     // height of a vertex over its opposite edge. Computed once for polygons because the
@@ -85,12 +71,21 @@ public:
     };
 
 private:
+    // One placed copy of an object and how the surfaces inside report themselves
+    // (RADIANCE o_instance.c, o_mesh.c). With where.fixed every surface inside reports
+    // `prim` and where.fixedModifier: an instance with a modifier of its own (or one
+    // inside such an instance), or a mesh with one.
+    struct Placement {
+        AccelPlacement where;  // object (Scene::objects index), transforms, modifier rule
+        int32_t prim = -1;     // fixed: the primitive reported; mesh: the mesh primitive
+        // RADIANCE ray.rox: the object space function files see; none for world space.
+        std::optional<TransformPair> patternSpace;
+    };
     struct ObjectGeometry;
     Hit completeHit(const Ray& ray, const AccelHit& a) const;
     Hit completePlacedHit(const Ray& ray, const AccelHit& a) const;
     void place(const Scene& scene, int32_t begin, int32_t end, const Transform& outer,
                const Placement* fixedBy, int depth);
-
 
     std::unique_ptr<ShapeSet> shapes_;  // heap: the accelerator points into it
     std::vector<TriangleInset> insets_;  // indexed like shapes_->triangles

@@ -135,25 +135,25 @@ private:
         const bool mesh = p.type == PrimType::Mesh;
         const SourceLoc loc = p.loc;
         const std::string header = std::string(primTypeName(p.type)) + " '" + p.name + "': ";
-        const std::optional<std::string> found = findPlacedFile(p, dirs_);
-        const std::string key = (mesh ? "m:" : "o:") + *found;
+        const std::string found = findPlacedFile(p, dirs_);
+        const std::string key = (mesh ? "m:" : "o:") + found;
         for (const auto& open : loading_)
-            if (open == *found)
-                throw InputError(loc, header + "octree '" + *found + "' places itself");
+            if (open == found)
+                throw InputError(loc, header + "octree '" + found + "' places itself");
         if (auto it = loaded_.find(key); it != loaded_.end()) return it->second;
 
         SceneObject object;
         object.kind = mesh ? SceneObject::Kind::Mesh : SceneObject::Kind::Octree;
-        object.path = *found;
+        object.path = found;
         Scene contents;
         try {
             if (mesh) {
-                auto data = std::make_shared<MeshData>(readMeshFile(*found));
+                auto data = std::make_shared<MeshData>(readMeshFile(found));
                 contents = data->materials;
                 object.mesh = std::move(data);
-                contents.inputs.push_back({*found, fileMtime(*found)});
+                contents.inputs.push_back({found, fileMtime(found)});
             } else {
-                contents = loadOctree(*found);
+                contents = loadOctree(found);
             }
         } catch (const InputError& e) {
             // Where the file was named, then what is wrong with it.
@@ -171,7 +171,7 @@ private:
         scene_.objects.push_back(std::move(object));
         loaded_[key] = index;
         if (!mesh) {
-            loading_.push_back(*found);
+            loading_.push_back(found);
             placeAll(scene_.objects[size_t(index)].firstPrim, scene_.objects[size_t(index)].endPrim);
             loading_.pop_back();
         }

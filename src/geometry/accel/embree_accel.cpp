@@ -71,8 +71,8 @@ inline const AccelPlacement& placementOf(const QueryContext& ctx, unsigned inst)
     if (inst == RTC_INVALID_GEOMETRY_ID) return {ctx.org, ctx.dir};
     if (inst != ctx.localInst) {
         const AccelPlacement& p = placementOf(ctx, inst);
-        ctx.localOrg = p.toObject.mapPoint(ctx.org);
-        ctx.localDir = p.toObject.mapDirection(ctx.dir);
+        ctx.localOrg = p.xf.backward.mapPoint(ctx.org);
+        ctx.localDir = p.xf.backward.mapDirection(ctx.dir);
         ctx.localInst = inst;
     }
     return {ctx.localOrg, ctx.localDir};
@@ -86,10 +86,7 @@ inline const AccelPlacement& placementOf(const QueryContext& ctx, unsigned inst)
 // Whether the skip set passes through a surface with modifier `own` inside `inst`.
 inline bool skipped(const QueryContext& ctx, unsigned inst, int32_t own) {
     if (!ctx.skip) return false;
-    if (inst != RTC_INVALID_GEOMETRY_ID) {
-        const AccelPlacement& p = placementOf(ctx, inst);
-        if (p.fixed) own = p.fixedModifier;
-    }
+    if (inst != RTC_INVALID_GEOMETRY_ID) own = placementOf(ctx, inst).modifierOf(own);
     return ctx.skip->contains(own);
 }
 
@@ -128,9 +125,7 @@ inline bool validMeshHit(QueryContext& ctx, unsigned inst, uint32_t tri, double&
 
 inline int32_t meshModifier(const QueryContext& ctx, unsigned inst, uint32_t tri) {
     const AccelPlacement& p = placementOf(ctx, inst);
-    if (p.fixed) return p.fixedModifier;
-    int32_t m = (*ctx.objects)[p.object].mesh->materialOf(tri);
-    return m == kVoid ? kVoid : p.meshMaterialBase + m;
+    return p.meshModifier(*(*ctx.objects)[p.object].mesh, tri);
 }
 
 void contextFilter(const RTCFilterFunctionNArguments* args) {
@@ -402,7 +397,7 @@ struct EmbreeAccel::Impl {
             rtcSetGeometryTimeStepCount(g, 1);
             float xfm[12];  // 3x4, column-major: the linear part's columns, then the translation
             for (int c = 0; c < 4; ++c)
-                for (int r = 0; r < 3; ++r) xfm[3 * c + r] = float(p.toWorld.m[size_t(r)][size_t(c)]);
+                for (int r = 0; r < 3; ++r) xfm[3 * c + r] = float(p.xf.forward.m[size_t(r)][size_t(c)]);
             rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
             attach(scene, g, kFirstPlacement + unsigned(i));
         }

@@ -24,15 +24,23 @@ struct AccelObject {
     const MeshData* mesh = nullptr;    // a mesh's triangles (shared with Embree, not copied)
 };
 
-// One placed copy. The modifier fields serve the per-query skip sets: the modifier a
-// surface inside reports is fixedModifier when `fixed`, else the shape's own (octree) or
-// meshMaterialBase + the triangle's material (mesh; kVoid where it has none).
+// One placed copy of an object, and the modifier its surfaces report (for the per-query
+// skip sets here, for hit records in SceneGeometry): fixedModifier when `fixed`, else the
+// shape's own (octree) or meshMaterialBase + the triangle's material (mesh; kVoid where
+// it has none).
 struct AccelPlacement {
     uint32_t object = 0;  // index into the objects given
-    Transform toWorld, toObject;
+    TransformPair xf;     // object <-> world
     bool fixed = false;
     int32_t fixedModifier = kVoid;
     int32_t meshMaterialBase = 0;
+
+    int32_t modifierOf(int32_t own) const { return fixed ? fixedModifier : own; }
+    int32_t meshModifier(const MeshData& m, size_t triangle) const {
+        if (fixed) return fixedModifier;
+        const int32_t mat = m.materialOf(triangle);
+        return mat == kVoid ? kVoid : meshMaterialBase + mat;
+    }
 };
 
 struct AccelHit {
