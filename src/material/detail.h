@@ -123,6 +123,11 @@ Color evaluateBrtd(const BrtdParams&, const SurfacePoint&, const Vec3&);
 BackwardResult shadeBrtd(const BrtdParams&, const SurfacePoint&);
 PhotonScatter scatterBrtd(const BrtdParams&, const SurfacePoint&, Rng&);
 
+WgmdParams makeWgmd(const Primitive&);
+Color evaluateWgmd(const WgmdParams&, const SurfacePoint&, const Vec3&, double);
+BackwardResult shadeWgmd(const WgmdParams&, const SurfacePoint&, const ShadeOptions&, Rng&);
+PhotonScatter scatterWgmd(const WgmdParams&, const SurfacePoint&, Rng&);
+
 BackwardResult shadeLight(const LightParams&, const SurfacePoint&);
 
 BackwardResult shadePrism(const PrismParams&, const SurfacePoint&);

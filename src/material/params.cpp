@@ -254,10 +254,11 @@ MaterialParams makeMaterial(const Primitive& p) {
     case PrimType::Prism2:
         // The expressions and the function file are checked by MaterialCalc at load.
         return PrismParams{p.type == PrimType::Prism2 ? 2 : 1};
+    case PrimType::WGMDfunc:
+        return detail::makeWgmd(p);  // wgmd.cpp; expressions and modifiers: MaterialCalc
     case PrimType::Mist:
     case PrimType::BSDF:
     case PrimType::ABSDF:
-    case PrimType::WGMDfunc:
         throw notSupportedYet(p.loc, std::string(primTypeName(p.type)) + " material");
     default:
         fail(p, "not a material");

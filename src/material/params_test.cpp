@@ -142,8 +142,6 @@ TEST(MaterialParams, NotSupportedYet) {
         {PrimType::Mist, {}, {}, "mist material"},
         {PrimType::BSDF, {}, {"0", "f.xml", "0", "0", "1", "."}, "BSDF material"},
         {PrimType::ABSDF, {}, {"f.xml", "0", "0", "1", "."}, "aBSDF material"},
-        {PrimType::WGMDfunc, {1, 1, 1, 1, 1, 1, 1, 1, 1},
-         {"0", ".1", ".1", ".1", "0", ".1", ".1", ".1", "1", "0", "0", "."}, "WGMDfunc material"},
     };
     for (auto& c : cases) expectError(prim(c.t, c.r, c.s, 40), "not supported yet: " +
                                       std::string(c.name));

@@ -283,7 +283,18 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         }
         const bool functions = role & kFunctions;
         if (functions) setFunctionValues(matIndex, *hit, ray.dir, calcEval, sp);
+        material::WgmdInputs wgmd;  // WGMDfunc: its expressions and component modifiers
+        const auto* wgmdParams = std::get_if<material::WgmdParams>(&*mi.params);
+        if (wgmdParams && materialCalc_) {
+            if (!calcEval) calcEval.emplace(*materialCalc_);
+            if (!chainEval) chainEval.emplace(chains_);
+            wgmd = material::wgmdHitInputs(*materialCalc_, *calcEval, *chainEval, matIndex,
+                                           *wgmdParams, material::PatternPoint::atHit(ray.dir, *hit),
+                                           sp, rng);
+            sp.wgmd = &wgmd;
+        }
         material::PhotonScatter s = material::scatterPhoton(*mi.params, sp, rng);
+        sp.wgmd = nullptr;
         if (functions) sp.brtdSpecularReflection = sp.brtdSpecularTransmission = std::nullopt;
         if (s.store && surf->storeAllowed)
             deposit(*hit, hit->front, flux, scatters > 0 || fromPort,
