@@ -211,7 +211,7 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
                 fail(p, "unknown function '" + c.name + "'");
             }
         };
-        if (r.kind != Kind::Aniso && r.kind != Kind::Prism)
+        if (r.kind != Kind::Aniso && r.kind != Kind::Prism && r.kind != Kind::Wgmd)
             for (int k = 0; k < (r.kind == Kind::Brtd ? 3 : 1); ++k) resolve(r.fn[k]);
         for (Callable& c : r.coords) resolve(c);
     }

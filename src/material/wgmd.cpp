@@ -257,22 +257,31 @@ bool scatterReflLobe(const Lobe& s, const SurfacePoint& sp, Rng& rng, Vec3& out,
     return true;
 }
 
-// Rough transmission: t + x u + y v about the through direction t, weighted by
-// f cos(out) / pdf with pdf = slope density |t_p|^3 / |t.n| (t_p the unnormalised draw).
-// This model's BTDF is symmetric in the two directions, so it is its own adjoint.
+// Rough transmission: a draw t = p + x u' + y v' in the plane through the through
+// direction p and perpendicular to it (u', v' the lobe's u, v made perpendicular to p,
+// so that the draw's spread matches the lobe's even at grazing incidence; offsets along
+// the surface's own tangents would give weights of infinite variance there), weighted by
+// f cos(out) / pdf with pdf = slope density |t|^3. Draws on the incident side are
+// absorbed (the model is zero there). This BTDF is symmetric in its two directions, so
+// the backward model's value for light from `out` is the photon's.
 bool scatterTransLobe(const Lobe& s, const WgmdHit& h, const SurfacePoint& sp, Rng& rng,
                       Vec3& out, double& w) {
+    const Vec3& p = h.prdir;
+    Vec3 vp = s.v - p * dot(s.v, p);
+    if (lengthSquared(vp) <= 1e-24) return false;  // p along v: a grazing through direction
+    vp = normalize(vp);
+    const Vec3 up = cross(vp, p) * (dot(cross(vp, p), s.u) < 0 ? -1.0 : 1.0);
     double x, y;
     sampleSlope(s.au, s.av, rng, x, y);
-    const Vec3 t = h.prdir + s.u * x + s.v * y;
+    const Vec3 t = p + up * x + vp * y;
     if (dot(t, sp.geomNormal) >= -kFtiny || dot(t, s.n) >= 0) return false;
     const double len = length(t);
     out = t / len;
     const double au2 = s.au * s.au, av2 = s.av * s.av;
     const double ci = std::max(-dot(sp.dir, s.n), kFtiny), co = -dot(out, s.n);
     const double q = x * x / au2 + y * y / av2;
-    const double e = transExponent(s, out - h.prdir, au2, av2);
-    w = std::exp(q - e) * std::sqrt(co / ci) * std::fabs(dot(h.prdir, s.n)) / (len * len * len);
+    const double e = transExponent(s, out - p, au2, av2);
+    w = std::exp(q - e) * std::sqrt(co / ci) / (len * len * len);
     return std::isfinite(w);
 }
 
