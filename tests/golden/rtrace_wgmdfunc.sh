@@ -21,4 +21,24 @@ for s in p2 t2 pl; do
     [ "$n" -eq "$(wc -l < "radiance_$s.ref")" ] || { echo "FAIL: ray count"; fail=1; }
     awk -v w="$worst" 'BEGIN { exit !(w <= 0.02) }' || { echo "FAIL: wgmd_$s above 2 %"; fail=1; }
 done
+# The plastic2 case again with its coefficients, roughnesses and u vector from a function
+# file (u rotated into place by the transform) and a white pattern as the reflection
+# modifier: the same numbers as the constants.
+export RAYPATH=".:$SRC/lib"
+"$BIN/oconv" light.rad wgmd_p2_functions.rad > "$tmp/f.oct" || exit 1
+"$BIN/rtrace" -h -ab 0 -ss 0 -st 1 -av 0 0 0 -dj 0 -ds 0 -ov "$tmp/f.oct" < rays.txt \
+    > "$tmp/f.out" || exit 1
+if cmp -s "$tmp/f.out" "$tmp/p2.out"; then
+    echo "wgmd_p2_functions: the same values as wgmd_p2"
+else
+    echo "FAIL: wgmd_p2_functions differs from wgmd_p2"; fail=1
+fi
+# A component modifier that does not exist stops rtrace at the material's line.
+sed 's/pat rsv/nosuch rsv/' wgmd_p2_functions.rad > "$tmp/bad.rad"
+"$BIN/oconv" light.rad "$tmp/bad.rad" > "$tmp/bad.oct" || exit 1
+msg=$("$BIN/rtrace" -h -ab 0 "$tmp/bad.oct" < rays.txt 2>&1 >/dev/null)
+case "$msg" in
+    *"bad.rad:2: WGMDfunc 'm2': unknown specular reflection modifier 'nosuch'"*) ;;
+    *) echo "FAIL: unknown modifier: $msg"; fail=1 ;;
+esac
 exit $fail
