@@ -176,6 +176,7 @@ Color evaluate(const MaterialParams& m, const SurfacePoint& sp, const Vec3& toLi
             [&](const FuncParams& p) { return evaluateFunc(p, sp, toLight); },
             [&](const BrtdParams& p) { return evaluateBrtd(p, sp, toLight); },
             [&](const BsdfParams& p) { return evaluateBsdf(p, sp, toLight, sourceOmega); },
+            [&](const WgmdParams& p) { return evaluateWgmd(p, sp, toLight, sourceOmega); },
             // Purely specular, emitting or invisible: nothing for a direct-light sample.
             [&](const auto&) { return Color{}; },
         },
@@ -202,6 +203,7 @@ BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
             [&](const BrtdParams& p) { return shadeBrtd(p, sp); },
             [&](const PrismParams& p) { return shadePrism(p, sp); },
             [&](const BsdfParams& p) { return shadeBsdf(p, sp, opt, rng); },
+            [&](const WgmdParams& p) { return shadeWgmd(p, sp, opt, rng); },
         },
         m);
 }
@@ -231,6 +233,7 @@ PhotonScatter scatterPhoton(const MaterialParams& m, const SurfacePoint& sp, Rng
             // tracer refuses them at load, so a photon never gets here.
             [&](const PrismParams&) { return PhotonScatter{}; },
             [&](const BsdfParams& p) { return scatterBsdf(p, sp, rng); },
+            [&](const WgmdParams& p) { return scatterWgmd(p, sp, rng); },
         },
         m);
 }
@@ -257,6 +260,10 @@ bool storesPhotons(const MaterialParams& m) {
             },
             // Per hit (the data's Lambertian parts): stores decides.
             [](const BsdfParams&) { return true; },
+            [](const WgmdParams& p) {
+                return p.frontDiffuse.average() > kFtiny || p.backDiffuse.average() > kFtiny ||
+                       p.diffuseTransmittance.average() > kFtiny;
+            },
             [](const auto&) { return false; },
         },
         m);

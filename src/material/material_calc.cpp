@@ -7,6 +7,8 @@
 
 #include "calc/search_path.h"
 #include "material/function_space.h"
+#include "material/material_table.h"
+#include "material/surface_chain.h"
 #include "util/error.h"
 
 namespace rp::material {
@@ -47,6 +49,7 @@ size_t funcFileIndex(PrimType t) {
     case PrimType::Prism2: return 8;     // coef1 dx1 dy1 dz1 coef2 dx2 dy2 dz2 funcfile
     case PrimType::BSDF: return 5;       // thick file ux uy uz funcfile transform
     case PrimType::ABSDF: return 4;      // file ux uy uz funcfile transform
+    case PrimType::WGMDfunc: return 12;  // 3 modifiers, 6 coefficients, ux uy uz, funcfile
     default: return 1;                   // func funcfile transform
     }
 }
@@ -124,6 +127,21 @@ void addBsdf(const Primitive& p, Loader& loader, Record& r) {
     }
 }
 
+// WGMDfunc's component modifiers other than "void", "inherit" and the material's own
+// (m_wgmdf.c fill_modval; RADIANCE finds them when first shaded, we at load).
+void setWgmdModifiers(const Scene& scene, int32_t material, int32_t (&out)[3]) {
+    const Primitive& p = scene.prims[size_t(material)];
+    const WgmdParams m = std::get<WgmdParams>(makeMaterial(p));
+    static const char* const kWhat[3] = {"specular reflection", "specular transmission",
+                                         "diffuse transmission"};
+    for (int c = 0; c < 3; ++c) {
+        if (m.mod[size_t(c)] != WgmdParams::Mod::Named) continue;
+        out[c] = lastModifier(scene, material, m.modName[size_t(c)]);
+        if (out[c] == kVoid)
+            fail(p, std::string("unknown ") + kWhat[c] + " modifier '" + m.modName[size_t(c)] + "'");
+    }
+}
+
 }  // namespace
 
 MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPath)
@@ -148,6 +166,7 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
         case PrimType::Prism2: r.kind = Kind::Prism; break;
         case PrimType::BSDF:
         case PrimType::ABSDF: r.kind = Kind::Bsdf; break;
+        case PrimType::WGMDfunc: r.kind = Kind::Wgmd; break;
         default: continue;
         }
         r.prim = int32_t(i);
@@ -179,14 +198,24 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
         int nexpr = r.kind == Kind::Aniso   ? 3
                     : r.kind == Kind::Brtd  ? 6
                     : r.kind == Kind::Prism ? int(ff)
+                    : r.kind == Kind::Wgmd  ? 9
                                             : 0;
+        // WGMDfunc's expressions sit between its modifier names (ray.html).
+        constexpr size_t kWgmdExpr[9] = {1, 2, 3, 5, 6, 7, 9, 10, 11};
+        bool allConstant = true;
         for (int k = 0; k < nexpr; ++k) {
-            if (auto v = number(p.sargs[k])) {
+            const std::string& e = p.sargs[r.kind == Kind::Wgmd ? kWgmdExpr[k] : size_t(k)];
+            if (auto v = number(e)) {
                 r.exprConstant[k] = true;
                 r.exprValue[k] = *v;
             } else {
-                r.expr[k] = loader.builder.addExpression(p.sargs[k], p.loc);
+                r.expr[k] = loader.builder.addExpression(e, p.loc);
+                allConstant = false;
             }
+        }
+        if (r.kind == Kind::Wgmd) {
+            r.needed = !allConstant;
+            setWgmdModifiers(scene, int32_t(i), r.wgmdMod);
         }
         if (r.kind == Kind::Func || r.kind == Kind::Data) r.fn[0].name = p.sargs[0];
         if (r.kind == Kind::Brtd) {
@@ -223,7 +252,8 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
                 fail(p, "unknown function '" + c.name + "'");
             }
         };
-        if (r.kind != Kind::Aniso && r.kind != Kind::Prism && r.kind != Kind::Bsdf)
+        if (r.kind != Kind::Aniso && r.kind != Kind::Prism && r.kind != Kind::Bsdf &&
+            r.kind != Kind::Wgmd)
             for (int k = 0; k < (r.kind == Kind::Brtd ? 3 : 1); ++k) resolve(r.fn[k]);
         for (Callable& c : r.coords) resolve(c);
     }
@@ -238,6 +268,13 @@ bool MaterialCalc::uses(int32_t material) const {
     return r >= 0 && records_[r].needed;
 }
 
+int32_t MaterialCalc::wgmdModifier(int32_t material, int component) const {
+    if (material < 0 || size_t(material) >= recordOf_.size() || recordOf_[material] < 0)
+        return kVoid;
+    const Record& r = records_[size_t(recordOf_[material])];
+    return r.kind == Kind::Wgmd ? r.wgmdMod[component] : kVoid;
+}
+
 MaterialCalcEvaluator::MaterialCalcEvaluator(const MaterialCalc& calc)
     : calc_(calc), eval_(calc.program_) {}
 
@@ -250,6 +287,8 @@ void MaterialCalcEvaluator::setHit(int32_t material, const PatternPoint& at,
     rec_ = &calc_.records_[calc_.recordOf_[material]];
     // The same function-space values as patterns see (func.c setfunc).
     const Transform t = functionTransform(at, rec_->toObject);
+    npTransform_ = t;
+    ctxDir_ = at.dir;
     ctx_ = functionSpace(at, rec_->toObject);
     object_ = at.object;
     if (at.rdot < 0 && (rec_->kind == MaterialCalc::Kind::Func ||
@@ -347,6 +386,39 @@ Redirection MaterialCalcEvaluator::redirect(int n, const Vec3& toSource) {
     return r;
 }
 
+double MaterialCalcEvaluator::expression(int k) {
+    return rec_->exprConstant[k] ? rec_->exprValue[k]
+                                 : eval_.eval(calc_.program_->expression(rec_->expr[k]));
+}
+
+void MaterialCalcEvaluator::setPerturbedNormal(const Vec3& n) {
+    ctx_.NP = toVec(npTransform_.direction(toArr(n))) / npTransform_.scale;
+    ctx_.RdotP = std::clamp(-dot(ctxDir_, n), -1.0, 1.0);
+    eval_.setRay(ctx_);
+}
+
+void MaterialCalcEvaluator::wgmd(WgmdInputs& in) {
+    RP_CHECK(rec_ && rec_->kind == MaterialCalc::Kind::Wgmd);
+    long before = eval_.mathErrors();
+    std::array<double, 3> u{expression(6), expression(7), expression(8)};
+    in.u = eval_.mathErrors() == before ? toVec(rec_->forward.direction(u)) : Vec3{};
+    // m_wgmdf.c set_scomp: the roughnesses only where the coefficient counts, v only
+    // where u does; a math error blacks out the component.
+    auto component = [&](int k, const Vec3& n, double& coef, double& ur, double& vr) {
+        setPerturbedNormal(n);
+        before = eval_.mathErrors();
+        coef = expression(k);
+        ur = vr = 0;
+        if (coef > 1e-6) {
+            ur = expression(k + 1);
+            if (ur > 1e-6) vr = expression(k + 2);
+        }
+        if (eval_.mathErrors() != before || !std::isfinite(coef)) coef = 0;
+    };
+    component(3, in.normal[WgmdParams::kTs], in.ts, in.tsU, in.tsV);
+    component(0, in.normal[WgmdParams::kRs], in.rs, in.rsU, in.rsV);
+}
+
 double MaterialCalcEvaluator::call(const MaterialCalc::Callable& c, std::span<const double> args) {
     switch (c.how) {
     case MaterialCalc::Callable::How::Constant: return c.value;
@@ -393,6 +465,30 @@ Color MaterialCalcEvaluator::directionalValue(const Vec3& toLight, double omega)
         return c;
     }
     }
+}
+
+WgmdInputs wgmdHitInputs(const MaterialCalc& calc, MaterialCalcEvaluator& ev,
+                         SurfaceChainEvaluator& chains, int32_t material, const WgmdParams& m,
+                         const PatternPoint& at, const SurfacePoint& sp, Rng& rng) {
+    WgmdInputs in = wgmdInputs(m, sp);
+    for (int c = 0; c < 3; ++c) {
+        const int32_t mod = calc.wgmdModifier(material, c);
+        if (mod == kVoid) continue;
+        // RADIANCE raytexture on a copy of the ray: patterns and textures only; a mixture
+        // in such a chain gives its first layer.
+        const ChainResult r = chains.resolve(mod, at, rng);
+        if (r.count <= 0) continue;
+        const ShadingLayer& l = r.layers[0];
+        in.pattern[size_t(c)] = l.pattern;
+        if (lengthSquared(l.perturbation) > 0) {
+            const Vec3 n = normalize(at.normal + l.perturbation);
+            in.normal[size_t(c)] = at.rdot < 0 ? -n : n;
+        }
+    }
+    // Even all-constant expressions go through the evaluator: u needs the transform.
+    ev.setHit(material, at, sp.normal, sp.pattern);
+    ev.wgmd(in);
+    return in;
 }
 
 }  // namespace rp::material

@@ -26,6 +26,7 @@
 namespace rp::material {
 
 class MaterialCalcEvaluator;
+class SurfaceChainEvaluator;
 
 // Every function-driven material of a scene compiled into one calc Program (function
 // and data files found along `searchPath`; RADIANCE's global context after rayinit.cal,
@@ -44,10 +45,14 @@ public:
     // six specular arguments are plain numbers and whose rbrtd gbrtd bbrtd are "0" needs
     // nothing (params.cpp already holds its constants).
     bool uses(int32_t material) const;
+    // WGMDfunc (a prim index): the modifier a component (WgmdParams::kRs, kTs, kTd) names
+    // where it is WgmdParams::Mod::Named, found at load as RADIANCE's lastmod (an
+    // unknown name is an InputError at the material's line); kVoid otherwise.
+    int32_t wgmdModifier(int32_t material, int component) const;
 
 private:
     friend class MaterialCalcEvaluator;
-    enum class Kind : uint8_t { Aniso, Func, Data, Brtd, Prism, Bsdf };
+    enum class Kind : uint8_t { Aniso, Func, Data, Brtd, Prism, Bsdf, Wgmd };
 
     // A function named in a string argument, called with the light direction: a user
     // or builtin function, a variable (RADIANCE's funvalue accepts one: it ignores the
@@ -67,9 +72,10 @@ private:
         Transform toObject;  // world -> function space
         Transform forward;   // function space -> world
         std::vector<double> rargs;
-        // aniso: ux uy uz; BRTDfunc: 6 colours; prism1: coef dx dy dz; prism2: two sets
-        static constexpr int kMaxExpr = 8;
-        int expr[kMaxExpr] = {-1, -1, -1, -1, -1, -1, -1, -1};
+        // aniso: ux uy uz; BRTDfunc: 6 colours; prism1: coef dx dy dz; prism2: two sets;
+        // WGMDfunc: rs rs_ur rs_vr ts ts_ur ts_vr ux uy uz
+        static constexpr int kMaxExpr = 9;
+        int expr[kMaxExpr] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};
         bool exprConstant[kMaxExpr] = {};
         double exprValue[kMaxExpr] = {};
         Callable fn[3];                 // func/data: fn[0]; BRTDfunc: rbrtd gbrtd bbrtd
@@ -77,6 +83,7 @@ private:
         std::shared_ptr<const calc::DataFile> data;
         std::shared_ptr<const bsdf::BsdfData> bsdf;  // BSDF/aBSDF: expr 0-2 up, 3 thickness
         bool needed = true;
+        int32_t wgmdMod[3] = {kVoid, kVoid, kVoid};  // WGMDfunc's named component modifiers
     };
 
     std::vector<int32_t> recordOf_;  // prim index -> index into records_, or -1
@@ -135,7 +142,15 @@ public:
     // forward transform, made unit. Not ok after a math error or for a zero direction.
     Redirection redirect(int n, const Vec3& toSource);
 
+    // WGMDfunc (after setHit, with the main modifier's normal): the expression values
+    // into `in`, whose patterns and normals are set. As m_wgmdf.c, the u orientation sees
+    // the main modifier's NxP NyP NzP RdotP, the rs and ts expressions their own
+    // modifier's; a math error blacks out that component (a zero u punts to isotropic).
+    void wgmd(WgmdInputs& in);
+
 private:
+    double expression(int k);
+    void setPerturbedNormal(const Vec3& n);
     double call(const MaterialCalc::Callable& c, std::span<const double> args);
     Color directionalValue(const Vec3& toLight, double omega);
 
@@ -144,7 +159,17 @@ private:
     calc::RayContext ctx_;
     const MaterialCalc::Record* rec_ = nullptr;
     const TransformPair* object_ = nullptr;  // the hit's object space (PatternPoint::object)
+    Transform npTransform_;  // world -> function space at the hit, for NxP NyP NzP
+    Vec3 ctxDir_;            // the ray direction at the hit (world), for RdotP
     long errorsAtHit_ = 0;
 };
+
+// WGMDfunc at a hit, for either direction: wgmdInputs(m, sp), then each named component
+// modifier's patterns and textures (its chain from at, through `chains`; the perturbed
+// normal turned to the ray, as sp.normal), then the expressions where calc.uses(material).
+// `at` as for setHit; sp.normal and sp.pattern are the main modifier's.
+WgmdInputs wgmdHitInputs(const MaterialCalc& calc, MaterialCalcEvaluator& ev,
+                         SurfaceChainEvaluator& chains, int32_t material, const WgmdParams& m,
+                         const PatternPoint& at, const SurfacePoint& sp, Rng& rng);
 
 }  // namespace rp::material

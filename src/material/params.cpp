@@ -265,8 +265,9 @@ MaterialParams makeMaterial(const Primitive& p) {
         m.hasBackDiffuse = p.rargs.size() >= 6;
         return m;
     }
-    case PrimType::Mist:
     case PrimType::WGMDfunc:
+        return detail::makeWgmd(p);  // wgmd.cpp; expressions and modifiers: MaterialCalc
+    case PrimType::Mist:
         throw notSupportedYet(p.loc, std::string(primTypeName(p.type)) + " material");
     default:
         fail(p, "not a material");

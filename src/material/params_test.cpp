@@ -140,10 +140,6 @@ TEST(MaterialParams, NotSupportedYet) {
     struct Case { PrimType t; std::vector<double> r; std::vector<std::string> s; const char* name; };
     std::vector<Case> cases = {
         {PrimType::Mist, {}, {}, "mist material"},
-        {PrimType::BSDF, {}, {"0", "f.xml", "0", "0", "1", "."}, "BSDF material"},
-        {PrimType::ABSDF, {}, {"f.xml", "0", "0", "1", "."}, "aBSDF material"},
-        {PrimType::WGMDfunc, {1, 1, 1, 1, 1, 1, 1, 1, 1},
-         {"0", ".1", ".1", ".1", "0", ".1", ".1", ".1", "1", "0", "0", "."}, "WGMDfunc material"},
     };
     for (auto& c : cases) expectError(prim(c.t, c.r, c.s, 40), "not supported yet: " +
                                       std::string(c.name));

@@ -42,9 +42,10 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
         const bool readsFunctions = p.type == PrimType::BRTDfunc || p.type == PrimType::BSDF ||
                                     p.type == PrimType::ABSDF;
         if (isModifier(p.type) && readsFunctions) {
-            if (!materialCalc_ || !materialCalc_->uses(int32_t(i)))
-                throw InputError(p.loc, "photon tracing needs the functions of " + p.name);
-            roles_[i] |= kFunctions;
+            if (materialCalc_ && materialCalc_->uses(int32_t(i)))
+                roles_[i] |= kFunctions;
+            else  // a BSDF's data comes through MaterialCalc: callers must pass it
+                RP_CHECK(p.type == PrimType::BRTDfunc);
         }
         if (!isModifier(p.type) || !sensors.count(p.name)) continue;
         if (p.type != PrimType::Antimatter)
@@ -296,7 +297,18 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         }
         const bool functions = role & kFunctions;
         if (functions) setFunctionValues(matIndex, *hit, ray.dir, calcEval, sp);
+        material::WgmdInputs wgmd;  // WGMDfunc: its expressions and component modifiers
+        const auto* wgmdParams = std::get_if<material::WgmdParams>(&*mi.params);
+        if (wgmdParams && materialCalc_) {
+            if (!calcEval) calcEval.emplace(*materialCalc_);
+            if (!chainEval) chainEval.emplace(chains_);
+            wgmd = material::wgmdHitInputs(*materialCalc_, *calcEval, *chainEval, matIndex,
+                                           *wgmdParams, material::PatternPoint::atHit(ray.dir, *hit),
+                                           sp, rng);
+            sp.wgmd = &wgmd;
+        }
         material::PhotonScatter s = material::scatterPhoton(*mi.params, sp, rng);
+        sp.wgmd = nullptr;
         if (functions) sp.brtdSpecularReflection = sp.brtdSpecularTransmission = std::nullopt;
         if (s.store && surf->storeAllowed)
             deposit(*hit, hit->front, flux, scatters > 0 || fromPort,

@@ -249,6 +249,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     }
 
     std::array<material::Redirection, 2> redirections{};
+    material::WgmdInputs wgmd;  // WGMDfunc's values at this hit (sp.wgmd)
     if (const auto* prism = std::get_if<material::PrismParams>(&params)) {
         // m_direct.c: a ray not aimed at a source follows each redirection, DxA DyA DzA
         // zero. (Shadow rays toward a prism's virtual sources are direct.cpp's.)
@@ -256,6 +257,10 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         for (int k = 0; k < prism->redirections; ++k)
             redirections[size_t(k)] = prismCalc.redirect(k, Vec3{});
         sp.redirections = &redirections;
+    } else if (const auto* w = std::get_if<material::WgmdParams>(&params)) {
+        wgmd = material::wgmdHitInputs(impl.materialCalc, materialCalc, chains, layer.material,
+                                       *w, patternPoint(hit, ray.dir), sp, rng);
+        sp.wgmd = &wgmd;
     } else {
         applyMaterialCalc(layer.material, hit, ray.dir, sp);
     }

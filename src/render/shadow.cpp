@@ -82,6 +82,30 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
         }
         return ev;
     }
+    if (const auto* w = std::get_if<material::WgmdParams>(&params)) {
+        // m_wgmdf.c: a shadow ray passes only an ideal specular transmission, with its
+        // colour; rough lobes are never sampled here (an infinite -st). prismCalc, as
+        // materialCalc may hold the hit being lit.
+        if (!hit.front && !impl.options.backVisible) {
+            ev.kind = ShadowEvent::Kind::Transmit;
+            ev.colour = Color{1, 1, 1};
+            return ev;
+        }
+        material::WgmdInputs in = material::wgmdHitInputs(
+            impl.materialCalc, prismCalc, chains, layer.material, *w,
+            material::PatternPoint::atHit(dir, hit), sp, rng);
+        sp.wgmd = &in;
+        material::ShadeOptions opt = impl.shadeOptions;
+        opt.specThreshold = HUGE_VAL;
+        material::BackwardResult b = material::shadeBackward(params, sp, opt, rng);
+        for (int i = 0; i < b.numRays; ++i)
+            if (b.rays[size_t(i)].kind == material::ScatterKind::SpecularTransmission) {
+                ev.kind = ShadowEvent::Kind::Transmit;
+                ev.colour = b.rays[size_t(i)].weight;
+                if (dot(b.rays[size_t(i)].dir, dir) <= 1 - 1e-9) ev.bent = b.rays[size_t(i)].dir;
+            }
+        return ev;
+    }
     if (std::holds_alternative<material::GlassParams>(params) ||
         std::holds_alternative<material::DielectricParams>(params)) {
         material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);

@@ -81,8 +81,9 @@ std::array<ArgRule, kCount> makeTable() {
     set(T::Transdata, dataXf(3, 3, atLeast(6)));
     set(T::BSDF, fixedXf(6, oneOf(0, 3, 6, 9)));  // thick BSDFfile ux uy uz funcfile
     set(T::ABSDF, fixedXf(5, oneOf(0, 3, 6, 9)));
-    // WGMDfunc (RADIANCE 6): rs_mod rs rs_ur rs_vr ts_mod ts ts_ur ts_vr ux uy uz funcfile
-    set(T::WGMDfunc, fixedXf(12, atLeast(9)));
+    // WGMDfunc (RADIANCE 6): rs_mod rs rs_ur rs_vr ts_mod ts ts_ur ts_vr td_mod ux uy uz
+    // funcfile transform
+    set(T::WGMDfunc, fixedXf(13, atLeast(9)));
     set(T::Antimatter, plain(atLeast(1), none()));  // N mod1 .. modN
     // Textures.
     set(T::Texfunc, fixedXf(4, atLeast(0)));
