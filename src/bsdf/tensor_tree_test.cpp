@@ -59,8 +59,7 @@ struct RefNode {
 
 RefNode readRef(const std::string& s, size_t& p) {
     const auto skip = [&] {
-        while (p < s.size() && (std::isspace(static_cast<unsigned char>(s[p])) || s[p] == ','))
-            ++p;
+        while (p < s.size() && (std::isspace(static_cast<unsigned char>(s[p])) || s[p] == ',')) ++p;
     };
     skip();
     EXPECT_EQ(s.at(p), '{');
@@ -72,8 +71,8 @@ RefNode readRef(const std::string& s, size_t& p) {
     } else {
         while (skip(), s[p] != '}') {
             char* end;
-            n.vals.push_back(std::max(0.0, static_cast<double>(
-                                               static_cast<float>(std::strtod(&s[p], &end)))));
+            n.vals.push_back(
+                std::max(0.0, static_cast<double>(static_cast<float>(std::strtod(&s[p], &end)))));
             p = static_cast<size_t>(end - s.c_str());
         }
     }
@@ -117,8 +116,8 @@ double refLiveMin(const RefNode& n, int nd) {
 RefNode refTree(const std::string& xmlText, const char* direction) {
     pugi::xml_document doc;
     doc.load_buffer(xmlText.data(), xmlText.size());
-    for (pugi::xml_node wd : doc.child("WindowElement").child("Optical").child("Layer").children(
-             "WavelengthData"))
+    for (pugi::xml_node wd :
+         doc.child("WindowElement").child("Optical").child("Layer").children("WavelengthData"))
         for (pugi::xml_node b : wd.children("WavelengthDataBlock"))
             if (detail::trimmedText(b.child("WavelengthDataDirection")) == direction) {
                 const std::string s = b.child_value("ScatteringData");
@@ -150,10 +149,14 @@ void discToSquare(double x, double y, double& u, double& v) {
     double phi = std::atan2(y, x);
     if (phi < -kPi / 4) phi += 2 * kPi;
     double a, b;
-    if (phi < kPi / 4) a = r, b = r * phi / (kPi / 4);
-    else if (phi < 3 * kPi / 4) b = r, a = -r * (phi - kPi / 2) / (kPi / 4);
-    else if (phi < 5 * kPi / 4) a = -r, b = -r * (phi - kPi) / (kPi / 4);
-    else b = -r, a = r * (phi - 3 * kPi / 2) / (kPi / 4);
+    if (phi < kPi / 4)
+        a = r, b = r * phi / (kPi / 4);
+    else if (phi < 3 * kPi / 4)
+        b = r, a = -r * (phi - kPi / 2) / (kPi / 4);
+    else if (phi < 5 * kPi / 4)
+        a = -r, b = -r * (phi - kPi) / (kPi / 4);
+    else
+        b = -r, a = r * (phi - 3 * kPi / 2) / (kPi / 4);
     u = .5 * (a + 1);
     v = .5 * (b + 1);
 }
@@ -169,8 +172,8 @@ Vec3 rotZ(const Vec3& v, double t) {
 
 // The pair (tree incident vector, outgoing vector) at tree position p. inUp/outUp: the
 // sides of the two vectors for the set's tree; phiIn: azimuth for 3-D trees.
-void pairAt(const std::array<double, 4>& p, int nd, bool inUp, bool outUp, double phiIn,
-            Vec3& in, Vec3& out) {
+void pairAt(const std::array<double, 4>& p, int nd, bool inUp, bool outUp, double phiIn, Vec3& in,
+            Vec3& out) {
     double x, y;
     if (nd == 4) {
         squareToDisc(p[0], p[1], x, y);
@@ -242,7 +245,8 @@ TEST(TensorTree, LookupsMatchTreeText3D) {
 // versions live in bsdf.cpp.
 
 const ScatteringSet* pick(const BsdfData& sd, bool inFront, bool outFront) {
-    if (inFront == outFront) return inFront ? (sd.rf ? &*sd.rf : nullptr) : (sd.rb ? &*sd.rb : nullptr);
+    if (inFront == outFront)
+        return inFront ? (sd.rf ? &*sd.rf : nullptr) : (sd.rb ? &*sd.rb : nullptr);
     const std::optional<ScatteringSet>& a = inFront ? sd.tf : sd.tb;
     const std::optional<ScatteringSet>& b = inFront ? sd.tb : sd.tf;
     return a ? &*a : (b ? &*b : nullptr);
@@ -250,7 +254,9 @@ const ScatteringSet* pick(const BsdfData& sd, bool inFront, bool outFront) {
 
 double evalLike(const BsdfData& sd, const Vec3& in, const Vec3& out) {
     const bool fi = in.z > 0, fo = out.z > 0;
-    double v = (fi == fo ? (fi ? sd.rLambFront : sd.rLambBack) : (fi ? sd.tLambFront : sd.tLambBack)).r / kPi;
+    double v =
+        (fi == fo ? (fi ? sd.rLambFront : sd.rLambBack) : (fi ? sd.tLambFront : sd.tLambBack)).r /
+        kPi;
     if (const ScatteringSet* s = pick(sd, fi, fo)) v += s->components[0]->value(in, out).r;
     return v;
 }
@@ -318,6 +324,7 @@ TEST(TensorTree, MatchesRadianceBlinds) {
     EXPECT_NEAR(sd.rb->maxHemi, 0.518381464, 1e-8);
     EXPECT_NEAR(sd.tf->maxHemi, 0.991610507, 1e-8);
     for (const auto* s : {&sd.rf, &sd.rb, &sd.tf}) EXPECT_NEAR((*s)->minProjSA, 0.0122718463, 1e-9);
+    // clang-format off
     checkAgainstRadiance(kBlinds, {
         {0, 0, 1, 0, 0, 0, 56.8699989, 0.0975607992, 0.758019746, 0.0122718463, 0.0122718463, 0.196349541},
         {30, 90, 1, 30, 270, 0, 0.434003115, 0.410958876, 0.213435941, 0.0122718463, 0.0122718463, 0.785398163},
@@ -332,6 +339,7 @@ TEST(TensorTree, MatchesRadianceBlinds) {
         {35, 200, 0, 35, 20, 0, 0.00787276588, 0.294510417, 0.486232241, 0.0490873852, 0.0122718463, 0.785398163},
         {55, 80, 0, 10, 150, 0, 0.0119289802, 0.252270068, 0.384144421, 0.196349541, 0.0122718463, 0.196349541},
     });
+    // clang-format on
 }
 
 TEST(TensorTree, MatchesRadianceHandcrafted3D) {
@@ -343,6 +351,7 @@ TEST(TensorTree, MatchesRadianceHandcrafted3D) {
     EXPECT_NEAR(sd.rf->maxHemi, 3.16927793, 1e-7);
     EXPECT_NEAR(sd.tf->maxHemi, 3.71591505, 1e-7);
     EXPECT_NEAR(sd.tf->minProjSA, 0.0490873852, 1e-9);
+    // clang-format off
     checkAgainstRadiance(kTree3, {
         {20, 30, 1, 40, 200, 0, 0.88000001, 3.0760119, 3.71591501, 0.196349541, 0.0490873852, 0.785398163},
         {50, 170, 1, 10, 10, 0, 1.87999995, 3.03674197, 3.56374408, 0.0490873852, 0.0490873852, 0.785398163},
@@ -352,6 +361,7 @@ TEST(TensorTree, MatchesRadianceHandcrafted3D) {
         {25, 60, 1, 35, 250, 1, 2.00099993, 3.0760119, 3.71591501, 0.0490873852, 0.0490873852, 0.785398163},
         {65, 300, 1, 20, 120, 1, 0.601000011, 3.03674197, 3.56374408, 0.196349541, 0.0490873852, 0.785398163},
     });
+    // clang-format on
 }
 
 TEST(TensorTree, MatchesRadianceHandcrafted4D) {
@@ -363,6 +373,7 @@ TEST(TensorTree, MatchesRadianceHandcrafted4D) {
     EXPECT_NEAR(sd.tLambBack.r, 0.62831854, 1e-8);
     EXPECT_NEAR(sd.rf->maxHemi, 3.73064127, 1e-7);
     EXPECT_NEAR(sd.tb->maxHemi, 4.31968993, 1e-7);
+    // clang-format off
     checkAgainstRadiance(kTree4, {
         {20, 30, 1, 40, 200, 1, 1.25000005, 2.57217904, 4.08407028, 0.196349541, 0.196349541, 0.785398163},
         {50, 170, 1, 10, 10, 1, 1.04999994, 3.0630528, 4.90873844, 0.785398163, 0.196349541, 0.785398163},
@@ -372,6 +383,7 @@ TEST(TensorTree, MatchesRadianceHandcrafted4D) {
         {65, 300, 1, 20, 120, 0, 1.00000001, 3.35757722, 2.4740042, 0.196349541, 0.196349541, 0.785398163},
         {10, 100, 0, 80, 330, 0, 0, 0, 2.88633822, kPi, 0.196349541, 0.785398163},
     });
+    // clang-format on
 }
 
 // ---------------------------------------------------------------------------------
@@ -418,7 +430,8 @@ void checkSampling(const Distribution& d, const Incident& c, bool iso) {
         const Vec3 o = rotZ(out, -spin);
         double u, v;
         discToSquare(o.x, o.y, u, v);
-        const int bu = std::clamp(int(u * kBins), 0, kBins - 1), bv = std::clamp(int(v * kBins), 0, kBins - 1);
+        const int bu = std::clamp(int(u * kBins), 0, kBins - 1),
+                  bv = std::clamp(int(v * kBins), 0, kBins - 1);
         seen[size_t(bu * kBins + bv)] += 1;
     }
     double chi2 = 0, restE = 0, restO = 0;
@@ -432,8 +445,10 @@ void checkSampling(const Distribution& d, const Incident& c, bool iso) {
         chi2 += (seen[b] - e) * (seen[b] - e) / e;
         ++dof;
     }
-    if (restE >= 5) chi2 += (restO - restE) * (restO - restE) / restE, ++dof;
-    else EXPECT_LE(restO, 20);
+    if (restE >= 5)
+        chi2 += (restO - restE) * (restO - restE) / restE, ++dof;
+    else
+        EXPECT_LE(restO, 20);
     ASSERT_GT(dof, 5);
     EXPECT_LT(chi2, chiSquareCritical(dof)) << "dof " << dof;
 }
@@ -483,10 +498,9 @@ double integrate(const Distribution& d, const Vec3& in, bool outUp, double lamb)
 TEST(TensorTree, EnergyMatchesHemispherical) {
     const BsdfData sd = loadFile(kBlinds);
     for (const Vec3& in : {polar(0, 0, true), polar(40, 120, true), polar(70, 300, true)}) {
-        for (const auto& [d, i, up] : {std::tuple{&dist(sd.tf), in, false},
-                                       std::tuple{&dist(sd.tf), -in, true},
-                                       std::tuple{&dist(sd.rf), in, true},
-                                       std::tuple{&dist(sd.rb), -in, false}}) {
+        for (const auto& [d, i, up] :
+             {std::tuple{&dist(sd.tf), in, false}, std::tuple{&dist(sd.tf), -in, true},
+              std::tuple{&dist(sd.rf), in, true}, std::tuple{&dist(sd.rb), -in, false}}) {
             const double h = d->hemispherical(i);
             EXPECT_GT(h, .01);
             EXPECT_NEAR(integrate(*d, i, up, 0), h, .01 * h);
@@ -507,12 +521,17 @@ TEST(TensorTree, EnergyMatchesHemispherical) {
 
 std::string treeDoc(int nd, const std::string& basis, const std::string& data) {
     return "<?xml version=\"1.0\"?>\n<WindowElement>\n<Optical>\n<Layer>\n"
-           "<DataDefinition><IncidentDataStructure>TensorTree" + std::to_string(nd) +
+           "<DataDefinition><IncidentDataStructure>TensorTree" +
+           std::to_string(nd) +
            "</IncidentDataStructure></DataDefinition>\n"
            "<WavelengthData>\n<Wavelength>Visible</Wavelength>\n<WavelengthDataBlock>\n"
            "<WavelengthDataDirection>Reflection Back</WavelengthDataDirection>\n"
-           "<AngleBasis>" + basis + "</AngleBasis>\n"
-           "<ScatteringData>\n" + data + "\n</ScatteringData>\n"
+           "<AngleBasis>" +
+           basis +
+           "</AngleBasis>\n"
+           "<ScatteringData>\n" +
+           data +
+           "\n</ScatteringData>\n"
            "</WavelengthDataBlock>\n</WavelengthData>\n</Layer>\n</Optical>\n</WindowElement>\n";
 }
 
@@ -549,12 +568,13 @@ void expectError(const std::string& text, const std::string& marker, const std::
 
 TEST(TensorTree, BadInputNamesFileAndLine) {
     const std::string sc = "LBNL/Shirley-Chiu";
-    expectError(treeDoc(4, sc, branch(4, 7, "  { " + repeat("0.5", 15) + "} <!--x-->")),
-                "{ 0.5", "15 values");
+    expectError(treeDoc(4, sc, branch(4, 7, "  { " + repeat("0.5", 15) + "} <!--x-->")), "{ 0.5",
+                "15 values");
     expectError(treeDoc(3, sc, branch(3, 2, "  { " + repeat("0.5", 16) + "}")), "{ 0.5",
                 "16 values");  // 16 is 4-D's count, not 3-D's
-    expectError(treeDoc(4, sc, branch(4, 3, "  { 0.5 0.5 0.5 0.5\n 0.5 0.5x " + repeat("0.5", 10) + "}")),
-                "0.5x", "bad number '0.5x'");
+    expectError(
+        treeDoc(4, sc, branch(4, 3, "  { 0.5 0.5 0.5 0.5\n 0.5 0.5x " + repeat("0.5", 10) + "}")),
+        "0.5x", "bad number '0.5x'");
     expectError(treeDoc(4, sc, branch(4, 0, "  { - }")), "{ - }", "bad number '-'");
     expectError(treeDoc(4, "LBNL/Klems Full", "{ 1 }"), "<AngleBasis>", "unsupported angle basis");
     expectError(treeDoc(4, sc, "{\n" + repeat("{ 1 }\n", 15) + "}"), "}\n</Scat", "15 subtrees");
@@ -573,7 +593,8 @@ TEST(TensorTree, AcceptsCommasAndSingleLeaf) {
     ASSERT_TRUE(sd.rf);
     EXPECT_NEAR(sd.rLambFront.r, float(0.4) * kPi, 1e-6);  // all Lambertian
     EXPECT_NEAR(dist(sd.rf).hemispherical(polar(30, 0, true)), 0, 1e-6);
-    const std::string commas = "{\n" + repeat("{ 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16 },", 16) + "\n}";
+    const std::string commas =
+        "{\n" + repeat("{ 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16 },", 16) + "\n}";
     const BsdfData c = loadText(treeDoc(4, "LBNL/Shirley-Chiu", commas), "commas.xml");
     ASSERT_TRUE(c.rf);
     EXPECT_NEAR(c.rf->minProjSA, kPi / 16, 1e-12);
@@ -589,7 +610,7 @@ TEST(TensorTree, ConcurrentUseMatchesSequential) {
         std::uniform_real_distribution<double> uni(0, 1);
         for (int k = 0; k < kPer; ++k) {
             const Vec3 in = polar(89 * uni(rng), 360 * uni(rng), uni(rng) < .5);
-            const Distribution& d = dist(in.z > 0 ? sd.tf : sd.tf);
+            const Distribution& d = dist(k % 2 ? sd.tf : (in.z > 0 ? sd.rf : sd.rb));
             Vec3 out;
             const double x = uni(rng), y = uni(rng);
             res.push_back(d.hemispherical(in));
@@ -602,7 +623,8 @@ TEST(TensorTree, ConcurrentUseMatchesSequential) {
     std::vector<std::vector<double>> a(kThreads), b(kThreads);
     for (int t = 0; t < kThreads; ++t) run(seq, t, a[size_t(t)]);
     std::vector<std::thread> pool;
-    for (int t = 0; t < kThreads; ++t) pool.emplace_back(run, std::cref(par), t, std::ref(b[size_t(t)]));
+    for (int t = 0; t < kThreads; ++t)
+        pool.emplace_back(run, std::cref(par), t, std::ref(b[size_t(t)]));
     for (std::thread& th : pool) th.join();
     for (int t = 0; t < kThreads; ++t) EXPECT_EQ(a[size_t(t)], b[size_t(t)]) << t;
 }
@@ -622,7 +644,8 @@ TEST(TensorTree, Throughput) {
     constexpr int kN = 2000000;
     double sink = 0;
     auto t0 = std::chrono::steady_clock::now();
-    for (int k = 0; k < kN; ++k) sink += d.value(ins[size_t(k) & 4095], outs[size_t(k * 7) & 4095]).r;
+    for (int k = 0; k < kN; ++k)
+        sink += d.value(ins[size_t(k) & 4095], outs[size_t(k * 7) & 4095]).r;
     auto t1 = std::chrono::steady_clock::now();
     Vec3 out;
     for (int k = 0; k < kN; ++k) {
