@@ -21,11 +21,12 @@
 namespace rp::bsdf::detail {
 namespace {
 
-constexpr double kTiny = 1e-6;           // RADIANCE FTINY
+constexpr double kTiny = 1e-6;                  // RADIANCE FTINY
 constexpr double kMapShrink = 0.9999999999999;  // disk2square.c's guard factor
-constexpr int kHilbertBits = 16;         // output cells are located on a 2^16 grid
+constexpr int kHilbertBits = 16;                // output cells are located on a 2^16 grid
 constexpr double kHilbertScale = 65536.0;
 constexpr double kCumlMax = 4294967295.0;  // cumulative values are 32-bit, as RADIANCE's
+constexpr double kBelowOne = 1 - 0x1p-53;  // largest double below 1
 
 // RADIANCE's sidef: which way the tree scatters (the sampled direction's side follows).
 enum class Side : uint8_t { ReflFront, ReflBack, XmitFront, XmitBack };
@@ -60,11 +61,21 @@ void squareToDisk(double u, double v, double& dx, double& dy) {
     const double a = 2 * u - 1, b = 2 * v - 1;
     double r, phi;
     if (a > -b) {
-        if (a > b) { r = a; phi = (kPi / 4) * (b / a); }
-        else { r = b; phi = (kPi / 4) * (2 - a / b); }
+        if (a > b) {
+            r = a;
+            phi = (kPi / 4) * (b / a);
+        } else {
+            r = b;
+            phi = (kPi / 4) * (2 - a / b);
+        }
     } else {
-        if (a < b) { r = -a; phi = (kPi / 4) * (4 + b / a); }
-        else { r = -b; phi = b != 0 ? (kPi / 4) * (6 - a / b) : 0; }
+        if (a < b) {
+            r = -a;
+            phi = (kPi / 4) * (4 + b / a);
+        } else {
+            r = -b;
+            phi = b != 0 ? (kPi / 4) * (6 - a / b) : 0;
+        }
     }
     r *= kMapShrink;
     dx = r * std::cos(phi);
@@ -86,7 +97,10 @@ uint32_t hilbertIndex(uint32_t x, uint32_t y) {
         const uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
         d += s * s * ((3 * rx) ^ ry);
         if (ry == 0) {  // rotate the quadrant so the sub-curve starts where it enters
-            if (rx == 1) { x = ~x; y = ~y; }
+            if (rx == 1) {
+                x = ~x;
+                y = ~y;
+            }
             std::swap(x, y);
         }
     }
@@ -98,7 +112,10 @@ void hilbertPoint(uint32_t d, uint32_t& x, uint32_t& y) {
     for (uint32_t s = 1; s < (1u << kHilbertBits); s <<= 1) {
         const uint32_t rx = 1 & (d >> 1), ry = 1 & (d ^ rx);
         if (ry == 0) {
-            if (rx == 1) { x = s - 1 - x; y = s - 1 - y; }
+            if (rx == 1) {
+                x = s - 1 - x;
+                y = s - 1 - y;
+            }
             std::swap(x, y);
         }
         x += s * rx;
@@ -146,14 +163,17 @@ struct Tree {
 
 float Tree::lookup(const double pos[4], double& width) const {
     double p[4];
-    for (int i = 0; i < ndim; ++i) p[i] = std::clamp(pos[i], 0.0, std::nextafter(1.0, 0.0));
+    for (int i = 0; i < ndim; ++i) p[i] = std::clamp(pos[i], 0.0, kBelowOne);
     double w = 1;
     const Node* nd = &nodes[0];
     while (nd->log2GR < 0) {
         unsigned child = 0;
         for (int i = 0; i < ndim; ++i) {
             p[i] *= 2;
-            if (p[i] >= 1) { p[i] -= 1; child |= 1u << i; }
+            if (p[i] >= 1) {
+                p[i] -= 1;
+                child |= 1u << i;
+            }
         }
         w *= .5;
         nd = &nodes[nd->index + child];
@@ -324,7 +344,7 @@ private:
 
     [[noreturn]] void fail(size_t at, const std::string& msg) const {
         const int line = firstLine_ + static_cast<int>(std::count(
-                             s_.begin(), s_.begin() + std::min(at, s_.size()), '\n'));
+                                          s_.begin(), s_.begin() + std::min(at, s_.size()), '\n'));
         throw InputError(SourceLoc{ctx_.path(), line}, msg);
     }
     char skipSpace() {
@@ -427,12 +447,12 @@ struct CDist {
         uint32_t hilbert;  // first index of the cell's run on the 2^16 Hilbert grid
         uint32_t cuml;
     };
-    double clim[2][2];  // incident coordinates this table serves: [lo, hi) per dim
-    double cTotal = 0;  // directional-hemispherical value
+    double clim[2][2];                  // incident coordinates this table serves: [lo, hi) per dim
+    double cTotal = 0;                  // directional-hemispherical value
     double minWidth = 1, maxWidth = 0;  // of the outgoing cells (square units)
-    Side outSide = Side::ReflFront;      // side of the sampled directions
-    std::vector<Entry> cells;            // plus a final entry with cuml = 2^32 - 1
-    const CDist* next = nullptr;         // more tables sharing a cache slot
+    Side outSide = Side::ReflFront;     // side of the sampled directions
+    std::vector<Entry> cells;           // plus a final entry with cuml = 2^32 - 1
+    const CDist* next = nullptr;        // more tables sharing a cache slot
 
     bool serves(const double c[2], int nic) const {
         for (int i = 0; i < nic; ++i)
@@ -467,10 +487,10 @@ private:
 
     Tree tree_;
     Side side_;
-    int nic_;             // incident coordinates: 1 (3-D) or 2
-    double quantum_;      // incident coordinates are snapped to cell centres of this size
-    int slotBits_;        // cache slots per incident coordinate: 2^slotBits_
-    Cache cache_[2];      // [0] as stored, [1] reversed (transmission by reciprocity)
+    int nic_;         // incident coordinates: 1 (3-D) or 2
+    double quantum_;  // incident coordinates are snapped to cell centres of this size
+    int slotBits_;    // cache slots per incident coordinate: 2^slotBits_
+    Cache cache_[2];  // [0] as stored, [1] reversed (transmission by reciprocity)
     mutable std::mutex buildMutex_;  // only taken to build a missing table
     mutable std::vector<std::unique_ptr<CDist>> built_;
 };
@@ -592,8 +612,8 @@ const CDist* TreeDistribution::cdist(const Vec3& in) const {
         diskToSquare(-in.x, -in.y, c);
     }
     for (int i = 0; i < nic_; ++i)
-        c[i] = std::clamp(std::floor(c[i] / quantum_) * quantum_ + .5 * quantum_,
-                          .5 * quantum_, 1 - .5 * quantum_);
+        c[i] = std::clamp(std::floor(c[i] / quantum_) * quantum_ + .5 * quantum_, .5 * quantum_,
+                          1 - .5 * quantum_);
     return findOrBuild(rev ? 1 : 0, c);
 }
 
@@ -697,20 +717,20 @@ bool TreeDistribution::sample(const Vec3& in, double x, double y, Vec3& out) con
     const CDist* cd = cdist(in);
     if (!cd || cd->cTotal <= 1e-6) return false;
     const auto& cells = cd->cells;
-    const double target = std::clamp(x, 0.0, 1.0) * kCumlMax;
+    const double target = std::clamp(x, 0.0, kBelowOne) * kCumlMax;
     size_t lo = 0, hi = cells.size() - 1;  // cells[lo].cuml <= target < cells[hi].cuml
     while (hi - lo > 1) {
         const size_t mid = (lo + hi) / 2;
         (target >= cells[mid].cuml ? lo : hi) = mid;
     }
-    if (target >= cells[hi].cuml) return false;  // x == 1
+    if (target >= cells[hi].cuml) return false;  // not for x in [0, 1)
     const double t = (target - cells[lo].cuml) / double(cells[hi].cuml - cells[lo].cuml);
     const uint64_t end = hi + 1 == cells.size() ? uint64_t(1) << 32 : cells[hi].hilbert;
     const uint64_t run = end - cells[lo].hilbert;
     const uint32_t wid = 1u << (std::countr_zero(run) / 2);
     uint32_t hx, hy;
     hilbertPoint(cells[lo].hilbert, hx, hy);
-    const double yy = std::clamp(y, 0.0, std::nextafter(1.0, 0.0));
+    const double yy = std::clamp(y, 0.0, kBelowOne);
     const double u = ((hx & ~(wid - 1)) + t * wid) / kHilbertScale;
     const double v = ((hy & ~(wid - 1)) + yy * wid) / kHilbertScale;
     double dx, dy;
@@ -799,8 +819,8 @@ void loadTensorTree(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData
     const pugi::xml_node ids = layer.child("DataDefinition").child("IncidentDataStructure");
     const int ndim = textIs(ids, "TensorTree3") ? 3 : textIs(ids, "TensorTree4") ? 4 : 0;
     if (!ndim) ctx.fail(ids ? ids : layer, "unsupported IncidentDataStructure for a tensor tree");
-    std::array<SetData, 4> sets{{{{}, Side::ReflFront}, {{}, Side::ReflBack},
-                                 {{}, Side::XmitFront}, {{}, Side::XmitBack}}};
+    std::array<SetData, 4> sets{
+        {{{}, Side::ReflFront}, {{}, Side::ReflBack}, {{}, Side::XmitFront}, {{}, Side::XmitBack}}};
     for (pugi::xml_node wd : layer.children("WavelengthData")) {
         if (!textIs(wd.child("Wavelength"), "Visible")) continue;  // CIE-u/v colour not read
         for (pugi::xml_node block : wd.children("WavelengthDataBlock")) {
@@ -824,8 +844,10 @@ void loadTensorTree(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData
     sd.rLambBack = Color::grey(lamb[1]);
     sd.tLambFront = Color::grey(lamb[2]);
     sd.tLambBack = Color::grey(lamb[3]);
-    if (!sd.tb) sd.tLambBack = sd.tLambFront;       // one transmission serves both ways
-    else if (!sd.tf) sd.tLambFront = sd.tLambBack;
+    if (!sd.tb)
+        sd.tLambBack = sd.tLambFront;  // one transmission serves both ways
+    else if (!sd.tf)
+        sd.tLambFront = sd.tLambBack;
 }
 
 }  // namespace rp::bsdf::detail
