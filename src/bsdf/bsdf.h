@@ -77,6 +77,7 @@ struct BsdfData {
     // Non-diffuse parts; rf: reflection at the front (+Z) side; tf: transmission of light
     // arriving from the front side (in.z > 0, out.z < 0); tb the reverse.
     std::optional<ScatteringSet> rf, rb, tf, tb;
+    std::shared_ptr<const void> keepAlive;  // tables the components refer to (angle bases)
 
     // The set for a reflection (both vectors on one side) or transmission, as RADIANCE
     // picks it: transmission falls back to the other direction's data (reciprocity).

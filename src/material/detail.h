@@ -123,6 +123,10 @@ Color evaluateBrtd(const BrtdParams&, const SurfacePoint&, const Vec3&);
 BackwardResult shadeBrtd(const BrtdParams&, const SurfacePoint&);
 PhotonScatter scatterBrtd(const BrtdParams&, const SurfacePoint&, Rng&);
 
+Color evaluateBsdf(const BsdfParams&, const SurfacePoint&, const Vec3&, double);
+BackwardResult shadeBsdf(const BsdfParams&, const SurfacePoint&, const ShadeOptions&, Rng&);
+PhotonScatter scatterBsdf(const BsdfParams&, const SurfacePoint&, Rng&);
+
 BackwardResult shadeLight(const LightParams&, const SurfacePoint&);
 
 BackwardResult shadePrism(const PrismParams&, const SurfacePoint&);

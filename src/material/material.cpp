@@ -175,6 +175,7 @@ Color evaluate(const MaterialParams& m, const SurfacePoint& sp, const Vec3& toLi
             [&](const AshikParams& p) { return evaluateAshik(p, sp, toLight); },
             [&](const FuncParams& p) { return evaluateFunc(p, sp, toLight); },
             [&](const BrtdParams& p) { return evaluateBrtd(p, sp, toLight); },
+            [&](const BsdfParams& p) { return evaluateBsdf(p, sp, toLight, sourceOmega); },
             // Purely specular, emitting or invisible: nothing for a direct-light sample.
             [&](const auto&) { return Color{}; },
         },
@@ -200,6 +201,7 @@ BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
             [&](const FuncParams& p) { return shadeFunc(p, sp, opt); },
             [&](const BrtdParams& p) { return shadeBrtd(p, sp); },
             [&](const PrismParams& p) { return shadePrism(p, sp); },
+            [&](const BsdfParams& p) { return shadeBsdf(p, sp, opt, rng); },
         },
         m);
 }
@@ -228,6 +230,7 @@ PhotonScatter scatterPhoton(const MaterialParams& m, const SurfacePoint& sp, Rng
             // RADIANCE's photon tracer has no prism1/prism2 (pmapmat.c); the photon
             // tracer refuses them at load, so a photon never gets here.
             [&](const PrismParams&) { return PhotonScatter{}; },
+            [&](const BsdfParams& p) { return scatterBsdf(p, sp, rng); },
         },
         m);
 }
@@ -252,6 +255,8 @@ bool storesPhotons(const MaterialParams& m) {
                 return p.frontDiffuse.average() > kFtiny || p.backDiffuse.average() > kFtiny ||
                        p.diffuseTransmittance.average() > kFtiny;
             },
+            // Per hit (the data's Lambertian parts): stores decides.
+            [](const BsdfParams&) { return true; },
             [](const auto&) { return false; },
         },
         m);

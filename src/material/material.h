@@ -17,6 +17,10 @@
 #include "util/rng.h"
 #include "util/vec.h"
 
+namespace rp::bsdf {
+struct BsdfData;
+}
+
 namespace rp::material {
 
 // ---------------------------------------------------------------------------------------
@@ -162,9 +166,20 @@ struct PrismParams {
     int redirections = 1;  // prism1: 1; prism2: 2
 };
 
+// BSDF and aBSDF (m_bsdf.c): scattering from LBNL XML data (bsdf/), loaded with the
+// scene's function files by MaterialCalc, which also evaluates the thickness and the up
+// vector per hit (SurfacePoint::bsdf). The real arguments are diffuse parts added to the
+// data's own: front reflection, back reflection, transmission.
+struct BsdfParams {
+    bool absdf = false;  // aBSDF: no thickness; a strong "through" peak passes rays
+    Color frontDiffuse, backDiffuse, diffuseTransmittance;
+    bool hasBackDiffuse = false;  // six or nine real arguments
+};
+
 using MaterialParams = std::variant<NormalParams, AnisoParams, AshikParams, MirrorParams,
                                     GlassParams, DielectricParams, LightParams,
-                                    AntimatterParams, FuncParams, BrtdParams, PrismParams>;
+                                    AntimatterParams, FuncParams, BrtdParams, PrismParams,
+                                    BsdfParams>;
 
 // Checks p's arguments (counts were checked by the reader; values here) and derives the
 // constants. Throws InputError at p.loc for bad values and notSupportedYet for mist,
@@ -198,6 +213,18 @@ struct SurfacePoint {
     const std::function<Color(const Vec3&)>* directional = nullptr;
     // prism1/prism2: the redirections at this hit (MaterialCalcEvaluator::redirect).
     const std::array<Redirection, 2>* redirections = nullptr;
+    // BSDF/aBSDF: the data, the evaluated thickness (world units; 0 for aBSDF) and the up
+    // vector in uDir (world; MaterialCalcEvaluator::bsdf).
+    const bsdf::BsdfData* bsdf = nullptr;
+    double bsdfThickness = 0;
+    // The ray descends from a sampled specular or an ambient ray (RADIANCE crtype has
+    // SPECULAR or AMBIENT): a thick BSDF shades only these, others see its proxied
+    // geometry.
+    bool scatteredRay = false;
+    // In photon-map mode, an ambient ray's hit: the BSDF's specular direct light is in the
+    // photons already (RADIANCE ambRayInPmap).
+    bool specularInPhotons = false;
+    double rayWeight = 1;  // RADIANCE rweight: how many jittered BSDF samples direct light gets
 };
 
 // A SurfacePoint whose shading normal is the geometric one.
@@ -258,7 +285,9 @@ struct SpecularRay {
 };
 
 struct BackwardResult {
-    std::array<SpecularRay, 2> rays{};
+    // Two for most materials; aBSDF adds its unscattered "through" ray to a reflected and
+    // a transmitted sample.
+    std::array<SpecularRay, 3> rays{};
     int numRays = 0;
     Color ambientReflect;   // coefficient for indirect irradiance/pi on the incoming side
     Color ambientTransmit;  // ... from the other side
@@ -270,6 +299,11 @@ struct BackwardResult {
 
 BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
                              const ShadeOptions& opt, Rng& rng);
+
+// What a shadow ray meets at a BSDF or aBSDF (m_bsdf.c): true if it passes, with the
+// colour it passes with (aBSDF: its through peak; a thick BSDF: unchanged); a thin BSDF
+// stops it (its transmission reaches the far side only through the ambient).
+bool bsdfShadowPass(const BsdfParams& m, const SurfacePoint& sp, bool backVisible, Color& colour);
 
 // ---------------------------------------------------------------------------------------
 // Forward direction: photon scattering (pmapmat.c).

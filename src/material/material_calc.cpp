@@ -45,6 +45,8 @@ size_t funcFileIndex(PrimType t) {
     case PrimType::BRTDfunc: return 9;   // 6 colours, 3 brtd functions, funcfile
     case PrimType::Prism1: return 4;     // coef dx dy dz funcfile transform
     case PrimType::Prism2: return 8;     // coef1 dx1 dy1 dz1 coef2 dx2 dy2 dz2 funcfile
+    case PrimType::BSDF: return 5;       // thick file ux uy uz funcfile transform
+    case PrimType::ABSDF: return 4;      // file ux uy uz funcfile transform
     default: return 1;                   // func funcfile transform
     }
 }
@@ -83,13 +85,44 @@ public:
         return data_[name] = d;
     }
 
+    std::shared_ptr<const bsdf::BsdfData> bsdf(const Primitive& p, const std::string& name) {
+        if (auto it = bsdf_.find(name); it != bsdf_.end()) return it->second;
+        auto found = calc::findFile(name, path_);
+        if (!found) fail(p, "cannot find BSDF file '" + name + "'");
+        return bsdf_[name] = bsdf::loadBsdfFile(*found);  // its errors name the XML's line
+    }
+
     calc::Builder builder;
 
 private:
     std::vector<std::string> path_;
     std::vector<std::string> loaded_;
     std::map<std::string, std::shared_ptr<const calc::DataFile>> data_;
+    std::map<std::string, std::shared_ptr<const bsdf::BsdfData>> bsdf_;
 };
+
+// BSDF/aBSDF: the data and the expressions of the up vector and thickness (a template
+// only to reach MaterialCalc's private Record type).
+template <class Record>
+void addBsdf(const Primitive& p, Loader& loader, Record& r) {
+    const bool thick = p.type == PrimType::BSDF;
+    r.bsdf = loader.bsdf(p, p.sargs[thick ? 1 : 0]);
+    // Expressions: the up vector's three, then the thickness (aBSDF: the constant 0).
+    const int at[4] = {thick ? 2 : 1, thick ? 3 : 2, thick ? 4 : 3, thick ? 0 : -1};
+    for (int k = 0; k < 4; ++k) {
+        if (at[k] < 0) {
+            r.exprConstant[k] = true;
+            continue;
+        }
+        const std::string& e = p.sargs[size_t(at[k])];
+        if (auto v = number(e)) {
+            r.exprConstant[k] = true;
+            r.exprValue[k] = *v;
+        } else {
+            r.expr[k] = loader.builder.addExpression(e, p.loc);
+        }
+    }
+}
 
 }  // namespace
 
@@ -113,6 +146,8 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
         case PrimType::BRTDfunc: r.kind = Kind::Brtd; break;
         case PrimType::Prism1:
         case PrimType::Prism2: r.kind = Kind::Prism; break;
+        case PrimType::BSDF:
+        case PrimType::ABSDF: r.kind = Kind::Bsdf; break;
         default: continue;
         }
         r.prim = int32_t(i);
@@ -134,6 +169,12 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
         loader.functionFile(p, p.sargs[ff]);
         r.forward = parseTransform(p.sargs, xfFirst, p.loc);
         r.toObject = r.forward.inverse();
+        if (r.kind == Kind::Bsdf) {
+            addBsdf(p, loader, r);
+            recordOf_[i] = int32_t(records_.size());
+            records_.push_back(std::move(r));
+            continue;
+        }
 
         int nexpr = r.kind == Kind::Aniso   ? 3
                     : r.kind == Kind::Brtd  ? 6
@@ -182,13 +223,14 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
                 fail(p, "unknown function '" + c.name + "'");
             }
         };
-        if (r.kind != Kind::Aniso && r.kind != Kind::Prism)
+        if (r.kind != Kind::Aniso && r.kind != Kind::Prism && r.kind != Kind::Bsdf)
             for (int k = 0; k < (r.kind == Kind::Brtd ? 3 : 1); ++k) resolve(r.fn[k]);
         for (Callable& c : r.coords) resolve(c);
     }
 }
 
 MaterialCalc::~MaterialCalc() = default;
+
 
 bool MaterialCalc::uses(int32_t material) const {
     if (material < 0 || size_t(material) >= recordOf_.size()) return false;
@@ -242,6 +284,28 @@ Vec3 MaterialCalcEvaluator::anisoU() {
     Vec3 w = toVec(rec_->forward.direction(u));
     double len = length(w);
     return len > 0 && std::isfinite(len) ? w / len : Vec3{};
+}
+
+MaterialCalcEvaluator::BsdfAtHit MaterialCalcEvaluator::bsdf() {
+    RP_CHECK(rec_ && rec_->kind == MaterialCalc::Kind::Bsdf);
+    double v[4];
+    for (int k = 0; k < 4; ++k)
+        v[k] = rec_->exprConstant[k] ? rec_->exprValue[k]
+                                     : eval_.eval(calc_.program_->expression(rec_->expr[k]));
+    BsdfAtHit b;
+    b.data = rec_->bsdf.get();
+    // m_bsdf.c: a thickness within FTINY of 0 is 0; both through the modifier's transform,
+    // then the object's.
+    double thick = std::abs(v[3]) <= 1e-6 ? 0.0 : v[3];
+    Vec3 up = rec_->forward.mapDirection(Vec3{v[0], v[1], v[2]});
+    thick *= rec_->forward.scale;
+    if (object_) {
+        up = object_->forward.mapDirection(up);
+        thick *= object_->forward.scale;
+    }
+    b.up = up;
+    b.thickness = thick;
+    return b;
 }
 
 void MaterialCalcEvaluator::brtdSpecular(Color& reflection, Color& transmission) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "bsdf/bsdf.h"
 #include "calc/data_file.h"
 #include "calc/program.h"
 #include "material/material.h"
@@ -46,7 +47,7 @@ public:
 
 private:
     friend class MaterialCalcEvaluator;
-    enum class Kind : uint8_t { Aniso, Func, Data, Brtd, Prism };
+    enum class Kind : uint8_t { Aniso, Func, Data, Brtd, Prism, Bsdf };
 
     // A function named in a string argument, called with the light direction: a user
     // or builtin function, a variable (RADIANCE's funvalue accepts one: it ignores the
@@ -74,6 +75,7 @@ private:
         Callable fn[3];                 // func/data: fn[0]; BRTDfunc: rbrtd gbrtd bbrtd
         std::vector<Callable> coords;   // data types: x1 .. xN
         std::shared_ptr<const calc::DataFile> data;
+        std::shared_ptr<const bsdf::BsdfData> bsdf;  // BSDF/aBSDF: expr 0-2 up, 3 thickness
         bool needed = true;
     };
 
@@ -105,6 +107,15 @@ public:
     // ux uy uz values through the forward transform). Normalised; zero if degenerate or
     // on a math error (evaluate() then punts to an isotropic frame, as aniso.c does).
     Vec3 anisoU();
+
+    // BSDF/aBSDF (m_bsdf.c): the data, the up vector (world, through the transforms) and
+    // the thickness (world units: scaled as the up vector is; 0 for aBSDF).
+    struct BsdfAtHit {
+        const bsdf::BsdfData* data = nullptr;
+        Vec3 up;
+        double thickness = 0;
+    };
+    BsdfAtHit bsdf();
 
     // BRTDfunc: the ideal specular reflection (rrefl grefl brefl) and transmission
     // (rtrns gtrns btrns) colours at the hit. Not modified by the pattern (m_brdf.c).

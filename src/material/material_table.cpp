@@ -18,7 +18,8 @@ bool isLightType(PrimType t) {
 bool takesDirect(const MaterialParams& m) {
     return std::holds_alternative<NormalParams>(m) || std::holds_alternative<AnisoParams>(m) ||
            std::holds_alternative<AshikParams>(m) ||
-           std::holds_alternative<FuncParams>(m) || std::holds_alternative<BrtdParams>(m);
+           std::holds_alternative<FuncParams>(m) || std::holds_alternative<BrtdParams>(m) ||
+           std::holds_alternative<BsdfParams>(m);
 }
 
 bool opaqueBackAbsorbs(const MaterialParams& m) {

@@ -254,9 +254,18 @@ MaterialParams makeMaterial(const Primitive& p) {
     case PrimType::Prism2:
         // The expressions and the function file are checked by MaterialCalc at load.
         return PrismParams{p.type == PrimType::Prism2 ? 2 : 1};
-    case PrimType::Mist:
     case PrimType::BSDF:
-    case PrimType::ABSDF:
+    case PrimType::ABSDF: {
+        // The strings (thickness, file, up vector, function file) are MaterialCalc's.
+        BsdfParams m;
+        m.absdf = p.type == PrimType::ABSDF;
+        if (p.rargs.size() >= 3) m.frontDiffuse = rgb(p, 0);
+        if (p.rargs.size() >= 6) m.backDiffuse = rgb(p, 3);
+        if (p.rargs.size() >= 9) m.diffuseTransmittance = rgb(p, 6);
+        m.hasBackDiffuse = p.rargs.size() >= 6;
+        return m;
+    }
+    case PrimType::Mist:
     case PrimType::WGMDfunc:
         throw notSupportedYet(p.loc, std::string(primTypeName(p.type)) + " material");
     default:

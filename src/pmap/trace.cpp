@@ -38,9 +38,14 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
     bool sensorFound = false;
     for (size_t i = 0; i < prims.size(); ++i) {
         const Primitive& p = prims[i];
-        if (isModifier(p.type) && materialCalc_ && materialCalc_->uses(int32_t(i)) &&
-            p.type == PrimType::BRTDfunc)
-            roles_[i] |= kFunctions;  // only BRTDfunc's scattering reads its functions
+        // Only BRTDfunc's and the BSDFs' scattering read their functions.
+        const bool readsFunctions = p.type == PrimType::BRTDfunc || p.type == PrimType::BSDF ||
+                                    p.type == PrimType::ABSDF;
+        if (isModifier(p.type) && readsFunctions) {
+            if (!materialCalc_ || !materialCalc_->uses(int32_t(i)))
+                throw InputError(p.loc, "photon tracing needs the functions of " + p.name);
+            roles_[i] |= kFunctions;
+        }
         if (!isModifier(p.type) || !sensors.count(p.name)) continue;
         if (p.type != PrimType::Antimatter)
             throw InputError(p.loc, "photon sensor modifier " + p.name + " is not antimatter");
@@ -105,6 +110,14 @@ void PhotonTracer::setFunctionValues(int32_t material, const Hit& hit, const Vec
     if (!eval) eval.emplace(*materialCalc_);
     const auto at = material::PatternPoint::atHit(dir, hit);
     eval->setHit(material, at, sp.normal, sp.pattern);
+    const PrimType t = scene_.prims[size_t(material)].type;
+    if (t == PrimType::BSDF || t == PrimType::ABSDF) {
+        const auto b = eval->bsdf();
+        sp.bsdf = b.data;
+        sp.uDir = b.up;
+        sp.bsdfThickness = b.thickness;
+        return;
+    }
     Color refl, trans;
     eval->brtdSpecular(refl, trans);
     sp.brtdSpecularReflection = refl;

@@ -4,6 +4,7 @@
 // (ambient) light. Shadow rays and hemisphere samples are in shadow.cpp.
 #include <cmath>
 
+#include "bsdf/bsdf.h"
 #include "light/light_sources.h"
 #include "render/renderer_impl.h"
 #include "util/error.h"
@@ -84,6 +85,11 @@ void Renderer::Context::applyMaterialCalc(int32_t material, const Hit& hit, cons
         sp.directional = &directional;
     } else if (std::holds_alternative<material::FuncParams>(p)) {
         sp.directional = &directional;
+    } else if (std::holds_alternative<material::BsdfParams>(p)) {
+        const auto b = materialCalc.bsdf();
+        sp.bsdf = b.data;
+        sp.uDir = b.up;
+        sp.bsdfThickness = b.thickness;
     }
 }
 
@@ -196,6 +202,9 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     material::SurfacePoint sp = material::makeSurfacePoint(ray.dir, ng, hit.front, layer.pattern);
     sp.normal = n;
     sp.flat = isPlanar(impl.scene.prims[size_t(hit.prim)].type);
+    sp.scatteredRay = state.indirect;
+    sp.specularInPhotons = impl.photons.active() && state.ambientLevel > 0;
+    sp.rayWeight = state.weight;
 
     auto fillFirst = [&](RayResult* f) { recordFirst(f, hit, hit.front ? n : -n, layer.material); };
 
@@ -313,7 +322,10 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
             value += b.ambientReflect *
                      impl.photons.directDensity(*photonLookups, hit.point, n);
         } else {
-            bool transmits = b.ambientTransmit.max() > 0;
+            // Sources behind the surface count where it transmits diffusely, or through
+            // a BSDF's data (whose non-diffuse transmission is sampled, not ambient).
+            bool transmits = b.ambientTransmit.max() > 0 ||
+                             (sp.bsdf && sp.bsdf->hasTransmission());
             shadowBlockedByTransparent_ = shadowInPhotonMap(state);
         // Specular children may have used the function evaluator: set this hit again.
         if (sp.directional) applyMaterialCalc(layer.material, hit, ray.dir, sp);

@@ -53,6 +53,15 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
         ev.colour = Color{1, 1, 1};
         return ev;
     }
+    if (const auto* m = std::get_if<material::BsdfParams>(&params)) {
+        applyMaterialCalc(layer.material, hit, dir, sp);
+        Color c;
+        if (material::bsdfShadowPass(*m, sp, impl.options.backVisible, c)) {
+            ev.kind = ShadowEvent::Kind::Transmit;
+            ev.colour = c;
+        }
+        return ev;
+    }
     if (const auto* m = std::get_if<material::MirrorParams>(&params)) {
         if (!hit.front) return ev;
         ev.kind = ShadowEvent::Kind::Reflect;

@@ -1,0 +1,364 @@
+// Klems matrices (LBNL's fixed angle bases), as RADIANCE's bsdf_m.c reads and uses them:
+// a basis is a list of latitude bands, each cut into equal azimuth patches; a matrix holds
+// one BSDF value per (incident patch, outgoing patch). The four scattering sets differ only
+// in how a patch index maps to a direction (which hemisphere, and the incident side's
+// azimuth turned by 180 degrees, so that index 0 of both is the straight-through pair).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <strings.h>
+
+#include "bsdf/xml_detail.h"
+
+namespace rp::bsdf::detail {
+
+namespace {
+
+struct Latitude {
+    double thetaMin = 0;  // degrees
+    int nphis = 0;        // 0 ends the list (its thetaMin is 90)
+};
+
+struct AngleBasis {
+    std::string name;
+    int nangles = 0;
+    std::vector<Latitude> lat;  // with the closing {90, 0}
+};
+
+// The three standard bases (bsdf_m.c abase_list); a file may define others.
+std::vector<AngleBasis> standardBases() {
+    auto make = [](const char* name, std::vector<Latitude> lat) {
+        AngleBasis b{name, 0, std::move(lat)};
+        for (const Latitude& l : b.lat) b.nangles += l.nphis;
+        return b;
+    };
+    return {
+        make("LBNL/Klems Full", {{0, 1}, {5, 8}, {15, 16}, {25, 20}, {35, 24}, {45, 24},
+                                 {55, 24}, {65, 16}, {75, 12}, {90, 0}}),
+        make("LBNL/Klems Half", {{0, 1}, {6.5, 8}, {19.5, 12}, {32.5, 16}, {46.5, 20},
+                                 {61.5, 12}, {76.5, 4}, {90, 0}}),
+        make("LBNL/Klems Quarter", {{0, 1}, {9, 8}, {27, 12}, {46, 12}, {66, 8}, {90, 0}}),
+    };
+}
+
+double sq(double x) { return x * x; }
+constexpr double kDeg = kPi / 180;
+
+// Patch `ndx` of the +Z hemisphere, at fractional position (rx, ry) inside it (bsdf_m.c
+// fo_getvec: cos^2 of the polar angle is uniform over the band, so positions are uniform
+// in projected solid angle).
+Vec3 patchVector(const AngleBasis& b, int ndx, double rx, double ry) {
+    std::size_t li = 0;
+    while (ndx >= b.lat[li].nphis) ndx -= b.lat[li++].nphis;
+    const double c2 = (1 - rx) * sq(std::cos(kDeg * b.lat[li].thetaMin)) +
+                      rx * sq(std::cos(kDeg * b.lat[li + 1].thetaMin));
+    const double cz = std::sqrt(c2), sz = std::sqrt(std::max(0.0, 1 - c2));
+    const double azi = 2 * kPi * (ndx + ry - .5) / b.lat[li].nphis;
+    return {std::cos(azi) * sz, std::sin(azi) * sz, cz};
+}
+
+// The patch of a +Z-hemisphere direction, or -1 (bsdf_m.c fo_getndx).
+int patchIndex(const AngleBasis& b, const Vec3& v) {
+    if (v.z < 0 || v.z > 1.00001) return -1;
+    const double pol = std::acos(std::min(v.z, 1.0)) / kDeg;
+    double azi = std::atan2(v.y, v.x) / kDeg;
+    if (azi < 0) azi += 360;
+    std::size_t li = 1;
+    for (; b.lat[li].thetaMin <= pol; ++li)
+        if (!b.lat[li].nphis) return -1;
+    --li;
+    int ndx = static_cast<int>(azi / 360 * b.lat[li].nphis + .5);
+    if (ndx >= b.lat[li].nphis) ndx = 0;
+    while (li--) ndx += b.lat[li].nphis;
+    return ndx;
+}
+
+// Projected solid angle of a patch (bsdf_m.c io_getohm), -1 for a bad index.
+double patchOmega(const AngleBasis& b, int ndx) {
+    if (ndx < 0 || ndx >= b.nangles) return -1;
+    std::size_t li = 0;
+    while (ndx >= b.lat[li].nphis) ndx -= b.lat[li++].nphis;
+    return kPi * (sq(std::cos(kDeg * b.lat[li].thetaMin)) -
+                  sq(std::cos(kDeg * b.lat[li + 1].thetaMin))) / b.lat[li].nphis;
+}
+
+// How a side's index maps to a local direction: the +Z patch vector with x, y and z
+// negated as flagged (front incident: -x -y; back incident: all; back exiting: -z).
+struct Side {
+    bool flipXY = false, flipZ = false;
+    Vec3 apply(Vec3 v) const {
+        if (flipXY) v.x = -v.x, v.y = -v.y;
+        if (flipZ) v.z = -v.z;
+        return v;
+    }
+};
+constexpr Side kFrontIn{true, false}, kBackIn{true, true}, kFrontOut{false, false},
+    kBackOut{false, true};
+
+struct Axis {
+    const AngleBasis* basis;
+    Side side;
+    int index(const Vec3& v) const { return patchIndex(*basis, side.apply(v)); }
+    Vec3 vector(int ndx, double rx, double ry) const {
+        return side.apply(patchVector(*basis, ndx, rx, ry));
+    }
+    double omega(int ndx) const { return patchOmega(*basis, ndx); }
+};
+
+// Cumulative distribution over the outgoing patches for one incident patch.
+struct Cdf {
+    std::vector<double> c;  // c[0] = 0 ... c[n] = total
+};
+
+class KlemsMatrix final : public Distribution {
+public:
+    KlemsMatrix(Axis in, Axis out) : in_(in), out_(out) {
+        values_.assign(static_cast<std::size_t>(in.basis->nangles) * out.basis->nangles, 0.f);
+    }
+    int ninc() const { return in_.basis->nangles; }
+    int nout() const { return out_.basis->nangles; }
+    float& at(int o, int i) { return values_[static_cast<std::size_t>(o) * ninc() + i]; }
+    float at(int o, int i) const { return values_[static_cast<std::size_t>(o) * ninc() + i]; }
+    std::vector<float>& values() { return values_; }
+    const Axis& inAxis() const { return in_; }
+    const Axis& outAxis() const { return out_; }
+
+    // Tables for sampling, built once the values are final (after the diffuse part is
+    // taken out): one per incident patch, and one per outgoing patch for reciprocal use.
+    void buildCdfs() {
+        forward_.assign(ninc(), {});
+        reverse_.assign(nout(), {});
+        for (int i = 0; i < ninc(); ++i) {
+            auto& c = forward_[i].c;
+            c.assign(nout() + 1, 0.0);
+            for (int o = 0; o < nout(); ++o) c[o + 1] = c[o] + at(o, i) * out_.omega(o);
+        }
+        for (int o = 0; o < nout(); ++o) {
+            auto& c = reverse_[o].c;
+            c.assign(ninc() + 1, 0.0);
+            for (int i = 0; i < ninc(); ++i) c[i + 1] = c[i] + at(o, i) * in_.omega(i);
+        }
+    }
+
+    Color value(const Vec3& inV, const Vec3& outV) const override {
+        int i = in_.index(inV), o = out_.index(outV);
+        if (i < 0 && o < 0) {  // reciprocity (bsdf_m.c SDgetMtxBSDF)
+            i = in_.index(outV);
+            o = out_.index(inV);
+        }
+        if (i < 0 || o < 0) return {};
+        return Color::grey(at(o, i));
+    }
+
+    void projectedSolidAngle(const Vec3& v1, const Vec3* v2p, SizeQuery q,
+                             double psa[2]) const override {
+        const Vec3& v2 = v2p ? *v2p : v1;
+        double outPsa = out_.omega(out_.index(v1));
+        double incPsa = in_.omega(in_.index(v2));
+        if (v2p && outPsa <= 0 && incPsa <= 0) {
+            incPsa = out_.omega(out_.index(v2));
+            outPsa = in_.omega(in_.index(v1));
+        }
+        if (q == SizeQuery::Max) {
+            psa[0] = std::max({psa[0], incPsa, outPsa});
+            return;
+        }
+        if (q == SizeQuery::MinMax) psa[1] = std::max({psa[1], incPsa, outPsa});
+        if (incPsa > 0 && incPsa < psa[0]) psa[0] = incPsa;
+        if (outPsa > 0 && outPsa < psa[0]) psa[0] = outPsa;
+    }
+
+    double hemispherical(const Vec3& inV) const override {
+        const Cdf* c = cdfFor(inV).first;
+        return c ? c->c.back() : 0.0;
+    }
+
+    bool sample(const Vec3& inV, double x, double y, Vec3& out) const override {
+        const auto [cdf, reversed] = cdfFor(inV);
+        if (!cdf || cdf->c.back() <= 1e-6) return false;
+        const auto& c = cdf->c;
+        const double target = std::clamp(x, 0.0, 1.0) * c.back();
+        // The last patch with c[k] <= target and a non-zero width.
+        auto it = std::upper_bound(c.begin() + 1, c.end(), target);
+        int k = static_cast<int>(it - c.begin()) - 1;
+        k = std::clamp(k, 0, static_cast<int>(c.size()) - 2);
+        while (k > 0 && c[k + 1] <= c[k]) --k;
+        const double width = c[k + 1] - c[k];
+        const double rx = width > 0 ? std::clamp((target - c[k]) / width, 0.0, 1.0) : .5;
+        out = reversed ? in_.vector(k, rx, y) : out_.vector(k, rx, y);
+        return true;
+    }
+
+private:
+    std::pair<const Cdf*, bool> cdfFor(const Vec3& inV) const {
+        if (const int i = in_.index(inV); i >= 0) return {&forward_[i], false};
+        if (const int o = out_.index(inV); o >= 0) return {&reverse_[o], true};
+        return {nullptr, false};
+    }
+
+    Axis in_, out_;
+    std::vector<float> values_;
+    std::vector<Cdf> forward_, reverse_;
+};
+
+// A basis defined in the file (bsdf_m.c load_angle_basis); standard names are kept.
+void loadBasis(const pugi::xml_node& wab, const XmlContext& ctx, std::vector<AngleBasis>& bases) {
+    const std::string name = trimmedText(wab.child("AngleBasisName"));
+    if (name.empty()) ctx.fail(wab, "AngleBasis without AngleBasisName");
+    for (const AngleBasis& b : bases)
+        if (strcasecmp(b.name.c_str(), name.c_str()) == 0) return;
+    AngleBasis b{name, 0, {{0, 0}}};
+    for (pugi::xml_node blk : wab.children("AngleBasisBlock")) {
+        pugi::xml_node bounds = blk.child("ThetaBounds");
+        const double upper = std::atof(bounds.child_value("UpperTheta"));
+        if (b.lat.size() > 1 &&
+            std::abs(std::atof(bounds.child_value("LowerTheta")) - b.lat.back().thetaMin) > 1e-6 * upper)
+            ctx.fail(blk, "theta values disagree in angle basis '" + name + "'");
+        const int nphis = std::atoi(blk.child_value("nPhis"));
+        if (nphis <= 0 || (nphis == 1 && b.lat.back().thetaMin > 1e-6))
+            ctx.fail(blk, "illegal phi count in angle basis '" + name + "'");
+        b.lat.back().nphis = nphis;
+        b.nangles += nphis;
+        b.lat.push_back({upper, 0});
+    }
+    if (b.nangles == 0) ctx.fail(wab, "angle basis '" + name + "' has no AngleBasisBlock");
+    bases.push_back(std::move(b));
+}
+
+const AngleBasis& findBasis(const pugi::xml_node& wdb, const char* tag, const XmlContext& ctx,
+                            const std::vector<AngleBasis>& bases) {
+    const std::string name = trimmedText(wdb.child(tag));
+    if (name.empty()) ctx.fail(wdb, std::string("missing ") + tag);
+    for (const AngleBasis& b : bases)
+        if (strcasecmp(b.name.c_str(), name.c_str()) == 0) return b;
+    ctx.fail(wdb.child(tag), std::string("unknown ") + tag + " '" + name + "'");
+}
+
+// Reads `n` numbers (blank- or comma-separated) into the matrix, failing at the line of
+// the first bad or missing one.
+void readValues(const pugi::xml_node& sdNode, const XmlContext& ctx, bool rows, KlemsMatrix& m) {
+    const char* text = sdNode.child_value();
+    const char* p = text;
+    const int ninc = m.ninc(), nout = m.nout();
+    const int n = ninc * nout;
+    const int line0 = ctx.loc(sdNode).line;
+    auto lineAt = [&](const char* q) {
+        return line0 + static_cast<int>(std::count(text, q, '\n'));
+    };
+    for (int k = 0; k < n; ++k) {
+        while (*p && (std::isspace(static_cast<unsigned char>(*p)) || *p == ',')) ++p;
+        char* end = nullptr;
+        const double v = std::strtod(p, &end);
+        if (end == p) {
+            const std::string what = *p ? "bad number in ScatteringData" : "too few values in ScatteringData";
+            throw InputError(SourceLoc{ctx.path(), lineAt(p)},
+                             what + " (" + std::to_string(k) + " of " + std::to_string(n) + ")");
+        }
+        p = end;
+        const float val = static_cast<float>(v < 0 ? 0 : v);  // negative values are noise
+        if (rows)
+            m.at(k % nout, k / nout) = val;
+        else
+            m.values()[k] = val;
+    }
+    while (*p && (std::isspace(static_cast<unsigned char>(*p)) || *p == ',')) ++p;
+    if (*p)
+        throw InputError(SourceLoc{ctx.path(), lineAt(p)},
+                         "more than " + std::to_string(n) + " values in ScatteringData");
+}
+
+// The non-diffuse set a WavelengthDataDirection names (WINDOW's front is our back), and
+// the direction mapping of its matrix.
+struct SetChoice {
+    std::optional<ScatteringSet>* set;
+    Side in, out;
+};
+
+SetChoice chooseSet(const pugi::xml_node& wdb, const XmlContext& ctx, BsdfData& sd) {
+    pugi::xml_node dir = wdb.child("WavelengthDataDirection");
+    if (textIs(dir, "Transmission Front")) return {&sd.tb, kBackIn, kFrontOut};
+    if (textIs(dir, "Transmission Back")) return {&sd.tf, kFrontIn, kBackOut};
+    if (textIs(dir, "Reflection Front")) return {&sd.rb, kBackIn, kBackOut};
+    if (textIs(dir, "Reflection Back")) return {&sd.rf, kFrontIn, kFrontOut};
+    ctx.fail(dir ? dir : wdb, "unknown WavelengthDataDirection '" + trimmedText(dir) + "'");
+}
+
+// Takes the minimum of the matrix out as a Lambertian part (bsdf_m.c subtract_min: only
+// where it is worth a reflectance of .01), returned as a hemispherical value.
+double extractDiffuse(KlemsMatrix& m) {
+    float lo = HUGE_VALF;
+    for (float v : m.values()) lo = std::min(lo, v);
+    if (!(lo > .01 / kPi)) return 0;
+    for (float& v : m.values()) v -= lo;
+    return kPi * lo;
+}
+
+// minProjSA and maxHemi of a one-matrix set (bsdf_m.c get_extrema).
+void setExtrema(ScatteringSet& s, const KlemsMatrix& m) {
+    s.minProjSA = kPi;
+    s.maxHemi = 0;
+    for (int o = 0; o < m.nout(); ++o) s.minProjSA = std::min(s.minProjSA, m.outAxis().omega(o));
+    for (int i = 0; i < m.ninc(); ++i) {
+        double hemi = 0;
+        for (int o = 0; o < m.nout(); ++o) hemi += m.outAxis().omega(o) * m.at(o, i);
+        s.maxHemi = std::max(s.maxHemi, hemi);
+    }
+    if (m.inAxis().basis != m.outAxis().basis)
+        for (int i = 0; i < m.ninc(); ++i) s.minProjSA = std::min(s.minProjSA, m.inAxis().omega(i));
+}
+
+}  // namespace
+
+void loadKlems(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData& sd) {
+    pugi::xml_node def = layer.child("DataDefinition");
+    pugi::xml_node ids = def.child("IncidentDataStructure");
+    bool rows;
+    if (textIs(ids, "Rows"))
+        rows = true;
+    else if (textIs(ids, "Columns"))
+        rows = false;
+    else
+        ctx.fail(ids ? ids : layer, "unsupported IncidentDataStructure '" + trimmedText(ids) + "'");
+    std::vector<AngleBasis> bases = standardBases();
+    for (pugi::xml_node wab : def.children("AngleBasis")) loadBasis(wab, ctx, bases);
+    // The bases are referred to by the matrices: keep them with the data.
+    auto shared = std::make_shared<std::vector<AngleBasis>>(std::move(bases));
+    for (pugi::xml_node wld : layer.children("WavelengthData")) {
+        // Only the photopic (Y) channel: CIE-X and CIE-Z data, where present, are not used
+        // (the BSDF is taken as grey).
+        if (!textIs(wld.child("Wavelength"), "Visible")) continue;
+        for (pugi::xml_node wdb : wld.children("WavelengthDataBlock")) {
+            const SetChoice ch = chooseSet(wdb, ctx, sd);
+            const AngleBasis& ib = findBasis(wdb, "ColumnAngleBasis", ctx, *shared);
+            const AngleBasis& ob = findBasis(wdb, "RowAngleBasis", ctx, *shared);
+            auto m = std::make_unique<KlemsMatrix>(Axis{&ib, ch.in}, Axis{&ob, ch.out});
+            pugi::xml_node sdNode = wdb.child("ScatteringData");
+            if (!sdNode || trimmedText(sdNode).empty()) ctx.fail(wdb, "missing ScatteringData");
+            readValues(sdNode, ctx, rows, *m);
+            // A later block for the same set replaces an earlier one, as in RADIANCE.
+            if (!*ch.set) ch.set->emplace();
+            (*ch.set)->components.clear();
+            (*ch.set)->components.push_back(std::move(m));
+        }
+    }
+    sd.keepAlive = shared;
+    Color* lamb[4] = {&sd.rLambFront, &sd.rLambBack, &sd.tLambFront, &sd.tLambBack};
+    std::optional<ScatteringSet>* sets[4] = {&sd.rf, &sd.rb, &sd.tf, &sd.tb};
+    for (int k = 0; k < 4; ++k) {
+        if (!*sets[k]) continue;
+        ScatteringSet& s = **sets[k];
+        auto& m = static_cast<KlemsMatrix&>(*s.components.front());
+        setExtrema(s, m);
+        const double d = extractDiffuse(m);
+        *lamb[k] = Color::grey(d);
+        s.maxHemi -= d;
+        m.buildCdfs();
+    }
+    // One transmission direction serves both (bsdf_m.c).
+    if (sd.tb && !sd.tf) sd.tLambFront = sd.tLambBack;
+    else if (sd.tf && !sd.tb) sd.tLambBack = sd.tLambFront;
+}
+
+}  // namespace rp::bsdf::detail

@@ -1,0 +1,235 @@
+// Klems data: loading, energy, sampling against the tabulated distribution, bad files.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "bsdf/bsdf.h"
+#include "util/error.h"
+#include "util/rng.h"
+#include "util/temp_dir_for_tests.h"
+
+namespace rp::bsdf {
+namespace {
+
+const std::string kKlems = std::string(RP_SHARED_DIR) + "/validation/bsdf/blinds_klems.xml";
+
+// The Klems full basis, written out again here (independent of klems.cpp): band lower
+// edges in degrees and patch counts.
+const double kTheta[] = {0, 5, 15, 25, 35, 45, 55, 65, 75, 90};
+const int kPhis[] = {1, 8, 16, 20, 24, 24, 24, 16, 12};
+
+double bandOmega(int band) {
+    const double a = std::cos(kTheta[band] * kPi / 180), b = std::cos(kTheta[band + 1] * kPi / 180);
+    return kPi * (a * a - b * b) / kPhis[band];
+}
+int bandOf(int patch) {
+    int band = 0;
+    while (patch >= kPhis[band]) patch -= kPhis[band++];
+    return band;
+}
+// The centre direction of a patch of the +Z hemisphere (azimuth of patch j is j*360/n).
+Vec3 patchCentre(int patch) {
+    int band = 0;
+    while (patch >= kPhis[band]) patch -= kPhis[band++];
+    const double t = band == 0 ? 0 : (kTheta[band] + kTheta[band + 1]) / 2 * kPi / 180;
+    const double a = 2 * kPi * patch / kPhis[band];
+    return {std::cos(a) * std::sin(t), std::sin(a) * std::sin(t), std::cos(t)};
+}
+
+// The raw matrix of one WavelengthDataDirection, read with a plain scan of the file
+// (columns: incident index runs fastest).
+std::vector<double> rawMatrix(const std::string& direction) {
+    std::ifstream f(kKlems);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    const std::string s = ss.str();
+    const std::size_t at = s.find("<WavelengthDataDirection>" + direction);
+    const std::size_t beg = s.find("<ScatteringData>", at) + 16;
+    std::istringstream vals(s.substr(beg, s.find("</ScatteringData>", beg) - beg));
+    std::vector<double> v;
+    std::string tok;
+    while (vals >> tok) {
+        if (tok.back() == ',') tok.pop_back();
+        if (!tok.empty()) v.push_back(std::max(0.0, std::stod(tok)));
+    }
+    return v;
+}
+
+TEST(Klems, LoadsGeometryAndFourSets) {
+    const auto sd = loadBsdfFile(kKlems);
+    EXPECT_EQ(sd->name, "blinds_klems");
+    EXPECT_NEAR(sd->width, 3, 1e-12);
+    EXPECT_NEAR(sd->height, 1, 1e-12);
+    EXPECT_NEAR(sd->thickness, .025, 1e-12);
+    EXPECT_NE(sd->mgf.find("blinds20"), std::string::npos);
+    EXPECT_TRUE(sd->rf && sd->rb && sd->tf && sd->tb);
+    EXPECT_NEAR(sd->rf->minProjSA, bandOmega(8), 1e-9);
+}
+
+// Light from front patch i (incident vectors point away from the surface, so a patch of
+// the front-incident side is the +Z patch turned by 180 degrees) through to the back:
+// "Transmission Back" in WINDOW's terms.
+TEST(Klems, ValuesAndHemisphericalMatchTheFile) {
+    const auto sd = loadBsdfFile(kKlems);
+    const std::vector<double> raw = rawMatrix("Transmission Back");
+    ASSERT_EQ(raw.size(), 145u * 145u);
+    double minv = 1e30;
+    for (double v : raw) minv = std::min(minv, v);
+    const double lamb = minv > .01 / kPi ? minv : 0;
+    EXPECT_NEAR(sd->tLambFront.r, kPi * lamb, 1e-6);
+    for (int i : {0, 7, 40, 100, 144}) {
+        const Vec3 c = patchCentre(i);
+        const Vec3 in{-c.x, -c.y, c.z};
+        double hemi = 0;
+        for (int o = 0; o < 145; ++o) {
+            const Vec3 co = patchCentre(o);
+            const Vec3 out{co.x, co.y, -co.z};
+            const double want = raw[o * 145 + i];
+            EXPECT_NEAR(sd->evaluate(in, out).g, want, 1e-5 * (1 + want)) << i << " " << o;
+            hemi += (want - lamb) * bandOmega(bandOf(o));
+        }
+        EXPECT_NEAR(sd->nonDiffuseHemispherical(in, true), hemi, 1e-6 * (1 + hemi));
+    }
+}
+
+// A uniform random direction (in projected solid angle) inside a +Z patch.
+Vec3 inPatch(int patch, Rng& rng) {
+    int band = 0;
+    while (patch >= kPhis[band]) patch -= kPhis[band++];
+    const double a = std::cos(kTheta[band] * kPi / 180), b = std::cos(kTheta[band + 1] * kPi / 180);
+    const double c2 = a * a + (b * b - a * a) * rng.uniform();
+    const double az = 2 * kPi * (patch + rng.uniform() - .5) / kPhis[band];
+    const double z = std::sqrt(c2), r = std::sqrt(1 - c2);
+    return {r * std::cos(az), r * std::sin(az), z};
+}
+
+// The patch of a +Z direction: band by polar angle, patch by azimuth (centred on j/n).
+int patchOf(const Vec3& v) {
+    const double pol = std::acos(std::min(1.0, v.z)) * 180 / kPi;
+    int band = 0, first = 0;
+    while (band < 8 && pol >= kTheta[band + 1]) first += kPhis[band++];
+    double az = std::atan2(v.y, v.x) / (2 * kPi);
+    if (az < 0) az += 1;
+    return first + static_cast<int>(std::floor(az * kPhis[band] + .5)) % kPhis[band];
+}
+
+// Energy: the integral of the BSDF (all of it) times |cos| over the sphere, with random
+// points inside every patch (so the patch boundaries of the lookup are checked too),
+// equals the file's hemispherical reflectance plus transmittance.
+TEST(Klems, IntegralOverPatchesMatchesTheFile) {
+    const auto sd = loadBsdfFile(kKlems);
+    const std::vector<double> rRaw = rawMatrix("Reflection Back"), tRaw = rawMatrix("Transmission Back");
+    Rng rng(11, RngDomain::Test, 0);
+    for (int i : {0, 30, 90}) {
+        const Vec3 c = patchCentre(i);
+        const Vec3 in{-c.x, -c.y, c.z};
+        double file = 0, sum = 0;
+        for (int o = 0; o < 145; ++o) {
+            file += (rRaw[o * 145 + i] + tRaw[o * 145 + i]) * bandOmega(bandOf(o));
+            const int m = 20;
+            double acc = 0;
+            for (int k = 0; k < m; ++k) {
+                const Vec3 up = inPatch(o, rng);
+                acc += sd->evaluate(in, up).g + sd->evaluate(in, {up.x, up.y, -up.z}).g;
+            }
+            sum += acc / m * bandOmega(bandOf(o));
+        }
+        EXPECT_NEAR(sum, file, 1e-4 * file) << "incident patch " << i;
+    }
+}
+
+// Sampling: the outgoing patches drawn for an incident patch follow the tabulated
+// value * projected solid angle (chi-square, 1 % significance).
+TEST(Klems, SamplingFollowsTheTable) {
+    const auto sd = loadBsdfFile(kKlems);
+    const std::vector<double> raw = rawMatrix("Transmission Back");
+    const Distribution& d = *sd->tf->components.front();
+    Rng rng(5, RngDomain::Test, 0);
+    for (int i : {0, 12, 60}) {
+        const Vec3 c = patchCentre(i);
+        const Vec3 in{-c.x, -c.y, c.z};
+        std::vector<double> p(145);
+        double total = 0;
+        const double lamb = sd->tLambFront.g / kPi;
+        for (int o = 0; o < 145; ++o) total += p[o] = (raw[o * 145 + i] - lamb) * bandOmega(bandOf(o));
+        const int n = 200000;
+        std::vector<int> count(145);
+        for (int k = 0; k < n; ++k) {
+            Vec3 out;
+            ASSERT_TRUE(d.sample(in, rng.uniform(), rng.uniform(), out));
+            ASSERT_LT(out.z, 0);
+            ++count[patchOf({out.x, out.y, -out.z})];
+        }
+        // Bins merged so that each expects at least 20 draws.
+        double chi2 = 0, expAcc = 0, obsAcc = 0;
+        int dof = -1;
+        for (int o = 0; o < 145; ++o) {
+            expAcc += n * p[o] / total;
+            obsAcc += count[o];
+            if (expAcc >= 20) {
+                chi2 += (obsAcc - expAcc) * (obsAcc - expAcc) / expAcc;
+                expAcc = obsAcc = 0;
+                ++dof;
+            }
+        }
+        ASSERT_GT(dof, 5);
+        // The 1 % point of chi-square (normal approximation).
+        EXPECT_LT(chi2, dof + 2.33 * std::sqrt(2.0 * dof)) << "incident patch " << i;
+    }
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+    std::ofstream(path) << text;
+}
+
+std::string errorOf(const std::string& path) {
+    try {
+        loadBsdfFile(path);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+const char* kHead =
+    "<?xml version=\"1.0\"?>\n<WindowElement>\n<FileType>BSDF</FileType>\n<Optical>\n<Layer>\n"
+    "<DataDefinition>\n<IncidentDataStructure>Columns</IncidentDataStructure>\n"
+    "</DataDefinition>\n<WavelengthData>\n<Wavelength>Visible</Wavelength>\n"
+    "<WavelengthDataBlock>\n<WavelengthDataDirection>Reflection Back</WavelengthDataDirection>\n";
+
+TEST(Klems, BadFilesGiveOneLineErrors) {
+    TempDir dir;
+    const std::string p = dir.file("b.xml");
+    EXPECT_NE(errorOf(dir.file("missing.xml")).find("missing.xml: cannot open"), std::string::npos);
+    writeFile(p, std::string(kHead) + "<ColumnAngleBasis>LBNL/Klems Full");  // truncated
+    EXPECT_NE(errorOf(p).find("b.xml:"), std::string::npos);
+    EXPECT_NE(errorOf(p).find("bad XML"), std::string::npos);
+    writeFile(p, "<?xml version=\"1.0\"?>\n<Scene/>\n");
+    EXPECT_NE(errorOf(p).find("b.xml:2: not a BSDF file"), std::string::npos);
+    writeFile(p, std::string(kHead) +
+                     "<ColumnAngleBasis>LBNL/Klems Eighth</ColumnAngleBasis>\n"
+                     "<RowAngleBasis>LBNL/Klems Full</RowAngleBasis>\n"
+                     "<ScatteringData>1 2 3</ScatteringData>\n"
+                     "</WavelengthDataBlock></WavelengthData></Layer></Optical></WindowElement>\n");
+    EXPECT_NE(errorOf(p).find("b.xml:13: unknown ColumnAngleBasis 'LBNL/Klems Eighth'"),
+              std::string::npos) << errorOf(p);
+    writeFile(p, std::string(kHead) +
+                     "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>\n"
+                     "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis>\n"
+                     "<ScatteringData>\n1 2 3\n4 5\n</ScatteringData>\n"
+                     "</WavelengthDataBlock></WavelengthData></Layer></Optical></WindowElement>\n");
+    EXPECT_NE(errorOf(p).find("b.xml:18: too few values in ScatteringData (5 of 1681)"),
+              std::string::npos) << errorOf(p);
+    writeFile(p, std::string(kHead) +
+                     "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>\n"
+                     "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis>\n"
+                     "<ScatteringData>\n1 2 x 3\n</ScatteringData>\n"
+                     "</WavelengthDataBlock></WavelengthData></Layer></Optical></WindowElement>\n");
+    EXPECT_NE(errorOf(p).find("b.xml:16: bad number in ScatteringData (2 of 1681)"),
+              std::string::npos) << errorOf(p);
+}
+
+}  // namespace
+}  // namespace rp::bsdf

@@ -1,0 +1,831 @@
+// Variable-resolution BSDF data ("tensor trees", LBNL/Shirley-Chiu basis) as RADIANCE's
+// bsdf_t.c reads and uses them: 3-D isotropic (TensorTree3) and 4-D (TensorTree4) trees
+// over the unit hypercube, incident coordinates first. A 4-D tree's coordinates are the
+// Shirley-Chiu square positions of -in (dims 0, 1) and of out (dims 2, 3); a 3-D tree's
+// are the incident radius, .5 - |in.xy| / 2 (only [0, .5) used), and the square position
+// of out rotated so that -in lies along +X. Values are per-steradian BSDFs, constant on
+// each leaf (no interpolation). Sampling tables are built per incident cell on first
+// use and published lock-free.
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <mutex>
+
+#include "bsdf/xml_detail.h"
+
+namespace rp::bsdf::detail {
+namespace {
+
+constexpr double kTiny = 1e-6;           // RADIANCE FTINY
+constexpr double kMapShrink = 0.9999999999999;  // disk2square.c's guard factor
+constexpr int kHilbertBits = 16;         // output cells are located on a 2^16 grid
+constexpr double kHilbertScale = 65536.0;
+constexpr double kCumlMax = 4294967295.0;  // cumulative values are 32-bit, as RADIANCE's
+
+// RADIANCE's sidef: which way the tree scatters (the sampled direction's side follows).
+enum class Side : uint8_t { ReflFront, ReflBack, XmitFront, XmitBack };
+
+// Shirley-Chiu: unit disk -> unit square (inverse of squareToDisk), with RADIANCE's
+// tiny scale factor so that cells are assigned exactly as RADIANCE assigns them.
+void diskToSquare(double dx, double dy, double sq[2]) {
+    const double r = std::sqrt(dx * dx + dy * dy);
+    double phi = std::atan2(dy, dx);
+    if (phi < -kPi / 4) phi += 2 * kPi;  // [-pi/4, 7pi/4)
+    double a, b;
+    if (phi < kPi / 4) {
+        a = r;
+        b = phi * a / (kPi / 4);
+    } else if (phi < 3 * kPi / 4) {
+        b = r;
+        a = -(phi - kPi / 2) * b / (kPi / 4);
+    } else if (phi < 5 * kPi / 4) {
+        a = -r;
+        b = (phi - kPi) * a / (kPi / 4);
+    } else {
+        b = -r;
+        a = -(phi - 3 * kPi / 2) * b / (kPi / 4);
+    }
+    sq[0] = a * (0.5 / kMapShrink) + 0.5;
+    sq[1] = b * (0.5 / kMapShrink) + 0.5;
+}
+
+// Shirley-Chiu: unit square -> unit disk, area-preserving (so uniform square samples
+// are cosine-distributed directions).
+void squareToDisk(double u, double v, double& dx, double& dy) {
+    const double a = 2 * u - 1, b = 2 * v - 1;
+    double r, phi;
+    if (a > -b) {
+        if (a > b) { r = a; phi = (kPi / 4) * (b / a); }
+        else { r = b; phi = (kPi / 4) * (2 - a / b); }
+    } else {
+        if (a < b) { r = -a; phi = (kPi / 4) * (4 + b / a); }
+        else { r = -b; phi = b != 0 ? (kPi / 4) * (6 - a / b) : 0; }
+    }
+    r *= kMapShrink;
+    dx = r * std::cos(phi);
+    dy = r * std::sin(phi);
+}
+
+// Rotation about +Z by theta (RADIANCE spinvector with the Z axis).
+Vec3 spinZ(const Vec3& v, double theta) {
+    const double c = std::cos(theta), s = std::sin(theta);
+    return {v.x * c - v.y * s, v.x * s + v.y * c, v.z};
+}
+
+// Hilbert curve on a 2^16 x 2^16 grid. Every aligned 2^k square is one contiguous run
+// of 4^k indices, so sorting output cells by index orders them along the curve (nearby
+// random numbers give nearby directions) and a cell's run starts at its first index.
+uint32_t hilbertIndex(uint32_t x, uint32_t y) {
+    uint32_t d = 0;
+    for (uint32_t s = 1u << (kHilbertBits - 1); s > 0; s >>= 1) {
+        const uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
+        d += s * s * ((3 * rx) ^ ry);
+        if (ry == 0) {  // rotate the quadrant so the sub-curve starts where it enters
+            if (rx == 1) { x = ~x; y = ~y; }
+            std::swap(x, y);
+        }
+    }
+    return d;
+}
+
+void hilbertPoint(uint32_t d, uint32_t& x, uint32_t& y) {
+    x = y = 0;
+    for (uint32_t s = 1; s < (1u << kHilbertBits); s <<= 1) {
+        const uint32_t rx = 1 & (d >> 1), ry = 1 & (d ^ rx);
+        if (ry == 0) {
+            if (rx == 1) { x = s - 1 - x; y = s - 1 - y; }
+            std::swap(x, y);
+        }
+        x += s * rx;
+        y += s * ry;
+        d >>= 2;
+    }
+}
+
+// ---------------------------------------------------------------------------------
+// The tree: nodes in one array (a branch's 2^ndim children are contiguous), leaf grids
+// in one value array. A grid of log2 resolution k holds 2^(ndim k) values, dimension 0
+// most significant; a branch's child n covers the upper half of dimension i where bit
+// i of n is set (RADIANCE's layout).
+struct Node {
+    int32_t log2GR;  // < 0: branch
+    uint32_t index;  // first child (branch) or first value (grid)
+};
+
+struct Tree {
+    int ndim = 4;
+    std::vector<Node> nodes;
+    std::vector<float> values;
+
+    // The leaf value at pos (each coordinate in [0,1)) and the leaf's width.
+    float lookup(const double pos[4], double& width) const;
+    // Calls f(value, cellMin[4], cellSize) for every leaf cell containing pos in the
+    // dimensions of `fixedMask`.
+    template <class F>
+    void traverse(const double pos[4], unsigned fixedMask, F&& f) const {
+        const double cmin[4] = {0, 0, 0, 0};
+        visit(0, cmin, 1.0, pos, fixedMask, f);
+    }
+    template <class F>
+    void visit(uint32_t n, const double cmin[4], double csiz, const double pos[4],
+               unsigned fixedMask, F& f) const;
+    template <class F>
+    void visitGrid(const Node& nd, const double cmin[4], double csiz, const double pos[4],
+                   unsigned fixedMask, F& f) const;
+
+    double smallestLeaf(uint32_t n = 0) const;
+    double boxAverage(uint32_t n, const double bmin[4], const double bmax[4]) const;
+    float minimum(uint32_t n) const;
+    float liveMinimum() const;
+};
+
+float Tree::lookup(const double pos[4], double& width) const {
+    double p[4];
+    for (int i = 0; i < ndim; ++i) p[i] = std::clamp(pos[i], 0.0, std::nextafter(1.0, 0.0));
+    double w = 1;
+    const Node* nd = &nodes[0];
+    while (nd->log2GR < 0) {
+        unsigned child = 0;
+        for (int i = 0; i < ndim; ++i) {
+            p[i] *= 2;
+            if (p[i] >= 1) { p[i] -= 1; child |= 1u << i; }
+        }
+        w *= .5;
+        nd = &nodes[nd->index + child];
+    }
+    const int k = nd->log2GR;
+    const uint32_t res = 1u << k;
+    size_t idx = 0;
+    for (int i = 0; i < ndim; ++i)
+        idx = (idx << k) | std::min(static_cast<uint32_t>(p[i] * res), res - 1);
+    width = w / res;
+    return values[nd->index + idx];
+}
+
+template <class F>
+void Tree::visit(uint32_t n, const double cmin[4], double csiz, const double pos[4],
+                 unsigned fixedMask, F& f) const {
+    const Node& nd = nodes[n];
+    if (nd.log2GR >= 0) {
+        visitGrid(nd, cmin, csiz, pos, fixedMask, f);
+        return;
+    }
+    const double half = csiz * .5;
+    for (unsigned child = 0; child < (1u << ndim); ++child) {
+        double sub[4];
+        bool keep = true;
+        for (int i = 0; i < ndim; ++i) {
+            const bool upper = child >> i & 1;
+            sub[i] = cmin[i] + (upper ? half : 0);
+            if (fixedMask >> i & 1 && upper != (pos[i] >= cmin[i] + half)) keep = false;
+        }
+        if (keep) visit(nd.index + child, sub, half, pos, fixedMask, f);
+    }
+}
+
+template <class F>
+void Tree::visitGrid(const Node& nd, const double cmin[4], double csiz, const double pos[4],
+                     unsigned fixedMask, F& f) const {
+    const int k = nd.log2GR;
+    const int res = 1 << k;
+    const double cw = csiz / res;
+    int lo[4], hi[4];
+    for (int i = 0; i < ndim; ++i) {
+        if (fixedMask >> i & 1) {
+            lo[i] = std::clamp(static_cast<int>((pos[i] - cmin[i]) / cw), 0, res - 1);
+            hi[i] = lo[i] + 1;
+        } else {
+            lo[i] = 0;
+            hi[i] = res;
+        }
+    }
+    for (int i = ndim; i < 4; ++i) lo[i] = 0, hi[i] = 1;
+    double cell[4] = {0, 0, 0, 0};
+    for (int a = lo[0]; a < hi[0]; ++a)
+        for (int b = lo[1]; b < hi[1]; ++b)
+            for (int c = lo[2]; c < hi[2]; ++c)
+                for (int d = lo[3]; d < hi[3]; ++d) {
+                    const int ix[4] = {a, b, c, d};
+                    size_t idx = 0;
+                    for (int i = 0; i < ndim; ++i) {
+                        idx = (idx << k) | static_cast<size_t>(ix[i]);
+                        cell[i] = cmin[i] + cw * ix[i];
+                    }
+                    f(values[nd.index + idx], cell, cw);
+                }
+}
+
+double Tree::smallestLeaf(uint32_t n) const {
+    const Node& nd = nodes[n];
+    if (nd.log2GR >= 0) return 1.0 / (1u << nd.log2GR);
+    double m = 1;
+    for (unsigned c = 0; c < (1u << ndim); ++c) m = std::min(m, smallestLeaf(nd.index + c));
+    return .5 * m;
+}
+
+// Mean value over a box of the unit hypercube (RADIANCE SDavgTreBox: sub-boxes weighted
+// by their volume, grid cells touched by the box counted whole).
+double Tree::boxAverage(uint32_t n, const double bmin[4], const double bmax[4]) const {
+    for (int i = 0; i < ndim; ++i)
+        if (bmin[i] >= 1 || bmax[i] <= 0 || bmin[i] >= bmax[i]) return 0;
+    const Node& nd = nodes[n];
+    if (nd.log2GR < 0) {
+        double sum = 0, wsum = 1e-20;
+        for (unsigned c = 0; c < (1u << ndim); ++c) {
+            double smin[4], smax[4], w = 1;
+            for (int i = 0; i < ndim && w > 0; ++i) {
+                const double off = (c >> i & 1) ? 1 : 0;
+                smin[i] = std::max(2 * bmin[i] - off, 0.0);
+                smax[i] = std::min(2 * bmax[i] - off, 1.0);
+                w = smin[i] < smax[i] ? w * (smax[i] - smin[i]) : 0;
+            }
+            if (w > 1e-10) {
+                sum += w * boxAverage(nd.index + c, smin, smax);
+                wsum += w;
+            }
+        }
+        return sum / wsum;
+    }
+    const int res = 1 << nd.log2GR;
+    int lo[4] = {0, 0, 0, 0}, hi[4] = {1, 1, 1, 1};
+    for (int i = 0; i < ndim; ++i) {
+        lo[i] = bmin[i] <= 0 ? 0 : static_cast<int>(res * bmin[i]);
+        hi[i] = bmax[i] >= 1 ? res : static_cast<int>(res * bmax[i] + .999999);
+    }
+    double sum = 0;
+    size_t count = 0;
+    for (int a = lo[0]; a < hi[0]; ++a)
+        for (int b = lo[1]; b < hi[1]; ++b)
+            for (int c = lo[2]; c < hi[2]; ++c)
+                for (int d = lo[3]; d < hi[3]; ++d) {
+                    const int ix[4] = {a, b, c, d};
+                    size_t idx = 0;
+                    for (int i = 0; i < ndim; ++i) idx = (idx << nd.log2GR) | size_t(ix[i]);
+                    sum += values[nd.index + idx];
+                    ++count;
+                }
+    return count ? sum / double(count) : 0;
+}
+
+float Tree::minimum(uint32_t n) const {
+    const Node& nd = nodes[n];
+    if (nd.log2GR >= 0) {
+        const size_t count = size_t(1) << (ndim * nd.log2GR);
+        return *std::min_element(values.begin() + nd.index, values.begin() + nd.index + count);
+    }
+    float m = HUGE_VALF;
+    for (unsigned c = 0; c < (1u << ndim); ++c) m = std::min(m, minimum(nd.index + c));
+    return m;
+}
+
+// The minimum over the part of the tree that lookups reach: all of a 4-D tree, the
+// lower half of dimension 0 (incident radius) of a 3-D one.
+float Tree::liveMinimum() const {
+    if (ndim != 3) return minimum(0);
+    const Node& root = nodes[0];
+    if (root.log2GR < 0) {
+        float m = HUGE_VALF;
+        for (unsigned c = 0; c < 8; c += 2) m = std::min(m, minimum(root.index + c));
+        return m;
+    }
+    if (root.log2GR == 0) return values[root.index];
+    const size_t half = size_t(1) << (3 * root.log2GR - 1);
+    return *std::min_element(values.begin() + root.index, values.begin() + root.index + half);
+}
+
+// ---------------------------------------------------------------------------------
+// ScatteringData text: "{" then either 2^ndim subtrees or 2^(ndim k) numbers, then "}",
+// commas allowed after numbers and nodes (load_tree_data in bsdf_t.c). Errors name the
+// line inside the XML file.
+class TreeParser {
+public:
+    TreeParser(const std::string& text, int firstLine, const XmlContext& ctx, Tree& tree)
+        : s_(text), firstLine_(firstLine), ctx_(ctx), tree_(tree) {}
+
+    void parse() {
+        tree_.nodes.resize(1);
+        parseNode(0, 0);
+        if (skipSpace() != '\0') fail(pos_, "extra characters after the tensor tree");
+    }
+
+private:
+    static constexpr int kMaxDepth = kHilbertBits;  // finer cells than 2^-16 not located
+
+    const std::string& s_;
+    int firstLine_;
+    const XmlContext& ctx_;
+    Tree& tree_;
+    size_t pos_ = 0;
+
+    [[noreturn]] void fail(size_t at, const std::string& msg) const {
+        const int line = firstLine_ + static_cast<int>(std::count(
+                             s_.begin(), s_.begin() + std::min(at, s_.size()), '\n'));
+        throw InputError(SourceLoc{ctx_.path(), line}, msg);
+    }
+    char skipSpace() {
+        while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
+        return pos_ < s_.size() ? s_[pos_] : '\0';
+    }
+    void skipComma() {
+        if (skipSpace() == ',') ++pos_;
+    }
+    void parseNode(uint32_t slot, int depth);
+    void parseBranch(uint32_t slot, int depth);
+    void parseGrid(uint32_t slot, size_t open, int depth);
+    float parseNumber();
+};
+
+void TreeParser::parseNode(uint32_t slot, int depth) {
+    if (skipSpace() != '{') fail(pos_, "expected '{' in tensor tree");
+    const size_t open = pos_++;
+    if (skipSpace() == '{')
+        parseBranch(slot, depth);
+    else
+        parseGrid(slot, open, depth);
+    if (skipSpace() != '}') fail(pos_, "expected '}' in tensor tree");
+    ++pos_;
+    skipComma();
+}
+
+void TreeParser::parseBranch(uint32_t slot, int depth) {
+    if (depth >= kMaxDepth) fail(pos_, "tensor tree is too deep (cells finer than 2^-16)");
+    const unsigned nchild = 1u << tree_.ndim;
+    const auto first = static_cast<uint32_t>(tree_.nodes.size());
+    tree_.nodes.resize(first + nchild);
+    tree_.nodes[slot] = {-1, first};
+    for (unsigned c = 0; c < nchild; ++c) {
+        if (skipSpace() != '{')
+            fail(pos_, "tensor tree branch has " + std::to_string(c) + " subtrees; " +
+                           std::to_string(nchild) + " expected");
+        parseNode(first + c, depth + 1);
+    }
+    if (skipSpace() == '{')
+        fail(pos_, "tensor tree branch has more than " + std::to_string(nchild) + " subtrees");
+}
+
+void TreeParser::parseGrid(uint32_t slot, size_t open, int depth) {
+    const size_t start = tree_.values.size();
+    while (true) {
+        const char c = skipSpace();
+        if (c == '}' || c == '\0') break;
+        tree_.values.push_back(parseNumber());
+        skipComma();
+    }
+    const size_t n = tree_.values.size() - start;
+    int k = 0;  // n must be 2^(ndim k)
+    while ((size_t(1) << (tree_.ndim * k)) < n && tree_.ndim * (k + 1) < 48) ++k;
+    if (n == 0 || (size_t(1) << (tree_.ndim * k)) != n)
+        fail(open, "tensor tree node has " + std::to_string(n) + " values; a TensorTree" +
+                       std::to_string(tree_.ndim) + " node needs 1, " +
+                       std::to_string(1u << tree_.ndim) + ", " +
+                       std::to_string(1u << 2 * tree_.ndim) + ", ... values (or subtrees)");
+    if (depth + k > kMaxDepth) fail(open, "tensor tree is too deep (cells finer than 2^-16)");
+    if (start > UINT32_MAX - n) fail(open, "tensor tree too large");
+    tree_.nodes[slot] = {k, static_cast<uint32_t>(start)};
+}
+
+// A real number as RADIANCE's fskip accepts it ([sign] digits [. digits] [e [sign]
+// digits]) making up the whole word; negative values become zero, as in bsdf_t.c.
+float TreeParser::parseNumber() {
+    const size_t begin = pos_;
+    while (pos_ < s_.size() && !std::isspace(static_cast<unsigned char>(s_[pos_])) &&
+           s_[pos_] != ',' && s_[pos_] != '}' && s_[pos_] != '{')
+        ++pos_;
+    const std::string word = s_.substr(begin, pos_ - begin);
+    size_t i = (!word.empty() && (word[0] == '+' || word[0] == '-')) ? 1 : 0;
+    const auto digits = [&] {
+        const size_t j = i;
+        while (i < word.size() && std::isdigit(static_cast<unsigned char>(word[i]))) ++i;
+        return i - j;
+    };
+    size_t nd = digits();
+    if (i < word.size() && word[i] == '.') ++i, nd += digits();
+    bool ok = nd > 0;
+    if (ok && i < word.size() && (word[i] == 'e' || word[i] == 'E')) {
+        ++i;
+        if (i < word.size() && (word[i] == '+' || word[i] == '-')) ++i;
+        ok = digits() > 0;
+    }
+    if (!ok || i != word.size())
+        fail(begin, "bad number '" + (word.empty() ? std::string(1, s_[begin]) : word) +
+                        "' in tensor tree");
+    const double v = std::strtod(word.c_str(), nullptr);
+    return v > 0 ? static_cast<float>(v) : 0.0f;
+}
+
+// ---------------------------------------------------------------------------------
+// The cumulative distribution over outgoing cells for one incident cell (RADIANCE's
+// SDTreCDst): cells sorted along the Hilbert curve, each with the cumulative value
+// (scaled to 2^32 - 1) of BSDF * projected solid angle before it.
+struct CDist {
+    struct Entry {
+        uint32_t hilbert;  // first index of the cell's run on the 2^16 Hilbert grid
+        uint32_t cuml;
+    };
+    double clim[2][2];  // incident coordinates this table serves: [lo, hi) per dim
+    double cTotal = 0;  // directional-hemispherical value
+    double minWidth = 1, maxWidth = 0;  // of the outgoing cells (square units)
+    Side outSide = Side::ReflFront;      // side of the sampled directions
+    std::vector<Entry> cells;            // plus a final entry with cuml = 2^32 - 1
+    const CDist* next = nullptr;         // more tables sharing a cache slot
+
+    bool serves(const double c[2], int nic) const {
+        for (int i = 0; i < nic; ++i)
+            if (c[i] < clim[i][0] || c[i] >= clim[i][1]) return false;
+        return true;
+    }
+};
+
+class TreeDistribution final : public Distribution {
+public:
+    TreeDistribution(Tree tree, Side side);
+
+    Color value(const Vec3& in, const Vec3& out) const override;
+    void projectedSolidAngle(const Vec3& v1, const Vec3* v2, SizeQuery q,
+                             double psa[2]) const override;
+    double hemispherical(const Vec3& in) const override;
+    bool sample(const Vec3& in, double x, double y, Vec3& out) const override;
+
+    const Tree& tree() const { return tree_; }
+
+private:
+    struct Cache {
+        std::unique_ptr<std::atomic<const CDist*>[]> slots;
+    };
+
+    bool gridPosition(Vec3 in, Vec3 out, double pos[4]) const;
+    const CDist* cdist(const Vec3& in) const;
+    const CDist* findOrBuild(int mode, const double c[2]) const;
+    std::unique_ptr<CDist> build(bool rev, const double c[2]) const;
+    void publish(const Cache& cache, CDist* cd, size_t slot) const;
+    size_t slotOf(const double c[2]) const;
+
+    Tree tree_;
+    Side side_;
+    int nic_;             // incident coordinates: 1 (3-D) or 2
+    double quantum_;      // incident coordinates are snapped to cell centres of this size
+    int slotBits_;        // cache slots per incident coordinate: 2^slotBits_
+    Cache cache_[2];      // [0] as stored, [1] reversed (transmission by reciprocity)
+    mutable std::mutex buildMutex_;  // only taken to build a missing table
+    mutable std::vector<std::unique_ptr<CDist>> built_;
+};
+
+TreeDistribution::TreeDistribution(Tree tree, Side side)
+    : tree_(std::move(tree)), side_(side), nic_(tree_.ndim - 2) {
+    const double leaf = tree_.smallestLeaf();
+    quantum_ = std::min(1.0 / 256, leaf);  // RADIANCE shares one such value between files
+    slotBits_ = std::min(static_cast<int>(std::lround(-std::log2(leaf))), 7);
+    const size_t nslots = size_t(1) << (slotBits_ * nic_);
+    const bool xmit = side == Side::XmitFront || side == Side::XmitBack;
+    for (int m = 0; m < (xmit ? 2 : 1); ++m) {
+        cache_[m].slots.reset(new std::atomic<const CDist*>[nslots]);
+        for (size_t i = 0; i < nslots; ++i) cache_[m].slots[i].store(nullptr);
+    }
+}
+
+// The tree coordinates for a pair (SDqueryTre), false where the pair is not this
+// tree's kind of scattering. Transmission in the other direction swaps the pair.
+bool TreeDistribution::gridPosition(Vec3 in, Vec3 out, double pos[4]) const {
+    switch (side_) {
+        case Side::ReflFront:
+            if (out.z < 0 || in.z < 0) return false;
+            break;
+        case Side::ReflBack:
+            if (out.z > 0 || in.z > 0) return false;
+            break;
+        case Side::XmitFront:
+            if (out.z > 0) {
+                if (in.z > 0) return false;
+                std::swap(in, out);
+            } else if (in.z < 0) {
+                return false;
+            }
+            break;
+        case Side::XmitBack:
+            if (in.z > 0) {
+                if (out.z > 0) return false;
+                std::swap(in, out);
+            } else if (out.z < 0) {
+                return false;
+            }
+            break;
+    }
+    if (tree_.ndim == 3) {
+        const Vec3 r = spinZ(out, -std::atan2(-in.y, -in.x));
+        pos[0] = (.5 - kTiny) - .5 * std::sqrt(in.x * in.x + in.y * in.y);
+        diskToSquare(r.x, r.y, pos + 1);
+    } else {
+        diskToSquare(-in.x, -in.y, pos);
+        diskToSquare(out.x, out.y, pos + 2);
+    }
+    return true;
+}
+
+Color TreeDistribution::value(const Vec3& in, const Vec3& out) const {
+    double pos[4], w;
+    if (!gridPosition(in, out, pos)) return {};
+    return Color::grey(tree_.lookup(pos, w));
+}
+
+void TreeDistribution::projectedSolidAngle(const Vec3& v1, const Vec3* v2, SizeQuery q,
+                                           double psa[2]) const {
+    double mine[2] = {0, 0};
+    if (v2) {
+        double pos[4], w;
+        if (!gridPosition(v1, *v2, pos)) return;
+        tree_.lookup(pos, w);
+        mine[0] = mine[1] = kPi * w * w;
+    } else if (const CDist* cd = cdist(v1)) {
+        mine[0] = kPi * (cd->clim[0][1] - cd->clim[0][0]) * (cd->clim[1][1] - cd->clim[1][0]);
+        mine[1] = kPi * cd->maxWidth * cd->maxWidth;
+    }
+    switch (q) {
+        case SizeQuery::Max:
+            if (mine[1] > psa[0]) psa[0] = mine[1];
+            return;
+        case SizeQuery::MinMax:
+            if (mine[1] > psa[1]) psa[1] = mine[1];
+            [[fallthrough]];
+        case SizeQuery::Min:
+            if (mine[0] > 0 && mine[0] < psa[0]) psa[0] = mine[0];
+            return;
+    }
+}
+
+double TreeDistribution::hemispherical(const Vec3& in) const {
+    const CDist* cd = cdist(in);
+    return cd ? cd->cTotal : 0;
+}
+
+// Incident coordinates snapped to the centre of a quantum-sized cell (SDgetTreCDist),
+// so that directions on a cell boundary always get the same table; null where this tree
+// has nothing for light from `in`.
+const CDist* TreeDistribution::cdist(const Vec3& in) const {
+    Side mode = side_;
+    switch (side_) {
+        case Side::ReflFront:
+            if (in.z < 0) return nullptr;
+            break;
+        case Side::ReflBack:
+            if (in.z > 0) return nullptr;
+            break;
+        case Side::XmitFront:
+            if (in.z < 0) mode = Side::XmitBack;
+            break;
+        case Side::XmitBack:
+            if (in.z > 0) mode = Side::XmitFront;
+            break;
+    }
+    const bool rev = mode != side_;
+    double c[2] = {0, 0};
+    if (tree_.ndim == 3) {
+        if (rev) return nullptr;  // RADIANCE does not sample 3-D trees by reciprocity
+        c[0] = (.5 - kTiny) - .5 * std::sqrt(in.x * in.x + in.y * in.y);
+    } else if (rev) {
+        diskToSquare(in.x, in.y, c);  // the light leaves along the tree's -incident
+    } else {
+        diskToSquare(-in.x, -in.y, c);
+    }
+    for (int i = 0; i < nic_; ++i)
+        c[i] = std::clamp(std::floor(c[i] / quantum_) * quantum_ + .5 * quantum_,
+                          .5 * quantum_, 1 - .5 * quantum_);
+    return findOrBuild(rev ? 1 : 0, c);
+}
+
+size_t TreeDistribution::slotOf(const double c[2]) const {
+    const int res = 1 << slotBits_;
+    size_t s = 0;
+    for (int i = 0; i < nic_; ++i)
+        s = s * res + size_t(std::clamp(static_cast<int>(c[i] * res), 0, res - 1));
+    return s;
+}
+
+// Lock-free when the table exists; otherwise built once under the mutex.
+const CDist* TreeDistribution::findOrBuild(int mode, const double c[2]) const {
+    const Cache& cache = cache_[mode];
+    const size_t s = slotOf(c);
+    for (const CDist* d = cache.slots[s].load(std::memory_order_acquire); d; d = d->next)
+        if (d->serves(c, nic_)) return d;
+    std::lock_guard<std::mutex> lock(buildMutex_);
+    for (const CDist* d = cache.slots[s].load(std::memory_order_acquire); d; d = d->next)
+        if (d->serves(c, nic_)) return d;
+    std::unique_ptr<CDist> cd = build(mode == 1, c);
+    CDist* raw = cd.get();
+    built_.push_back(std::move(cd));
+    publish(cache, raw, s);
+    return raw;
+}
+
+// A table whose incident cell spans whole slots goes into each of them; smaller ones
+// are chained in the one slot holding them (incident cells nest, so never both).
+void TreeDistribution::publish(const Cache& cache, CDist* cd, size_t slot) const {
+    const int res = 1 << slotBits_;
+    const double width = cd->clim[0][1] - cd->clim[0][0];
+    if (width * res < 1 - 1e-9) {
+        cd->next = cache.slots[slot].load(std::memory_order_relaxed);
+        cache.slots[slot].store(cd, std::memory_order_release);
+        return;
+    }
+    int lo[2] = {0, 0}, hi[2] = {1, 1};
+    for (int i = 0; i < nic_; ++i) {
+        lo[i] = static_cast<int>(std::lround(cd->clim[i][0] * res));
+        hi[i] = std::min(static_cast<int>(std::lround(cd->clim[i][1] * res)), res);
+    }
+    for (int a = lo[0]; a < hi[0]; ++a)
+        for (int b = lo[1]; b < hi[1]; ++b) {
+            auto& p = cache.slots[nic_ == 2 ? size_t(a) * res + b : size_t(a)];
+            if (!p.load(std::memory_order_relaxed)) p.store(cd, std::memory_order_release);
+        }
+}
+
+// make_cdist: the leaves crossed by the incident position, located on the outgoing
+// square (mirrored when the outgoing side is the tree's incident one).
+std::unique_ptr<CDist> TreeDistribution::build(bool rev, const double c[2]) const {
+    struct Cell {
+        uint32_t hilbert, wid;
+        float value;
+    };
+    std::vector<Cell> cells;
+    double pos[4] = {0, 0, 0, 0};
+    for (int i = 0; i < nic_; ++i) pos[i + (rev ? 2 : 0)] = c[i];
+    const unsigned mask = ((1u << nic_) - 1) << (rev ? 2 : 0);
+    const int outDim = rev ? 0 : nic_;
+    uint32_t wmin = 1u << kHilbertBits, wmax = 0;
+    tree_.traverse(pos, mask, [&](float v, const double* cmin, double csiz) {
+        double u = cmin[outDim], w = cmin[outDim + 1];
+        if (rev) u = 1 - u - csiz, w = 1 - w - csiz;
+        const auto wid = static_cast<uint32_t>(csiz * kHilbertScale + .5);
+        const auto bx = static_cast<uint32_t>(u * kHilbertScale + .5);
+        const auto by = static_cast<uint32_t>(w * kHilbertScale + .5);
+        const uint64_t run = uint64_t(wid) * wid;
+        cells.push_back({static_cast<uint32_t>(hilbertIndex(bx, by) & ~(run - 1)), wid, v});
+        wmin = std::min(wmin, wid);
+        wmax = std::max(wmax, wid);
+    });
+    std::sort(cells.begin(), cells.end(),
+              [](const Cell& a, const Cell& b) { return a.hilbert < b.hilbert; });
+    auto cd = std::make_unique<CDist>();
+    const double scale = wmin / kHilbertScale;
+    for (int i = 0; i < nic_; ++i) {
+        cd->clim[i][0] = std::floor(c[i] / scale) * scale;
+        cd->clim[i][1] = cd->clim[i][0] + scale;
+    }
+    if (nic_ == 1) cd->clim[1][0] = cd->clim[0][0], cd->clim[1][1] = cd->clim[0][1];
+    cd->minWidth = scale;
+    cd->maxWidth = wmax / kHilbertScale;
+    cd->outSide = !rev ? side_ : (side_ == Side::XmitBack ? Side::XmitFront : Side::XmitBack);
+    double total = 1e-20;
+    for (const Cell& e : cells) total += e.value * double(e.wid) * e.wid;
+    const double toCuml = kCumlMax / total;
+    cd->cells.reserve(cells.size() + 1);
+    double sum = 0;
+    for (const Cell& e : cells) {
+        cd->cells.push_back({e.hilbert, static_cast<uint32_t>(toCuml * sum + .5)});
+        sum += e.value * double(e.wid) * e.wid;
+    }
+    cd->cells.push_back({0, UINT32_MAX});
+    cd->cTotal = total * kPi / (kHilbertScale * kHilbertScale);
+    return cd;
+}
+
+bool TreeDistribution::sample(const Vec3& in, double x, double y, Vec3& out) const {
+    const CDist* cd = cdist(in);
+    if (!cd || cd->cTotal <= 1e-6) return false;
+    const auto& cells = cd->cells;
+    const double target = std::clamp(x, 0.0, 1.0) * kCumlMax;
+    size_t lo = 0, hi = cells.size() - 1;  // cells[lo].cuml <= target < cells[hi].cuml
+    while (hi - lo > 1) {
+        const size_t mid = (lo + hi) / 2;
+        (target >= cells[mid].cuml ? lo : hi) = mid;
+    }
+    if (target >= cells[hi].cuml) return false;  // x == 1
+    const double t = (target - cells[lo].cuml) / double(cells[hi].cuml - cells[lo].cuml);
+    const uint64_t end = hi + 1 == cells.size() ? uint64_t(1) << 32 : cells[hi].hilbert;
+    const uint64_t run = end - cells[lo].hilbert;
+    const uint32_t wid = 1u << (std::countr_zero(run) / 2);
+    uint32_t hx, hy;
+    hilbertPoint(cells[lo].hilbert, hx, hy);
+    const double yy = std::clamp(y, 0.0, std::nextafter(1.0, 0.0));
+    const double u = ((hx & ~(wid - 1)) + t * wid) / kHilbertScale;
+    const double v = ((hy & ~(wid - 1)) + yy * wid) / kHilbertScale;
+    double dx, dy;
+    squareToDisk(u, v, dx, dy);
+    const double z2 = 1 - dx * dx - dy * dy;
+    double z = std::sqrt(z2 > 0 ? z2 : 0);
+    if (cd->outSide == Side::ReflBack || cd->outSide == Side::XmitFront) z = -z;
+    out = {dx, dy, z};
+    if (tree_.ndim == 3) out = spinZ(out, std::atan2(-in.y, -in.x));
+    return true;
+}
+
+// ---------------------------------------------------------------------------------
+// Loading (SDloadTre).
+
+struct SetData {
+    std::optional<Tree> tree;
+    Side side;
+};
+
+// RADIANCE's names are WINDOW's with front and back swapped.
+int setIndex(const pugi::xml_node& dir) {
+    if (textIs(dir, "Transmission Front")) return 3;  // tb
+    if (textIs(dir, "Transmission Back")) return 2;   // tf
+    if (textIs(dir, "Reflection Front")) return 1;    // rb
+    if (textIs(dir, "Reflection Back")) return 0;     // rf
+    return -1;
+}
+
+Tree parseScatteringData(const pugi::xml_node& block, int ndim, const XmlContext& ctx) {
+    const pugi::xml_node basis = block.child("AngleBasis");
+    if (!basis) ctx.fail(block, "missing AngleBasis for tensor-tree BSDF data");
+    if (!textIs(basis, "LBNL/Shirley-Chiu"))
+        ctx.fail(basis, "unsupported angle basis '" + trimmedText(basis) +
+                            "' for tensor-tree data (must be LBNL/Shirley-Chiu)");
+    const pugi::xml_node data = block.child("ScatteringData");
+    pugi::xml_node text = data.first_child();
+    while (text && text.type() != pugi::node_pcdata && text.type() != pugi::node_cdata)
+        text = text.next_sibling();
+    const std::string s = text ? text.value() : "";
+    if (s.find_first_not_of(" \t\r\n") == std::string::npos)
+        ctx.fail(data ? data : block, "missing BSDF ScatteringData");
+    Tree tree;
+    tree.ndim = ndim;
+    TreeParser(s, ctx.loc(text).line, ctx, tree).parse();
+    return tree;
+}
+
+// get_extrema: the smallest cell's projected solid angle and the largest
+// directional-hemispherical value over incident boxes at least 1/32 wide.
+void extrema(const Tree& tree, ScatteringSet& set) {
+    double step = tree.smallestLeaf();
+    set.minProjSA = kPi * step * step;
+    step = std::max(step, 1.0 / 32);
+    double best = 0;
+    double bmin[4] = {0, 0, 0, 0}, bmax[4] = {1, 1, 1, 1};
+    const double end0 = tree.ndim == 3 ? .5 - kTiny : 1 - kTiny;
+    for (bmin[0] = 0; bmin[0] < end0; bmin[0] += step) {
+        bmax[0] = bmin[0] + step;
+        if (tree.ndim == 3) {
+            best = std::max(best, tree.boxAverage(0, bmin, bmax));
+            continue;
+        }
+        for (bmin[1] = 0; bmin[1] < 1 - kTiny; bmin[1] += step) {
+            bmax[1] = bmin[1] + step;
+            best = std::max(best, tree.boxAverage(0, bmin, bmax));
+        }
+    }
+    set.maxHemi = kPi * best;
+}
+
+// subtract_min_Y: the minimum becomes the Lambertian part unless it is negligible
+// (<= .01/pi) or so large (>= 1.5/pi) that the data are not worth splitting.
+double subtractMinimum(Tree& tree) {
+    const float vmaxmin = static_cast<float>(1.5 / kPi);
+    const float vmin = tree.liveMinimum();
+    if (vmin >= vmaxmin || vmin <= .01 / kPi) return 0;
+    for (float& v : tree.values)
+        if ((v -= vmin) < 0) v = 0;
+    return kPi * vmin;
+}
+
+}  // namespace
+
+void loadTensorTree(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData& sd) {
+    const pugi::xml_node ids = layer.child("DataDefinition").child("IncidentDataStructure");
+    const int ndim = textIs(ids, "TensorTree3") ? 3 : textIs(ids, "TensorTree4") ? 4 : 0;
+    if (!ndim) ctx.fail(ids ? ids : layer, "unsupported IncidentDataStructure for a tensor tree");
+    std::array<SetData, 4> sets{{{{}, Side::ReflFront}, {{}, Side::ReflBack},
+                                 {{}, Side::XmitFront}, {{}, Side::XmitBack}}};
+    for (pugi::xml_node wd : layer.children("WavelengthData")) {
+        if (!textIs(wd.child("Wavelength"), "Visible")) continue;  // CIE-u/v colour not read
+        for (pugi::xml_node block : wd.children("WavelengthDataBlock")) {
+            const int which = setIndex(block.child("WavelengthDataDirection"));
+            if (which >= 0) sets[which].tree = parseScatteringData(block, ndim, ctx);
+        }
+    }
+    std::optional<ScatteringSet>* targets[4] = {&sd.rf, &sd.rb, &sd.tf, &sd.tb};
+    double lamb[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i) {
+        if (!sets[i].tree) continue;
+        ScatteringSet set;
+        extrema(*sets[i].tree, set);  // before the split, as RADIANCE
+        lamb[i] = subtractMinimum(*sets[i].tree);
+        set.maxHemi -= lamb[i];
+        set.components.push_back(
+            std::make_unique<TreeDistribution>(std::move(*sets[i].tree), sets[i].side));
+        *targets[i] = std::move(set);
+    }
+    sd.rLambFront = Color::grey(lamb[0]);
+    sd.rLambBack = Color::grey(lamb[1]);
+    sd.tLambFront = Color::grey(lamb[2]);
+    sd.tLambBack = Color::grey(lamb[3]);
+    if (!sd.tb) sd.tLambBack = sd.tLambFront;       // one transmission serves both ways
+    else if (!sd.tf) sd.tLambFront = sd.tLambBack;
+}
+
+}  // namespace rp::bsdf::detail

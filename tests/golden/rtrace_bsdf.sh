@@ -1,0 +1,45 @@
+#!/bin/bash
+# Venetian blinds as a Klems BSDF (../shared/validation/bsdf) in a daylit room, against
+# RADIANCE 5.4a's answers (the README's commands; means over the files, Y):
+#  - -ab 0 at the sensors: exactly 0 (shadow rays do not pass a thin BSDF);
+#  - -ab 0 view rays through the blinds: the mean within 5 % (RADIANCE samples one ray
+#    per component at random, so single rays differ by tens of per cent between runs);
+#  - classic -ab 2 and photon maps: means within 5 % (-u-: repeatable);
+#  - the photon map of the BSDF room within 5 % of the explicit-slat room's reference.
+set -u
+BIN="${RP_BIN:?RP_BIN not set}"
+VAL="${RP_SHARED_DIR:?RP_SHARED_DIR not set}/validation/bsdf"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$VAL" || exit 1
+fail=0
+bad() { echo "FAIL: $*"; fail=1; }
+# ratio OURS REF: mean Y of ours over mean Y of the reference
+ratio() {
+    paste "$1" "$2" | awk '{ a += 0.265 * $1 + 0.670 * $2 + 0.065 * $3
+        b += 0.265 * $4 + 0.670 * $5 + 0.065 * $6 } END { printf "%.4f", (b > 0) ? a / b : 99 }'
+}
+within() { awk -v r="$1" -v t="$2" 'BEGIN { exit !(r >= 1 - t && r <= 1 + t) }'; }
+
+"$BIN/oconv" -f sky.rad room.rad blinds_klems.rad > "$tmp/k.oct" || bad "oconv"
+"$BIN/rtrace" -h -I -ab 0 "$tmp/k.oct" < points.txt > "$tmp/ab0.txt" || bad "rtrace -ab 0"
+awk '{ s += $1 + $2 + $3 } END { exit s != 0 }' "$tmp/ab0.txt" || bad "sunlight passed a thin BSDF at -ab 0"
+
+"$BIN/rtrace" -h -u- -ab 0 "$tmp/k.oct" < view_rays.txt > "$tmp/view.txt" || bad "rtrace view"
+r=$(ratio "$tmp/view.txt" ref_klems_view_ab0.txt); echo "view -ab 0: ours/RADIANCE $r"
+within "$r" .05 || bad "view rays $r"
+
+"$BIN/rtrace" -h -u- -I -ab 2 -ad 2048 -as 512 -aa 0 -lw 1e-4 -n 2 "$tmp/k.oct" < points.txt \
+    > "$tmp/ab2.txt" || bad "rtrace -ab 2"
+r=$(ratio "$tmp/ab2.txt" ref_klems_classic_ab2.txt); echo "classic -ab 2: ours/RADIANCE $r"
+within "$r" .05 || bad "classic -ab 2 $r"
+
+"$BIN/mkpmap" -apg "$tmp/g.pm" 500k -apc "$tmp/c.pm" 500k -apo window_glass -aps sensor_plane \
+    -apr 1 -n 2 "$tmp/k.oct" > /dev/null 2>&1 || bad "mkpmap"
+"$BIN/rtrace" -h -u- -I -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -n 2 -ap "$tmp/g.pm" 100 \
+    -ap "$tmp/c.pm" 100 "$tmp/k.oct" < points.txt > "$tmp/pm.txt" || bad "rtrace -ap"
+r=$(ratio "$tmp/pm.txt" ref_klems_pmap.txt); echo "photon map: ours/RADIANCE $r"
+within "$r" .05 || bad "photon map $r"
+r=$(ratio "$tmp/pm.txt" ref_geometry_pmap.txt); echo "photon map: ours (BSDF) / RADIANCE (slats) $r"
+within "$r" .05 || bad "BSDF against slats $r"
+exit $fail
