@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -86,6 +88,32 @@ TEST(PkgBsdf, InstanceLinePlacesAFrozenOctreeOfTheGeometry) {
     for (const Primitive& p : frozen.prims) polygons += p.type == PrimType::Polygon;
     EXPECT_EQ(polygons, 45u);  // as many as RADIANCE's mgf2rad writes for this MGF
     EXPECT_EQ(dir.count(), 1u);  // nothing but the octree
+}
+
+// The command end to end: the validation XML found along RAYPATH, loaded by the bsdf
+// module, gives RADIANCE's scene (the reference above) and, with -i, NAME.oct.
+TEST(PkgBsdf, CommandLoadsTheXmlAlongRaypath) {
+    std::string dir = std::string(RP_SHARED_DIR) + "/validation/bsdf";
+    if (!std::ifstream(dir + "/blinds_klems.xml")) GTEST_SKIP() << "no " << dir;
+    const char* old = std::getenv("RAYPATH");
+    std::string saved = old ? old : "";
+    setenv("RAYPATH", dir.c_str(), 1);
+    std::vector<std::string> w;
+    std::string got = pkgBSDF({"pkgBSDF", "-s", "blinds_klems.xml"}, w);
+    std::string want = testing::readReferenceOutput("pkgbsdf_blinds_klems.rad").text;
+    size_t at = want.find("## mgf2rad /tmp/");
+    want.replace(at + 11, want.find(' ', at + 11) - at - 11, "blinds_klems.xml:MGFblock");
+    EXPECT_EQ(got, want);
+    TempDir tmp;
+    std::string cwd = std::filesystem::current_path().string();
+    std::filesystem::current_path(tmp.path());
+    got = pkgBSDF({"pkgBSDF", "-i", "blinds_klems.xml"}, w);
+    std::filesystem::current_path(cwd);
+    old ? setenv("RAYPATH", saved.c_str(), 1) : unsetenv("RAYPATH");
+    EXPECT_EQ(got, "");  // without -s: written to NAME.rad
+    EXPECT_NE(readText(tmp.file("blinds_klems.rad")).find("void instance blinds_klems_g"),
+              std::string::npos);
+    EXPECT_EQ(loadScene({tmp.file("blinds_klems.oct")}).prims.size(), 46u);  // paint + 45
 }
 
 TEST(PkgBsdf, BadInput) {
