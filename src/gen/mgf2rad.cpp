@@ -14,9 +14,9 @@ namespace rp::gen {
 
 namespace {
 
-constexpr double kWhiteEfficacy = 179;     // RADIANCE's WHTEFFICACY, lm/W
-constexpr double kOneSidedThick = 0.005;   // thickness assumed for 1-sided dielectrics
-constexpr double kSmoothCos = 0.999995;    // normals closer than this are "flat"
+constexpr double kWhiteEfficacy = 179;    // RADIANCE's WHTEFFICACY, lm/W
+constexpr double kOneSidedThick = 0.005;  // thickness assumed for 1-sided dielectrics
+constexpr double kSmoothCos = 0.999995;   // normals closer than this are "flat"
 
 std::string putv(const Vec3& v) { return cformat("%18.12g %18.12g %18.12g\n", v.x, v.y, v.z); }
 
@@ -166,9 +166,9 @@ void RadWriter::sphere(const MgfArgs& av) {
     bool inv = r < 0;
     if (inv) r = -r;
     std::string mat = material();
-    out_ += cformat("\n%s %s %ss%d\n0\n0\n4 %18.12g %18.12g %18.12g %18.12g\n", mat.c_str(),
-                    inv ? "bubble" : "sphere", objectPrefix().c_str(), ++spheres_, c.x, c.y,
-                    c.z, r);
+    out_ +=
+        cformat("\n%s %s %ss%d\n0\n0\n4 %18.12g %18.12g %18.12g %18.12g\n", mat.c_str(),
+                inv ? "bubble" : "sphere", objectPrefix().c_str(), ++spheres_, c.x, c.y, c.z, r);
 }
 
 void RadWriter::ring(const MgfArgs& av) {
@@ -206,9 +206,10 @@ void RadWriter::face(const MgfArgs& av) {
             return;
         }
     }
-    out_ += cformat("\n%s polygon %sf%d\n0\n0\n%d\n", mat.c_str(), objectPrefix().c_str(),
-                    ++faces_, int(3 * (ac - 1)));
-    for (size_t i = 1; i < ac; ++i) out_ += putv(reader_.xfPoint(vertex(av[reverse ? ac - i : i]).p));
+    out_ += cformat("\n%s polygon %sf%d\n0\n0\n%d\n", mat.c_str(), objectPrefix().c_str(), ++faces_,
+                    int(3 * (ac - 1)));
+    for (size_t i = 1; i < ac; ++i)
+        out_ += putv(reader_.xfPoint(vertex(av[reverse ? ac - i : i]).p));
 }
 
 void RadWriter::smoothTriangle(const std::string& mat, const MgfVertex* a, const MgfVertex* b,
@@ -255,8 +256,8 @@ bool RadWriter::emitter(const std::string& name, MgfMaterial& m) {
         out_ += cformat("\nvoid glow %s\n0\n0\n4 %f %f %f %f\n", name.c_str(), rgb[0], rgb[1],
                         rgb[2], opt_.glowDistance);
     else
-        out_ += cformat("\nvoid light %s\n0\n0\n3 %f %f %f\n", name.c_str(), rgb[0], rgb[1],
-                        rgb[2]);
+        out_ +=
+            cformat("\nvoid light %s\n0\n0\n3 %f %f %f\n", name.c_str(), rgb[0], rgb[1], rgb[2]);
     return true;
 }
 
@@ -290,7 +291,8 @@ bool RadWriter::trans(const std::string& name, MgfMaterial& m) {
     addColor(rgb, mgfColorToRgb(m.tdColor, m.td / d));
     addColor(rgb, mgfColorToRgb(m.tsColor, m.ts / d));
     double roughness = 0;  // RADIANCE leaves it unset when rs + ts is tiny
-    if (m.rs + m.ts > .0001) roughness = float((m.rs * m.rsRough + m.ts * m.tsRough) / (m.rs + m.ts));
+    if (m.rs + m.ts > .0001)
+        roughness = float((m.rs * m.rsRough + m.ts * m.tsRough) / (m.rs + m.ts));
     double transmitted = float((m.td + m.ts) / (m.rd + m.td + m.ts));
     d = transmitted < .999 ? m.rd / (1. - m.rs) / (1. - transmitted) : double(float(m.td + m.ts));
     for (float& c : rgb) c = float(c * d);
@@ -303,13 +305,13 @@ bool RadWriter::trans(const std::string& name, MgfMaterial& m) {
 void RadWriter::plasticOrMetal(const std::string& name, MgfMaterial& m) {
     if (m.rs < .08 && (m.rs < .1 * m.rd || m.rsColor.isGrey())) {
         auto rgb = mgfColorToRgb(m.rdColor, m.rd / (1. - m.rs));
-        out_ += cformat("\nvoid plastic %s\n0\n0\n5 %f %f %f %f %f\n", name.c_str(), rgb[0],
-                        rgb[1], rgb[2], m.rs, m.rsRough);
+        out_ += cformat("\nvoid plastic %s\n0\n0\n5 %f %f %f %f %f\n", name.c_str(), rgb[0], rgb[1],
+                        rgb[2], m.rs, m.rsRough);
     } else {
         auto rgb = mgfColorToRgb(m.rdColor, m.rd);
         addColor(rgb, mgfColorToRgb(m.rsColor, m.rs));
-        out_ += cformat("\nvoid metal %s\n0\n0\n5 %f %f %f %f %f\n", name.c_str(), rgb[0],
-                        rgb[1], rgb[2], m.rs / (m.rd + m.rs), m.rsRough);
+        out_ += cformat("\nvoid metal %s\n0\n0\n5 %f %f %f %f %f\n", name.c_str(), rgb[0], rgb[1],
+                        rgb[2], m.rs / (m.rd + m.rs), m.rsRough);
     }
     sided(name, m);
 }

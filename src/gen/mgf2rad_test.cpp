@@ -39,16 +39,15 @@ bool isNumber(const std::string& s, double& v) {
     auto g = tokens(got), w = tokens(want);
     for (size_t i = 0; i < std::min(g.size(), w.size()); ++i) {
         double a, b;
-        bool same = g[i] == w[i] ||
-                    (isNumber(g[i], a) && isNumber(w[i], b) &&
-                     std::fabs(a - b) <= 1.5e-6 + 1e-9 * std::fabs(b));
+        bool same = g[i] == w[i] || (isNumber(g[i], a) && isNumber(w[i], b) &&
+                                     std::fabs(a - b) <= 1.5e-6 + 1e-9 * std::fabs(b));
         if (!same)
             return ::testing::AssertionFailure()
                    << "word " << i << ": got '" << g[i] << "', RADIANCE '" << w[i] << "'";
     }
     if (g.size() != w.size())
-        return ::testing::AssertionFailure()
-               << g.size() << " words, RADIANCE " << w.size() << "\n" << got;
+        return ::testing::AssertionFailure() << g.size() << " words, RADIANCE " << w.size() << "\n"
+                                             << got;
     return ::testing::AssertionSuccess();
 }
 
@@ -171,8 +170,8 @@ TEST(Mgf2radErrors, UnknownEntityIsCountedAndReported) {
 
 TEST(Mgf2radCommand, OptionsGoIntoTheHeaderAndEmittersBecomeGlow) {
     std::vector<std::string> w;
-    std::string out = mgf2rad({"mgf2rad", "-g", "2", "-e", "3"},
-                              "m l =\ned 100\nv a =\np 0 0 0\nsph a 1\n", w);
+    std::string out =
+        mgf2rad({"mgf2rad", "-g", "2", "-e", "3"}, "m l =\ned 100\nv a =\np 0 0 0\nsph a 1\n", w);
     // RADIANCE: mgf2rad -g 2 -e 3 < this input
     EXPECT_EQ(out,
               "## Translated from MGF Version 2.0\n## mgf2rad -g 2 -e 3\n\n"

@@ -12,29 +12,27 @@ using Samples = std::array<int16_t, MgfColor::kSamples>;
 
 // CIE 1931 standard observer at 10 nm, scaled to a peak of 10000, with each curve's sum
 // and efficacy: the tables the MGF library works with.
-constexpr Samples kX31 = {14,   42,   143,  435,   1344,  2839,  3483, 3362, 2908, 1954, 956,
-                          320,  49,   93,   633,   1655,  2904,  4334, 5945, 7621, 9163, 10263,
+constexpr Samples kX31 = {14,    42,    143,  435,  1344, 2839, 3483, 3362, 2908, 1954, 956,
+                          320,   49,    93,   633,  1655, 2904, 4334, 5945, 7621, 9163, 10263,
                           10622, 10026, 8544, 6424, 4479, 2835, 1649, 874,  468,  227,  114,
-                          58,   29,   14,   7,     3,     2,     1,    0};
+                          58,    29,    14,   7,    3,    2,    1,    0};
 constexpr Samples kY31 = {0,    1,    4,    12,   40,   116,  230,  380,  600,  910,  1390,
                           2080, 3230, 5030, 7100, 8620, 9540, 9950, 9950, 9520, 8700, 7570,
                           6310, 5030, 3810, 2650, 1750, 1070, 610,  320,  170,  82,   41,
                           21,   10,   5,    2,    1,    1,    0,    0};
-constexpr Samples kZ31 = {65,    201,   679,   2074,  6456, 13856, 17471, 17721, 16692,
-                          12876, 8130,  4652,  2720,  1582, 782,   422,   203,   87,
-                          39,    21,    17,    11,    8,    3,     2,     0,     0,
-                          0,     0,     0,     0,     0,    0,     0,     0,     0,
-                          0,     0,     0,     0,     0};
+constexpr Samples kZ31 = {65,   201,  679,  2074, 6456, 13856, 17471, 17721, 16692, 12876, 8130,
+                          4652, 2720, 1582, 782,  422,  203,   87,    39,    21,    17,    11,
+                          8,    3,    2,    0,    0,    0,     0,     0,     0,     0,     0,
+                          0,    0,    0,    0,    0,    0,     0,     0};
 constexpr long kX31Sum = 106836, kY31Sum = 106856, kZ31Sum = 106770;
 constexpr double kX31Eff = 362.230, kY31Eff = 493.525, kZ31Eff = 54.363;
 constexpr double kLumensPerSample = 683.0 / MgfColor::kMaxSample;
 
 // Spectra of the (imaginary) CIE XYZ primaries, for turning xy into a spectrum.
-constexpr Samples kXPrim = {-174,  -198,  -195,  -197,  -202,  -213, -235, -272, -333,
-                            -444,  -688,  -1232, -2393, -4497, -6876, -6758, -5256,
-                            -3100, -815,  1320,  3200,  4782,  5998, 6861, 7408, 7754,
-                            7980,  8120,  8199,  8240,  8271,  8292, 8309, 8283, 8469,
-                            8336,  8336,  8336,  8336,  8336,  8336};
+constexpr Samples kXPrim = {-174,  -198,  -195,  -197,  -202,  -213,  -235,  -272, -333, -444, -688,
+                            -1232, -2393, -4497, -6876, -6758, -5256, -3100, -815, 1320, 3200, 4782,
+                            5998,  6861,  7408,  7754,  7980,  8120,  8199,  8240, 8271, 8292, 8309,
+                            8283,  8469,  8336,  8336,  8336,  8336,  8336,  8336};
 constexpr Samples kYPrim = {-451,  -431,  -431,  -430,  -427,  -417,  -399,  -366,  -312,
                             -204,  57,    691,   2142,  4990,  8810,  9871,  9122,  7321,
                             5145,  3023,  1123,  -473,  -1704, -2572, -3127, -3474, -3704,
@@ -126,7 +124,8 @@ bool MgfColor::setSpectrum(double wlMin, double wlMax, const std::vector<float>&
             samples[i] = toSample(scale * va[pos], dither);
         else  // between two given wavelengths: linear interpolation
             samples[i] = toSample(
-                scale / wlStep * (va[pos] * (wl0 + wlStep - wl) + va[pos + 1] * (wl - wl0)), dither);
+                scale / wlStep * (va[pos] * (wl0 + wlStep - wl) + va[pos + 1] * (wl - wl0)),
+                dither);
         sampleSum += samples[i];
     }
     flags = SpecDefined | SpecSet;
@@ -138,7 +137,8 @@ bool MgfColor::setBlackBody(double kelvin, MgfDither& dither) {
     // Planck's law, scaled so that its peak (Wien: 2.9e-3 m K / T, clamped to the
     // visible range) is kMaxSample.
     auto planck = [kelvin](double wlM) {
-        return 3.741832e-16 / (wlM * wlM * wlM * wlM * wlM * (std::exp(1.4388e-2 / (kelvin * wlM)) - 1));
+        return 3.741832e-16 /
+               (wlM * wlM * wlM * wlM * wlM * (std::exp(1.4388e-2 / (kelvin * wlM)) - 1));
     };
     double peakWl = std::clamp(1.4388e-2 * 0.2 / kelvin, kMinWl * 1e-9, kMaxWl * 1e-9);
     double sf = kMaxSample / planck(peakWl);
@@ -251,13 +251,12 @@ struct XyzToRgb {
         double cr = (1. / yw) * (xw * (yg - yb) - yw * (xg - xb) + xg * yb - xb * yg);
         double cg = (1. / yw) * (xw * (yb - yr) - yw * (xb - xr) - xr * yb + xb * yr);
         double cb = (1. / yw) * (xw * (yr - yg) - yw * (xr - xg) + xr * yg - xg * yr);
-        double rows[3][3] = {
-            {(yg - yb - xb * yg + yb * xg) / cr, (xb - xg - xb * yg + xg * yb) / cr,
-             (xg * yb - xb * yg) / cr},
-            {(yb - yr - yb * xr + yr * xb) / cg, (xr - xb - xr * yb + xb * yr) / cg,
-             (xb * yr - xr * yb) / cg},
-            {(yr - yg - yr * xg + yg * xr) / cb, (xg - xr - xg * yr + xr * yg) / cb,
-             (xr * yg - xg * yr) / cb}};
+        double rows[3][3] = {{(yg - yb - xb * yg + yb * xg) / cr,
+                              (xb - xg - xb * yg + xg * yb) / cr, (xg * yb - xb * yg) / cr},
+                             {(yb - yr - yb * xr + yr * xb) / cg,
+                              (xr - xb - xr * yb + xb * yr) / cg, (xb * yr - xr * yb) / cg},
+                             {(yr - yg - yr * xg + yg * xr) / cb,
+                              (xg - xr - xg * yr + xr * yg) / cb, (xr * yg - xg * yr) / cb}};
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) m[i][j] = float(rows[i][j]);
     }

@@ -20,7 +20,7 @@ public:
 
 private:
     std::array<uint32_t, 31> ring_{};  // the last 31 values of the recurrence
-    uint64_t n_ = 0;                    // index of the next value
+    uint64_t n_ = 0;                   // index of the next value
 };
 
 struct MgfColor {
@@ -45,7 +45,8 @@ struct MgfColor {
     // cxy: false for x or y below 0 or x + y above 1.
     bool setXy(double cx, double cy);
     // cspec: samples from wlMin to wlMax; false when no energy lands in 380..780 nm.
-    bool setSpectrum(double wlMin, double wlMax, const std::vector<float>& values, MgfDither& dither);
+    bool setSpectrum(double wlMin, double wlMax, const std::vector<float>& values,
+                     MgfDither& dither);
     // cct: a black body at `kelvin`; false below 1000 K.
     bool setBlackBody(double kelvin, MgfDither& dither);
     // Fills in the representations in `want` (Flag bits) from those set; a spectrum

@@ -64,7 +64,8 @@ void MgfReader::colorEntity(const MgfArgs& args) {
             if (!mgfIsFloat(args[i])) mgfFail(MgfError::ArgType);
             values.push_back(float(num(args[i])));
         }
-        if (!c.setSpectrum(num(args[1]), num(args[2]), values, dither_)) mgfFail(MgfError::IllegalValue);
+        if (!c.setSpectrum(num(args[1]), num(args[2]), values, dither_))
+            mgfFail(MgfError::IllegalValue);
     } else {  // cct
         if (args.size() != 2) mgfFail(MgfError::ArgCount);
         if (!mgfIsFloat(args[1])) mgfFail(MgfError::ArgType);
@@ -246,7 +247,9 @@ void MgfReader::arrayName(const XfSpec* spec) {
     objectEntity({"o", name});
 }
 
-Vec3 MgfReader::xfPoint(const Vec3& p) const { return xf_.empty() ? p : xf_.back()->xf.mapPoint(p); }
+Vec3 MgfReader::xfPoint(const Vec3& p) const {
+    return xf_.empty() ? p : xf_.back()->xf.mapPoint(p);
+}
 
 Vec3 MgfReader::xfVector(const Vec3& v) const {
     return xf_.empty() ? v : xf_.back()->xf.mapDirection(v);

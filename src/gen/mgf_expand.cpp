@@ -111,7 +111,9 @@ void MgfReader::torus(const MgfArgs& av) {
     if (sgn == 0 || sgn * (maxRad - minRad) <= 0) mgfFail(MgfError::IllegalValue);
     const int quarter = 5;  // RADIANCE's MG_NQCD divisions per quarter circle
     double half = .5 * (maxRad - minRad), avgRad = .5 * (minRad + maxRad);
-    auto ringPoint = [&](double theta) { return centre.p + sgn * half * std::cos(theta) * centre.n; };
+    auto ringPoint = [&](double theta) {
+        return centre.p + sgn * half * std::cos(theta) * centre.n;
+    };
     handle({"v", "_tv2", "=", av[1]});
     handle(pointEntity(ringPoint(0)));
     // Outer half of the tube as cones, then the inner half (negative radii: inward).

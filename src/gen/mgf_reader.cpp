@@ -106,7 +106,7 @@ std::vector<std::string> splitWords(const std::string& line) {
 }  // namespace
 
 std::unique_ptr<MgfReader::File> MgfReader::makeFile(std::string_view text,
-                                                    const std::string& name) {
+                                                     const std::string& name) {
     auto file = std::make_unique<File>();
     file->name = name;
     file->id = ++nextFileId_;
@@ -176,17 +176,28 @@ void MgfReader::runLines(File& file) {
 void MgfReader::handle(const MgfArgs& args) {
     using Fn = void (MgfReader::*)(const MgfArgs&);
     static const std::unordered_map<std::string, Fn> kEntities = {
-        {"c", &MgfReader::colorEntity},         {"cxy", &MgfReader::colorEntity},
-        {"cspec", &MgfReader::colorEntity},     {"cct", &MgfReader::colorEntity},
-        {"cmix", &MgfReader::mixEntity},        {"m", &MgfReader::materialEntity},
-        {"ed", &MgfReader::materialProperty},   {"ir", &MgfReader::materialProperty},
-        {"rd", &MgfReader::materialProperty},   {"rs", &MgfReader::materialProperty},
-        {"sides", &MgfReader::materialProperty}, {"td", &MgfReader::materialProperty},
-        {"ts", &MgfReader::materialProperty},   {"v", &MgfReader::vertexEntity},
-        {"p", &MgfReader::vertexProperty},      {"n", &MgfReader::vertexProperty},
-        {"o", &MgfReader::objectEntity},        {"xf", &MgfReader::xfEntity},
-        {"i", &MgfReader::include},             {"fh", &MgfReader::faceWithHoles},
-        {"prism", &MgfReader::prism},           {"torus", &MgfReader::torus},
+        {"c", &MgfReader::colorEntity},
+        {"cxy", &MgfReader::colorEntity},
+        {"cspec", &MgfReader::colorEntity},
+        {"cct", &MgfReader::colorEntity},
+        {"cmix", &MgfReader::mixEntity},
+        {"m", &MgfReader::materialEntity},
+        {"ed", &MgfReader::materialProperty},
+        {"ir", &MgfReader::materialProperty},
+        {"rd", &MgfReader::materialProperty},
+        {"rs", &MgfReader::materialProperty},
+        {"sides", &MgfReader::materialProperty},
+        {"td", &MgfReader::materialProperty},
+        {"ts", &MgfReader::materialProperty},
+        {"v", &MgfReader::vertexEntity},
+        {"p", &MgfReader::vertexProperty},
+        {"n", &MgfReader::vertexProperty},
+        {"o", &MgfReader::objectEntity},
+        {"xf", &MgfReader::xfEntity},
+        {"i", &MgfReader::include},
+        {"fh", &MgfReader::faceWithHoles},
+        {"prism", &MgfReader::prism},
+        {"torus", &MgfReader::torus},
     };
     const std::string& e = args[0];
     if (auto it = kEntities.find(e); it != kEntities.end()) return (this->*(it->second))(args);
@@ -196,7 +207,8 @@ void MgfReader::handle(const MgfArgs& args) {
     if (e == "cyl") return handler_.cylinder(args);
     if (e == "sph") return handler_.sphere(args);
     if (e == "ring") return handler_.ring(args);
-    SourceLoc here = files_.empty() ? SourceLoc{} : SourceLoc{files_.back()->name, files_.back()->lineNo};
+    SourceLoc here =
+        files_.empty() ? SourceLoc{} : SourceLoc{files_.back()->name, files_.back()->lineNo};
     if (e == "ies") throw notSupportedYet(here, "MGF 'ies' entities (ies2rad luminaires)");
     if (unknown_++ == 0) warnings_.push_back(here.str() + ": Unknown entity: " + e);
 }

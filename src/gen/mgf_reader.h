@@ -134,7 +134,6 @@ private:
         bool rev = false;
     };
 
-
     std::unique_ptr<File> makeFile(std::string_view text, const std::string& name);
     void readFile(std::unique_ptr<File> file);
     void runLines(File& file);

@@ -26,8 +26,8 @@ std::string baseName(const std::string& path) {
 std::string bsdfFace(const bsdf::BsdfData& b, double z) {
     const char* sfx = z > 1e-6 ? "_f" : z < -1e-6 ? "_b" : "";
     const char* name = b.name.c_str();
-    std::string s = cformat("void BSDF m_%s%s\n6 %g %s.xml 0 1 0 .\n0\n0\n\n", name, sfx,
-                            z * 1.00004, name);
+    std::string s =
+        cformat("void BSDF m_%s%s\n6 %g %s.xml 0 1 0 .\n0\n0\n\n", name, sfx, z * 1.00004, name);
     z *= (z < 0) + 0.00002;
     s += cformat("m_%s%s polygon %s%s\n0\n0\n12\n", name, sfx, name, sfx);
     double w = .5 * b.width, h = .5 * b.height;
@@ -67,8 +67,7 @@ std::string pkgBsdfScene(const bsdf::BsdfData& b, bool instance, const std::stri
     if (b.mgf.empty()) return s + bsdfFace(b, 0);
     s += bsdfFace(b, b.thickness);
     if (b.rb) s += bsdfFace(b, -b.thickness);
-    if (instance)
-        return s + "void instance " + b.name + "_g\n1 " + b.name + ".oct\n0\n0\n\n";
+    if (instance) return s + "void instance " + b.name + "_g\n1 " + b.name + ".oct\n0\n0\n\n";
     return s + pkgBsdfGeometry(b, xmlArg, program);
 }
 

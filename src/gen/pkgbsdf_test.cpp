@@ -35,7 +35,8 @@ bsdf::BsdfData blinds(bool withMgf, bool backReflection) {
     b.width = 3;
     b.height = 1;
     b.thickness = 0.025;
-    if (withMgf) b.mgf = readText(std::string(RP_SOURCE_DIR) + "/tests/data/mgf/genbsdf_blinds.mgf");
+    if (withMgf)
+        b.mgf = readText(std::string(RP_SOURCE_DIR) + "/tests/data/mgf/genbsdf_blinds.mgf");
     if (backReflection) b.rb.emplace();
     return b;
 }
@@ -86,7 +87,7 @@ TEST(PkgBsdf, InstanceLinePlacesAFrozenOctreeOfTheGeometry) {
     Scene frozen = loadScene({dir.file("blinds_klems.oct")});
     size_t polygons = 0;
     for (const Primitive& p : frozen.prims) polygons += p.type == PrimType::Polygon;
-    EXPECT_EQ(polygons, 45u);  // as many as RADIANCE's mgf2rad writes for this MGF
+    EXPECT_EQ(polygons, 45u);    // as many as RADIANCE's mgf2rad writes for this MGF
     EXPECT_EQ(dir.count(), 1u);  // nothing but the octree
 }
 
