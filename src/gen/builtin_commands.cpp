@@ -13,6 +13,8 @@
 #include "gen/gensky.h"
 #include "gen/gensurf.h"
 #include "gen/genworm.h"
+#include "gen/mgf2rad.h"
+#include "gen/pkgbsdf.h"
 #include "gen/xform_scene.h"
 #include "util/warnings.h"
 
@@ -81,6 +83,30 @@ const Generator* findGenerator(const std::string& name) {
              return withSearchPath("genworm", loc, [&](const auto& path, auto& warnings) {
                  return genworm(args, path, warnings);
              });
+         }},
+        {"mgf2rad",
+         [](const auto& args, const auto& input, const auto& loc) {
+             std::vector<std::string> warnings;
+             std::string out;
+             try {
+                 out = mgf2rad(args, input, warnings);
+             } catch (const InputError& e) {
+                 throw InputError(e.what());  // keeps the MGF file and line in the message
+             }
+             reportWarnings("mgf2rad", warnings, loc);
+             return out;
+         }},
+        {"pkgBSDF",
+         [](const auto& args, const auto&, const auto& loc) {
+             std::vector<std::string> warnings;
+             std::string out;
+             try {
+                 out = pkgBSDF(args, warnings);
+             } catch (const InputError& e) {
+                 throw InputError(e.what());
+             }
+             reportWarnings("pkgBSDF", warnings, loc);
+             return out;
          }},
         {"xform",
          [](const auto& args, const auto& input, const auto&) {

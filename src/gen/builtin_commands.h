@@ -27,8 +27,8 @@ std::optional<std::vector<std::vector<std::string>>> splitPipeline(std::string_v
 
 // For LoadOptions::commandHook: the output of `command` if every stage of its pipeline
 // is one of our generators (genblinds, genbox, genprism, gensky, gendaylit, genrev,
-// gensurf, genworm, xform), else nullopt. Generator errors are InputErrors at `loc`
-// ("genbox: ..."), generator warnings are reported at `loc`.
+// gensurf, genworm, mgf2rad, pkgBSDF, xform), else nullopt. Generator errors are
+// InputErrors at `loc` ("genbox: ..."), generator warnings are reported at `loc`.
 std::optional<std::string> runBuiltinCommand(const std::string& command, const SourceLoc& loc);
 
 // LoadOptions with runBuiltinCommand installed: what every tool passes to loadScene.

@@ -168,3 +168,37 @@ TEST(Validation, EverySharedSceneLoads) {
 
 }  // namespace rp::gen
 
+
+namespace rp::gen {
+
+// mgf2rad runs in-process (here on genBSDF's blinds MGF, through xform); its MGF errors
+// keep the MGF file and line inside the scene line's message.
+TEST(BuiltinCommands, Mgf2radAndPkgBsdfRunInProcess) {
+    unsetenv(kShellCommandsEnv);
+    std::string mgf = std::string(RP_SOURCE_DIR) + "/tests/data/mgf/genbsdf_blinds.mgf";
+    Scene s = parseScene("!mgf2rad " + mgf + " | xform -t 0 0 1\n", "win.rad", builtinLoadOptions());
+    size_t polygons = 0;
+    for (const Primitive& p : s.prims) polygons += p.type == PrimType::Polygon;
+    EXPECT_EQ(polygons, 45u);
+    std::string bad = testing::TempDir() + "builtin_bad.mgf";
+    {
+        std::ofstream f(bad);
+        f << "# two\nf a b c\n";
+    }
+    try {
+        parseScene("!mgf2rad " + bad + "\n", "win.rad", builtinLoadOptions());
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "win.rad:1: mgf2rad: " + bad + ":2: Undefined reference: f a b c");
+    }
+    try {
+        parseScene("!pkgBSDF -s nowhere_at_all.xml\n", "win.rad", builtinLoadOptions());
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "win.rad:1: pkgBSDF: nowhere_at_all.xml: cannot find BSDF file");
+    }
+}
+
+}  // namespace rp::gen

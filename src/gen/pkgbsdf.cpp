@@ -1,0 +1,128 @@
+// pkgBSDF: scene text placing an XML BSDF (RADIANCE's pkgBSDF.c, rewritten).
+#include "gen/pkgbsdf.h"
+
+#include <strings.h>
+
+#include "calc/search_path.h"
+#include "gen/gen_text.h"
+#include "gen/mgf2rad.h"
+#include "scene/reader.h"
+#include "scene/scene_file.h"
+#include "util/error.h"
+#include "util/file_write.h"
+
+namespace rp::gen {
+
+namespace {
+
+std::string baseName(const std::string& path) {
+    size_t slash = path.rfind('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// One BSDF material and its rectangle at z. RADIANCE compat (pkgBSDF.c): the material's
+// thickness is z * 1.00004 and the rectangle sits at z * 0.00002 in front (so, almost at
+// 0) or at z * 1.00002 behind, just outside the geometry the thickness spans.
+std::string bsdfFace(const bsdf::BsdfData& b, double z) {
+    const char* sfx = z > 1e-6 ? "_f" : z < -1e-6 ? "_b" : "";
+    const char* name = b.name.c_str();
+    std::string s =
+        cformat("void BSDF m_%s%s\n6 %g %s.xml 0 1 0 .\n0\n0\n\n", name, sfx, z * 1.00004, name);
+    z *= (z < 0) + 0.00002;
+    s += cformat("m_%s%s polygon %s%s\n0\n0\n12\n", name, sfx, name, sfx);
+    double w = .5 * b.width, h = .5 * b.height;
+    s += cformat("\t%.6e\t%.6e\t%.6e\n", -w, -h, z);
+    s += cformat("\t%.6e\t%.6e\t%.6e\n", w, -h, z);
+    s += cformat("\t%.6e\t%.6e\t%.6e\n", w, h, z);
+    s += cformat("\t%.6e\t%.6e\t%.6e\n\n", -w, h, z);
+    return s;
+}
+
+}  // namespace
+
+std::string pkgBsdfGeometry(const bsdf::BsdfData& b, const std::string& xmlArg,
+                            const std::string& program) {
+    if (b.mgf.empty()) return "";
+    (void)program;
+    // MGF messages name the XML file; includes are relative to its folder.
+    std::string where = (b.path.empty() ? xmlArg : b.path) + " MGF block";
+    unsigned unknown = 0;
+    std::vector<std::string> warnings;
+    std::string body = mgfToRad(b.mgf, where, {}, &warnings, &unknown);
+    // RADIANCE runs "mgf2rad TEMPFILE"; its header lines name that file.
+    std::string name = baseName(xmlArg) + ":MGFblock";
+    std::string s = "## Translated from MGF Version 2.0\n## mgf2rad\n## mgf2rad " + name +
+                    " ##############################\n" + body;
+    if (unknown) s += cformat("## mgf2rad %s: %u unknown entities\n", name.c_str(), unknown);
+    return s;
+}
+
+std::string pkgBsdfScene(const bsdf::BsdfData& b, bool instance, const std::string& xmlArg,
+                         const std::string& program) {
+    if (!(b.width > 1e-6 && b.height > 1e-6))
+        throw InputError(SourceLoc{b.path.empty() ? xmlArg : b.path, 0}, "zero width or height");
+    std::string s = "# Produced by: " + program + " " + baseName(xmlArg) + "\n";
+    if (!b.materialName.empty() && !b.manufacturer.empty())
+        s += "# Material '" + b.materialName + "' by '" + b.manufacturer + "'\n\n";
+    if (b.mgf.empty()) return s + bsdfFace(b, 0);
+    s += bsdfFace(b, b.thickness);
+    if (b.rb) s += bsdfFace(b, -b.thickness);
+    if (instance) return s + "void instance " + b.name + "_g\n1 " + b.name + ".oct\n0\n0\n\n";
+    return s + pkgBsdfGeometry(b, xmlArg, program);
+}
+
+void writeBsdfOctree(const std::string& geometry, const std::string& octPath,
+                     const std::string& headerLine) {
+    saveSceneFile(octPath, parseScene(geometry, octPath), {headerLine});
+}
+
+namespace {
+
+// TEMPORARY until bsdf/xml_load.cpp (the XML loader) is merged: src/CMakeLists.txt
+// defines RP_HAVE_BSDF_LOADER when that file exists, and only then is the loader called.
+std::shared_ptr<const bsdf::BsdfData> loadBsdf(const std::string& path) {
+#ifdef RP_HAVE_BSDF_LOADER
+    return bsdf::loadBsdfFile(path);
+#else
+    throw notSupportedYet(SourceLoc{path, 0}, "pkgBSDF before the XML BSDF loader is built");
+#endif
+}
+
+}  // namespace
+
+std::string pkgBSDF(const std::vector<std::string>& args, std::vector<std::string>& warnings) {
+    (void)warnings;
+    const std::string usage = "usage: pkgBSDF [-i][-s] input.xml ..";
+    bool instance = false, toStdout = false;
+    size_t i = 1;
+    for (; i < args.size() && !args[i].empty() && args[i][0] == '-'; ++i) {
+        if (args[i] == "-i")
+            instance = true;
+        else if (args[i] == "-s")
+            toStdout = true;
+        else
+            throw InputError("unknown option '" + args[i] + "'; " + usage);
+    }
+    if (i >= args.size()) throw InputError("missing XML input; " + usage);
+    if (toStdout && i + 1 < args.size()) throw InputError("cannot send multiple BSDFs to stdout");
+    std::string out;
+    for (; i < args.size(); ++i) {
+        const std::string& xml = args[i];
+        if (xml.size() < 5 || strcasecmp(xml.c_str() + xml.size() - 4, ".xml") != 0)
+            throw InputError(xml + ": input does not end in '.xml'");
+        auto path = calc::findFile(xml, calc::defaultSearchPath(""));
+        if (!path) throw InputError(xml + ": cannot find BSDF file");
+        auto b = loadBsdf(*path);
+        std::string scene = pkgBsdfScene(*b, instance, xml, args[0]);
+        if (instance && !b->mgf.empty())
+            writeBsdfOctree(pkgBsdfGeometry(*b, xml, args[0]), b->name + ".oct",
+                            args[0] + " -i " + xml);
+        if (toStdout)
+            out += scene;
+        else
+            writeFileAtomically(b->name + ".rad", scene);
+    }
+    return out;
+}
+
+}  // namespace rp::gen
