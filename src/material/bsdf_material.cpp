@@ -47,6 +47,15 @@ struct BsdfHit {
     Color cthru, cthruSurround;  // aBSDF: the through peak and the BTDF around it
 };
 
+// What a hit needs beyond the frame and the Lambertian parts: the data's resolution at
+// the view (for sampling) and aBSDF's through peak. Direct light needs neither, except
+// the peak for sources behind an aBSDF, so setupBsdf leaves them to the callers.
+void setResolution(BsdfHit& h) {
+    h.sd->size(h.vray, nullptr, bsdf::SizeQuery::MinMax, h.srPsa);
+    h.srPsa[0] = std::sqrt(h.srPsa[0]);
+    h.srPsa[1] = std::sqrt(h.srPsa[1]);
+}
+
 Vec3 jitter(const BsdfHit& h, double srPsa, double dx, double dy) {
     if (srPsa <= kFtiny) return h.vray;
     return normalize(Vec3{h.vray.x + srPsa * dx, h.vray.y + srPsa * dy, h.vray.z});
@@ -75,10 +84,6 @@ bool setupBsdf(const BsdfParams& m, const SurfacePoint& sp, BsdfHit& h) {
     h.tdiff = (sp.front ? sd.tLambFront : sd.tLambBack) + m.diffuseTransmittance;
     h.rdiff = h.rdiff * sp.pattern;
     h.tdiff = h.tdiff * sp.pattern;
-    sd.size(h.vray, nullptr, bsdf::SizeQuery::MinMax, h.srPsa);
-    h.srPsa[0] = std::sqrt(h.srPsa[0]);
-    h.srPsa[1] = std::sqrt(h.srPsa[1]);
-    if (m.absdf) computeThrough(h, sp);
     return true;
 }
 
@@ -138,8 +143,8 @@ void computeThrough(BsdfHit& h, const SurfacePoint& sp) {
 // The non-diffuse part of the BSDF for light from world direction `l` (m_bsdf.c
 // direct_specular_OK), black where there is none. Deterministic jitter points (a
 // low-discrepancy set) average the data over the view direction's cell.
-Color directSpecular(const BsdfHit& h, const SurfacePoint& sp, const Vec3& l, double omega,
-                     double specJitter) {
+Color directSpecular(BsdfHit& h, const BsdfParams& m, const SurfacePoint& sp, const Vec3& l,
+                     double omega, double specJitter) {
     const bsdf::BsdfData& sd = *h.sd;
     const Vec3 vsrc = h.frame.toLocal(l);
     const bool srcFront = vsrc.z > 0, viewFront = h.vray.z > 0;
@@ -153,6 +158,7 @@ Color directSpecular(const BsdfHit& h, const SurfacePoint& sp, const Vec3& l, do
     }
     diff = diff * (1 / kPi);
     const double diffY = diff.brightness();
+    if (m.absdf && srcFront != viewFront) computeThrough(h, sp);
     if (srcFront != viewFront && h.cthru.brightness() > kFtiny) {
         // aBSDF: a source near the through direction is already seen through the peak.
         const double dx = vsrc.x + h.vray.x, dy = vsrc.y + h.vray.y;
@@ -200,7 +206,7 @@ Color evaluateBsdf(const BsdfParams& m, const SurfacePoint& sp, const Vec3& l, d
     if (ldot > 0 && h.rdiff.brightness() > kFtiny) c += h.rdiff * (ldot / kPi);
     if (ldot < 0 && h.tdiff.brightness() > kFtiny) c += h.tdiff * (-ldot / kPi);
     if (sp.specularInPhotons) return c;
-    Color s = directSpecular(h, sp, l, omega, 1);
+    Color s = directSpecular(h, m, sp, l, omega, 1);
     if (ldot < 0) s = s * sp.pattern;
     return c + s * std::abs(ldot);
 }
@@ -266,6 +272,9 @@ BackwardResult shadeBsdf(const BsdfParams& m, const SurfacePoint& sp, const Shad
     }
     BsdfHit h;
     if (!setupBsdf(m, sp, h)) return r;
+    setResolution(h);
+    if (m.absdf) computeThrough(h, sp);
+    r.directFromBehind = h.sd->hasTransmission();
     const Color runsamp = sampleSet(h, sp, false, opt, rng, r);
     const Color tunsamp = sampleSet(h, sp, true, opt, rng, r);
     r.ambientReflect = h.rdiff + runsamp;
@@ -333,7 +342,9 @@ bool bsdfShadowPass(const BsdfParams& m, const SurfacePoint& sp, bool backVisibl
     if (!sp.front && !backVisible) return true;
     if (!m.absdf) return sp.bsdfThickness != 0;  // a thick BSDF is a proxy
     detail::BsdfHit h;
-    if (!detail::setupBsdf(m, sp, h) || h.cthru.brightness() <= detail::kFtiny) return false;
+    if (!detail::setupBsdf(m, sp, h)) return false;
+    detail::computeThrough(h, sp);
+    if (h.cthru.brightness() <= detail::kFtiny) return false;
     colour = h.cthru;
     return true;
 }

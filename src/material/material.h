@@ -334,6 +334,9 @@ struct BackwardResult {
     Color emitted;          // light/glow/spotlight radiance seen along -dir
     bool transparent = false;        // continue the ray unchanged (antimatter, back faces)
     bool useAlternate = false;       // shade with the alternate material (illum, mirror)
+    // evaluate() gives light from behind the surface beyond what ambientTransmit says
+    // (a BSDF's non-diffuse transmission, which is sampled rather than ambient).
+    bool directFromBehind = false;
     void add(const SpecularRay& r) { rays[numRays++] = r; }
 };
 

@@ -325,14 +325,13 @@ Vec3 MaterialCalcEvaluator::anisoU() {
     return len > 0 && std::isfinite(len) ? w / len : Vec3{};
 }
 
-MaterialCalcEvaluator::BsdfAtHit MaterialCalcEvaluator::bsdf() {
+void MaterialCalcEvaluator::setBsdfInputs(SurfacePoint& sp) {
     RP_CHECK(rec_ && rec_->kind == MaterialCalc::Kind::Bsdf);
     double v[4];
     for (int k = 0; k < 4; ++k)
         v[k] = rec_->exprConstant[k] ? rec_->exprValue[k]
                                      : eval_.eval(calc_.program_->expression(rec_->expr[k]));
-    BsdfAtHit b;
-    b.data = rec_->bsdf.get();
+    sp.bsdf = rec_->bsdf.get();
     // m_bsdf.c: a thickness within FTINY of 0 is 0; both through the modifier's transform,
     // then the object's.
     double thick = std::abs(v[3]) <= 1e-6 ? 0.0 : v[3];
@@ -342,9 +341,8 @@ MaterialCalcEvaluator::BsdfAtHit MaterialCalcEvaluator::bsdf() {
         up = object_->forward.mapDirection(up);
         thick *= object_->forward.scale;
     }
-    b.up = up;
-    b.thickness = thick;
-    return b;
+    sp.uDir = up;
+    sp.bsdfThickness = thick;
 }
 
 void MaterialCalcEvaluator::brtdSpecular(Color& reflection, Color& transmission) {

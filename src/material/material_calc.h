@@ -115,14 +115,10 @@ public:
     // on a math error (evaluate() then punts to an isotropic frame, as aniso.c does).
     Vec3 anisoU();
 
-    // BSDF/aBSDF (m_bsdf.c): the data, the up vector (world, through the transforms) and
-    // the thickness (world units: scaled as the up vector is; 0 for aBSDF).
-    struct BsdfAtHit {
-        const bsdf::BsdfData* data = nullptr;
-        Vec3 up;
-        double thickness = 0;
-    };
-    BsdfAtHit bsdf();
+    // BSDF/aBSDF (m_bsdf.c): sets sp.bsdf (the data), sp.uDir (the up vector, world,
+    // through the modifier's and the object's transforms) and sp.bsdfThickness (scaled
+    // as the up vector is; 0 for aBSDF).
+    void setBsdfInputs(SurfacePoint& sp);
 
     // BRTDfunc: the ideal specular reflection (rrefl grefl brefl) and transmission
     // (rtrns gtrns btrns) colours at the hit. Not modified by the pattern (m_brdf.c).

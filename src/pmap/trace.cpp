@@ -113,10 +113,7 @@ void PhotonTracer::setFunctionValues(int32_t material, const Hit& hit, const Vec
     eval->setHit(material, at, sp.normal, sp.pattern);
     const PrimType t = scene_.prims[size_t(material)].type;
     if (t == PrimType::BSDF || t == PrimType::ABSDF) {
-        const auto b = eval->bsdf();
-        sp.bsdf = b.data;
-        sp.uDir = b.up;
-        sp.bsdfThickness = b.thickness;
+        eval->setBsdfInputs(sp);
         return;
     }
     Color refl, trans;

@@ -4,7 +4,6 @@
 // (ambient) light. Shadow rays and hemisphere samples are in shadow.cpp.
 #include <cmath>
 
-#include "bsdf/bsdf.h"
 #include "light/light_sources.h"
 #include "render/renderer_impl.h"
 #include "util/error.h"
@@ -86,10 +85,7 @@ void Renderer::Context::applyMaterialCalc(int32_t material, const Hit& hit, cons
     } else if (std::holds_alternative<material::FuncParams>(p)) {
         sp.directional = &directional;
     } else if (std::holds_alternative<material::BsdfParams>(p)) {
-        const auto b = materialCalc.bsdf();
-        sp.bsdf = b.data;
-        sp.uDir = b.up;
-        sp.bsdfThickness = b.thickness;
+        materialCalc.setBsdfInputs(sp);
     }
 }
 
@@ -327,10 +323,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
             value += b.ambientReflect *
                      impl.photons.directDensity(*photonLookups, hit.point, n);
         } else {
-            // Sources behind the surface count where it transmits diffusely, or through
-            // a BSDF's data (whose non-diffuse transmission is sampled, not ambient).
-            bool transmits = b.ambientTransmit.max() > 0 ||
-                             (sp.bsdf && sp.bsdf->hasTransmission());
+            bool transmits = b.ambientTransmit.max() > 0 || b.directFromBehind;
             shadowBlockedByTransparent_ = shadowInPhotonMap(state);
         // Specular children may have used the function evaluator: set this hit again.
         if (sp.directional) applyMaterialCalc(layer.material, hit, ray.dir, sp);

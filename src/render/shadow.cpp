@@ -54,7 +54,10 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
         return ev;
     }
     if (const auto* m = std::get_if<material::BsdfParams>(&params)) {
-        applyMaterialCalc(layer.material, hit, dir, sp);
+        // prismCalc: materialCalc may hold the hit being lit (its functions still to run).
+        prismCalc.setHit(layer.material, material::PatternPoint::atHit(dir, hit), sp.normal,
+                         sp.pattern);
+        prismCalc.setBsdfInputs(sp);
         Color c;
         if (material::bsdfShadowPass(*m, sp, impl.options.backVisible, c)) {
             ev.kind = ShadowEvent::Kind::Transmit;
