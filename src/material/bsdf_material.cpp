@@ -10,10 +10,12 @@
 // aBSDF looks for a strong "through" peak, which passes view and shadow rays unscattered.
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 
 #include "bsdf/bsdf.h"
 #include "material/detail.h"
+#include "util/rng.h"
 #include "util/warnings.h"
 
 namespace rp::material::detail {
@@ -141,8 +143,8 @@ void computeThrough(BsdfHit& h, const SurfacePoint& sp) {
 }
 
 // The non-diffuse part of the BSDF for light from world direction `l` (m_bsdf.c
-// direct_specular_OK), black where there is none. Deterministic jitter points (a
-// low-discrepancy set) average the data over the view direction's cell.
+// direct_specular_OK), black where there is none, averaged over jitter points in the
+// view direction's cell.
 Color directSpecular(BsdfHit& h, const BsdfParams& m, const SurfacePoint& sp, const Vec3& l,
                      double omega, double specJitter) {
     const bsdf::BsdfData& sd = *h.sd;
@@ -172,11 +174,17 @@ Color directSpecular(BsdfHit& h, const BsdfParams& m, const SurfacePoint& sp, co
     const double tsr = std::sqrt(tomega[0]);
     int nsamp = 1;
     if (tsr > 0) nsamp = std::max(1, static_cast<int>(4 * specJitter * sp.rayWeight + .5));
+    // The jitter points: a low-discrepancy set over the cell (the R2 sequence), shifted by
+    // a hash of the ray and light directions. RADIANCE draws them at random; a fixed set
+    // with a point at the cell's centre read a BSDF's peak cell up to 2-400 times high.
+    const uint64_t hash = mix64(std::bit_cast<uint64_t>(sp.dir.x) ^ mix64(std::bit_cast<uint64_t>(sp.dir.y) ^
+                                mix64(std::bit_cast<uint64_t>(l.x) ^ std::bit_cast<uint64_t>(l.y))));
+    const double u0 = double(hash >> 11) * 0x1.0p-53, v0 = double(mix64(hash) >> 11) * 0x1.0p-53;
     Color sum;
     int count = 0;
     for (int k = 0; k < nsamp; ++k) {
-        const double u = std::fmod(.5 + k * .7548776662466927, 1.0);
-        const double v = std::fmod(.5 + k * .5698402909980532, 1.0);
+        const double u = std::fmod(u0 + k * .7548776662466927, 1.0);
+        const double v = std::fmod(v0 + k * .5698402909980532, 1.0);
         const Vec3 vj = jitter(h, tsr * std::min(specJitter, 1.0), .5 - u, .5 - v);
         const Color c = sd.evaluate(vj, vsrc);
         if (c.brightness() - diffY <= kFtiny) continue;

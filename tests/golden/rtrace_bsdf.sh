@@ -5,7 +5,9 @@
 #  - -ab 0 view rays through the blinds: the mean within 5 % (RADIANCE samples one ray
 #    per component at random, so single rays differ by tens of per cent between runs);
 #  - classic -ab 2 and photon maps: means within 5 % (-u-: repeatable);
-#  - the photon map of the BSDF room within 5 % of the explicit-slat room's reference.
+#  - the photon map of the BSDF room within 5 % of the explicit-slat room's reference;
+#  - the tensor-tree BSDF: view rays and photon map within 5 % (its classic -ab 2 varies
+#    by +-5 % between runs, RADIANCE's too: sunlight through the tree's finest cells).
 set -u
 BIN="${RP_BIN:?RP_BIN not set}"
 VAL="${RP_SHARED_DIR:?RP_SHARED_DIR not set}/validation/bsdf"
@@ -42,4 +44,14 @@ r=$(ratio "$tmp/pm.txt" ref_klems_pmap.txt); echo "photon map: ours/RADIANCE $r"
 within "$r" .05 || bad "photon map $r"
 r=$(ratio "$tmp/pm.txt" ref_geometry_pmap.txt); echo "photon map: ours (BSDF) / RADIANCE (slats) $r"
 within "$r" .05 || bad "BSDF against slats $r"
+"$BIN/oconv" -f sky.rad room.rad blinds_ttree.rad > "$tmp/t.oct" || bad "oconv ttree"
+"$BIN/rtrace" -h -u- -ab 0 "$tmp/t.oct" < view_rays.txt > "$tmp/tview.txt" || bad "rtrace ttree view"
+r=$(ratio "$tmp/tview.txt" ref_ttree_view_ab0.txt); echo "tensor tree, view -ab 0: ours/RADIANCE $r"
+within "$r" .05 || bad "tensor tree view rays $r"
+"$BIN/mkpmap" -apg "$tmp/tg.pm" 500k -apc "$tmp/tc.pm" 500k -apo window_glass -aps sensor_plane \
+    -apr 1 -n 2 "$tmp/t.oct" > /dev/null 2>&1 || bad "mkpmap ttree"
+"$BIN/rtrace" -h -u- -I -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -n 2 -ap "$tmp/tg.pm" 100 \
+    -ap "$tmp/tc.pm" 100 "$tmp/t.oct" < points.txt > "$tmp/tpm.txt" || bad "rtrace ttree -ap"
+r=$(ratio "$tmp/tpm.txt" ref_ttree_pmap.txt); echo "tensor tree, photon map: ours/RADIANCE $r"
+within "$r" .05 || bad "tensor tree photon map $r"
 exit $fail
