@@ -48,8 +48,9 @@ public:
     virtual double hemispherical(const Vec3& in) const = 0;
 
     // An outgoing direction for `in` drawn with probability proportional to
-    // value * |cos| (x uniform in [0,1), y a second uniform for the position inside the
-    // chosen cell); false where there is nothing to sample (hemispherical <= 1e-6).
+    // value * |cos| (x uniform in [0,1); y a second uniform that a distribution may use
+    // for the position inside the chosen cell: Klems data take it from x, as RADIANCE
+    // does); false where there is nothing to sample (hemispherical <= 1e-6).
     virtual bool sample(const Vec3& in, double x, double y, Vec3& out) const = 0;
 };
 

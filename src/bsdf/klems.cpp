@@ -10,6 +10,7 @@
 #include <cstring>
 #include <strings.h>
 
+#include "bsdf/multi_sample.h"
 #include "bsdf/xml_detail.h"
 
 namespace rp::bsdf::detail {
@@ -175,7 +176,7 @@ public:
         return c ? c->c.back() : 0.0;
     }
 
-    bool sample(const Vec3& inV, double x, double y, Vec3& out) const override {
+    bool sample(const Vec3& inV, double x, double, Vec3& out) const override {
         const auto [cdf, reversed] = cdfFor(inV);
         if (!cdf || cdf->c.back() <= 1e-6) return false;
         const auto& c = cdf->c;
@@ -186,8 +187,11 @@ public:
         k = std::clamp(k, 0, static_cast<int>(c.size()) - 2);
         while (k > 0 && c[k + 1] <= c[k]) --k;
         const double width = c[k + 1] - c[k];
-        const double rx = width > 0 ? std::clamp((target - c[k]) / width, 0.0, 1.0) : .5;
-        out = reversed ? in_.vector(k, rx, y) : out_.vector(k, rx, y);
+        // The position inside the patch from what is left of x (bsdf_m.c fo_getvec):
+        // the same direction as RADIANCE's for the same x; y is not needed.
+        double t[2];
+        multiSample2(width > 0 ? std::clamp((target - c[k]) / width, 0.0, 1.0) : .5, t);
+        out = reversed ? in_.vector(k, t[0], t[1]) : out_.vector(k, t[0], t[1]);
         return true;
     }
 

@@ -214,7 +214,7 @@ Color evaluateBsdf(const BsdfParams& m, const SurfacePoint& sp, const Vec3& l, d
     if (ldot > 0 && h.rdiff.brightness() > kFtiny) c += h.rdiff * (ldot / kPi);
     if (ldot < 0 && h.tdiff.brightness() > kFtiny) c += h.tdiff * (-ldot / kPi);
     if (sp.specularInPhotons) return c;
-    Color s = directSpecular(h, m, sp, l, omega, 1);
+    Color s = directSpecular(h, m, sp, l, omega, sp.specJitter);
     if (ldot < 0) s = s * sp.pattern;
     return c + s * std::abs(ldot);
 }
@@ -285,6 +285,7 @@ BackwardResult shadeBsdf(const BsdfParams& m, const SurfacePoint& sp, const Shad
     r.directFromBehind = h.sd->hasTransmission();
     const Color runsamp = sampleSet(h, sp, false, opt, rng, r);
     const Color tunsamp = sampleSet(h, sp, true, opt, rng, r);
+    r.transmitOffset = -thick;
     r.ambientReflect = h.rdiff + runsamp;
     r.ambientTransmit = h.tdiff + tunsamp;
     if (r.ambientReflect.brightness() <= kFtiny) r.ambientReflect = {};
@@ -338,6 +339,7 @@ PhotonScatter scatterBsdf(const BsdfParams& m, const SurfacePoint& sp, Rng& rng)
     }
     s.kind = c[i].kind;
     s.fluxFactor = factor;
+    if (i == 1 || i == 3) s.originOffset = static_cast<float>(-sp.bsdfThickness);
     return s;
 }
 

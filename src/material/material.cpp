@@ -183,9 +183,22 @@ Color evaluate(const MaterialParams& m, const SurfacePoint& sp, const Vec3& toLi
         m);
 }
 
+namespace {
+// Whether evaluate() has light from behind beyond a diffuse transmission (which shows in
+// ambientTransmit): the rough or function-driven transmitted part of trans, trans2,
+// transfunc and transdata (normal.c, aniso.c, m_brdf.c: sources behind count wherever
+// the material transmits at all). BSDF and WGMDfunc say so themselves.
+bool transmitsDirect(const MaterialParams& m) {
+    if (const auto* p = std::get_if<NormalParams>(&m)) return p->trans > kFtiny;
+    if (const auto* p = std::get_if<AnisoParams>(&m)) return p->trans > kFtiny;
+    if (const auto* p = std::get_if<FuncParams>(&m)) return p->trans > kFtiny;
+    return false;
+}
+}  // namespace
+
 BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
                              const ShadeOptions& opt, Rng& rng) {
-    return std::visit(
+    BackwardResult r = std::visit(
         Overloaded{
             [&](const NormalParams& p) { return shadeNormal(p, sp, opt, rng); },
             [&](const AnisoParams& p) { return shadeAniso(p, sp, opt, rng); },
@@ -206,6 +219,8 @@ BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
             [&](const WgmdParams& p) { return shadeWgmd(p, sp, opt, rng); },
         },
         m);
+    r.directFromBehind = r.directFromBehind || transmitsDirect(m);
+    return r;
 }
 
 PhotonScatter scatterPhoton(const MaterialParams& m, const SurfacePoint& sp, Rng& rng) {

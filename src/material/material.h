@@ -259,6 +259,7 @@ struct SurfacePoint {
     // photons already (RADIANCE ambRayInPmap).
     bool specularInPhotons = false;
     double rayWeight = 1;  // RADIANCE rweight: how many jittered BSDF samples direct light gets
+    double specJitter = 1; // rtrace -ss (ShadeOptions::specJitter), for BSDF direct light
     const WgmdInputs* wgmd = nullptr;  // WGMDfunc; null: wgmdInputs(m, *this)
 };
 
@@ -337,6 +338,10 @@ struct BackwardResult {
     // evaluate() gives light from behind the surface beyond what ambientTransmit says
     // (a BSDF's non-diffuse transmission, which is sampled rather than ambient).
     bool directFromBehind = false;
+    // Where the far side's light is gathered from, along the unflipped surface normal:
+    // transmitted rays start there, and ambient and direct light from behind are taken
+    // there (RADIANCE's thick BSDF proxy: -thickness, past the geometry it stands for).
+    double transmitOffset = 0;
     void add(const SpecularRay& r) { rays[numRays++] = r; }
 };
 
@@ -358,6 +363,9 @@ struct PhotonScatter {
     ScatterKind kind = ScatterKind::Absorbed;
     bool store = false;  // the hit has a diffuse component: deposit the incident photon here
     MediumChange::Kind mediumKind = MediumChange::Kind::Unchanged;
+    // The next photon starts this far along the unflipped surface normal (a thick BSDF's
+    // transmitted photons: -thickness, past its proxied geometry). In the padding.
+    float originOffset = 0;
     Vec3 dir;
     Color fluxFactor;  // multiply the photon flux by this (Russian roulette included)
     Color extinction;  // of the medium entered, where mediumKind is Given

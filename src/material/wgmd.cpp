@@ -228,6 +228,7 @@ BackwardResult shadeWgmd(const WgmdParams& m, const SurfacePoint& sp, const Shad
     // diffuse part (m_wgmdf.c multambient calls).
     if (h.rd.brightness() > kFtiny) r.ambientReflect = h.rd + (rblt ? h.rs.color : Color{});
     if (h.td.brightness() > kFtiny) r.ambientTransmit = h.td + (tblt ? h.ts.color : Color{});
+    r.directFromBehind = h.ts.on && !h.ts.pure;  // the rough transmitted lobe
     return r;
 }
 

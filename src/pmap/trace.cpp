@@ -325,6 +325,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         case material::MediumChange::Kind::Given: extinction = s.extinction; break;
         }
         ray = spawnRay(*hit, s.dir);
+        if (s.originOffset != 0) ray.origin += hit->normal * double(s.originOffset);
     }
 }
 

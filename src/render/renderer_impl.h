@@ -111,8 +111,11 @@ private:
     Color shadeAlternate(const Ray& ray, const Hit& hit, const RayState& state,
                          int32_t alternate, RayResult* first, bool& passThrough);
     Color escaped(const Ray& ray, const RayState& state);
+    // Direct light at `hit`; `behindOnly`: only sources behind the surface (the far point
+    // of a thick BSDF, whose reflected light is taken at the hit itself).
     Color directAt(const Hit& hit, const material::MaterialParams& params,
-                   const material::SurfacePoint& sp, bool transmits, const RayState& state);
+                   const material::SurfacePoint& sp, bool transmits, const RayState& state,
+                   bool behindOnly = false);
     Color ambientAt(const Hit& hit, const Vec3& normal, int32_t modifier,
                     const RayState& state);
     material::ChainResult resolve(int32_t modifier, const Hit& hit, const Vec3& dir);

@@ -201,6 +201,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     sp.scatteredRay = state.indirect;
     sp.specularInPhotons = impl.photons.active() && state.ambientLevel > 0;
     sp.rayWeight = state.weight;
+    sp.specJitter = impl.shadeOptions.specJitter;
 
     auto fillFirst = [&](RayResult* f) { recordFirst(f, hit, hit.front ? n : -n, layer.material); };
 
@@ -267,6 +268,8 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     }
     fillFirst(first);
     Color value = b.emitted;
+    Hit farSide = hit;  // where light from behind is gathered (BackwardResult::transmitOffset)
+    farSide.point += hit.normal * b.transmitOffset;
 
     // Specular rays (RADIANCE rayorigin rules for -lr and -lw). RADIANCE compat
     // (pmapmat.h ambRayInPmap): in photon-map mode an ambient ray's specular children are
@@ -302,6 +305,8 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
             }
         }
         Ray out = spawnRay(hit, sr.dir);
+        if (sr.kind == material::ScatterKind::SpecularTransmission && b.transmitOffset != 0)
+            out.origin += hit.normal * b.transmitOffset;
         double d = kNoHit;
         Color c = radiance(out, child, nullptr, d);
         if (sr.medium.kind == material::MediumChange::Kind::Given && d < kNoHit) {
@@ -327,13 +332,19 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
             shadowBlockedByTransparent_ = shadowInPhotonMap(state);
         // Specular children may have used the function evaluator: set this hit again.
         if (sp.directional) applyMaterialCalc(layer.material, hit, ray.dir, sp);
-        value += directAt(hit, params, sp, transmits, state);
+        if (b.transmitOffset == 0) {
+            value += directAt(hit, params, sp, transmits, state);
+        } else {
+            // m_bsdf.c: reflected light here, transmitted light from the far point.
+            value += directAt(hit, params, sp, false, state);
+            if (transmits) value += directAt(farSide, params, sp, true, state, true);
+        }
         }
     }
     if (b.ambientReflect.max() > 0)
         value += b.ambientReflect * ambientAt(hit, n, layer.material, state);
     if (b.ambientTransmit.max() > 0)
-        value += b.ambientTransmit * ambientAt(hit, -n, layer.material, state);
+        value += b.ambientTransmit * ambientAt(farSide, -n, layer.material, state);
     if (first && first->prim == hit.prim && state.primary) {
         first->unmirrored = value - first->mirrored;
         first->unmirroredLength = hit.t;
@@ -360,7 +371,7 @@ Color Renderer::Context::shadeAlternate(const Ray& ray, const Hit& hit, const Ra
 
 Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams& params,
                                   const material::SurfacePoint& sp, bool transmits,
-                                  const RayState& state) {
+                                  const RayState& state, bool behindOnly) {
     DirectPoint at;
     at.weight = state.weight;
     shadowBase_ = shadowClip_ = state.clip;  // shadow rays start with the ray's set
@@ -372,6 +383,7 @@ Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams
     return impl.direct.compute(
         at,
         [&](const Vec3& toLight, double omega) {
+            if (behindOnly && dot(sp.normal, toLight) >= 0) return Color{};
             return material::evaluate(params, sp, toLight, omega);
         },
         *this, rng);
