@@ -3,11 +3,13 @@
 #include "calc/program.h"
 
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "calc/builtins.h"
 #include "calc/names.h"
 #include "calc/parser.h"
+#include "calc/ray_context.h"
 #include "calc/search_path.h"
 
 namespace rp::calc {
@@ -68,6 +70,54 @@ std::optional<Function> Program::function(std::string_view name, std::string_vie
     for (std::size_t i = 0; i < bs.size(); ++i)
         if (bs[i].name == name) return Function{builtinFunctionId(static_cast<int>(i)), bs[i].minArgs};
     return std::nullopt;
+}
+
+bool Program::readsOnly(int id, std::span<const std::string_view> allowed) const {
+    return nodeReadsOnly(expressions_.at(id), allowed);
+}
+
+bool Program::readsOnly(const Function& f, std::span<const std::string_view> allowed) const {
+    if (f.id < 0) return true;  // builtins take everything as arguments
+    const FunctionInfo* fi = functions_.at(static_cast<std::size_t>(f.id)).get();
+    return fi->body && nodeReadsOnly(fi->body, allowed);
+}
+
+bool Program::nodeReadsOnly(const Node* root, std::span<const std::string_view> allowed) const {
+    std::set<std::size_t> ok;
+    for (const RayVariable& v : rayVariables())
+        for (std::string_view a : allowed)
+            if (v.name == a) ok.insert(v.offset);
+    std::set<const void*> seen;  // variables and functions already walked
+    std::vector<const Node*> todo{root};
+    while (!todo.empty()) {
+        const Node* n = todo.back();
+        todo.pop_back();
+        if (!n) return false;
+        switch (n->op()) {
+        case Op::Ray:
+            if (!ok.count(static_cast<std::size_t>(n->index))) return false;
+            break;
+        case Op::Var: {
+            const auto* v = static_cast<const VarInfo*>(n->ptr);
+            if (!v || !v->body) return false;
+            if (seen.insert(v).second) todo.push_back(v->body);
+            break;
+        }
+        case Op::CallUser: {
+            const auto* f = static_cast<const FunctionInfo*>(n->ptr);
+            if (!f || !f->body) return false;
+            if (seen.insert(f).second) todo.push_back(f->body);
+            break;
+        }
+        case Op::CallParamFn:
+        case Op::Error: return false;
+        default: break;
+        }
+        for (const Node* k : {n->a, n->b, n->c})
+            if (k) todo.push_back(k);
+        for (int i = 0; i < n->nkids; ++i) todo.push_back(n->kids[i]);
+    }
+    return true;
 }
 
 Evaluator::Evaluator(std::shared_ptr<const Program> program) : program_(std::move(program)) {

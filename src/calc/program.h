@@ -94,6 +94,13 @@ public:
         return Entry{expressions_.at(id), expressionBlocks_.at(id)};
     }
 
+    // Whether expression `id` (with everything it calls and reads, transitively) reads no
+    // ray variables but those named in `allowed`. False where that cannot be known (a
+    // function passed as a parameter, an unresolved name).
+    bool readsOnly(int id, std::span<const std::string_view> allowed) const;
+    // The same for a function (builtins read none).
+    bool readsOnly(const Function& f, std::span<const std::string_view> allowed) const;
+
     // References that could not be resolved and other problems found while compiling,
     // as "file:line: message". Each is also raised as an InputError if evaluated.
     const std::vector<std::string>& problems() const { return problems_; }
@@ -102,6 +109,7 @@ public:
 
 private:
     Program() = default;
+    bool nodeReadsOnly(const Node* root, std::span<const std::string_view> allowed) const;
     friend class Linker;
     friend class Evaluator;
 

@@ -69,6 +69,7 @@ public:
     const Color& integral() const { return integral_; }
     bool empty() const { return cells_.empty(); }
     size_t cellCount() const { return size_t(nTheta_) * nPhi_; }
+    size_t keptCells() const { return cells_.size(); }
 
     struct Sample {
         Vec3 dir;

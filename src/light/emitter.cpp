@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+
+#include <tbb/parallel_for.h>
 
 namespace rp::light {
 
@@ -279,35 +282,45 @@ EmissionPlan::EmissionPlan(const SceneGeometry& geometry, std::vector<LightSourc
                 pg.first = m.parts.size();
                 uint32_t gi = uint32_t(m.groups.size());
                 m.groups.push_back(pg);
+                // One table for a flat port under a direction-only modifier, each
+                // partition's own where the source is partly hidden from it (or where the
+                // modifier depends on the point). The partitions' tables are independent:
+                // built in parallel, then added in partition order (the same plan for any
+                // number of threads).
                 int32_t base = -1;
-                for (const Partition& p : parts) {
-                    EmissionPoint e = partitionCentre(shapes, m.cube, p);
+                if (flat && (!mod.eval || mod.directionalOnly) && !parts.empty()) {
+                    EmissionPoint e = partitionCentre(shapes, m.cube, parts.front());
+                    Vec3 n = flip ? -e.normal : e.normal;
+                    m.tables.emplace_back(g.cone, options.samplesPerSr, [&](const Vec3& w) {
+                        return value(w, e.point, n, true);
+                    });
+                    base = int32_t(m.tables.size() - 1);
+                }
+                std::vector<std::optional<DirectionTable>> own(parts.size());
+                tbb::parallel_for(size_t(0), parts.size(), [&](size_t k) {
+                    EmissionPoint e = partitionCentre(shapes, m.cube, parts[k]);
                     Vec3 n = flip ? -e.normal : e.normal;
                     Vec3 from = e.point + n * e.offset;
                     auto visible = [&](const Vec3& w) {
                         return !geometry.occluded(from, w, HUGE_VAL);
                     };
-                    if (base < 0 && flat && (!mod.eval || mod.directionalOnly)) {
-                        m.tables.emplace_back(g.cone, options.samplesPerSr, [&](const Vec3& w) {
-                            return value(w, e.point, n, true);
-                        });
-                        base = int32_t(m.tables.size() - 1);
-                    }
-                    int32_t t = base;
                     if (base >= 0) {
                         bool changed = false;
                         DirectionTable seen = m.tables[size_t(base)].filtered(visible, changed);
-                        if (changed) {
-                            m.tables.push_back(std::move(seen));
-                            t = int32_t(m.tables.size() - 1);
-                        }
+                        if (changed) own[k] = std::move(seen);
                     } else {
-                        m.tables.emplace_back(g.cone, options.samplesPerSr, [&](const Vec3& w) {
+                        own[k].emplace(g.cone, options.samplesPerSr, [&](const Vec3& w) {
                             return visible(w) ? value(w, e.point, n, true) : Color{};
                         });
+                    }
+                });
+                for (size_t k = 0; k < parts.size(); ++k) {
+                    int32_t t = base;
+                    if (own[k]) {
+                        m.tables.push_back(std::move(*own[k]));
                         t = int32_t(m.tables.size() - 1);
                     }
-                    m.add(p, gi, m.tables[size_t(t)].integral() * p.area, t);
+                    m.add(parts[k], gi, m.tables[size_t(t)].integral() * parts[k].area, t);
                 }
                 m.groups[gi].end = m.parts.size();
             }

@@ -139,17 +139,6 @@ int32_t lookupModifier(const Scene& s, int32_t before, const std::string& name) 
 
 // Whether an expression's text names a ray variable that depends on the point rather
 // than only the direction. Only meaningful when no function file is loaded.
-bool mentionsPosition(const std::string& text) {
-    auto word = [](char c) { return std::isalnum((unsigned char)c) || c == '_'; };
-    for (std::string_view v : {"Px", "Py", "Pz", "Nx", "Ny", "Nz", "Rdot", "T", "Ts", "Lu", "Lv"}) {
-        for (size_t at = text.find(v); at != std::string::npos; at = text.find(v, at + 1)) {
-            size_t end = at + v.size();
-            if ((at == 0 || !word(text[at - 1])) && (end >= text.size() || !word(text[end])))
-                return true;
-        }
-    }
-    return false;
-}
 
 // Function file at `fileAt`, then `nexpr` expressions at `exprAt`, then the transform.
 void compileFunctions(Loader& ld, const Primitive& p, ChainRecord& r, size_t fileAt,
@@ -158,11 +147,9 @@ void compileFunctions(Loader& ld, const Primitive& p, ChainRecord& r, size_t fil
                                            " string arguments, got " +
                                            std::to_string(p.sargs.size()));
     ld.loadFunctionFile(p, p.sargs[fileAt]);
-    r.directional = p.sargs[fileAt] == ".";
-    for (size_t k = 0; k < nexpr; ++k) {
+    r.directional = true;  // judged once the program is built (directionOnly)
+    for (size_t k = 0; k < nexpr; ++k)
         r.exprIds.push_back(ld.builder.addExpression(p.sargs[exprAt + k], p.loc));
-        if (mentionsPosition(p.sargs[exprAt + k])) r.directional = false;
-    }
     r.forward = parseTransform(p.sargs, xfAt, p.loc);
     r.toObject = r.forward.inverse();
     r.hasTransform = !r.forward.isIdentity();
@@ -287,6 +274,20 @@ bool callsWithThree(PrimType t, const calc::Function& f) {
     }
 }
 
+// Whether a record's expressions and functions read the ray's direction only (and the
+// record's own transform), so that a source's emission through it is one table for
+// every point (light/emitter.cpp). skybright.cal's sky qualifies.
+bool directionOnly(const calc::Program& prog, const ChainRecord& r) {
+    static constexpr std::string_view kAllowed[] = {"Dx", "Dy", "Dz", "S",  "Tx", "Ty", "Tz",
+                                                    "Ix", "Iy", "Iz", "Jx", "Jy", "Jz",
+                                                    "Kx", "Ky", "Kz"};
+    for (int id : r.exprIds)
+        if (!prog.readsOnly(id, kAllowed)) return false;
+    for (const auto& f : r.funcs)
+        if (!prog.readsOnly(f.fn, kAllowed)) return false;
+    return true;
+}
+
 }  // namespace
 
 SurfaceChains::SurfaceChains(const Scene& scene, std::vector<std::string> searchPath)
@@ -311,6 +312,7 @@ SurfaceChains::SurfaceChains(const Scene& scene, std::vector<std::string> search
             if (!f) fail(p, "undefined function '" + name + "'");
             r.funcs.push_back({*f, callsWithThree(p.type, *f)});
         }
+        r.directional = r.directional && directionOnly(prog, r);
         if (r.kind == ChainKind::Material && p.modifier == kVoid) impl_->plainMaterial[i] = int32_t(i);
     }
 }

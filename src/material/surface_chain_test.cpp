@@ -397,9 +397,9 @@ TEST_F(SurfaceChain, LuminaireDataSeesUnitDirectionsThroughAScaledTransform) {
     expectColor(r.layers[0].pattern, v, v, v);
 }
 
-TEST_F(SurfaceChain, DirectionalOnlyWithoutFilesOrPositionVariables) {
+TEST_F(SurfaceChain, DirectionalOnlyWithoutPositionVariables) {
     writeFile(f.dir.file("d.dat"), "1\n0 1 2\n0 1\n");
-    writeFile(f.dir.file("any.cal"), "g = Dz;\n");
+    writeFile(f.dir.file("any.cal"), "g = Dz;\nh(x) = x * Py;\nk = h(Dz);\n");
     f.load("void colorfunc dirs 6 Dx Dy Dz . -rz 90 0 0\n"
            "dirs brightfunc twice 2 2 . 0 0\n"
            "twice light a 0 0 3 1 1 1\n"
@@ -409,6 +409,8 @@ TEST_F(SurfaceChain, DirectionalOnlyWithoutFilesOrPositionVariables) {
            "pos light c 0 0 3 1 1 1\n"
            "void brightfunc file 2 g any.cal 0 0\n"
            "file light d 0 0 3 1 1 1\n"
+           "void brightfunc hidden 2 k any.cal 0 0\n"
+           "hidden light h 0 0 3 1 1 1\n"
            "void brightfunc half 2 .5 . 0 0\n"
            "void mixfunc mx 4 half void .5 . 0 0\n"
            "mx light e 0 0 3 1 1 1\n");
@@ -416,7 +418,8 @@ TEST_F(SurfaceChain, DirectionalOnlyWithoutFilesOrPositionVariables) {
     EXPECT_TRUE(f.chains->directionalOnly(chainOf("a")));
     EXPECT_TRUE(f.chains->directionalOnly(chainOf("b")));
     EXPECT_FALSE(f.chains->directionalOnly(chainOf("c")));  // reads P and Ts
-    EXPECT_FALSE(f.chains->directionalOnly(chainOf("d")));  // a file could read P
+    EXPECT_TRUE(f.chains->directionalOnly(chainOf("d")));   // the file's g reads D only
+    EXPECT_FALSE(f.chains->directionalOnly(chainOf("h")));  // k calls h, which reads Py
     EXPECT_FALSE(f.chains->directionalOnly(chainOf("e")));  // mixtures are not judged
     EXPECT_TRUE(f.chains->directionalOnly(kVoid));
     // Rotated +90 degrees about z, the world x axis is the object's -y axis; x 2.
@@ -432,7 +435,8 @@ TEST(SurfaceChainSky, DaylightSkyAtZenithMatchesCieClearSky) {
     int32_t glow = indexOf(s, "sky_glow");
     ASSERT_GE(glow, 0);
     chains.checkChain(glow);
-    EXPECT_FALSE(chains.directionalOnly(s.prims[glow].modifier));  // skybright.cal
+    // skybright.cal reads the direction only: one emission table serves every port point.
+    EXPECT_TRUE(chains.directionalOnly(s.prims[glow].modifier));
     SurfaceChainEvaluator ev(chains);
     Rng rng{7, RngDomain::Test, 0};
     PatternPoint at;

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <set>
 
@@ -93,7 +94,11 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
     // pattern chain.
     material::SurfaceChains chains(scene, calc::defaultSearchPath(projectLibDir()));
     eo.modifierFor = light::patternModifiers(chains);
-    light::EmissionPlan plan(geometry, std::move(sources), eo);
+    // The plan's tables are built in parallel; -n bounds that as every other phase.
+    tbb::task_arena planArena(std::max(1, o.nproc));
+    std::optional<light::EmissionPlan> planHolder;
+    planArena.execute([&] { planHolder.emplace(geometry, std::move(sources), eo); });
+    const light::EmissionPlan& plan = *planHolder;
 
     TraceSettings ts;
     for (size_t t = 0; t < o.maps.size(); ++t) ts.maps[t] = o.maps[t].has_value();
