@@ -184,6 +184,34 @@ void writeFile(const std::string& path, const std::string& text) {
     std::ofstream(path) << text;
 }
 
+// One transmission matrix serves both directions by reciprocity (bsdf_m.c): light from
+// the back to the front sees the front-to-back data with the pair swapped.
+TEST(Klems, OneTransmissionIsReciprocal) {
+    TempDir dir;
+    std::string vals;
+    for (int k = 0; k < 41 * 41; ++k) vals += std::to_string(0.05 + 0.001 * ((k * 37) % 101)) + " ";
+    const std::string p = dir.file("t.xml");
+    writeFile(p, "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType><Optical><Layer>"
+                 "<DataDefinition><IncidentDataStructure>Columns</IncidentDataStructure></DataDefinition>"
+                 "<WavelengthData><Wavelength>Visible</Wavelength><WavelengthDataBlock>"
+                 "<WavelengthDataDirection>Transmission Back</WavelengthDataDirection>"
+                 "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>"
+                 "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>" + vals +
+                 "</ScatteringData></WavelengthDataBlock></WavelengthData></Layer></Optical></WindowElement>\n");
+    const auto sd = loadBsdfFile(p);
+    ASSERT_TRUE(sd->tf && !sd->tb);
+    Rng rng(4, RngDomain::Test, 0);
+    for (int k = 0; k < 1000; ++k) {
+        auto dir = [&](double zs) {
+            const double r = std::sqrt(rng.uniform()), a = 2 * kPi * rng.uniform();
+            return Vec3{r * std::cos(a), r * std::sin(a), zs * std::sqrt(1 - r * r)};
+        };
+        const Vec3 a = dir(1), b = dir(-1);
+        EXPECT_EQ(sd->evaluate(a, b).g, sd->evaluate(b, a).g);
+        EXPECT_GT(sd->evaluate(a, b).g, 0);
+    }
+}
+
 std::string errorOf(const std::string& path) {
     try {
         loadBsdfFile(path);

@@ -1,0 +1,77 @@
+// BSDF material: photon energy against the data, the flux a sampled direction carries,
+// shadow rays, thick proxies.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bsdf/bsdf.h"
+#include "material/test_util.h"
+
+namespace rp::material {
+namespace {
+
+using test::expectMeanNear;
+using test::photonStats;
+
+const std::string kKlems = std::string(RP_SHARED_DIR) + "/validation/bsdf/blinds_klems.xml";
+
+// A surface with normal +z, up +y: the BSDF's local frame is the world's.
+SurfacePoint hitAt(const bsdf::BsdfData& sd, const Vec3& dir, double thickness = 0) {
+    const bool front = dir.z < 0;
+    SurfacePoint sp = makeSurfacePoint(dir, front ? Vec3{0, 0, 1} : Vec3{0, 0, -1}, front);
+    sp.bsdf = &sd;
+    sp.uDir = {0, 1, 0};
+    sp.bsdfThickness = thickness;
+    return sp;
+}
+
+// The mean flux factor of scattered photons equals the data's reflectance plus
+// transmittance for that incidence (Lambertian and non-diffuse parts), from either side.
+TEST(BsdfMaterial, PhotonsCarryTheDataAlbedo) {
+    const auto sd = bsdf::loadBsdfFile(kKlems);
+    const MaterialParams m = BsdfParams{};
+    for (double th : {0.0, 35.0, 70.0})
+        for (bool fromFront : {true, false}) {
+            Vec3 dir = test::incident(th);  // travelling towards -z: hits the front
+            if (!fromFront) dir = -dir;
+            const Vec3 away = -dir;  // RADIANCE's incident vector, local frame = world
+            const bool f = away.z > 0;
+            const double albedo = (f ? sd->rLambFront : sd->rLambBack).g +
+                                  (f ? sd->tLambFront : sd->tLambBack).g +
+                                  sd->nonDiffuseHemispherical(away, false) +
+                                  sd->nonDiffuseHemispherical(away, true);
+            const auto st = photonStats(m, 200000, 3, [&](Rng&) { return hitAt(*sd, dir); });
+            expectMeanNear(st, Color::grey(albedo), fromFront ? "front" : "back");
+            EXPECT_GT(albedo, 0.3);
+        }
+}
+
+TEST(BsdfMaterial, ShadowRaysStopAtAThinBsdfAndPassAThickOne) {
+    const auto sd = bsdf::loadBsdfFile(kKlems);
+    const BsdfParams m;
+    Color c;
+    EXPECT_FALSE(bsdfShadowPass(m, hitAt(*sd, {0, 0, -1}), true, c));
+    EXPECT_TRUE(bsdfShadowPass(m, hitAt(*sd, {0, 0, -1}, .025), true, c));
+    EXPECT_EQ(c.g, 1);
+}
+
+// A thick proxy hides itself from unscattered rays and from its hidden side; scattered
+// rays on its side see it, with transmitted light gathered past the geometry.
+TEST(BsdfMaterial, ThickProxyShowsOnlyToScatteredRaysOnItsSide) {
+    const auto sd = bsdf::loadBsdfFile(kKlems);
+    const MaterialParams m = BsdfParams{};
+    Rng rng(1, RngDomain::Test, 0);
+    SurfacePoint sp = hitAt(*sd, test::incident(20), .025);
+    EXPECT_TRUE(shadeBackward(m, sp, {}, rng).transparent);
+    sp.scatteredRay = true;
+    const BackwardResult r = shadeBackward(m, sp, {}, rng);
+    EXPECT_FALSE(r.transparent);
+    EXPECT_DOUBLE_EQ(r.transmitOffset, -.025);
+    EXPECT_TRUE(r.directFromBehind);
+    SurfacePoint back = hitAt(*sd, -test::incident(20), .025);
+    back.scatteredRay = true;
+    EXPECT_TRUE(shadeBackward(m, back, {}, rng).transparent);
+}
+
+}  // namespace
+}  // namespace rp::material
