@@ -11,6 +11,7 @@
 #include <strings.h>
 
 #include "bsdf/multi_sample.h"
+#include "image/tonemap.h"
 #include "bsdf/xml_detail.h"
 
 namespace rp::bsdf::detail {
@@ -45,6 +46,10 @@ std::vector<AngleBasis> standardBases() {
 }
 
 double sq(double x) { return x * x; }
+
+// RADIANCE's standard RGB primaries and equal-energy white (color.h CIE_x_r ...).
+constexpr std::array<double, 8> kRadiancePrimaries = {0.640, 0.330, 0.290, 0.600,
+                                                      0.150, 0.060, 1.0 / 3, 1.0 / 3};
 constexpr double kDeg = kPi / 180;
 
 // Patch `ndx` of the +Z hemisphere, at fractional position (rx, ry) inside it (bsdf_m.c
@@ -120,6 +125,18 @@ public:
     }
     int ninc() const { return in_.basis->nangles; }
     int nout() const { return out_.basis->nangles; }
+    // Colour data (CIE-X and CIE-Z beside the visible Y): RADIANCE RGB per entry.
+    void setColour(const std::vector<float>& x, const std::vector<float>& z) {
+        static const std::array<double, 9> m = rgbFromXyz(kRadiancePrimaries);
+        rgb_.resize(values_.size() * 3);
+        for (std::size_t k = 0; k < values_.size(); ++k) {
+            const double X = x[k], Y = values_[k], Z = z[k];
+            for (int c = 0; c < 3; ++c)
+                rgb_[3 * k + c] = static_cast<float>(m[3 * c] * X + m[3 * c + 1] * Y + m[3 * c + 2] * Z);
+        }
+    }
+    bool coloured() const { return !rgb_.empty(); }
+    std::vector<float>& rgb() { return rgb_; }
     float& at(int o, int i) { return values_[static_cast<std::size_t>(o) * ninc() + i]; }
     float at(int o, int i) const { return values_[static_cast<std::size_t>(o) * ninc() + i]; }
     std::vector<float>& values() { return values_; }
@@ -150,7 +167,9 @@ public:
             o = out_.index(inV);
         }
         if (i < 0 || o < 0) return {};
-        return Color::grey(at(o, i));
+        if (rgb_.empty()) return Color::grey(at(o, i));
+        const float* c = &rgb_[3 * (static_cast<std::size_t>(o) * ninc() + i)];
+        return {c[0], c[1], c[2]};
     }
 
     void projectedSolidAngle(const Vec3& v1, const Vec3* v2p, SizeQuery q,
@@ -203,7 +222,8 @@ private:
     }
 
     Axis in_, out_;
-    std::vector<float> values_;
+    std::vector<float> values_;  // Y, for sampling and sizes
+    std::vector<float> rgb_;     // colour data: RGB per entry (else grey)
     std::vector<Cdf> forward_, reverse_;
 };
 
@@ -291,12 +311,25 @@ SetChoice chooseSet(const pugi::xml_node& wdb, const XmlContext& ctx, BsdfData& 
 
 // Takes the minimum of the matrix out as a Lambertian part (bsdf_m.c subtract_min: only
 // where it is worth a reflectance of .01), returned as a hemispherical value.
-double extractDiffuse(KlemsMatrix& m) {
-    float lo = HUGE_VALF;
-    for (float v : m.values()) lo = std::min(lo, v);
-    if (!(lo > .01 / kPi)) return 0;
-    for (float& v : m.values()) v -= lo;
-    return kPi * lo;
+Color extractDiffuse(KlemsMatrix& m) {
+    if (!m.coloured()) {
+        float lo = HUGE_VALF;
+        for (float v : m.values()) lo = std::min(lo, v);
+        if (!(lo > .01 / kPi)) return {};
+        for (float& v : m.values()) v -= lo;
+        return Color::grey(kPi * lo);
+    }
+    // Colour: the minimum of each channel (bsdf_m.c subtracts a coloured minimum), its
+    // brightness taken from Y.
+    float lo[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF};
+    std::vector<float>& rgb = m.rgb();
+    for (std::size_t k = 0; k < rgb.size(); ++k) lo[k % 3] = std::min(lo[k % 3], rgb[k]);
+    const Color c{lo[0], lo[1], lo[2]};
+    const double ylo = c.brightness();
+    if (!(ylo > .01 / kPi)) return {};
+    for (std::size_t k = 0; k < rgb.size(); ++k) rgb[k] = std::max(0.0f, rgb[k] - lo[k % 3]);
+    for (float& v : m.values()) v = std::max(0.0f, static_cast<float>(v - ylo));
+    return c * kPi;
 }
 
 // minProjSA and maxHemi of a one-matrix set (bsdf_m.c get_extrema).
@@ -329,10 +362,14 @@ void loadKlems(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData& sd)
     for (pugi::xml_node wab : def.children("AngleBasis")) loadBasis(wab, ctx, bases);
     // The bases are referred to by the matrices: keep them with the data.
     auto shared = std::make_shared<std::vector<AngleBasis>>(std::move(bases));
+    std::optional<ScatteringSet>* sets[4] = {&sd.rf, &sd.rb, &sd.tf, &sd.tb};
+    // The visible (Y) matrices become the sets; CIE-X and CIE-Z matrices of the same
+    // size, where both are given, colour them (bsdf_m.c encode_chroma).
+    std::vector<float> xz[4][2];
     for (pugi::xml_node wld : layer.children("WavelengthData")) {
-        // Only the photopic (Y) channel: CIE-X and CIE-Z data, where present, are not used
-        // (the BSDF is taken as grey).
-        if (!textIs(wld.child("Wavelength"), "Visible")) continue;
+        const pugi::xml_node wl = wld.child("Wavelength");
+        const int channel = textIs(wl, "Visible") ? 0 : textIs(wl, "CIE-X") ? 1 : textIs(wl, "CIE-Z") ? 2 : -1;
+        if (channel < 0) continue;
         for (pugi::xml_node wdb : wld.children("WavelengthDataBlock")) {
             const SetChoice ch = chooseSet(wdb, ctx, sd);
             const AngleBasis& ib = findBasis(wdb, "ColumnAngleBasis", ctx, *shared);
@@ -341,6 +378,11 @@ void loadKlems(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData& sd)
             pugi::xml_node sdNode = wdb.child("ScatteringData");
             if (!sdNode || trimmedText(sdNode).empty()) ctx.fail(wdb, "missing ScatteringData");
             readValues(sdNode, ctx, rows, *m);
+            const int k = static_cast<int>(std::find(sets, sets + 4, ch.set) - sets);
+            if (channel > 0) {
+                xz[k][channel - 1] = std::move(m->values());
+                continue;
+            }
             // A later block for the same set replaces an earlier one, as in RADIANCE.
             if (!*ch.set) ch.set->emplace();
             (*ch.set)->components.clear();
@@ -349,15 +391,15 @@ void loadKlems(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData& sd)
     }
     sd.keepAlive = shared;
     Color* lamb[4] = {&sd.rLambFront, &sd.rLambBack, &sd.tLambFront, &sd.tLambBack};
-    std::optional<ScatteringSet>* sets[4] = {&sd.rf, &sd.rb, &sd.tf, &sd.tb};
     for (int k = 0; k < 4; ++k) {
         if (!*sets[k]) continue;
         ScatteringSet& s = **sets[k];
         auto& m = static_cast<KlemsMatrix&>(*s.components.front());
+        if (xz[k][0].size() == m.values().size() && xz[k][1].size() == m.values().size())
+            m.setColour(xz[k][0], xz[k][1]);
         setExtrema(s, m);
-        const double d = extractDiffuse(m);
-        *lamb[k] = Color::grey(d);
-        s.maxHemi -= d;
+        *lamb[k] = extractDiffuse(m);
+        s.maxHemi -= lamb[k]->brightness();
         m.buildCdfs();
     }
     // One transmission direction serves both (bsdf_m.c).

@@ -184,6 +184,47 @@ void writeFile(const std::string& path, const std::string& text) {
     std::ofstream(path) << text;
 }
 
+// CIE-X and CIE-Z matrices beside the visible one colour the data: a constant ratio
+// X : Y : Z = 1.2 : 1 : 0.5 gives that colour everywhere, in RADIANCE RGB (Y = its
+// brightness), and the Lambertian part takes the coloured minimum.
+TEST(Klems, CieXAndZColourTheData) {
+    TempDir dir;
+    auto block = [](const char* wl, double scale) {
+        std::string vals;
+        for (int k = 0; k < 41 * 41; ++k)
+            vals += std::to_string(scale * (0.05 + 0.001 * ((k * 37) % 101))) + " ";
+        return std::string("<WavelengthData><Wavelength>") + wl + "</Wavelength><WavelengthDataBlock>"
+               "<WavelengthDataDirection>Reflection Back</WavelengthDataDirection>"
+               "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>"
+               "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>" + vals +
+               "</ScatteringData></WavelengthDataBlock></WavelengthData>";
+    };
+    const std::string p = dir.file("c.xml");
+    writeFile(p, "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType><Optical><Layer>"
+                 "<DataDefinition><IncidentDataStructure>Columns</IncidentDataStructure></DataDefinition>" +
+                     block("Visible", 1) + block("CIE-X", 1.2) + block("CIE-Z", .5) +
+                     "</Layer></Optical></WindowElement>\n");
+    const auto sd = loadBsdfFile(p);
+    // RADIANCE RGB of XYZ (1.2, 1, 0.5), from its primaries (0.640 0.330, 0.290 0.600,
+    // 0.150 0.060) and equal-energy white: the XYZ -> RGB matrix applied by hand.
+    const double m[9] = {2.5653, -1.1668, -0.3985, -1.0220, 1.9782, 0.0438, 0.0747, -0.2519, 1.1772};
+    const Color unit{m[0] * 1.2 + m[1] + m[2] * .5, m[3] * 1.2 + m[4] + m[5] * .5,
+                     m[6] * 1.2 + m[7] + m[8] * .5};
+    EXPECT_NEAR(unit.brightness(), 1, 2e-3);
+    Rng rng(6, RngDomain::Test, 0);
+    for (int k = 0; k < 200; ++k) {
+        auto dir = [&]() {
+            const double r = std::sqrt(rng.uniform()), a = 2 * kPi * rng.uniform();
+            return Vec3{r * std::cos(a), r * std::sin(a), std::sqrt(1 - r * r)};
+        };
+        const Color v = sd->evaluate(dir(), dir());
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(v[c] / v.brightness(), unit[c], 2e-3) << c;
+    }
+    const Color lamb = sd->rLambFront;
+    EXPECT_NEAR(lamb.brightness(), kPi * 0.05, 1e-3);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(lamb[c] / lamb.brightness(), unit[c], 2e-3) << c;
+}
+
 // One transmission matrix serves both directions by reciprocity (bsdf_m.c): light from
 // the back to the front sees the front-to-back data with the pair swapped.
 TEST(Klems, OneTransmissionIsReciprocal) {

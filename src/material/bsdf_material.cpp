@@ -221,6 +221,14 @@ Color evaluateBsdf(const BsdfParams& m, const SurfacePoint& sp, const Vec3& l, d
 
 namespace {
 
+// A sampled direction's weight: the component's hemispherical value, in the colour of
+// the data there (RADIANCE: the sample's chromaticity with the cumulative total as Y).
+Color sampleColour(const bsdf::Distribution& d, const Vec3& in, const Vec3& out, double total) {
+    const Color v = d.value(in, out);
+    const double y = v.brightness();
+    return y > 0 ? v * (total / y) : Color::grey(total);
+}
+
 // m_bsdf.c sample_sdf: the non-diffuse reflection or transmission, sampled (one ray per
 // component) or, at or below -st, returned as an ambient coefficient.
 Color sampleSet(const BsdfHit& h, const SurfacePoint& sp, bool transmit, const ShadeOptions& opt,
@@ -256,7 +264,7 @@ Color sampleSet(const BsdfHit& h, const SurfacePoint& sp, bool transmit, const S
             const double dx = vin.x + out.x, dy = vin.y + out.y;
             if (dx * dx + dy * dy <= h.srPsa[0] * h.srPsa[0]) continue;
         }
-        Color w = Color::grey(total);
+        Color w = sampleColour(*comp, vin, out, total);
         if (transmit) w = w * sp.pattern;
         r.add(makeRay(normalize(h.frame.toWorld(out)),
                       w, transmit ? ScatterKind::SpecularTransmission : ScatterKind::SpecularReflection,
@@ -336,6 +344,7 @@ PhotonScatter scatterBsdf(const BsdfParams& m, const SurfacePoint& sp, Rng& rng)
         Vec3 out;
         if (!pick || !pick->sample(h.vray, rng.uniform(), rng.uniform(), out)) return s;
         s.dir = normalize(h.frame.toWorld(out));
+        factor = factor * sampleColour(*pick, h.vray, out, 1);  // the data's colour there
     }
     s.kind = c[i].kind;
     s.fluxFactor = factor;
