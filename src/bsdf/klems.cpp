@@ -11,7 +11,7 @@
 #include <strings.h>
 
 #include "bsdf/multi_sample.h"
-#include "image/tonemap.h"
+#include "bsdf/colour.h"
 #include "bsdf/xml_detail.h"
 
 namespace rp::bsdf::detail {
@@ -47,9 +47,6 @@ std::vector<AngleBasis> standardBases() {
 
 double sq(double x) { return x * x; }
 
-// RADIANCE's standard RGB primaries and equal-energy white (color.h CIE_x_r ...).
-constexpr std::array<double, 8> kRadiancePrimaries = {0.640, 0.330, 0.290, 0.600,
-                                                      0.150, 0.060, 1.0 / 3, 1.0 / 3};
 constexpr double kDeg = kPi / 180;
 
 // Patch `ndx` of the +Z hemisphere, at fractional position (rx, ry) inside it (bsdf_m.c
@@ -127,12 +124,10 @@ public:
     int nout() const { return out_.basis->nangles; }
     // Colour data (CIE-X and CIE-Z beside the visible Y): RADIANCE RGB per entry.
     void setColour(const std::vector<float>& x, const std::vector<float>& z) {
-        static const std::array<double, 9> m = rgbFromXyz(kRadiancePrimaries);
         rgb_.resize(values_.size() * 3);
         for (std::size_t k = 0; k < values_.size(); ++k) {
-            const double X = x[k], Y = values_[k], Z = z[k];
-            for (int c = 0; c < 3; ++c)
-                rgb_[3 * k + c] = static_cast<float>(m[3 * c] * X + m[3 * c + 1] * Y + m[3 * c + 2] * Z);
+            const Color c = rgbOfXyz(x[k], values_[k], z[k]);
+            for (int i = 0; i < 3; ++i) rgb_[3 * k + i] = static_cast<float>(c[i]);
         }
     }
     bool coloured() const { return !rgb_.empty(); }

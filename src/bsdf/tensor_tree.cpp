@@ -15,7 +15,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <mutex>
+#include <optional>
 
+#include "bsdf/colour.h"
 #include "bsdf/tensor_tree.h"
 
 namespace rp::bsdf::detail {
@@ -49,6 +51,13 @@ struct CDist {
 class TreeDistribution final : public Distribution {
 public:
     TreeDistribution(Tree tree, Side side);
+    // CIE-u and CIE-v trees colour the values; `minRgb` is the Lambertian colour already
+    // taken out of the Y tree (its brightness), so that value() gives what is left.
+    void setColour(Tree u, Tree v, const Color& minRgb) {
+        u_ = std::move(u);
+        v_ = std::move(v);
+        minRgb_ = minRgb;
+    }
 
     Color value(const Vec3& in, const Vec3& out) const override;
     void projectedSolidAngle(const Vec3& v1, const Vec3* v2, SizeQuery q,
@@ -71,6 +80,8 @@ private:
     size_t slotOf(const double c[2]) const;
 
     Tree tree_;
+    std::optional<Tree> u_, v_;  // colour (CIE 1976 u', v'), where given
+    Color minRgb_;
     Side side_;
     int nic_;         // incident coordinates: 1 (3-D) or 2
     double quantum_;  // incident coordinates are snapped to cell centres of this size
@@ -134,7 +145,13 @@ bool TreeDistribution::gridPosition(Vec3 in, Vec3 out, double pos[4]) const {
 Color TreeDistribution::value(const Vec3& in, const Vec3& out) const {
     double pos[4], w;
     if (!gridPosition(in, out, pos)) return {};
-    return Color::grey(tree_.lookup(pos, w));
+    const double y = tree_.lookup(pos, w);
+    if (!u_) return Color::grey(y);
+    // The whole value's colour less the Lambertian colour (bsdf_t.c subtract_min_RGB
+    // rewrites the u' v' trees to that effect).
+    Color c = rgbOfYuv(y + minRgb_.brightness(), u_->lookup(pos, w), v_->lookup(pos, w)) - minRgb_;
+    for (int i = 0; i < 3; ++i) c[i] = std::max(0.0, c[i]);
+    return c;
 }
 
 void TreeDistribution::projectedSolidAngle(const Vec3& v1, const Vec3* v2, SizeQuery q,
@@ -332,9 +349,29 @@ bool TreeDistribution::sample(const Vec3& in, double x, double y, Vec3& out) con
 // Loading (SDloadTre).
 
 struct SetData {
-    std::optional<Tree> tree;
-    Side side;
+    std::optional<Tree> tree, u, v;  // Y, and CIE-u, CIE-v where given
+    Side side = Side::ReflFront;
 };
+
+// The Lambertian part of a coloured tree (bsdf_t.c subtract_min_RGB): the smallest RGB
+// over the Y tree's live leaves (u' v' read at each leaf's centre), taken out of Y where
+// its brightness exceeds .01/pi. Returns it as a reflectance (pi times), or black.
+Color subtractMinimumRgb(Tree& y, const Tree& u, const Tree& v) {
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+    const double origin[4] = {0, 0, 0, 0};
+    y.traverse(origin, 0, [&](float val, const double* cmin, double csiz) {
+        if (y.ndim == 3 && cmin[0] >= .5) return;  // the unused half of a 3-D tree
+        double pos[4], w;
+        for (int i = 0; i < 4; ++i) pos[i] = cmin[i] + .5 * csiz;
+        const Color c = rgbOfYuv(val, u.lookup(pos, w), v.lookup(pos, w));
+        for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], c[i]);
+    });
+    const Color m{lo[0], lo[1], lo[2]};
+    const double ymin = m.brightness();
+    if (!(ymin > .01 / kPi) || !(ymin < HUGE_VAL)) return {};
+    for (float& val : y.values) val = std::max(0.0f, static_cast<float>(val - ymin));
+    return m;
+}
 
 // RADIANCE's names are WINDOW's with front and back swapped.
 int setIndex(const pugi::xml_node& dir) {
@@ -385,31 +422,44 @@ void loadTensorTree(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData
     const pugi::xml_node ids = layer.child("DataDefinition").child("IncidentDataStructure");
     const int ndim = textIs(ids, "TensorTree3") ? 3 : textIs(ids, "TensorTree4") ? 4 : 0;
     if (!ndim) ctx.fail(ids ? ids : layer, "unsupported IncidentDataStructure for a tensor tree");
-    std::array<SetData, 4> sets{
-        {{{}, Side::ReflFront}, {{}, Side::ReflBack}, {{}, Side::XmitFront}, {{}, Side::XmitBack}}};
+    std::array<SetData, 4> sets;
+    const Side sides[4] = {Side::ReflFront, Side::ReflBack, Side::XmitFront, Side::XmitBack};
+    for (int i = 0; i < 4; ++i) sets[i].side = sides[i];
     for (pugi::xml_node wd : layer.children("WavelengthData")) {
-        if (!textIs(wd.child("Wavelength"), "Visible")) continue;  // CIE-u/v colour not read
+        const pugi::xml_node wl = wd.child("Wavelength");
+        std::optional<Tree> SetData::*channel = textIs(wl, "Visible") ? &SetData::tree
+                                                : textIs(wl, "CIE-u")  ? &SetData::u
+                                                : textIs(wl, "CIE-v")  ? &SetData::v
+                                                                       : nullptr;
+        if (!channel) continue;
         for (pugi::xml_node block : wd.children("WavelengthDataBlock")) {
             const int which = setIndex(block.child("WavelengthDataDirection"));
-            if (which >= 0) sets[which].tree = parseScatteringData(block, ndim, ctx);
+            if (which >= 0) sets[which].*channel = parseScatteringData(block, ndim, ctx);
         }
     }
     std::optional<ScatteringSet>* targets[4] = {&sd.rf, &sd.rb, &sd.tf, &sd.tb};
-    double lamb[4] = {0, 0, 0, 0};
+    Color lamb[4];
     for (int i = 0; i < 4; ++i) {
-        if (!sets[i].tree) continue;
+        SetData& d = sets[i];
+        if (!d.tree) continue;
         ScatteringSet set;
-        extrema(*sets[i].tree, set);  // before the split, as RADIANCE
-        lamb[i] = subtractMinimum(*sets[i].tree);
-        set.maxHemi -= lamb[i];
-        set.components.push_back(
-            std::make_unique<TreeDistribution>(std::move(*sets[i].tree), sets[i].side));
+        extrema(*d.tree, set);  // before the split, as RADIANCE
+        const bool colour = d.u && d.v;
+        Color minRgb;
+        if (colour)
+            lamb[i] = (minRgb = subtractMinimumRgb(*d.tree, *d.u, *d.v)) * kPi;
+        else
+            lamb[i] = Color::grey(subtractMinimum(*d.tree));
+        set.maxHemi -= lamb[i].brightness();
+        auto dist = std::make_unique<TreeDistribution>(std::move(*d.tree), d.side);
+        if (colour) dist->setColour(std::move(*d.u), std::move(*d.v), minRgb);
+        set.components.push_back(std::move(dist));
         *targets[i] = std::move(set);
     }
-    sd.rLambFront = Color::grey(lamb[0]);
-    sd.rLambBack = Color::grey(lamb[1]);
-    sd.tLambFront = Color::grey(lamb[2]);
-    sd.tLambBack = Color::grey(lamb[3]);
+    sd.rLambFront = lamb[0];
+    sd.rLambBack = lamb[1];
+    sd.tLambFront = lamb[2];
+    sd.tLambBack = lamb[3];
     if (!sd.tb)
         sd.tLambBack = sd.tLambFront;  // one transmission serves both ways
     else if (!sd.tf)
