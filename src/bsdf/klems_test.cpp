@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "bsdf/bsdf.h"
+#include "bsdf/multi_sample.h"
 #include "util/error.h"
 #include "util/rng.h"
 #include "util/temp_dir_for_tests.h"
@@ -300,5 +301,24 @@ TEST(Klems, BadFilesGiveOneLineErrors) {
               std::string::npos) << errorOf(p);
 }
 
+}  // namespace
+}  // namespace rp::bsdf
+
+namespace rp::bsdf {
+namespace {
+// multiSample2 against RADIANCE's hilbert_i2c(2, 31, x * 2^62, c), c / 2^31 printed by a
+// throwaway program linked with RADIANCE's src/common/hilbert.c (not in this repository).
+TEST(MultiSample, FollowsRadiancesHilbertCurve) {
+    const double ref[][3] = {{0.0123, 0.103979163, 0.034775954}, {0.1, 0.166666668, 0.499999996},
+                             {0.25, 0.5, 0.0},                    {0.37, 0.758064516, 0.151515149},
+                             {0.5, 0.5, 0.5},                     {0.61, 0.850731708, 0.723414637},
+                             {0.77, 0.303030297, 0.983870968},    {0.999, 0.037639372, 0.997236140}};
+    for (const auto& r : ref) {
+        double t[2];
+        multiSample2(r[0], t);
+        EXPECT_NEAR(t[0], r[1], 1e-8) << r[0];
+        EXPECT_NEAR(t[1], r[2], 1e-8) << r[0];
+    }
+}
 }  // namespace
 }  // namespace rp::bsdf

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "bsdf/multi_sample.h"
 #include "bsdf/tensor_tree.h"
 
 namespace rp::bsdf::detail::ttree {
@@ -85,20 +86,10 @@ uint32_t hilbertIndex(uint32_t x, uint32_t y) {
 }
 
 void hilbertPoint(uint32_t d, uint32_t& x, uint32_t& y) {
-    x = y = 0;
-    for (uint32_t s = 1; s < (1u << kHilbertBits); s <<= 1) {
-        const uint32_t rx = 1 & (d >> 1), ry = 1 & (d ^ rx);
-        if (ry == 0) {
-            if (rx == 1) {
-                x = s - 1 - x;
-                y = s - 1 - y;
-            }
-            std::swap(x, y);
-        }
-        x += s * rx;
-        y += s * ry;
-        d >>= 2;
-    }
+    uint64_t a, b;
+    bsdf::hilbertPoint(kHilbertBits, d, a, b);
+    x = static_cast<uint32_t>(a);
+    y = static_cast<uint32_t>(b);
 }
 
 
