@@ -69,6 +69,24 @@ struct Tree {
 };
 
 
+// Calls f(ix, idx) for every cell ix of a leaf grid (log2 resolution k) with
+// lo[i] <= ix[i] < hi[i] in each of the ndim dimensions; idx is its place in the grid's
+// values (dimension 0 most significant).
+template <class F>
+void forEachGridCell(int ndim, int k, const int lo[4], const int hi[4], F&& f) {
+    int l[4] = {0, 0, 0, 0}, h[4] = {1, 1, 1, 1};
+    for (int i = 0; i < ndim; ++i) l[i] = lo[i], h[i] = hi[i];
+    for (int a = l[0]; a < h[0]; ++a)
+        for (int b = l[1]; b < h[1]; ++b)
+            for (int c = l[2]; c < h[2]; ++c)
+                for (int d = l[3]; d < h[3]; ++d) {
+                    const int ix[4] = {a, b, c, d};
+                    size_t idx = 0;
+                    for (int i = 0; i < ndim; ++i) idx = (idx << k) | static_cast<size_t>(ix[i]);
+                    f(ix, idx);
+                }
+}
+
 template <class F>
 void Tree::visit(uint32_t n, const double cmin[4], double csiz, const double pos[4],
                  unsigned fixedMask, F& f) const {
@@ -106,20 +124,11 @@ void Tree::visitGrid(const Node& nd, const double cmin[4], double csiz, const do
             hi[i] = res;
         }
     }
-    for (int i = ndim; i < 4; ++i) lo[i] = 0, hi[i] = 1;
     double cell[4] = {0, 0, 0, 0};
-    for (int a = lo[0]; a < hi[0]; ++a)
-        for (int b = lo[1]; b < hi[1]; ++b)
-            for (int c = lo[2]; c < hi[2]; ++c)
-                for (int d = lo[3]; d < hi[3]; ++d) {
-                    const int ix[4] = {a, b, c, d};
-                    size_t idx = 0;
-                    for (int i = 0; i < ndim; ++i) {
-                        idx = (idx << k) | static_cast<size_t>(ix[i]);
-                        cell[i] = cmin[i] + cw * ix[i];
-                    }
-                    f(values[nd.index + idx], cell, cw);
-                }
+    forEachGridCell(ndim, k, lo, hi, [&](const int ix[4], size_t idx) {
+        for (int i = 0; i < ndim; ++i) cell[i] = cmin[i] + cw * ix[i];
+        f(values[nd.index + idx], cell, cw);
+    });
 }
 
 // The tree of one WavelengthDataBlock (its AngleBasis checked), errors at the XML's lines.

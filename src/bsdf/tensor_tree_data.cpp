@@ -158,16 +158,10 @@ double Tree::boxAverage(uint32_t n, const double bmin[4], const double bmax[4]) 
     }
     double sum = 0;
     size_t count = 0;
-    for (int a = lo[0]; a < hi[0]; ++a)
-        for (int b = lo[1]; b < hi[1]; ++b)
-            for (int c = lo[2]; c < hi[2]; ++c)
-                for (int d = lo[3]; d < hi[3]; ++d) {
-                    const int ix[4] = {a, b, c, d};
-                    size_t idx = 0;
-                    for (int i = 0; i < ndim; ++i) idx = (idx << nd.log2GR) | size_t(ix[i]);
-                    sum += values[nd.index + idx];
-                    ++count;
-                }
+    forEachGridCell(ndim, nd.log2GR, lo, hi, [&](const int*, size_t idx) {
+        sum += values[nd.index + idx];
+        ++count;
+    });
     return count ? sum / double(count) : 0;
 }
 

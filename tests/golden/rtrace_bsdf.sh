@@ -36,22 +36,23 @@ within "$r" .05 || bad "view rays $r"
 r=$(ratio "$tmp/ab2.txt" ref_klems_classic_ab2.txt); echo "classic -ab 2: ours/RADIANCE $r"
 within "$r" .05 || bad "classic -ab 2 $r"
 
-"$BIN/mkpmap" -apg "$tmp/g.pm" 500k -apc "$tmp/c.pm" 500k -apo window_glass -aps sensor_plane \
-    -apr 1 -n 2 "$tmp/k.oct" > /dev/null 2>&1 || bad "mkpmap"
-"$BIN/rtrace" -h -u- -I -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -n 2 -ap "$tmp/g.pm" 100 \
-    -ap "$tmp/c.pm" 100 "$tmp/k.oct" < points.txt > "$tmp/pm.txt" || bad "rtrace -ap"
-r=$(ratio "$tmp/pm.txt" ref_klems_pmap.txt); echo "photon map: ours/RADIANCE $r"
+# photon_map NAME: maps of $tmp/NAME.oct, irradiance at the sensors in $tmp/NAME_pm.txt
+photon_map() {
+    "$BIN/mkpmap" -apg "$tmp/$1_g.pm" 500k -apc "$tmp/$1_c.pm" 500k -apo window_glass \
+        -aps sensor_plane -apr 1 -n 2 "$tmp/$1.oct" > /dev/null 2>&1 || bad "mkpmap $1"
+    "$BIN/rtrace" -h -u- -I -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -n 2 -ap "$tmp/$1_g.pm" 100 \
+        -ap "$tmp/$1_c.pm" 100 "$tmp/$1.oct" < points.txt > "$tmp/$1_pm.txt" || bad "rtrace -ap $1"
+}
+photon_map k
+r=$(ratio "$tmp/k_pm.txt" ref_klems_pmap.txt); echo "photon map: ours/RADIANCE $r"
 within "$r" .05 || bad "photon map $r"
-r=$(ratio "$tmp/pm.txt" ref_geometry_pmap.txt); echo "photon map: ours (BSDF) / RADIANCE (slats) $r"
+r=$(ratio "$tmp/k_pm.txt" ref_geometry_pmap.txt); echo "photon map: ours (BSDF) / RADIANCE (slats) $r"
 within "$r" .05 || bad "BSDF against slats $r"
 "$BIN/oconv" -f sky.rad room.rad blinds_ttree.rad > "$tmp/t.oct" || bad "oconv ttree"
 "$BIN/rtrace" -h -u- -ab 0 "$tmp/t.oct" < view_rays.txt > "$tmp/tview.txt" || bad "rtrace ttree view"
 r=$(ratio "$tmp/tview.txt" ref_ttree_view_ab0.txt); echo "tensor tree, view -ab 0: ours/RADIANCE $r"
 within "$r" .05 || bad "tensor tree view rays $r"
-"$BIN/mkpmap" -apg "$tmp/tg.pm" 500k -apc "$tmp/tc.pm" 500k -apo window_glass -aps sensor_plane \
-    -apr 1 -n 2 "$tmp/t.oct" > /dev/null 2>&1 || bad "mkpmap ttree"
-"$BIN/rtrace" -h -u- -I -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -n 2 -ap "$tmp/tg.pm" 100 \
-    -ap "$tmp/tc.pm" 100 "$tmp/t.oct" < points.txt > "$tmp/tpm.txt" || bad "rtrace ttree -ap"
-r=$(ratio "$tmp/tpm.txt" ref_ttree_pmap.txt); echo "tensor tree, photon map: ours/RADIANCE $r"
+photon_map t
+r=$(ratio "$tmp/t_pm.txt" ref_ttree_pmap.txt); echo "tensor tree, photon map: ours/RADIANCE $r"
 within "$r" .05 || bad "tensor tree photon map $r"
 exit $fail
