@@ -303,8 +303,8 @@ BackwardResult shadeBsdf(const BsdfParams& m, const SurfacePoint& sp, const Shad
 
 PhotonScatter scatterBsdf(const BsdfParams& m, const SurfacePoint& sp, Rng& rng) {
     PhotonScatter s;
-    if (!sp.front && !m.hasBackDiffuse && !sp.bsdf->rb && !sp.bsdf->tf) {
-        // pmapmat.c: the back of a BSDF with nothing there absorbs (as without -bv).
+    if (!sp.front && !sp.backVisible && !m.hasBackDiffuse && !sp.bsdf->rb && !sp.bsdf->tf) {
+        // pmapmat.c: without -bv the back of a BSDF with nothing there absorbs.
         return s;
     }
     BsdfHit h;

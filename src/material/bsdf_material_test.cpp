@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "bsdf/bsdf.h"
 #include "material/test_util.h"
+#include "util/temp_dir_for_tests.h"
 
 namespace rp::material {
 namespace {
@@ -71,6 +73,39 @@ TEST(BsdfMaterial, ThickProxyShowsOnlyToScatteredRaysOnItsSide) {
     SurfacePoint back = hitAt(*sd, -test::incident(20), .025);
     back.scatteredRay = true;
     EXPECT_TRUE(shadeBackward(m, back, {}, rng).transparent);
+}
+
+// pmapmat.c: without -bv, a photon meeting the back of a BSDF that has neither back
+// reflection nor front-to-back transmission (nor back diffuse arguments) is absorbed;
+// with -bv it goes on with what the back has (here: back-to-front transmission).
+TEST(BsdfMaterial, EmptyBackAbsorbsPhotonsOnlyWithoutBackVisibility) {
+    TempDir dir;
+    std::string vals;
+    for (int k = 0; k < 41 * 41; ++k) vals += "0.1 ";
+    const std::string p = dir.file("tb.xml");
+    std::ofstream(p) << "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType>"
+                        "<Optical><Layer><DataDefinition><IncidentDataStructure>Columns"
+                        "</IncidentDataStructure></DataDefinition><WavelengthData><Wavelength>Visible"
+                        "</Wavelength><WavelengthDataBlock><WavelengthDataDirection>Transmission Front"
+                        "</WavelengthDataDirection><ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>"
+                        "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>"
+                     << vals << "</ScatteringData></WavelengthDataBlock></WavelengthData></Layer>"
+                                "</Optical></WindowElement>\n";
+    const auto sd = bsdf::loadBsdfFile(p);
+    ASSERT_TRUE(!sd->tf && !sd->rb && sd->tLambBack.g > .3);  // all Lambertian: 0.1 pi
+    const MaterialParams m = BsdfParams{};
+    for (bool bv : {true, false}) {
+        const auto st = photonStats(m, 20000, 5, [&](Rng&) {
+            SurfacePoint sp = hitAt(*sd, -test::incident(30));  // from behind
+            sp.backVisible = bv;
+            return sp;
+        });
+        const long absorbed = st.counts[int(ScatterKind::Absorbed)];
+        if (bv)
+            EXPECT_LT(absorbed, 20000 * .8);  // ~69 % transmitted (0.1 pi, Lambertian)
+        else
+            EXPECT_EQ(absorbed, 20000);
+    }
 }
 
 }  // namespace

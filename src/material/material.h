@@ -260,6 +260,7 @@ struct SurfacePoint {
     bool specularInPhotons = false;
     double rayWeight = 1;  // RADIANCE rweight: how many jittered BSDF samples direct light gets
     double specJitter = 1; // rtrace -ss (ShadeOptions::specJitter), for BSDF direct light
+    bool backVisible = true;  // mkpmap -bv, for photons meeting a BSDF's empty back
     const WgmdInputs* wgmd = nullptr;  // WGMDfunc; null: wgmdInputs(m, *this)
 };
 

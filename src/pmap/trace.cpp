@@ -287,6 +287,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
 
         const Vec3 facing = hit->front ? hit->normal : -hit->normal;
         material::setSurfaceHit(sp, ray.dir, facing, hit->front);
+        sp.backVisible = settings_.backVisible;
         sp.pattern = pattern;
         if (lengthSquared(perturbation) > 0) {  // RADIANCE raynormal, turned to the photon
             Vec3 n = normalize(hit->normal + perturbation);
