@@ -108,5 +108,7 @@ private:
 // that cannot be read, broken XML, a file that is not a BSDF, an unknown basis, or
 // scattering data of the wrong size; notSupportedYet for data RADIANCE cannot read either.
 std::shared_ptr<const BsdfData> loadBsdfFile(const std::string& path);
+// The same for the file's text; `path` names it in messages and gives the BSDF's name.
+std::shared_ptr<const BsdfData> parseBsdfText(const std::string& text, const std::string& path);
 
 }  // namespace rp::bsdf

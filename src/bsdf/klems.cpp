@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <strings.h>
 
 #include "bsdf/multi_sample.h"
@@ -275,6 +276,11 @@ void readValues(const pugi::xml_node& sdNode, const XmlContext& ctx, bool rows, 
             throw InputError(SourceLoc{ctx.path(), lineAt(p)},
                              what + " (" + std::to_string(k) + " of " + std::to_string(n) + ")");
         }
+        // Values are stored as float: a larger one would be infinite (its sums NaN).
+        if (!(v <= std::numeric_limits<float>::max()))
+            throw InputError(SourceLoc{ctx.path(), lineAt(p)},
+                             "value out of range in ScatteringData (" + std::to_string(k) + " of " +
+                                 std::to_string(n) + ")");
         p = end;
         const float val = static_cast<float>(v < 0 ? 0 : v);  // negative values are noise
         if (rows)

@@ -299,6 +299,26 @@ TEST(Klems, BadFilesGiveOneLineErrors) {
                      "</WavelengthDataBlock></WavelengthData></Layer></Optical></WindowElement>\n");
     EXPECT_NE(errorOf(p).find("b.xml:16: bad number in ScatteringData (2 of 1681)"),
               std::string::npos) << errorOf(p);
+    // Beyond float (found by fuzz_bsdf_xml: an infinite value made the sampling sums NaN).
+    writeFile(p, std::string(kHead) +
+                     "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>\n"
+                     "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis>\n"
+                     "<ScatteringData>\n1 2 1e50 3\n</ScatteringData>\n"
+                     "</WavelengthDataBlock></WavelengthData></Layer></Optical></WindowElement>\n");
+    EXPECT_NE(errorOf(p).find("b.xml:16: value out of range in ScatteringData (2 of 1681)"),
+              std::string::npos) << errorOf(p);
+    // A tensor tree likewise.
+    writeFile(p, "<?xml version=\"1.0\"?>\n<WindowElement><Optical><Layer><DataDefinition>"
+                 "<IncidentDataStructure>TensorTree3</IncidentDataStructure></DataDefinition>\n"
+                 "<WavelengthData><Wavelength>Visible</Wavelength><WavelengthDataBlock>"
+                 "<WavelengthDataDirection>Transmission Back</WavelengthDataDirection>"
+                 "<AngleBasis>LBNL/Shirley-Chiu</AngleBasis><ScatteringData>\n"
+                 "{ 1 2 3 4\n 888888888888888888888888888888888888888888888.5 6 7 8 }\n"
+                 "</ScatteringData></WavelengthDataBlock></WavelengthData></Layer></Optical>"
+                 "</WindowElement>\n");
+    EXPECT_NE(errorOf(p).find("b.xml:5: value '888888888888888888888888888888888888888888888.5' "
+                              "out of range in tensor tree"),
+              std::string::npos) << errorOf(p);
 }
 
 }  // namespace

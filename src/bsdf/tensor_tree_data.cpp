@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 #include "bsdf/multi_sample.h"
 #include "bsdf/tensor_tree.h"
@@ -311,6 +312,9 @@ float TreeParser::parseNumber() {
         fail(begin, "bad number '" + (word.empty() ? std::string(1, s_[begin]) : word) +
                         "' in tensor tree");
     const double v = std::strtod(word.c_str(), nullptr);
+    // Values are stored as float: a larger one would be infinite (and its sums NaN).
+    if (v > std::numeric_limits<float>::max())
+        fail(begin, "value '" + word + "' out of range in tensor tree");
     return v > 0 ? static_cast<float>(v) : 0.0f;
 }
 

@@ -82,7 +82,10 @@ std::shared_ptr<const BsdfData> loadBsdfFile(const std::string& path) {
     if (!in) throw InputError(SourceLoc{path, 0}, "cannot open BSDF file");
     std::ostringstream ss;
     ss << in.rdbuf();
-    const std::string text = ss.str();
+    return parseBsdfText(ss.str(), path);
+}
+
+std::shared_ptr<const BsdfData> parseBsdfText(const std::string& text, const std::string& path) {
     const XmlContext ctx(path, text);
     pugi::xml_document doc;
     const pugi::xml_parse_result res = doc.load_buffer(text.data(), text.size());
