@@ -68,8 +68,6 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
     if (o.sequenceStart > 0 &&
         std::find(cmd.sceneFiles.begin(), cmd.sceneFiles.end(), "-") != cmd.sceneFiles.end())
         throw rp::InputError("-S reads views from standard input: the scene must be a file");
-    if (o.render.mist.any())
-        throw rp::notSupportedYet({}, "global participating medium (-me/-ma/-mg/-ms)");
     // Check the view before the (slow) scene load, as RADIANCE's setview does.
     rp::ViewRays checkView(o.view);
 

@@ -46,7 +46,6 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     rp::setWarningSink([warnTo, warnings](const std::string& m) {
         if (warnings) *warnTo << "rtrace: warning: " << m << '\n';
     });
-    if (o.render.mist.any()) throw rp::notSupportedYet({}, "global participating medium (-me/-ma/-mg/-ms)");
     OutputSpec spec = parseOutputSpec(o.outputSpec, o.outputFormat);
 
     const auto threads = threadLimit(o.render);  // for the whole run, loading included

@@ -217,6 +217,11 @@ BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
             [&](const PrismParams& p) { return shadePrism(p, sp); },
             [&](const BsdfParams& p) { return shadeBsdf(p, sp, opt, rng); },
             [&](const WgmdParams& p) { return shadeWgmd(p, sp, opt, rng); },
+            [&](const MistParams&) {
+                BackwardResult r;  // the medium change is the ray tracer's business
+                r.transparent = true;
+                return r;
+            },
         },
         m);
     r.directFromBehind = r.directFromBehind || transmitsDirect(m);
@@ -249,8 +254,52 @@ PhotonScatter scatterPhoton(const MaterialParams& m, const SurfacePoint& sp, Rng
             [&](const PrismParams&) { return PhotonScatter{}; },
             [&](const BsdfParams& p) { return scatterBsdf(p, sp, rng); },
             [&](const WgmdParams& p) { return scatterWgmd(p, sp, rng); },
+            [&](const MistParams&) {
+                PhotonScatter s;  // a mist boundary: the tracer changes the medium
+                s.kind = ScatterKind::PassThrough;
+                s.dir = sp.dir;
+                s.fluxFactor = Color{1, 1, 1};
+                return s;
+            },
         },
         m);
+}
+
+Medium changeMedium(const Medium& cur, const MediumChange& c, const Medium& global) {
+    using K = MediumChange::Kind;
+    switch (c.kind) {
+    case K::Unchanged: return cur;
+    case K::Global: {
+        Medium m = global;
+        m.eccentricity = cur.eccentricity;  // dielectric.c sets cext and albedo only
+        return m;
+    }
+    case K::Given: return Medium{c.extinction, Color{}, 0};  // dielectric.c: no scattering
+    case K::EnterMist: {
+        Medium m = cur;
+        m.extinction += c.extinction;
+        if (c.mist->albedo) m.albedo = *c.mist->albedo;
+        if (c.mist->eccentricity) m.eccentricity = *c.mist->eccentricity;
+        return m;
+    }
+    case K::LeaveMist: {
+        Medium m = cur;
+        for (int k = 0; k < 3; ++k)
+            m.extinction[k] = std::max(cur.extinction[k] - c.extinction[k], global.extinction[k]);
+        if (c.mist->albedo) m.albedo = global.albedo;
+        if (c.mist->eccentricity) m.eccentricity = global.eccentricity;
+        return m;
+    }
+    }
+    return cur;
+}
+
+MediumChange mistCrossing(const MistParams& m, bool entering, const Color& pattern) {
+    MediumChange c;
+    c.kind = entering ? MediumChange::Kind::EnterMist : MediumChange::Kind::LeaveMist;
+    c.extinction = m.extinction * pattern;
+    c.mist = &m;
+    return c;
 }
 
 bool storesPhotons(const MaterialParams& m) {

@@ -200,14 +200,24 @@ struct BsdfParams {
     bool hasBackDiffuse = false;  // six or nine real arguments
 };
 
+// mist (m_mist.c): the boundary of a participating medium. A ray crossing it inward
+// adds the extinction (args 0-2, times the pattern at the hit) to its medium and takes
+// the albedo (3-5) and Henyey-Greenstein eccentricity (6) where given; the sources named
+// by the string arguments scatter light into rays inside. Crossing outward undoes it.
+struct MistParams {
+    std::vector<std::string> sources;
+    Color extinction;
+    std::optional<Color> albedo;
+    std::optional<double> eccentricity;
+};
+
 using MaterialParams = std::variant<NormalParams, AnisoParams, AshikParams, MirrorParams,
                                     GlassParams, DielectricParams, LightParams,
                                     AntimatterParams, FuncParams, BrtdParams, PrismParams,
-                                    BsdfParams, WgmdParams>;
+                                    BsdfParams, WgmdParams, MistParams>;
 
 // Checks p's arguments (counts were checked by the reader; values here) and derives the
-// constants. Throws InputError at p.loc for bad values and notSupportedYet for mist,
-// BSDF, aBSDF; InputError for non-material types.
+// constants. Throws InputError at p.loc for bad values and for non-material types.
 MaterialParams makeMaterial(const Primitive& p);
 
 // ---------------------------------------------------------------------------------------
@@ -294,11 +304,37 @@ constexpr bool isSpecular(ScatterKind k) {
     return k == ScatterKind::SpecularReflection || k == ScatterKind::SpecularTransmission;
 }
 
-// The medium a spawned ray travels in (dielectric/interface only).
-struct MediumChange {
-    enum class Kind : uint8_t { Unchanged, Global, Given } kind = Kind::Unchanged;
-    Color extinction;  // per unit length, for Given
+// The medium a ray or photon travels in (RADIANCE's cext, albedo and gecc of a ray):
+// extinction per unit length, scattering albedo, Henyey-Greenstein eccentricity.
+struct Medium {
+    Color extinction;
+    Color albedo;
+    double eccentricity = 0;
+    // RADIANCE rayparticipate: intens(cext) <= 1/FHUGE is no medium.
+    bool active() const { return extinction.max() > 1e-10; }
+    bool scatters() const { return active() && albedo.max() > 1e-6; }  // FTINY
 };
+
+// How a spawned ray's medium follows from its parent's (one rule for backward rays,
+// shadow rays and photons): unchanged; the global medium (-me -ma -mg, leaving a
+// dielectric); a dielectric's or interface's own (extinction, no scattering); or
+// crossing a mist boundary inward or outward.
+struct MediumChange {
+    enum class Kind : uint8_t { Unchanged, Global, Given, EnterMist, LeaveMist } kind =
+        Kind::Unchanged;
+    Color extinction;  // per unit length: Given's medium, or the mist's (pattern applied)
+    const MistParams* mist = nullptr;  // EnterMist, LeaveMist
+};
+
+// The medium after `change`, from `current`, with `global` the scene's global medium.
+// RADIANCE compat (m_mist.c): leaving a mist subtracts its extinction but not below the
+// global one, and restores the global albedo and eccentricity where the mist set them.
+Medium changeMedium(const Medium& current, const MediumChange& change, const Medium& global);
+
+// The change of crossing mist `m` at a hit seen from its front (`entering`) or back,
+// with the pattern colour `pattern` at the hit (it scales the extinction).
+MediumChange mistCrossing(const MistParams& m, bool entering, const Color& pattern);
+
 
 // ---------------------------------------------------------------------------------------
 // Backward direction.

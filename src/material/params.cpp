@@ -267,8 +267,20 @@ MaterialParams makeMaterial(const Primitive& p) {
     }
     case PrimType::WGMDfunc:
         return detail::makeWgmd(p);  // wgmd.cpp; expressions and modifiers: MaterialCalc
-    case PrimType::Mist:
-        throw notSupportedYet(p.loc, std::string(primTypeName(p.type)) + " material");
+    case PrimType::Mist: {
+        // Counts 0, 3, 6 or 7 were checked by the reader.
+        MistParams m;
+        m.sources = p.sargs;
+        if (p.rargs.size() >= 3) m.extinction = rgb(p, 0);
+        if (p.rargs.size() >= 6) m.albedo = rgb(p, 3);
+        if (p.rargs.size() >= 7) m.eccentricity = p.rargs[6];
+        if (m.extinction.min() < 0) fail(p, "negative extinction");
+        if (m.albedo && (m.albedo->min() < 0 || m.albedo->max() > 1))
+            fail(p, "albedo outside [0,1]");
+        if (m.eccentricity && !(std::fabs(*m.eccentricity) < 1))
+            fail(p, "eccentricity outside (-1,1)");
+        return m;
+    }
     default:
         fail(p, "not a material");
     }

@@ -136,13 +136,27 @@ TEST(MaterialParams, BrtdConstantsParsed) {
     EXPECT_FALSE(b2.specularReflection.has_value());
 }
 
-TEST(MaterialParams, NotSupportedYet) {
-    struct Case { PrimType t; std::vector<double> r; std::vector<std::string> s; const char* name; };
-    std::vector<Case> cases = {
-        {PrimType::Mist, {}, {}, "mist material"},
-    };
-    for (auto& c : cases) expectError(prim(c.t, c.r, c.s, 40), "not supported yet: " +
-                                      std::string(c.name));
+TEST(MaterialParams, Mist) {
+    // m_mist.c: 0, 3, 6 or 7 real arguments; absent albedo and eccentricity stay unset
+    // (the ray keeps its own), the string arguments name sources.
+    auto none = as<MistParams>(makeMaterial(prim(PrimType::Mist, {}, {"spot", "sun"})));
+    EXPECT_EQ(none.sources, (std::vector<std::string>{"spot", "sun"}));
+    EXPECT_TRUE(none.extinction.isBlack());
+    EXPECT_FALSE(none.albedo);
+    EXPECT_FALSE(none.eccentricity);
+    auto ext = as<MistParams>(makeMaterial(prim(PrimType::Mist, {0.1, 0.2, 0.4}, {})));
+    EXPECT_EQ(ext.extinction, (Color{0.1, 0.2, 0.4}));
+    EXPECT_FALSE(ext.albedo);
+    auto all = as<MistParams>(
+        makeMaterial(prim(PrimType::Mist, {0.1, 0.1, 0.4, 0.9, 0.8, 0.7, -0.3}, {})));
+    EXPECT_EQ(*all.albedo, (Color{0.9, 0.8, 0.7}));
+    EXPECT_DOUBLE_EQ(*all.eccentricity, -0.3);
+    EXPECT_FALSE(storesPhotons(makeMaterial(prim(PrimType::Mist, {}, {}))));
+    expectError(prim(PrimType::Mist, {-0.1, 0, 0}, {}, 40), "negative extinction");
+    expectError(prim(PrimType::Mist, {0.1, 0.1, 0.1, 1.5, 0.5, 0.5}, {}, 41),
+                "albedo outside [0,1]");
+    expectError(prim(PrimType::Mist, {0.1, 0.1, 0.1, 0.5, 0.5, 0.5, 1}, {}, 42),
+                "eccentricity outside (-1,1)");
 }
 
 TEST(MaterialParams, PrismsCountTheirRedirections) {

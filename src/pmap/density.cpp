@@ -119,6 +119,30 @@ std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& 
     return irrad;
 }
 
+std::array<double, 3> PhotonLookup::volumeDensity(const Vec3& pos, const Vec3& out, double g,
+                                                  double (*phase4Pi)(double, double)) {
+    std::array<double, 3> sum = {0, 0, 0};
+    if (map_->empty()) return sum;
+    auto hits = search(pos, nullptr, static_cast<size_t>(bandwidth_) + 1);
+    if (hits.size() < 2) return sum;
+    const double d1 = lastSearchDist2_;
+    float second = hits[1].dist2;
+    for (size_t i = 2; i < hits.size(); ++i) second = std::max(second, hits[i].dist2);
+    const double d2 = second;
+    const double r2 = 0.25 * (d1 + d2 + 2 * std::sqrt(d1 * d2));
+    for (size_t i = 1; i < hits.size(); ++i) {
+        const size_t idx = index_ ? index_->photonIndex(hits[i].index) : hits[i].index;
+        const Photon& p = map_->searchedPhoton(idx);
+        const Vec3 in = Vec3(p.norm[0], p.norm[1], p.norm[2]) / 127.0;
+        const double w = phase4Pi(g, dot(in, out) / std::max(length(in), 1e-9));
+        const auto f = p.fluxRgb();
+        for (int c = 0; c < 3; ++c) sum[c] += w * f[c];
+    }
+    const double scale = 3.0 / (16 * kPi * kPi * r2 * std::sqrt(r2));
+    for (double& v : sum) v *= scale;
+    return sum;
+}
+
 std::array<double, 3> PhotonLookup::biasCompensatedDensity(const Vec3& pos, const Vec3& normal,
                                                            int bwMin, int bwMax,
                                                            BiasCompStats* stats) {

@@ -59,6 +59,17 @@ public:
     // largest of the others. Fewer than 2 photons give 0.
     std::array<double, 3> surfaceDensity(const Vec3& pos, const Vec3& normal);
 
+    // RADIANCE's volumePhotonDensity: for the bandwidth nearest volume photons to `pos`
+    // (no normal filter; radius as surfaceDensity's),
+    //   sum(flux x 4 pi HG(g, dot(incident direction, out))) / (4 pi x 4/3 pi r^3)
+    // per RGB channel: the flux scattered toward unit `out` per unit volume and solid
+    // angle, over the extinction (photons are stored at collisions, whose density is
+    // extinction times fluence). Times the albedo it is the radiance scattered into a ray
+    // per unit length (render/medium.cpp). `phase4Pi(g, cosTheta)` is the phase function
+    // times 4 pi (util/henyey_greenstein.h).
+    std::array<double, 3> volumeDensity(const Vec3& pos, const Vec3& out, double g,
+                                        double (*phase4Pi)(double, double));
+
     // RADIANCE's photonPreCompDensity: the flux of the single nearest photon with a similar
     // normal within squared radius CoGdist (precomputed maps store irradiance / pi there);
     // 0 if none.

@@ -2,6 +2,7 @@
 // savePmaps), see mkpmap.h.
 #include "pmap/mkpmap.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -41,8 +42,6 @@ double secondsSince(Clock::time_point t0) {
 }
 
 void checkRequest(const MkpmapOptions& o) {
-    if (o.wants(PhotonMapType::Volume))
-        throw notSupportedYet({}, "volume photon maps (mist)");
     // RADIANCE mkpmap.c: refuse existing outputs before any work is done.
     std::set<std::string> files;
     for (const auto& m : o.maps) {
@@ -53,6 +52,24 @@ void checkRequest(const MkpmapOptions& o) {
         if (!o.overwrite && std::filesystem::exists(m->file, ec))
             throw InputError("photon map file " + m->file + " exists, not overwritten");
     }
+}
+
+// Manual 4.2: a volume map needs a medium that scatters: a mist (with its own albedo or
+// the global -ma), or the global medium (-me with -ma). Said at once rather than after
+// the prepasses find no volume photons.
+void checkVolumeMedium(const MkpmapOptions& o, const Scene& scene) {
+    if (!o.wants(PhotonMapType::Volume)) return;
+    const material::Medium global{o.mediumExtinction, o.mediumAlbedo, o.mediumEccentricity};
+    if (global.scatters()) return;
+    for (const Primitive& p : scene.prims) {
+        if (p.type != PrimType::Mist) continue;
+        const bool ownAlbedo = p.rargs.size() >= 6;
+        if (!ownAlbedo && o.mediumAlbedo.max() > 1e-6) return;
+        if (ownAlbedo && std::max({p.rargs[3], p.rargs[4], p.rargs[5]}) > 1e-6) return;
+    }
+    throw InputError("volume photon map " + o.maps[size_t(PhotonMapType::Volume)]->file +
+                     ": no scattering medium in the scene (a mist with an albedo, or -me "
+                     "with -ma)");
 }
 
 // Manual 4.5: a contribution map needs its own distribution, so -apC ignores the
@@ -78,6 +95,7 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
     MkpmapReport report;
 
     Scene scene = loadScene(o.sceneFiles, load);
+    checkVolumeMedium(o, scene);
     SceneGeometry geometry(scene);
     std::vector<light::LightSource> sources = light::findLightSources(scene, geometry);
     if (sources.empty()) throw InputError("no light sources found");
@@ -109,6 +127,7 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
     ts.sensors = o.sensors;
     ts.include = o.include;
     ts.exclude = o.exclude;
+    ts.medium = material::Medium{o.mediumExtinction, o.mediumAlbedo, o.mediumEccentricity};
     // BRTDfunc's specular expressions at photon hits (pmapmat.c brdfPhotonScatter).
     material::MaterialCalc functions(scene, calc::defaultSearchPath(projectLibDir()));
     auto t0 = Clock::now();

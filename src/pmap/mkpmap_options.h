@@ -52,7 +52,7 @@ struct MkpmapOptions {
     double partitionSize = 0.01;  // -ds
     std::string diagnosticsFile;  // -e
     bool overwrite = false;       // -fo
-    Color mediumAlbedo;           // -ma (volume maps: not supported yet)
+    Color mediumAlbedo;           // -ma
     Color mediumExtinction;       // -me
     double mediumEccentricity = 0;  // -mg
     int nproc = 1;                // -n

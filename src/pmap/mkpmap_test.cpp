@@ -147,7 +147,9 @@ TEST_F(MkpmapRun, RefusesExistingFileBeforeTracing) {
 
 TEST_F(MkpmapRun, ErrorsOnePerKind) {
     EXPECT_EQ(runError({"-apv", path("v.pm"), "1k", cornell()}),
-              "not supported yet: volume photon maps (mist)");
+              "volume photon map " + path("v.pm") +
+                  ": no scattering medium in the scene (a mist with an albedo, or -me with "
+                  "-ma)");
     EXPECT_NE(runError({"-apg", path("a.pm"), "1k", "-apc", path("a.pm"), "1k", cornell()})
                   .find("more than once"),
               std::string::npos);

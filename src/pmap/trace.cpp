@@ -9,6 +9,7 @@
 #include "light/light_sources.h"
 #include "material/clip_set.h"
 #include "util/error.h"
+#include "util/henyey_greenstein.h"
 
 namespace rp::pmap {
 
@@ -17,6 +18,24 @@ namespace {
 using material::ScatterKind;
 
 int8_t packNormal(double v) { return static_cast<int8_t>(127.0 * v); }
+
+// A deposit's record; `n` is the surface normal facing the photon, or for volume photons
+// the direction it travelled in (RADIANCE newPhoton).
+RawPhoton rawPhoton(const Vec3& p, const Vec3& n, const Color& flux, bool caustic) {
+    RawPhoton rp;
+    rp.pos[0] = float(p.x);
+    rp.pos[1] = float(p.y);
+    rp.pos[2] = float(p.z);
+    rp.norm[0] = packNormal(n.x);
+    rp.norm[1] = packNormal(n.y);
+    rp.norm[2] = packNormal(n.z);
+    rp.caustic = caustic ? 1 : 0;
+    rp.flux[0] = float(flux.r);
+    rp.flux[1] = float(flux.g);
+    rp.flux[2] = float(flux.b);
+    rp.u = 0;
+    return rp;
+}
 
 }  // namespace
 
@@ -122,14 +141,17 @@ void PhotonTracer::setFunctionValues(int32_t material, const Hit& hit, const Vec
     sp.brtdSpecularTransmission = trans;
 }
 
+bool PhotonTracer::inRegions(const Vec3& p) const {
+    if (settings_.rois.empty()) return true;
+    for (const RegionOfInterest& r : settings_.rois)
+        if (r.contains(p)) return true;
+    return false;
+}
+
 void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool indirect,
                            bool caustic, const std::array<double, kNumPhotonMapTypes>& prob,
                            Rng& storeRng, PhotonBins& out) const {
-    if (!settings_.rois.empty()) {
-        bool inside = false;
-        for (const RegionOfInterest& r : settings_.rois) inside = inside || r.contains(hit.point);
-        if (!inside) return;
-    }
+    if (!inRegions(hit.point)) return;
     // One storage draw per eligible deposit, in the fixed order below (deterministic);
     // the record is filled only when a draw keeps it: most deposits of a map with a
     // small storage probability are dropped. u < 0: not kept.
@@ -155,22 +177,54 @@ void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool i
     }
     if (u[0] < 0 && u[1] < 0 && u[2] < 0) return;
     const Vec3 n = front ? hit.normal : -hit.normal;  // facing the incoming photon
-    RawPhoton rp;
-    rp.pos[0] = float(hit.point.x);
-    rp.pos[1] = float(hit.point.y);
-    rp.pos[2] = float(hit.point.z);
-    rp.norm[0] = packNormal(n.x);
-    rp.norm[1] = packNormal(n.y);
-    rp.norm[2] = packNormal(n.z);
-    rp.caustic = indirect && caustic ? 1 : 0;
-    rp.flux[0] = float(flux.r);
-    rp.flux[1] = float(flux.g);
-    rp.flux[2] = float(flux.b);
+    RawPhoton rp = rawPhoton(hit.point, n, flux, indirect && caustic);
     for (int i = 0; i < 3; ++i) {
         if (u[i] < 0) continue;
         rp.u = u[i];
         out.maps[size_t(types[i])].push_back(rp);
     }
+}
+
+PhotonTracer::MediumStep PhotonTracer::travelMedium(
+    Ray& ray, const Hit* hit, const material::Medium& m, Color& flux, double& travelled,
+    Rng& rng, Rng& storeRng, const std::array<double, kNumPhotonMapTypes>& prob,
+    PhotonBins& out) const {
+    // The free path is drawn from the mean extinction, as RADIANCE does; the flux is
+    // weighted per channel by the ratio of the true probabilities to the drawn one (1 in
+    // a grey medium), which keeps coloured media unbiased where RADIANCE only renormalises
+    // the colour.
+    const double mean = m.extinction.average();
+    const double t = hit ? hit->t : HUGE_VAL;
+    const double d = -std::log(1 - rng.uniform()) / mean;
+    if (!(d < t)) {
+        if (!hit) return MediumStep::Lost;
+        for (int k = 0; k < 3; ++k) flux[k] *= std::exp((mean - m.extinction[k]) * t);
+        return MediumStep::Reached;
+    }
+    const Vec3 p = ray.origin + ray.dir * d;
+    // Past the path limit (-ld), or scattered outside the scene's cube: leaked.
+    if (!(d <= ray.tmax)) return MediumStep::Lost;
+    const SceneCube cube = geometry_.sceneCube();
+    for (int k = 0; k < 3; ++k)
+        if (!(p[k] >= cube.origin[k] && p[k] <= cube.origin[k] + cube.size)) return MediumStep::Lost;
+    travelled += d;
+    for (int k = 0; k < 3; ++k)
+        flux[k] *= m.extinction[k] / mean * std::exp((mean - m.extinction[k]) * d);
+    // pmap.c: every collision in a scattering medium is stored, the first one too: the
+    // volume map carries the direct in-scattering as well (render/medium.cpp).
+    const double albedo = m.albedo.average();
+    if (albedo > 1e-6 && settings_.maps[size_t(PhotonMapType::Volume)] && inRegions(p)) {
+        const double u = storeRng.uniform();
+        if (u < prob[size_t(PhotonMapType::Volume)]) {
+            RawPhoton rp = rawPhoton(p, ray.dir, flux, false);
+            rp.u = float(u);
+            out.maps[size_t(PhotonMapType::Volume)].push_back(rp);
+        }
+    }
+    if (!(rng.uniform() < albedo)) return MediumStep::Lost;  // absorbed
+    flux *= m.albedo / albedo;
+    ray = Ray{p, sampleHenyeyGreenstein(ray.dir, m.eccentricity, rng)};
+    return MediumStep::Scattered;
 }
 
 void PhotonTracer::trace(uint64_t seed, uint64_t index,
@@ -187,7 +241,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
 
     Ray ray = e.ray;
     Color flux = e.weight;
-    Color extinction;  // per unit length inside a dielectric medium
+    material::Medium medium = settings_.medium;  // RADIANCE: a photon starts in the global one
     const bool fromPort = e.port >= 0;
     long scatters = 0;
     long passes = 0;
@@ -219,6 +273,18 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         ray.tmax = pathLimit - travelled;
         if (!(ray.tmax > 0)) return;
         std::optional<Hit> hit = geometry_.closestHit(ray);
+        if (medium.active()) {
+            MediumStep step = travelMedium(ray, hit ? &*hit : nullptr, medium, flux, travelled,
+                                           rng, storeRng, prob, out);
+            if (step == MediumStep::Lost) return;
+            if (step == MediumStep::Scattered) {
+                // Surface photons after this are indirect (global), never caustic.
+                ++scatters;
+                lastSpecular = false;
+                firstSegment = false;
+                continue;
+            }
+        }
         if (!hit) return;
         travelled += hit->t;
 
@@ -235,16 +301,6 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
             }
         }
         firstSegment = false;
-
-        if (!extinction.isBlack()) {
-            // Absorption along the segment by roulette on its mean, keeping the photon's
-            // flux near its emitted value as RADIANCE's colorNorm does.
-            Color att{std::exp(-extinction.r * hit->t), std::exp(-extinction.g * hit->t),
-                      std::exp(-extinction.b * hit->t)};
-            double a = att.average();
-            if (rng.uniform() >= a) return;
-            flux *= att / a;
-        }
 
         const int32_t modIndex = hit->modifier;
         const SurfaceModifier* surf = modIndex == kVoid ? nullptr : &surfaces_[size_t(modIndex)];
@@ -278,6 +334,15 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
                 deposit(*hit, true, flux, scatters > 0 || fromPort, causticNow(),
                         prob, storeRng, out);
             clip.cross(mi.clips, hit->front);
+            ray = spawnRay(*hit, ray.dir);
+            ++passes;
+            continue;
+        }
+        if (const auto* mist = std::get_if<material::MistParams>(&*mi.params)) {
+            // pmapmat.c mistPhotonScatter: passed on (not a bounce) into the medium it
+            // enters or returns to.
+            medium = material::changeMedium(medium, material::mistCrossing(*mist, hit->front, pattern),
+                                            settings_.medium);
             ray = spawnRay(*hit, ray.dir);
             ++passes;
             continue;
@@ -320,11 +385,8 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         flux *= s.fluxFactor;
         ++scatters;
         lastSpecular = material::isSpecular(s.kind);
-        switch (s.mediumKind) {
-        case material::MediumChange::Kind::Unchanged: break;
-        case material::MediumChange::Kind::Global: extinction = Color{}; break;
-        case material::MediumChange::Kind::Given: extinction = s.extinction; break;
-        }
+        medium = material::changeMedium(medium, material::MediumChange{s.mediumKind, s.extinction},
+                                        settings_.medium);
         ray = spawnRay(*hit, s.dir);
         if (s.originOffset != 0) ray.origin += hit->normal * double(s.originOffset);
     }

@@ -45,6 +45,7 @@ struct TraceSettings {
     std::vector<std::string> sensors;    // -aps / -apS modifier names
     std::vector<std::string> include;    // -ai: store only on these modifiers
     std::vector<std::string> exclude;    // -ae: never store on these modifiers
+    material::Medium medium;  // -me -ma -mg: the global medium photons start in
 };
 
 // Photons deposited by a range of traced photons, one list per map type.
@@ -106,6 +107,17 @@ private:
     void deposit(const Hit& hit, bool front, const Color& flux, bool indirect,
                  bool caustic, const std::array<double, kNumPhotonMapTypes>& prob,
                  Rng& storeRng, PhotonBins& out) const;
+    bool inRegions(const Vec3& p) const;
+
+    // The photon's way through the medium `m` it travels in, up to `hit` (null: it
+    // leaves the scene) or to a collision drawn from the medium's mean extinction
+    // (pmap.c photonParticipate): a collision stores a volume photon (where the medium
+    // scatters), is survived by albedo roulette and turns the ray by the phase function.
+    enum class MediumStep { Reached, Scattered, Lost };
+    MediumStep travelMedium(Ray& ray, const Hit* hit, const material::Medium& m, Color& flux,
+                            double& travelled, Rng& rng, Rng& storeRng,
+                            const std::array<double, kNumPhotonMapTypes>& prob,
+                            PhotonBins& out) const;
 
     void setFunctionValues(int32_t material, const Hit& hit, const Vec3& dir,
                            std::optional<material::MaterialCalcEvaluator>& eval,

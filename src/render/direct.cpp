@@ -33,6 +33,7 @@ struct DirectLighting::Impl {
     const SceneGeometry& geometry;
     DirectOptions options;
     SourceList list;
+    material::Medium globalMedium;
 
     // Radiance reaching the shaded point along candidate `c`'s shadow path, zero if
     // blocked. `crossings` are the points where the path meets the relays (virtual).
@@ -42,10 +43,12 @@ struct DirectLighting::Impl {
 
 DirectLighting::DirectLighting(const Scene& scene, const SceneGeometry& geometry,
                                const DirectOptions& options, bool virtualSources,
-                               const RedirectFunction& redirect)
+                               const RedirectFunction& redirect,
+                               const material::Medium& globalMedium)
     : impl_(std::make_unique<Impl>(Impl{
           geometry, options,
-          buildSourceList(scene, geometry, options, virtualSources, redirect)})) {}
+          buildSourceList(scene, geometry, options, virtualSources, redirect),
+          globalMedium})) {}
 
 DirectLighting::~DirectLighting() = default;
 
@@ -98,7 +101,15 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
     // necessarily through the sample: it must meet the source itself (a distant one
     // within its disk, RADIANCE sourcehit), wherever that is.
     bool redirected = false;
-    Color extinction;  // of the medium the ray is in (inside a dielectric)
+    material::Medium medium = at.medium;
+    // Absorption over `t` in the current medium (scattering does not dim shadow rays).
+    auto absorb = [&](double t) {
+        if (!medium.active()) return;
+        for (int k = 0; k < 3; ++k) {
+            double e = t * medium.extinction[k] * (1 - medium.albedo[k]);
+            through[k] *= e <= 1e-6 ? 1 : e > 92 ? 0 : std::exp(-e);
+        }
+    };
     for (size_t leg = 0; leg < legs; ++leg) {
         const bool last = leg + 1 == legs;
         const bool escape = last && src.distant();
@@ -123,6 +134,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
             if (!hit) {
                 if (!last) return {};  // grazed past the relay's edge
                 if (escape) {
+                    absorb(HUGE_VAL);
                     if (redirected) {
                         const DistantSource& d = geometry.sources()[size_t(src.light.shapeIndex)];
                         if (2 * kPi * (1 - dot(d.dir, dir)) > d.solidAngle) return {};
@@ -132,11 +144,13 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
                 if (anywhere) return {};
                 // Reached the target although the accelerator did not report the
                 // (grazed) source surface: it is there by construction.
+                absorb(remaining);
                 ShadowEvent ev = oracle.event(
                     sourceSurfaceHit(src, geometry.shapes(), list.regions, goal, dir, remaining),
                     dir);
                 return ev.kind == ShadowEvent::Kind::Emit ? through * ev.colour : Color{};
             }
+            absorb(hit->t);
             if (relay && hit->prim == relay->prim) {
                 const RelayStep& step = src.relays[leg];
                 if (relay->isPrism()) {
@@ -157,8 +171,6 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
                 advanced = true;
                 continue;
             }
-            if (extinction.max() > 0)
-                for (int k = 0; k < 3; ++k) through[k] *= std::exp(-extinction[k] * hit->t);
             const bool target = last && !escape && hit->prim == src.light.prim;
             ShadowEvent ev = oracle.event(*hit, dir, !target && passesIllum(src, *hit));
             if (target) return ev.kind == ShadowEvent::Kind::Emit ? through * ev.colour : Color{};
@@ -167,8 +179,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
             if (ev.kind != ShadowEvent::Kind::Transmit) return {};
             through *= ev.colour;
             if (through.isBlack()) return {};
-            if (ev.medium.kind == material::MediumChange::Kind::Given) extinction = ev.medium.extinction;
-            if (ev.medium.kind == material::MediumChange::Kind::Global) extinction = Color{};
+            medium = material::changeMedium(medium, ev.medium, globalMedium);
             if (lengthSquared(ev.bent) > 0) {
                 // Refracted: only a distant source can still be met, within its disk.
                 if (!escape) return {};
@@ -181,6 +192,23 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
         if (!advanced) return {};
     }
     return {};
+}
+
+Color DirectLighting::sampleWhole(size_t source, const DirectPoint& at, ShadowOracle& oracle,
+                                  Rng& rng, Vec3& toLight) const {
+    const Impl& im = *impl_;
+    const DirectSource& src = im.list.sources[source];
+    DirectOptions whole = im.options;
+    whole.sampling = 0;  // RADIANCE nopart: the whole source is one sample
+    std::vector<SourceSample> samples;
+    sampleSource(im.list, src, im.geometry.shapes(), at.point, whole, 1, rng, samples);
+    if (samples.empty()) return {};
+    Candidate c;
+    c.source = int32_t(source);
+    c.sample = samples.front();
+    c.toLight = c.sample.dir;
+    toLight = c.toLight;
+    return im.trace(at, c, nullptr, oracle) * c.sample.omega;
 }
 
 Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& coefficient,

@@ -75,6 +75,9 @@ struct DirectPoint {
     // The ray's weight (RADIANCE r->rweight): -dt is relative to it (threshold dt/weight)
     // and sources are subdivided less for low-weight rays (-ds/weight), as in RADIANCE.
     double weight = 1;
+    // The medium at the point: shadow rays are attenuated by its absorption (RADIANCE
+    // rayparticipate: extinction times 1 - albedo, scattering is not a loss to them).
+    material::Medium medium;
 };
 
 // RADIANCE's coefficient function for one source sample: the material's BRDF*cos for
@@ -110,9 +113,12 @@ public:
     // RADIANCE's SSKIP). Zero-radiance sources are dropped. With -dr > 0 and mirrors (or,
     // given `redirect`, prisms) in the scene, virtual sources are added (virtuals.c)
     // unless `virtualSources` is false (photon-map mode switches them off).
+    // `globalMedium` (-me -ma -mg) is what shadow rays leaving a dielectric or a mist
+    // travel in.
     DirectLighting(const Scene& scene, const SceneGeometry& geometry,
                    const DirectOptions& options, bool virtualSources = true,
-                   const RedirectFunction& redirect = {});
+                   const RedirectFunction& redirect = {},
+                   const material::Medium& globalMedium = {});
     ~DirectLighting();
 
     // Direct contribution at `at`: sum over sources and their samples of
@@ -120,6 +126,13 @@ public:
     // -dt/-dc (untested sources estimated as RADIANCE does) and -dj.
     Color compute(const DirectPoint& at, const DirectCoefficient& coefficient,
                   ShadowOracle& oracle, Rng& rng) const;
+
+    // One sample of real source `source` as a whole (no subdivision) seen from `at.point`
+    // in a medium (RADIANCE srcscatter: nopart, srcray with no parent surface): the
+    // radiance arriving along its shadow ray times the sample's solid angle, with the
+    // unit direction to it in `toLight`; zero if blocked or outside a spotlight's cone.
+    Color sampleWhole(size_t source, const DirectPoint& at, ShadowOracle& oracle, Rng& rng,
+                      Vec3& toLight) const;
 
     // Whether `prim` is the surface of a (real) direct source: rays descended from
     // ambient or sampled specular rays must not count its emission again

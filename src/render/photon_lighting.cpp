@@ -8,6 +8,7 @@
 #include <string>
 
 #include "util/error.h"
+#include "util/henyey_greenstein.h"
 #include "util/warnings.h"
 
 namespace rp::render {
@@ -75,8 +76,8 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
             m.map = pmap::PhotonMap::load(uses[i].file, pmap::PhotonMap::TreeOrder::Unchecked,
                                           /*causticOnDemand=*/true);
             const T type = m.map.type();
-            if (!m.indexedOnDemand() && type != T::Contrib && type != T::Volume)
-                m.index.get(m.map.photons());  // contribution and volume maps are refused below
+            if (!m.indexedOnDemand() && type != T::Contrib)
+                m.index.get(m.map.photons());  // contribution maps are refused below
         } catch (...) {
             failed[i] = std::current_exception();
         }
@@ -94,9 +95,13 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
             throw InputError(use.file +
                              ": contribution photon maps are used by rcontrib, "
                              "not by the renderer");
-        if (type == T::Volume)
-            throw notSupportedYet(SourceLoc{use.file, 0}, "volume photon maps in the renderer");
-        int* slot = type == T::Caustic ? &caustic_ : type == T::Direct ? &direct_ : &global_;
+        if (type == T::Volume && use.bandwidth2 > 0)
+            throw InputError(use.file +
+                             ": bias compensation is not available with volume photon maps");
+        int* slot = type == T::Caustic  ? &caustic_
+                    : type == T::Direct ? &direct_
+                    : type == T::Volume ? &volume_
+                                        : &global_;
         if (*slot >= 0)
             throw InputError(use.file + ": more than one " + std::string(name) +
                              " photon map given with -ap");
@@ -165,6 +170,13 @@ Color PhotonLighting::causticDensity(Lookups& l, const Vec3& pos, const Vec3& no
 }
 Color PhotonLighting::directDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const {
     return density(l, direct_, pos, normal);
+}
+
+Color PhotonLighting::volumeDensity(Lookups& l, const Vec3& pos, const Vec3& out,
+                                   double g) const {
+    if (volume_ < 0) return {};
+    auto d = l.lookups[size_t(volume_)].volumeDensity(pos, out, g, &henyeyGreenstein4Pi);
+    return Color{d[0], d[1], d[2]};
 }
 
 }  // namespace rp::render

@@ -3,7 +3,8 @@
 // default bandwidth with a warning, stale check against the scene's input files), and
 // the density estimates the shading loop asks for: global irradiance (final gather's
 // sample hits, or every hit with -ab -1), caustic irradiance at hits of non-ambient
-// rays, and direct photons in place of the direct calculation (a debugging aid).
+// rays, direct photons in place of the direct calculation (a debugging aid), and
+// light scattered in participating media from volume photons.
 #pragma once
 
 #include <array>
@@ -31,9 +32,10 @@ constexpr int kDefaultBandwidth = 40;
 class PhotonLighting {
 public:
     // Loads each -ap map. Throws InputError for a missing, foreign or truncated file,
-    // two maps of one type, a contribution map (rcontrib's business), volume maps (not
-    // supported yet), a bandwidth range with bw2 <= bw1, and a map older than any of the
-    // scene's input files ("stale": rerun mkpmap). An empty `uses` gives an inactive set.
+    // two maps of one type, a contribution map (rcontrib's business), a bandwidth range
+    // with bw2 <= bw1 or any range for a volume map (RADIANCE has no bias compensation
+    // for them), and a map older than any of the scene's input files ("stale": rerun
+    // mkpmap). An empty `uses` gives an inactive set.
     PhotonLighting(const std::vector<PhotonMapUse>& uses, double maxSearchRadius,
                    const Scene& scene);
     ~PhotonLighting();
@@ -42,6 +44,7 @@ public:
     bool hasGlobal() const { return global_ >= 0; }   // global or precomputed global
     bool hasCaustic() const { return caustic_ >= 0; }
     bool hasDirect() const { return direct_ >= 0; }
+    bool hasVolume() const { return volume_ >= 0; }
 
     // Per-thread lookup state (adaptive radius, result buffers); adds its lookup counts
     // to the owner's when destroyed.
@@ -78,6 +81,10 @@ public:
     Color globalDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
     Color causticDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
     Color directDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
+    // From the volume map at `pos`: light scattered toward unit `out` per unit length of
+    // a ray, over the medium's albedo, with eccentricity `g` (pmap::PhotonLookup::
+    // volumeDensity); zero without a volume map.
+    Color volumeDensity(Lookups& l, const Vec3& pos, const Vec3& out, double g) const;
 
     // Lookups that found too few photons, summed over threads (reported once by tools).
     uint64_t shortLookups() const { return shortLookups_.load(); }
@@ -101,7 +108,7 @@ private:
 
     std::vector<Map> maps_;
     double maxSearchRadius_ = 0;
-    int global_ = -1, caustic_ = -1, direct_ = -1;
+    int global_ = -1, caustic_ = -1, direct_ = -1, volume_ = -1;
     mutable std::atomic<uint64_t> shortLookups_{0}, lookups_{0};
     mutable std::mutex statsMutex_;
     mutable std::vector<pmap::BiasCompStats> biasStats_;  // per map, merged from threads

@@ -57,8 +57,8 @@ struct PhotonMapUse {
     int bandwidth2 = 0;  // > bandwidth: bias compensation between the two
 };
 
-// -me/-ma/-mg/-ms: the global participating medium ("mist"). Parsed and printed by
-// -defaults as RADIANCE does; the renderer does not model a global medium yet.
+// -me/-ma/-mg/-ms: the global participating medium and the sampling distance of light
+// scattered into rays (RADIANCE's mist options).
 struct MistOptions {
     Color extinction;            // -me: extinction coefficient per unit length
     Color albedo;                // -ma: scattering albedo

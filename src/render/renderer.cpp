@@ -1,14 +1,55 @@
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "render/renderer_impl.h"
 #include "util/error.h"
+#include "util/warnings.h"
 
 namespace rp::render {
 
 namespace {
+
+material::Medium globalMediumOf(const MistOptions& m) {
+    return material::Medium{m.extinction, m.albedo, m.eccentricity};
+}
+
+// m_mist.c: each mist's string arguments name the sources that scatter into rays inside
+// it (an object name; RADIANCE's "a>b" relayed virtual sources are not matched, as there
+// are no virtual sources in the list of a mist's scene in photon-map mode either).
+std::unordered_map<int32_t, std::vector<int32_t>> mistSourceLists(const Scene& scene,
+                                                                  const DirectLighting& direct) {
+    std::unordered_map<int32_t, std::vector<int32_t>> out;
+    const SourceList& list = direct.sourceList();
+    for (size_t i = 0; i < scene.prims.size(); ++i) {
+        const Primitive& p = scene.prims[i];
+        if (p.type != PrimType::Mist) continue;
+        std::vector<int32_t>& ids = out[int32_t(i)];
+        for (const std::string& name : p.sargs) {
+            int32_t found = -1;
+            for (size_t s = list.realCount; s-- > 0;) {
+                int32_t prim = list.sources[s].light.prim;
+                if (prim >= 0 && scene.prims[size_t(prim)].name == name) {
+                    found = int32_t(s);
+                    break;
+                }
+            }
+            const std::string where = "mist '" + p.name + "': ";
+            if (found < 0)
+                warn(p.loc.str() + ": " + where + "unknown source \"" + name + "\"");
+            else if (std::find(ids.begin(), ids.end(), found) != ids.end())
+                warn(p.loc.str() + ": " + where + "duplicate source \"" + name + "\"");
+            else if (ids.size() >= size_t(ScatterSources::kMax))
+                throw InputError(p.loc, where + "more than " +
+                                            std::to_string(ScatterSources::kMax) + " sources");
+            else
+                ids.push_back(found);
+        }
+    }
+    return out;
+}
 
 // Photon-map mode with a global map (manual 5.1, RADIANCE 5.4): the ambient calculation
 // makes one bounce (final gather) whose sample hits read the global map; any positive
@@ -37,9 +78,12 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
              [this](const Hit& hit, const Vec3& dir, int projection, const Vec3& toSource) {
                  material::MaterialCalcEvaluator ev(materialCalc);
                  return evalRedirect(scene, materialCalc, ev, hit, dir, projection, toSource);
-             }),
+             },
+             globalMediumOf(o.mist)),
       ambient(ambientOptions, g.sceneCube().size, s, o.limits.minWeight),
-      antimatter(s, true) {
+      antimatter(s, true),
+      globalMedium(globalMediumOf(o.mist)),
+      mistSources(mistSourceLists(s, direct)) {
     // Every surface's chain must be evaluable (RADIANCE checks modifiers as it loads).
     for (const Primitive& p : s.prims)
         if (isSurface(p.type) && p.type != PrimType::Source) chains.checkChain(p.modifier);
@@ -81,6 +125,7 @@ RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
     result.direction = dir;
     RayState state;
     state.irradianceHit = options_.irradiance;
+    state.medium = impl_->globalMedium;
     double distance = 1e10;
     result.value = ctx.radiance(Ray{origin, dir, maxDistance}, state, &result, distance);
     ctx.tree = nullptr;
@@ -111,7 +156,7 @@ RayResult Renderer::irradiance(Context& ctx, const Vec3& point, const Vec3& norm
     result.distance = result.effectiveLength = 0;
     result.point = at;
     result.normal = result.unperturbedNormal = n;
-    result.value = ctx.irradianceAt(hit, n, 0, 1);
+    result.value = ctx.irradianceAt(hit, n, 0, 1, {}, impl_->globalMedium);
     return result;
 }
 

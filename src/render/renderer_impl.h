@@ -3,7 +3,9 @@
 // hemisphere samples). Not for use outside src/render.
 #pragma once
 
+#include <array>
 #include <atomic>
+#include <unordered_map>
 #include <functional>
 #include <optional>
 #include <string>
@@ -21,6 +23,21 @@
 
 namespace rp::render {
 
+constexpr double kFtiny = 1e-6;  // RADIANCE FTINY
+
+// The sources whose light scatters into a ray's medium (RADIANCE's slights), as indices
+// into the direct source list.
+struct ScatterSources {
+    static constexpr int kMax = 32;  // RADIANCE MAXSLIST
+    int count = 0;
+    std::array<int32_t, kMax> index;
+    bool contains(int32_t s) const {
+        for (int i = 0; i < count; ++i)
+            if (index[size_t(i)] == s) return true;
+        return false;
+    }
+};
+
 // RADIANCE's ray type bits that matter for over-counting (badcomponent): a ray that
 // descends from an ambient sample or a sampled (rough) specular ray must not see the
 // emission of surfaces the direct calculation already counts.
@@ -32,6 +49,8 @@ struct RayState {
     bool primary = true;       // the input ray itself
     bool irradianceHit = false;  // -i: shade the first surface as white Lambertian
     ClipSet clip;              // what antimatter hides from the ray (RADIANCE clipset)
+    material::Medium medium;   // what it travels in (RADIANCE cext, albedo, gecc)
+    ScatterSources scatter;    // sources scattering into it (m_mist.c)
 };
 
 // One material record, checked once. `error` holds the message for a record that cannot
@@ -60,6 +79,9 @@ struct Renderer::Impl {
     }
 
     AntimatterTable antimatter;  // what each antimatter clips (clip_set.h)
+    material::Medium globalMedium;  // -me -ma -mg
+    // Per mist material: its string arguments as direct source indices (m_mist.c).
+    std::unordered_map<int32_t, std::vector<int32_t>> mistSources;
 };
 
 class Renderer::Context : public ShadowOracle, public HemisphereTracer {
@@ -86,7 +108,7 @@ public:
     // Irradiance at a point on a white Lambertian surface facing `normal`, for a ray
     // whose clip set is `clip`.
     Color irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel, double weight,
-                       const ClipSet& clip = {});
+                       const ClipSet& clip = {}, const material::Medium& medium = {});
 
     const Renderer& renderer;
     const Impl& impl;
@@ -102,14 +124,30 @@ public:
     std::unique_ptr<PhotonLighting::Lookups> photonLookups;  // null without photon maps
 
 private:
+    // A layer that passes the ray on may change its medium (a mist boundary): `crossing`,
+    // with the mist's material index in `crossingMist`.
+    struct Passage {
+        material::MediumChange crossing;
+        int32_t mist = -1;
+    };
     Color shadeHit(const Ray& ray, const Hit& hit, const RayState& state, RayResult* first,
-                   Color& passWeight);
+                   Color& passWeight, Passage& passage);
     Color shadeLayer(const Ray& ray, const Hit& hit, const RayState& state,
                      const material::ShadingLayer& layer, RayResult* first,
-                     bool& passThrough);
+                     bool& passThrough, Passage& passage);
     // Shades with a mirror's or illum's alternate material (its whole modifier chain).
     Color shadeAlternate(const Ray& ray, const Hit& hit, const RayState& state,
-                         int32_t alternate, RayResult* first, bool& passThrough);
+                         int32_t alternate, RayResult* first, bool& passThrough,
+                         Passage& passage);
+    // The medium along a ray segment of length `t` (HUGE_VAL: the ray left the scene):
+    // returns the light scattered into the ray and sets `transmit` to the segment's
+    // transmittance (RADIANCE rayparticipate, srcscatter).
+    Color participate(const Ray& ray, double t, const RayState& state, Color& transmit);
+    Color sourceScatter(const Ray& ray, double t, const RayState& state);
+    Color volumeScatter(const Ray& ray, double t, const RayState& state);
+    // The ray's state after `passage` (m_mist.c); `segment` receives the medium the
+    // segment before it was in (a ray leaving a mist it did not know it was in).
+    void cross(RayState& state, const Passage& passage, RayState& segment) const;
     Color escaped(const Ray& ray, const RayState& state);
     // Direct light at `hit`; `behindOnly`: only sources behind the surface (the far point
     // of a thick BSDF, whose reflected light is taken at the hit itself).
@@ -132,8 +170,9 @@ private:
     // SurfacePoint fields they give: u orientation, BRTDfunc colours, directional part.
     void applyMaterialCalc(int32_t material, const Hit& hit, const Vec3& dir,
                            material::SurfacePoint& sp);
-    int sampleDepth_ = 0;  // depth of the ray whose ambient samples are being traced
-    ClipSet sampleClip_;    // and the clip set its samples start with
+    // The ray whose ambient samples are being traced: they start with its depth, clip
+    // set and medium.
+    RayState sampleParent_;
     // Clip set of the shadow rays of the point being lit (set by directAt and
     // irradianceAt), and of the shadow ray being traced (reset by beginShadowRay).
     ClipSet shadowBase_, shadowClip_;

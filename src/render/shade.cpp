@@ -119,29 +119,36 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
     // bounded so that a pathological stack of them cannot loop.
     for (int pass = 0; pass < 64; ++pass) {
         std::optional<Hit> hit = impl.geometry.closestHit(r);
+        Color transmit{1, 1, 1};
         if (!hit) {
             // A ray with a length limit (rtrace -ld) that ends short of every surface is
             // clipped: RADIANCE gives it no value, not the sources or sky behind.
-            if (!(r.tmax < HUGE_VAL)) total += coef * escaped(r, cur);
+            Color c = r.tmax < HUGE_VAL ? Color{} : escaped(r, cur);
+            if (cur.medium.active()) total += coef * participate(r, HUGE_VAL, cur, transmit);
+            total += coef * transmit * c;
             break;
         }
         Color passWeight;
         Color c;
+        Passage passage;
         if (cur.clip.contains(hit->modifier)) {
             passWeight = Color{1, 1, 1};  // inside antimatter that clips it: invisible
         } else if (const auto* clips = impl.antimatter.clips(hit->modifier)) {
             cur.clip.cross(*clips, hit->front);
             passWeight = Color{1, 1, 1};
         } else {
-            c = shadeHit(r, *hit, cur, record, passWeight);
+            c = shadeHit(r, *hit, cur, record, passWeight, passage);
         }
-        total += coef * c;
+        RayState segment = cur;
+        if (passage.mist >= 0) cross(cur, passage, segment);
+        if (segment.medium.active()) total += coef * participate(r, hit->t, segment, transmit);
+        total += coef * transmit * c;
         if (passWeight.max() <= 0) {
             distance = travelled + hit->t;
             if (hitNormal) *hitNormal = hit->normal;
             break;
         }
-        coef *= passWeight;
+        coef *= passWeight * transmit;
         travelled += hit->t;
         r = spawnRay(*hit, r.dir);
         if (ray.tmax < HUGE_VAL) r.tmax = std::max(0.0, ray.tmax - travelled);
@@ -163,13 +170,13 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
 }
 
 Color Renderer::Context::shadeHit(const Ray& ray, const Hit& hit, const RayState& state,
-                                  RayResult* first, Color& passWeight) {
+                                  RayResult* first, Color& passWeight, Passage& passage) {
     material::ChainResult chain = resolve(hit.modifier, hit, ray.dir);
     Color value;
     for (int i = 0; i < chain.count; ++i) {
         const material::ShadingLayer& layer = chain.layers[size_t(i)];
         bool pass = false;
-        Color c = shadeLayer(ray, hit, state, layer, first, pass);
+        Color c = shadeLayer(ray, hit, state, layer, first, pass, passage);
         value += c * layer.weight;
         if (pass) passWeight += Color{1, 1, 1} * layer.weight;
     }
@@ -178,7 +185,7 @@ Color Renderer::Context::shadeHit(const Ray& ray, const Hit& hit, const RayState
 
 Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RayState& state,
                                     const material::ShadingLayer& layer, RayResult* first,
-                                    bool& passThrough) {
+                                    bool& passThrough, Passage& passage) {
     if (layer.material == kVoid) {
         // RADIANCE compat (raytrace.c raytrans): the ray reports the surface it passed.
         recordFirst(first, hit, hit.normal, kVoid);
@@ -221,7 +228,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         }
         if (light.kind == material::LightParams::Kind::Illum) {
             // ray.html illum: seen directly (or by specular rays) it is its alternate.
-            return shadeAlternate(ray, hit, state, e.alternate, first, passThrough);
+            return shadeAlternate(ray, hit, state, e.alternate, first, passThrough, passage);
         }
         fillFirst(first);
         if (source && !impl.options.direct.visibility && !state.indirect) return {};  // -dv-
@@ -236,13 +243,21 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         }
         fillFirst(first);
         // -i: the first surface is white Lambertian; the value is its irradiance.
-        return irradianceAt(hit, n, state.ambientLevel, state.weight, state.clip);
+        return irradianceAt(hit, n, state.ambientLevel, state.weight, state.clip, state.medium);
     }
 
     if (e.hasAlternate && std::holds_alternative<material::MirrorParams>(params)) {
         // ray.html mirror: with an alternate material the mirror only relays sources
         // (virtual sources); every other ray sees the alternate.
-        return shadeAlternate(ray, hit, state, e.alternate, first, passThrough);
+        return shadeAlternate(ray, hit, state, e.alternate, first, passThrough, passage);
+    }
+    if (const auto* mist = std::get_if<material::MistParams>(&params)) {
+        // m_mist.c: the ray goes on in the medium it enters or returns to.
+        recordFirst(first, hit, hit.normal, layer.material);
+        passage.crossing = material::mistCrossing(*mist, hit.front, layer.pattern);
+        passage.mist = layer.material;
+        passThrough = true;
+        return {};
     }
 
     std::array<material::Redirection, 2> redirections{};
@@ -292,6 +307,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         child.primary = false;
         child.irradianceHit = false;
         child.indirect = state.indirect || sr.sampled;
+        child.medium = material::changeMedium(state.medium, sr.medium, impl.globalMedium);
         if (child.weight <= 0) continue;
         if (lim.maxDepth > 0) {
             if (child.depth > lim.maxDepth || child.weight < lim.minWeight) continue;
@@ -309,9 +325,6 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
             out.origin += hit.normal * b.transmitOffset;
         double d = kNoHit;
         Color c = radiance(out, child, nullptr, d);
-        if (sr.medium.kind == material::MediumChange::Kind::Given && d < kNoHit) {
-            for (int k = 0; k < 3; ++k) c[k] *= std::exp(-sr.medium.extinction[k] * d);
-        }
         Color contrib = rc * c;
         value += contrib;
         if (first && first->prim == hit.prim && state.primary) {
@@ -354,7 +367,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
 
 Color Renderer::Context::shadeAlternate(const Ray& ray, const Hit& hit, const RayState& state,
                                         int32_t alternate, RayResult* first,
-                                        bool& passThrough) {
+                                        bool& passThrough, Passage& passage) {
     if (alternate == kVoid) {  // "void": the surface is invisible to this ray
         passThrough = true;
         return {};
@@ -363,7 +376,8 @@ Color Renderer::Context::shadeAlternate(const Ray& ray, const Hit& hit, const Ra
     Color v;
     for (int i = 0; i < c.count; ++i) {
         bool p = false;
-        v += shadeLayer(ray, hit, state, c.layers[size_t(i)], first, p) * c.layers[size_t(i)].weight;
+        v += shadeLayer(ray, hit, state, c.layers[size_t(i)], first, p, passage) *
+             c.layers[size_t(i)].weight;
         if (p) passThrough = true;
     }
     return v;
@@ -374,6 +388,7 @@ Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams
                                   const RayState& state, bool behindOnly) {
     DirectPoint at;
     at.weight = state.weight;
+    at.medium = state.medium;
     shadowBase_ = shadowClip_ = state.clip;  // shadow rays start with the ray's set
     at.point = hit.point;
     at.normal = sp.normal;
@@ -411,18 +426,16 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
         if (pm.hasCaustic() && (state.ambientLevel == 0 || !pm.hasGlobal()))
             c += pm.causticDensity(*photonLookups, hit.point, normal);
     }
-    int saved = sampleDepth_;
-    ClipSet savedClip = sampleClip_;
-    sampleDepth_ = state.depth;
-    sampleClip_ = state.clip;
+    RayState saved = sampleParent_;
+    sampleParent_ = state;
     c += impl.ambient.indirect(ap, *this, rng);
-    sampleDepth_ = saved;
-    sampleClip_ = savedClip;
+    sampleParent_ = saved;
     return c;
 }
 
 Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel,
-                                      double weight, const ClipSet& clip) {
+                                      double weight, const ClipSet& clip,
+                                      const material::Medium& medium) {
     // White Lambertian receiver: direct irradiance sum L cos omega, plus pi times the
     // ambient calculation's average radiance.
     DirectPoint at;
@@ -431,6 +444,7 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int am
     at.geomNormal = normal;
     at.hit = &hit;
     at.weight = weight;
+    at.medium = medium;
     RayState here;
     here.ambientLevel = ambientLevel;
     shadowBlockedByTransparent_ = shadowInPhotonMap(here);
@@ -445,8 +459,9 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int am
     RayState st;
     st.ambientLevel = ambientLevel;
     st.weight = weight;
-    st.depth = sampleDepth_;
+    st.depth = sampleParent_.depth;
     st.clip = clip;
+    st.medium = medium;
     return e + ambientAt(hit, normal, kVoid, st) * kPi;
 }
 

@@ -53,6 +53,12 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
         ev.colour = Color{1, 1, 1};
         return ev;
     }
+    if (const auto* m = std::get_if<material::MistParams>(&params)) {
+        ev.kind = ShadowEvent::Kind::Transmit;  // m_mist.c: T_TRANSP, medium changes
+        ev.colour = Color{1, 1, 1};
+        ev.medium = material::mistCrossing(*m, hit.front, layer.pattern);
+        return ev;
+    }
     if (const auto* m = std::get_if<material::BsdfParams>(&params)) {
         // prismCalc: materialCalc may hold the hit being lit (its functions still to run).
         prismCalc.setHit(layer.material, material::PatternPoint::atHit(dir, hit), sp.normal,
@@ -62,6 +68,22 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
         if (material::bsdfShadowPass(*m, sp, impl.options.backVisible, c)) {
             ev.kind = ShadowEvent::Kind::Transmit;
             ev.colour = c;
+        }
+        return ev;
+    }
+    if (const auto* m = std::get_if<material::BrtdParams>(&params)) {
+        // m_brdf.c: a shadow ray goes on through the specular transmission (its colour
+        // expressions at this hit, not scaled by the pattern); the rest is shadow.
+        Color tspec = m->specularTransmission.value_or(Color{});
+        if (impl.materialCalc.uses(layer.material)) {
+            prismCalc.setHit(layer.material, material::PatternPoint::atHit(dir, hit), sp.normal,
+                             sp.pattern);
+            Color refl;
+            prismCalc.brtdSpecular(refl, tspec);
+        }
+        if (tspec.max() > kFtiny) {
+            ev.kind = ShadowEvent::Kind::Transmit;
+            ev.colour = tspec;
         }
         return ev;
     }
@@ -154,7 +176,8 @@ ShadowEvent Renderer::Context::event(const Hit& hit, const Vec3& dir, bool passI
         for (int i = 0; i < chain.count; ++i) {
             int32_t m = chain.layers[size_t(i)].material;
             if (m != kVoid &&
-                !std::holds_alternative<material::AntimatterParams>(*impl.material(m).params))
+                !std::holds_alternative<material::AntimatterParams>(*impl.material(m).params) &&
+                !std::holds_alternative<material::MistParams>(*impl.material(m).params))
                 clear = false;
         }
         if (!clear) return ShadowEvent{};
@@ -268,17 +291,19 @@ Color Renderer::Context::escaped(const Ray& ray, const RayState& state) {
 HemisphereTracer::Sample Renderer::Context::trace(const Vec3& origin, const Vec3& dir,
                                                   int ambientLevel, double weight) {
     RayState st;
-    st.depth = sampleDepth_ + 1;
+    st.depth = sampleParent_.depth + 1;
     st.weight = weight;
     st.ambientLevel = ambientLevel;
     st.indirect = true;
     st.primary = false;
-    st.clip = sampleClip_;
+    st.clip = sampleParent_.clip;
+    st.medium = sampleParent_.medium;
+    st.scatter = sampleParent_.scatter;
     Sample s;
     double d = kNoHit;
-    int saved = sampleDepth_;
+    RayState saved = sampleParent_;
     s.radiance = radiance(Ray{origin, dir}, st, nullptr, d, &s.normal);
-    sampleDepth_ = saved;
+    sampleParent_ = saved;
     s.distance = d;
     return s;
 }

@@ -27,6 +27,7 @@ struct Color {
 
     constexpr bool isBlack() const { return r <= 0 && g <= 0 && b <= 0; }
     constexpr double max() const { return std::max({r, g, b}); }
+    constexpr double min() const { return std::min({r, g, b}); }
     constexpr double average() const { return (r + g + b) / 3; }
     // RADIANCE's bright(): luminance-like weighting of its standard RGB primaries
     // (color.h: CIE_rf 0.265, CIE_gf 0.670, CIE_bf 0.065). The validation references

@@ -54,7 +54,7 @@ expect_error() {  # pattern args...
 expect_error "unknown option '-apx'" -apx x.pm 1k "$SCENE"
 expect_error "missing value" -apg
 expect_error "no photon maps specified" -n 2 "$SCENE"
-expect_error "not supported yet: volume photon maps" -apv v.pm 1k "$SCENE"
+expect_error "no scattering medium in the scene" -apv v.pm 1k "$SCENE"
 expect_error "mutually exclusive" -ai a -ae b -apg n.pm 1k "$SCENE"
 expect_error "not antimatter" -apg n.pm 1k -aps white "$SCENE"
 [ -e n.pm ] && bad "n.pm written despite errors"

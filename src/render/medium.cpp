@@ -1,0 +1,133 @@
+// Participating media along backward rays (RADIANCE raytrace.c rayparticipate,
+// source.c srcscatter, m_mist.c): extinction over each ray segment and the light
+// scattered into it at -ms spaced, jittered points: from the sources a mist names plus
+// the ambient value (-av), or, with a volume photon map, from the volume photons alone.
+#include <algorithm>
+#include <cmath>
+
+#include "render/renderer_impl.h"
+#include "util/henyey_greenstein.h"
+
+namespace rp::render {
+
+namespace {
+
+constexpr int kMaxScatterSamples = 16;  // RADIANCE MAXSSAMP: per ray segment and source
+
+// exp(-x) with RADIANCE's cut-offs (no loss below FTINY, nothing left beyond 92).
+double attenuation(double x) { return x <= kFtiny ? 1 : x > 92 ? 0 : std::exp(-x); }
+
+}  // namespace
+
+Color Renderer::Context::participate(const Ray& ray, double t, const RayState& state,
+                                     Color& transmit) {
+    const material::Medium& m = state.medium;
+    for (int k = 0; k < 3; ++k) transmit[k] = attenuation(t * m.extinction[k]);
+    if (!m.scatters()) return {};
+    if (impl.photons.hasVolume() && photonLookups) return volumeScatter(ray, t, state);
+    Color in;
+    // Indirect light scattered in: the ambient value over the segment (rayparticipate).
+    in += m.albedo * impl.options.ambient.value * (Color{1, 1, 1} - transmit);
+    in += sourceScatter(ray, t, state);
+    return in;
+}
+
+namespace {
+// Samples along a segment of length t (RADIANCE srcscatter: -ms apart, at most
+// MAXSSAMP, at least one).
+int scatterSamples(double t, double spacing) {
+    int n = spacing <= kFtiny ? 1 : int(t / spacing + 0.5);
+    return std::clamp(n, 1, kMaxScatterSamples);
+}
+}  // namespace
+
+Color Renderer::Context::volumeScatter(const Ray& ray, double t, const RayState& state) {
+    // RADIANCE compat (srcscatter with a volume map): the volume photons, stored at every
+    // collision including the first, stand for the direct and the indirect in-scattering
+    // alike, so neither the named sources nor the ambient value are added, and every
+    // scattering medium is lit whether or not a mist names sources. The manual's text
+    // (4.5: volume photons "complement the direct inscattering") predates that code.
+    // The estimate is flux per volume over extinction (pmap::PhotonLookup::volumeDensity),
+    // so it is multiplied by the albedo only, where RADIANCE also multiplies by the
+    // extinction.
+    const material::Medium& m = state.medium;
+    if (!(t < 0.99e10) || m.eccentricity >= 1 - kFtiny) return {};
+    const int n = scatterSamples(t, impl.options.mist.samplingDistance);
+    Color total;
+    for (int j = 0; j < n; ++j) {
+        const double tj = t * (j + rng.uniform()) / n;
+        Color toPoint;
+        for (int k = 0; k < 3; ++k) toPoint[k] = attenuation(tj * m.extinction[k]);
+        if (toPoint.brightness() <= kFtiny) break;
+        const Vec3 p = ray.origin + ray.dir * tj;
+        total += impl.photons.volumeDensity(*photonLookups, p, -ray.dir, m.eccentricity) *
+                 toPoint;
+    }
+    return total * m.albedo * (t / n);
+}
+
+Color Renderer::Context::sourceScatter(const Ray& ray, double t, const RayState& state) {
+    const material::Medium& m = state.medium;
+    // A ray that left the scene has no length to sample; HG with g -> 1 is a delta.
+    if (!(t < 0.99e10) || m.eccentricity >= 1 - kFtiny || state.scatter.count == 0) return {};
+    const int n = scatterSamples(t, impl.options.mist.samplingDistance);
+    Color total;
+    DirectPoint at;
+    at.transmits = true;
+    at.weight = state.weight;
+    at.medium = state.medium;
+    shadowBlockedByTransparent_ = shadowInPhotonMap(state);
+    for (int i = 0; i < state.scatter.count; ++i) {
+        const size_t source = size_t(state.scatter.index[size_t(i)]);
+        for (int j = 0; j < n; ++j) {
+            const double tj = t * (j + rng.uniform()) / n;
+            Color toPoint;  // extinction from the ray's origin to the sample point
+            for (int k = 0; k < 3; ++k) toPoint[k] = attenuation(tj * m.extinction[k]);
+            if (toPoint.brightness() <= kFtiny) break;  // too far in
+            at.point = ray.origin + ray.dir * tj;
+            at.normal = at.geomNormal = -ray.dir;
+            shadowBase_ = shadowClip_ = state.clip;
+            Vec3 toLight;
+            Color l = impl.direct.sampleWhole(source, at, *this, rng, toLight);
+            if (l.brightness() <= kFtiny) continue;
+            // Light travelling along -toLight scattered into -ray.dir: cos theta is
+            // dot(toLight, ray.dir).
+            const double p = henyeyGreenstein4Pi(m.eccentricity, dot(ray.dir, toLight));
+            total += l * m.extinction * m.albedo * toPoint * (p * t / (4 * kPi * n));
+        }
+    }
+    return total;
+}
+
+void Renderer::Context::cross(RayState& state, const Passage& passage, RayState& segment) const {
+    const material::MediumChange& c = passage.crossing;
+    const std::vector<int32_t>& mine = impl.mistSources.at(passage.mist);
+    const material::Medium before = state.medium;
+    if (c.kind == material::MediumChange::Kind::EnterMist) {
+        state.medium = material::changeMedium(before, c, impl.globalMedium);
+        for (int32_t s : mine)
+            if (!state.scatter.contains(s) && state.scatter.count < ScatterSources::kMax)
+                state.scatter.index[size_t(state.scatter.count++)] = s;
+        return;
+    }
+    // Leaving. RADIANCE compat (m_mist.c "fix old"): a ray leaving a mist whose sources
+    // it does not all carry started inside it (a view from within the fog), so the
+    // segment just travelled was in the mist.
+    bool knew = true;
+    for (int32_t s : mine) knew = knew && state.scatter.contains(s);
+    if (!knew) {
+        material::MediumChange enter = c;
+        enter.kind = material::MediumChange::Kind::EnterMist;
+        cross(segment, Passage{enter, passage.mist}, segment);
+    }
+    state.medium = material::changeMedium(knew ? before : segment.medium, c, impl.globalMedium);
+    int kept = 0;
+    for (int i = 0; i < state.scatter.count; ++i) {
+        int32_t s = state.scatter.index[size_t(i)];
+        if (std::find(mine.begin(), mine.end(), s) == mine.end())
+            state.scatter.index[size_t(kept++)] = s;
+    }
+    state.scatter.count = kept;
+}
+
+}  // namespace rp::render
