@@ -53,6 +53,37 @@ TEST(Density, UniformPlaneMatchesAnalyticIrradiance) {
     EXPECT_EQ(lookup.shortLookups(), 0u);
 }
 
+// Volume photons uniform in the unit cube, all travelling along +x: the estimate is the
+// flux density over 4 pi, times the phase function toward the query direction (RADIANCE
+// volumePhotonDensity), with the surface estimate's 1/sqrt(k) spread.
+TEST(Density, VolumeDensityOfUniformPhotons) {
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<double> u(0, 1);
+    const size_t n = 400000;
+    const int k = 1000;
+    std::vector<Photon> v;
+    for (size_t i = 0; i < n; ++i)
+        v.push_back(makePhoton(Vec3(u(rng), u(rng), u(rng)), Vec3(1, 0, 0), {1e-3, 1e-3, 1e-3}));
+    PhotonMap map(PhotonMapType::Volume, std::move(v));
+    const double flux = map.photons()[0].fluxRgb()[0];
+    PhotonLookup lookup(map, LookupParams{k, 0, 0.5});
+    const auto hg = [](double g, double c) {
+        const double d = 1 + g * g - 2 * g * c;
+        return g == 0 ? 1.0 : (1 - g * g) / (d * std::sqrt(d));
+    };
+    const double iso = n * flux / (4 * kPi);
+    const Vec3 centre(0.5, 0.5, 0.5);
+    EXPECT_NEAR(lookup.volumeDensity(centre, Vec3(0, 1, 0), 0, hg)[0] / iso, 1, 5 / std::sqrt(k));
+    // Forward (out = +x) with g = 0.5: 6 x; backward: 0.5 / 2.25.
+    EXPECT_NEAR(lookup.volumeDensity(centre, Vec3(1, 0, 0), 0.5, hg)[0] / (6 * iso), 1,
+                5 / std::sqrt(k));
+    EXPECT_NEAR(lookup.volumeDensity(centre, Vec3(-1, 0, 0), 0.5, hg)[0] / (iso * 0.5 / 2.25), 1,
+                5 / std::sqrt(k));
+    // No normal filter: any query "direction" finds the same photons.
+    EXPECT_EQ(lookup.volumeDensity(centre, Vec3(0, 0, 1), 0, hg),
+              lookup.volumeDensity(centre, Vec3(0, 0, -1), 0, hg));
+}
+
 TEST(Density, NormalFilterAndTooFewPhotons) {
     PhotonMap map = unitSquareMap(1000, 1, {1, 1, 1});
     PhotonLookup lookup(map, LookupParams{20, 0, 0.5});

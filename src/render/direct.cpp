@@ -102,11 +102,11 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
     // within its disk, RADIANCE sourcehit), wherever that is.
     bool redirected = false;
     material::Medium medium = at.medium;
-    // Absorption over `t` in the current medium (scattering does not dim shadow rays).
+    // Loss over `t` in the current medium (DirectPoint::scatterLoss).
     auto absorb = [&](double t) {
         if (!medium.active()) return;
         for (int k = 0; k < 3; ++k) {
-            double e = t * medium.extinction[k] * (1 - medium.albedo[k]);
+            double e = t * medium.extinction[k] * (at.scatterLoss ? 1 : 1 - medium.albedo[k]);
             through[k] *= e <= 1e-6 ? 1 : e > 92 ? 0 : std::exp(-e);
         }
     };

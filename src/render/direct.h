@@ -76,8 +76,11 @@ struct DirectPoint {
     // and sources are subdivided less for low-weight rays (-ds/weight), as in RADIANCE.
     double weight = 1;
     // The medium at the point: shadow rays are attenuated by its absorption (RADIANCE
-    // rayparticipate: extinction times 1 - albedo, scattering is not a loss to them).
+    // rayparticipate: extinction times 1 - albedo, scattering is not a loss to them),
+    // or with `scatterLoss` by the whole extinction: where photons carry the scattered
+    // light to surfaces (a global map), counting it here as well would count it twice.
     material::Medium medium;
+    bool scatterLoss = false;
 };
 
 // RADIANCE's coefficient function for one source sample: the material's BRDF*cos for

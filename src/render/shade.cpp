@@ -389,6 +389,7 @@ Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams
     DirectPoint at;
     at.weight = state.weight;
     at.medium = state.medium;
+    at.scatterLoss = impl.photons.hasGlobal();
     shadowBase_ = shadowClip_ = state.clip;  // shadow rays start with the ray's set
     at.point = hit.point;
     at.normal = sp.normal;
@@ -445,6 +446,7 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int am
     at.hit = &hit;
     at.weight = weight;
     at.medium = medium;
+    at.scatterLoss = impl.photons.hasGlobal();
     RayState here;
     here.ambientLevel = ambientLevel;
     shadowBlockedByTransparent_ = shadowInPhotonMap(here);
