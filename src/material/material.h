@@ -326,6 +326,28 @@ struct MediumChange {
     const MistParams* mist = nullptr;  // EnterMist, LeaveMist
 };
 
+// The mist boundaries a ray or photon has crossed inward and not yet out again, by mist
+// material: leaving one that is not here means it started inside that mist (a viewpoint
+// or light source in the fog; m_mist.c's "fix old", which RADIANCE applies to rays whose
+// mist names sources and not at all to photons).
+struct MistSet {
+    static constexpr int kMax = 16;  // nesting deeper than this is not followed
+    int count = 0;
+    std::array<int32_t, kMax> mist{};
+    void enter(int32_t m) {
+        if (count < kMax) mist[size_t(count++)] = m;
+    }
+    // Removes one entry of `m`; false if there was none.
+    bool leave(int32_t m) {
+        for (int i = count; i-- > 0;)
+            if (mist[size_t(i)] == m) {
+                mist[size_t(i)] = mist[size_t(--count)];
+                return true;
+            }
+        return false;
+    }
+};
+
 // The medium after `change`, from `current`, with `global` the scene's global medium.
 // RADIANCE compat (m_mist.c): leaving a mist subtracts its extinction but not below the
 // global one, and restores the global albedo and eccentricity where the mist set them.

@@ -242,6 +242,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     Ray ray = e.ray;
     Color flux = e.weight;
     material::Medium medium = settings_.medium;  // RADIANCE: a photon starts in the global one
+    material::MistSet mists;                     // and inside no mist it knows of
     const bool fromPort = e.port >= 0;
     long scatters = 0;
     long passes = 0;
@@ -341,8 +342,34 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         if (const auto* mist = std::get_if<material::MistParams>(&*mi.params)) {
             // pmapmat.c mistPhotonScatter: passed on (not a bounce) into the medium it
             // enters or returns to.
-            medium = material::changeMedium(medium, material::mistCrossing(*mist, hit->front, pattern),
-                                            settings_.medium);
+            const material::MediumChange crossing = material::mistCrossing(*mist, hit->front, pattern);
+            if (hit->front) {
+                mists.enter(matIndex);
+            } else if (!mists.leave(matIndex)) {
+                // Leaving a mist it never entered, the photon was emitted inside it (a lamp
+                // in the fog), which RADIANCE's photons ignore. The mist's own extinction,
+                // independent of the medium's already travelled, may stop it on the way.
+                material::MediumChange enter = crossing;
+                enter.kind = material::MediumChange::Kind::EnterMist;
+                const material::Medium inside = material::changeMedium(medium, enter, settings_.medium);
+                const material::Medium extra{inside.extinction - medium.extinction, inside.albedo,
+                                             inside.eccentricity};
+                medium = inside;
+                if (extra.active()) {
+                    travelled -= hit->t;
+                    const MediumStep step = travelMedium(ray, &*hit, extra, flux, travelled, rng,
+                                                         storeRng, prob, out);
+                    if (step == MediumStep::Lost) return;
+                    if (step == MediumStep::Scattered) {
+                        mists.enter(matIndex);
+                        ++scatters;
+                        lastSpecular = false;
+                        continue;
+                    }
+                    travelled += hit->t;
+                }
+            }
+            medium = material::changeMedium(medium, crossing, settings_.medium);
             ray = spawnRay(*hit, ray.dir);
             ++passes;
             continue;

@@ -100,27 +100,32 @@ Color Renderer::Context::sourceScatter(const Ray& ray, double t, const RayState&
 }
 
 void Renderer::Context::cross(RayState& state, const Passage& passage, RayState& segment) const {
+    using K = material::MediumChange::Kind;
     const material::MediumChange& c = passage.crossing;
     const std::vector<int32_t>& mine = impl.mistSources.at(passage.mist);
-    const material::Medium before = state.medium;
-    if (c.kind == material::MediumChange::Kind::EnterMist) {
-        state.medium = material::changeMedium(before, c, impl.globalMedium);
+    auto addSources = [&mine](ScatterSources& to) {
         for (int32_t s : mine)
-            if (!state.scatter.contains(s) && state.scatter.count < ScatterSources::kMax)
-                state.scatter.index[size_t(state.scatter.count++)] = s;
+            if (!to.contains(s) && to.count < ScatterSources::kMax) to.index[size_t(to.count++)] = s;
+    };
+    if (c.kind == K::EnterMist) {
+        state.mists.enter(passage.mist);
+        state.medium = material::changeMedium(state.medium, c, impl.globalMedium);
+        addSources(state.scatter);
         return;
     }
-    // Leaving. RADIANCE compat (m_mist.c "fix old"): a ray leaving a mist whose sources
-    // it does not all carry started inside it (a view from within the fog), so the
-    // segment just travelled was in the mist.
-    bool knew = true;
-    for (int32_t s : mine) knew = knew && state.scatter.contains(s);
-    if (!knew) {
+    if (!state.mists.leave(passage.mist)) {
+        // Leaving a mist it never entered, the ray started inside it (m_mist.c "fix old"):
+        // the segment just travelled was in that medium, lit by its sources. RADIANCE
+        // compat, except that it is the mist that counts, not its sources: RADIANCE does
+        // this only for a mist that names sources, leaving a view inside a plain fog box
+        // without extinction up to the box's wall.
         material::MediumChange enter = c;
-        enter.kind = material::MediumChange::Kind::EnterMist;
-        cross(segment, Passage{enter, passage.mist}, segment);
+        enter.kind = K::EnterMist;
+        segment.medium = material::changeMedium(segment.medium, enter, impl.globalMedium);
+        addSources(segment.scatter);
+        state.medium = segment.medium;
     }
-    state.medium = material::changeMedium(knew ? before : segment.medium, c, impl.globalMedium);
+    state.medium = material::changeMedium(state.medium, c, impl.globalMedium);
     int kept = 0;
     for (int i = 0; i < state.scatter.count; ++i) {
         int32_t s = state.scatter.index[size_t(i)];

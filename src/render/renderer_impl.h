@@ -51,6 +51,7 @@ struct RayState {
     ClipSet clip;              // what antimatter hides from the ray (RADIANCE clipset)
     material::Medium medium;   // what it travels in (RADIANCE cext, albedo, gecc)
     ScatterSources scatter;    // sources scattering into it (m_mist.c)
+    material::MistSet mists;   // mists it is inside
 };
 
 // One material record, checked once. `error` holds the message for a record that cannot

@@ -299,6 +299,7 @@ HemisphereTracer::Sample Renderer::Context::trace(const Vec3& origin, const Vec3
     st.clip = sampleParent_.clip;
     st.medium = sampleParent_.medium;
     st.scatter = sampleParent_.scatter;
+    st.mists = sampleParent_.mists;
     Sample s;
     double d = kNoHit;
     RayState saved = sampleParent_;
