@@ -265,7 +265,8 @@ PhotonScatter scatterPhoton(const MaterialParams& m, const SurfacePoint& sp, Rng
         m);
 }
 
-Medium changeMedium(const Medium& cur, const MediumChange& c, const Medium& global) {
+Medium changeMedium(const Medium& cur, const MediumChange& c, const Medium& global,
+                    const MistParams* mist) {
     using K = MediumChange::Kind;
     switch (c.kind) {
     case K::Unchanged: return cur;
@@ -278,16 +279,18 @@ Medium changeMedium(const Medium& cur, const MediumChange& c, const Medium& glob
     case K::EnterMist: {
         Medium m = cur;
         m.extinction += c.extinction;
-        if (c.mist->albedo) m.albedo = *c.mist->albedo;
-        if (c.mist->eccentricity) m.eccentricity = *c.mist->eccentricity;
+        RP_CHECK(mist);
+        if (mist->albedo) m.albedo = *mist->albedo;
+        if (mist->eccentricity) m.eccentricity = *mist->eccentricity;
         return m;
     }
     case K::LeaveMist: {
         Medium m = cur;
         for (int k = 0; k < 3; ++k)
             m.extinction[k] = std::max(cur.extinction[k] - c.extinction[k], global.extinction[k]);
-        if (c.mist->albedo) m.albedo = global.albedo;
-        if (c.mist->eccentricity) m.eccentricity = global.eccentricity;
+        RP_CHECK(mist);
+        if (mist->albedo) m.albedo = global.albedo;
+        if (mist->eccentricity) m.eccentricity = global.eccentricity;
         return m;
     }
     }
@@ -298,7 +301,6 @@ MediumChange mistCrossing(const MistParams& m, bool entering, const Color& patte
     MediumChange c;
     c.kind = entering ? MediumChange::Kind::EnterMist : MediumChange::Kind::LeaveMist;
     c.extinction = m.extinction * pattern;
-    c.mist = &m;
     return c;
 }
 

@@ -323,7 +323,6 @@ struct MediumChange {
     enum class Kind : uint8_t { Unchanged, Global, Given, EnterMist, LeaveMist } kind =
         Kind::Unchanged;
     Color extinction;  // per unit length: Given's medium, or the mist's (pattern applied)
-    const MistParams* mist = nullptr;  // EnterMist, LeaveMist
 };
 
 // The mist boundaries a ray or photon has crossed inward and not yet out again, by mist
@@ -348,10 +347,13 @@ struct MistSet {
     }
 };
 
-// The medium after `change`, from `current`, with `global` the scene's global medium.
-// RADIANCE compat (m_mist.c): leaving a mist subtracts its extinction but not below the
-// global one, and restores the global albedo and eccentricity where the mist set them.
-Medium changeMedium(const Medium& current, const MediumChange& change, const Medium& global);
+// The medium after `change`, from `current`, with `global` the scene's global medium and
+// `mist` the mist crossed (EnterMist, LeaveMist; kept out of MediumChange, which every
+// specular ray carries). RADIANCE compat (m_mist.c): leaving a mist subtracts its
+// extinction but not below the global one, and restores the global albedo and
+// eccentricity where the mist set them.
+Medium changeMedium(const Medium& current, const MediumChange& change, const Medium& global,
+                    const MistParams* mist = nullptr);
 
 // The change of crossing mist `m` at a hit seen from its front (`entering`) or back,
 // with the pattern colour `pattern` at the hit (it scales the extinction).

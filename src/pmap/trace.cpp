@@ -351,7 +351,8 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
                 // independent of the medium's already travelled, may stop it on the way.
                 material::MediumChange enter = crossing;
                 enter.kind = material::MediumChange::Kind::EnterMist;
-                const material::Medium inside = material::changeMedium(medium, enter, settings_.medium);
+                const material::Medium inside =
+                    material::changeMedium(medium, enter, settings_.medium, mist);
                 const material::Medium extra{inside.extinction - medium.extinction, inside.albedo,
                                              inside.eccentricity};
                 medium = inside;
@@ -369,7 +370,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
                     travelled += hit->t;
                 }
             }
-            medium = material::changeMedium(medium, crossing, settings_.medium);
+            medium = material::changeMedium(medium, crossing, settings_.medium, mist);
             ray = spawnRay(*hit, ray.dir);
             ++passes;
             continue;

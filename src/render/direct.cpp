@@ -101,7 +101,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
     // necessarily through the sample: it must meet the source itself (a distant one
     // within its disk, RADIANCE sourcehit), wherever that is.
     bool redirected = false;
-    material::Medium medium = at.medium;
+    material::Medium medium = at.medium ? *at.medium : material::Medium{};
     // Loss over `t` in the current medium (DirectPoint::scatterLoss).
     auto absorb = [&](double t) {
         if (!medium.active()) return;
@@ -179,7 +179,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
             if (ev.kind != ShadowEvent::Kind::Transmit) return {};
             through *= ev.colour;
             if (through.isBlack()) return {};
-            medium = material::changeMedium(medium, ev.medium, globalMedium);
+            medium = material::changeMedium(medium, ev.medium, globalMedium, ev.mist);
             if (lengthSquared(ev.bent) > 0) {
                 // Refracted: only a distant source can still be met, within its disk.
                 if (!escape) return {};

@@ -37,6 +37,7 @@ struct ShadowEvent {
     // and the medium the ray enters (its extinction applies up to the next surface).
     Vec3 bent;
     material::MediumChange medium;
+    const material::MistParams* mist = nullptr;  // the mist a medium change crosses
 };
 
 // Per-thread access to materials for shadow rays. Implemented by the renderer core.
@@ -79,7 +80,7 @@ struct DirectPoint {
     // rayparticipate: extinction times 1 - albedo, scattering is not a loss to them),
     // or with `scatterLoss` by the whole extinction: where photons carry the scattered
     // light to surfaces (a global map), counting it here as well would count it twice.
-    material::Medium medium;
+    const material::Medium* medium = nullptr;  // null: none
     bool scatterLoss = false;
 };
 

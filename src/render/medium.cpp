@@ -21,7 +21,7 @@ double attenuation(double x) { return x <= kFtiny ? 1 : x > 92 ? 0 : std::exp(-x
 
 Color Renderer::Context::participate(const Ray& ray, double t, const RayState& state,
                                      Color& transmit) {
-    const material::Medium& m = state.medium;
+    const material::Medium& m = mediumOf(state);
     for (int k = 0; k < 3; ++k) transmit[k] = attenuation(t * m.extinction[k]);
     if (!m.scatters()) return {};
     if (impl.photons.hasVolume() && photonLookups) return volumeScatter(ray, t, state);
@@ -50,7 +50,7 @@ Color Renderer::Context::volumeScatter(const Ray& ray, double t, const RayState&
     // The estimate is flux per volume over extinction (pmap::PhotonLookup::volumeDensity),
     // so it is multiplied by the albedo only, where RADIANCE also multiplies by the
     // extinction.
-    const material::Medium& m = state.medium;
+    const material::Medium& m = mediumOf(state);
     if (!(t < 0.99e10) || m.eccentricity >= 1 - kFtiny) return {};
     const int n = scatterSamples(t, impl.options.mist.samplingDistance);
     Color total;
@@ -67,18 +67,20 @@ Color Renderer::Context::volumeScatter(const Ray& ray, double t, const RayState&
 }
 
 Color Renderer::Context::sourceScatter(const Ray& ray, double t, const RayState& state) {
-    const material::Medium& m = state.medium;
+    if (!state.media) return {};  // in the global medium only: no mist names sources
+    const material::Medium& m = state.media->medium;
+    const ScatterSources& sources = state.media->scatter;
     // A ray that left the scene has no length to sample; HG with g -> 1 is a delta.
-    if (!(t < 0.99e10) || m.eccentricity >= 1 - kFtiny || state.scatter.count == 0) return {};
+    if (!(t < 0.99e10) || m.eccentricity >= 1 - kFtiny || sources.count == 0) return {};
     const int n = scatterSamples(t, impl.options.mist.samplingDistance);
     Color total;
     DirectPoint at;
     at.transmits = true;
     at.weight = state.weight;
-    at.medium = state.medium;
+    at.medium = &m;
     shadowBlockedByTransparent_ = shadowInPhotonMap(state);
-    for (int i = 0; i < state.scatter.count; ++i) {
-        const size_t source = size_t(state.scatter.index[size_t(i)]);
+    for (int i = 0; i < sources.count; ++i) {
+        const size_t source = size_t(sources.index[size_t(i)]);
         for (int j = 0; j < n; ++j) {
             const double tj = t * (j + rng.uniform()) / n;
             Color toPoint;  // extinction from the ray's origin to the sample point
@@ -99,17 +101,18 @@ Color Renderer::Context::sourceScatter(const Ray& ray, double t, const RayState&
     return total;
 }
 
-void Renderer::Context::cross(RayState& state, const Passage& passage, RayState& segment) const {
+void Renderer::Context::cross(MediaState& state, const Passage& passage, MediaState& segment) const {
     using K = material::MediumChange::Kind;
     const material::MediumChange& c = passage.crossing;
     const std::vector<int32_t>& mine = impl.mistSources.at(passage.mist);
+    const auto* mist = &std::get<material::MistParams>(*impl.material(passage.mist).params);
     auto addSources = [&mine](ScatterSources& to) {
         for (int32_t s : mine)
             if (!to.contains(s) && to.count < ScatterSources::kMax) to.index[size_t(to.count++)] = s;
     };
     if (c.kind == K::EnterMist) {
         state.mists.enter(passage.mist);
-        state.medium = material::changeMedium(state.medium, c, impl.globalMedium);
+        state.medium = material::changeMedium(state.medium, c, impl.globalMedium, mist);
         addSources(state.scatter);
         return;
     }
@@ -121,11 +124,11 @@ void Renderer::Context::cross(RayState& state, const Passage& passage, RayState&
         // without extinction up to the box's wall.
         material::MediumChange enter = c;
         enter.kind = K::EnterMist;
-        segment.medium = material::changeMedium(segment.medium, enter, impl.globalMedium);
+        segment.medium = material::changeMedium(segment.medium, enter, impl.globalMedium, mist);
         addSources(segment.scatter);
         state.medium = segment.medium;
     }
-    state.medium = material::changeMedium(state.medium, c, impl.globalMedium);
+    state.medium = material::changeMedium(state.medium, c, impl.globalMedium, mist);
     int kept = 0;
     for (int i = 0; i < state.scatter.count; ++i) {
         int32_t s = state.scatter.index[size_t(i)];

@@ -125,7 +125,6 @@ RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
     result.direction = dir;
     RayState state;
     state.irradianceHit = options_.irradiance;
-    state.medium = impl_->globalMedium;
     double distance = 1e10;
     result.value = ctx.radiance(Ray{origin, dir, maxDistance}, state, &result, distance);
     ctx.tree = nullptr;
@@ -156,7 +155,7 @@ RayResult Renderer::irradiance(Context& ctx, const Vec3& point, const Vec3& norm
     result.distance = result.effectiveLength = 0;
     result.point = at;
     result.normal = result.unperturbedNormal = n;
-    result.value = ctx.irradianceAt(hit, n, 0, 1, {}, impl_->globalMedium);
+    result.value = ctx.irradianceAt(hit, n, 0, 1);
     return result;
 }
 

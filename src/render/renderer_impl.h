@@ -38,6 +38,14 @@ struct ScatterSources {
     }
 };
 
+// What a ray in a participating medium carries (m_mist.c): its medium, the sources whose
+// light scatters into it and the mists it is inside.
+struct MediaState {
+    material::Medium medium;
+    ScatterSources scatter;
+    material::MistSet mists;
+};
+
 // RADIANCE's ray type bits that matter for over-counting (badcomponent): a ray that
 // descends from an ambient sample or a sampled (rough) specular ray must not see the
 // emission of surfaces the direct calculation already counts.
@@ -49,9 +57,10 @@ struct RayState {
     bool primary = true;       // the input ray itself
     bool irradianceHit = false;  // -i: shade the first surface as white Lambertian
     ClipSet clip;              // what antimatter hides from the ray (RADIANCE clipset)
-    material::Medium medium;   // what it travels in (RADIANCE cext, albedo, gecc)
-    ScatterSources scatter;    // sources scattering into it (m_mist.c)
-    material::MistSet mists;   // mists it is inside
+    // What it travels in; null: the global medium (-me -ma -mg), in no mist. Points to
+    // the storage of whoever changed it, which outlives the ray (rays are traced depth
+    // first), so that rays outside media copy no more than a pointer.
+    const MediaState* media = nullptr;
 };
 
 // One material record, checked once. `error` holds the message for a record that cannot
@@ -109,7 +118,7 @@ public:
     // Irradiance at a point on a white Lambertian surface facing `normal`, for a ray
     // whose clip set is `clip`.
     Color irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel, double weight,
-                       const ClipSet& clip = {}, const material::Medium& medium = {});
+                       const ClipSet& clip = {}, const MediaState* media = nullptr);
 
     const Renderer& renderer;
     const Impl& impl;
@@ -146,9 +155,15 @@ private:
     Color participate(const Ray& ray, double t, const RayState& state, Color& transmit);
     Color sourceScatter(const Ray& ray, double t, const RayState& state);
     Color volumeScatter(const Ray& ray, double t, const RayState& state);
-    // The ray's state after `passage` (m_mist.c); `segment` receives the medium the
-    // segment before it was in (a ray leaving a mist it did not know it was in).
-    void cross(RayState& state, const Passage& passage, RayState& segment) const;
+    // The media after `passage` (m_mist.c); `segment` receives those of the segment
+    // before it (a ray leaving a mist it did not know it was in was in it).
+    void cross(MediaState& media, const Passage& passage, MediaState& segment) const;
+    const material::Medium& mediumOf(const RayState& s) const {
+        return s.media ? s.media->medium : impl.globalMedium;
+    }
+    MediaState mediaOf(const RayState& s) const {
+        return s.media ? *s.media : MediaState{impl.globalMedium, {}, {}};
+    }
     Color escaped(const Ray& ray, const RayState& state);
     // Direct light at `hit`; `behindOnly`: only sources behind the surface (the far point
     // of a thick BSDF, whose reflected light is taken at the hit itself).
@@ -173,7 +188,7 @@ private:
                            material::SurfacePoint& sp);
     // The ray whose ambient samples are being traced: they start with its depth, clip
     // set and medium.
-    RayState sampleParent_;
+    const RayState* sampleParent_ = nullptr;
     // Clip set of the shadow rays of the point being lit (set by directAt and
     // irradianceAt), and of the shadow ray being traced (reset by beginShadowRay).
     ClipSet shadowBase_, shadowClip_;

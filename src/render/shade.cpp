@@ -115,6 +115,7 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
     // The state of the ray as it goes on: crossing antimatter changes its clip set
     // (RADIANCE's transferred ray takes the antimatter hit's newcset).
     RayState cur = state;
+    std::optional<MediaState> crossed;  // cur.media once it crossed a mist boundary
     // Transparent surfaces (antimatter, void mixtures, invisible illums) pass the ray on;
     // bounded so that a pathological stack of them cannot loop.
     for (int pass = 0; pass < 64; ++pass) {
@@ -124,7 +125,7 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
             // A ray with a length limit (rtrace -ld) that ends short of every surface is
             // clipped: RADIANCE gives it no value, not the sources or sky behind.
             Color c = r.tmax < HUGE_VAL ? Color{} : escaped(r, cur);
-            if (cur.medium.active()) total += coef * participate(r, HUGE_VAL, cur, transmit);
+            if (mediumOf(cur).active()) total += coef * participate(r, HUGE_VAL, cur, transmit);
             total += coef * transmit * c;
             break;
         }
@@ -139,9 +140,19 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
         } else {
             c = shadeHit(r, *hit, cur, record, passWeight, passage);
         }
-        RayState segment = cur;
-        if (passage.mist >= 0) cross(cur, passage, segment);
-        if (segment.medium.active()) total += coef * participate(r, hit->t, segment, transmit);
+        if (passage.mist >= 0) {
+            MediaState segment = mediaOf(cur);  // cross may learn that it was a mist
+            MediaState after = segment;
+            cross(after, passage, segment);
+            RayState travelledIn = cur;
+            travelledIn.media = &segment;
+            if (segment.medium.active())
+                total += coef * participate(r, hit->t, travelledIn, transmit);
+            crossed = after;
+            cur.media = &*crossed;
+        } else if (mediumOf(cur).active()) {
+            total += coef * participate(r, hit->t, cur, transmit);
+        }
         total += coef * transmit * c;
         if (passWeight.max() <= 0) {
             distance = travelled + hit->t;
@@ -243,7 +254,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         }
         fillFirst(first);
         // -i: the first surface is white Lambertian; the value is its irradiance.
-        return irradianceAt(hit, n, state.ambientLevel, state.weight, state.clip, state.medium);
+        return irradianceAt(hit, n, state.ambientLevel, state.weight, state.clip, state.media);
     }
 
     if (e.hasAlternate && std::holds_alternative<material::MirrorParams>(params)) {
@@ -298,6 +309,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     const bool specularInPmap =
         pmaps.active() && state.ambientLevel > 0 &&
         (impl.ambientOptions.bounces < 0 || state.depth > 1 || pmaps.hasCaustic());
+    std::optional<MediaState> childMedia;  // of a child entering or leaving a dielectric
     for (int i = 0; i < (specularInPmap ? 0 : b.numRays); ++i) {
         const material::SpecularRay& sr = b.rays[size_t(i)];
         Color rc = sr.weight;
@@ -307,7 +319,11 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         child.primary = false;
         child.irradianceHit = false;
         child.indirect = state.indirect || sr.sampled;
-        child.medium = material::changeMedium(state.medium, sr.medium, impl.globalMedium);
+        if (sr.medium.kind != material::MediumChange::Kind::Unchanged) {
+            childMedia = mediaOf(state);
+            childMedia->medium = material::changeMedium(childMedia->medium, sr.medium, impl.globalMedium);
+            child.media = &*childMedia;
+        }
         if (child.weight <= 0) continue;
         if (lim.maxDepth > 0) {
             if (child.depth > lim.maxDepth || child.weight < lim.minWeight) continue;
@@ -388,7 +404,7 @@ Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams
                                   const RayState& state, bool behindOnly) {
     DirectPoint at;
     at.weight = state.weight;
-    at.medium = state.medium;
+    at.medium = &mediumOf(state);
     at.scatterLoss = impl.photons.hasGlobal();
     shadowBase_ = shadowClip_ = state.clip;  // shadow rays start with the ray's set
     at.point = hit.point;
@@ -427,8 +443,8 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
         if (pm.hasCaustic() && (state.ambientLevel == 0 || !pm.hasGlobal()))
             c += pm.causticDensity(*photonLookups, hit.point, normal);
     }
-    RayState saved = sampleParent_;
-    sampleParent_ = state;
+    const RayState* saved = sampleParent_;
+    sampleParent_ = &state;
     c += impl.ambient.indirect(ap, *this, rng);
     sampleParent_ = saved;
     return c;
@@ -436,7 +452,7 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
 
 Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel,
                                       double weight, const ClipSet& clip,
-                                      const material::Medium& medium) {
+                                      const MediaState* media) {
     // White Lambertian receiver: direct irradiance sum L cos omega, plus pi times the
     // ambient calculation's average radiance.
     DirectPoint at;
@@ -445,7 +461,7 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int am
     at.geomNormal = normal;
     at.hit = &hit;
     at.weight = weight;
-    at.medium = medium;
+    at.medium = media ? &media->medium : &impl.globalMedium;
     at.scatterLoss = impl.photons.hasGlobal();
     RayState here;
     here.ambientLevel = ambientLevel;
@@ -461,9 +477,9 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int am
     RayState st;
     st.ambientLevel = ambientLevel;
     st.weight = weight;
-    st.depth = sampleParent_.depth;
+    st.depth = sampleParent_ ? sampleParent_->depth : 0;
     st.clip = clip;
-    st.medium = medium;
+    st.media = media;
     return e + ambientAt(hit, normal, kVoid, st) * kPi;
 }
 

@@ -57,6 +57,7 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
         ev.kind = ShadowEvent::Kind::Transmit;  // m_mist.c: T_TRANSP, medium changes
         ev.colour = Color{1, 1, 1};
         ev.medium = material::mistCrossing(*m, hit.front, layer.pattern);
+        ev.mist = m;
         return ev;
     }
     if (const auto* m = std::get_if<material::BsdfParams>(&params)) {
@@ -290,21 +291,18 @@ Color Renderer::Context::escaped(const Ray& ray, const RayState& state) {
 
 HemisphereTracer::Sample Renderer::Context::trace(const Vec3& origin, const Vec3& dir,
                                                   int ambientLevel, double weight) {
-    RayState st;
-    st.depth = sampleParent_.depth + 1;
+    // The parent's clip set, medium and mists, with a sample's own depth and weight
+    // (ambientAt, which set sampleParent_, restores it after its own samples).
+    RayState st = *sampleParent_;
+    st.depth = sampleParent_->depth + 1;
     st.weight = weight;
     st.ambientLevel = ambientLevel;
     st.indirect = true;
     st.primary = false;
-    st.clip = sampleParent_.clip;
-    st.medium = sampleParent_.medium;
-    st.scatter = sampleParent_.scatter;
-    st.mists = sampleParent_.mists;
+    st.irradianceHit = false;
     Sample s;
     double d = kNoHit;
-    RayState saved = sampleParent_;
     s.radiance = radiance(Ray{origin, dir}, st, nullptr, d, &s.normal);
-    sampleParent_ = saved;
     s.distance = d;
     return s;
 }
