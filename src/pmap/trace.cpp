@@ -227,6 +227,40 @@ PhotonTracer::MediumStep PhotonTracer::travelMedium(
     return MediumStep::Scattered;
 }
 
+PhotonTracer::MediumStep PhotonTracer::crossMist(
+    const material::MistParams& mist, int32_t matIndex, const Hit& hit, const Color& pattern,
+    Ray& ray, material::Medium& medium, material::MistSet& mists, Color& flux,
+    double& travelled, Rng& rng, Rng& storeRng,
+    const std::array<double, kNumPhotonMapTypes>& prob, PhotonBins& out) const {
+    const material::MediumChange crossing = material::mistCrossing(mist, hit.front, pattern);
+    if (hit.front) {
+        mists.enter(matIndex);
+    } else if (!mists.leave(matIndex)) {
+        // Leaving a mist it never entered, the photon was emitted inside it (a lamp in the
+        // fog), which RADIANCE's photons ignore. The mist's own extinction, independent of
+        // the medium's already travelled, may stop it on the way here.
+        material::MediumChange enter = crossing;
+        enter.kind = material::MediumChange::Kind::EnterMist;
+        const material::Medium inside = material::changeMedium(medium, enter, settings_.medium, &mist);
+        const material::Medium extra{inside.extinction - medium.extinction, inside.albedo,
+                                     inside.eccentricity};
+        medium = inside;
+        if (extra.active()) {
+            travelled -= hit.t;
+            const MediumStep step =
+                travelMedium(ray, &hit, extra, flux, travelled, rng, storeRng, prob, out);
+            if (step != MediumStep::Reached) {
+                if (step == MediumStep::Scattered) mists.enter(matIndex);
+                return step;
+            }
+            travelled += hit.t;
+        }
+    }
+    medium = material::changeMedium(medium, crossing, settings_.medium, &mist);
+    ray = spawnRay(hit, ray.dir);
+    return MediumStep::Reached;
+}
+
 void PhotonTracer::trace(uint64_t seed, uint64_t index,
                          const std::array<double, kNumPhotonMapTypes>& prob,
                          PhotonBins& out) const {
@@ -342,37 +376,15 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         if (const auto* mist = std::get_if<material::MistParams>(&*mi.params)) {
             // pmapmat.c mistPhotonScatter: passed on (not a bounce) into the medium it
             // enters or returns to.
-            const material::MediumChange crossing = material::mistCrossing(*mist, hit->front, pattern);
-            if (hit->front) {
-                mists.enter(matIndex);
-            } else if (!mists.leave(matIndex)) {
-                // Leaving a mist it never entered, the photon was emitted inside it (a lamp
-                // in the fog), which RADIANCE's photons ignore. The mist's own extinction,
-                // independent of the medium's already travelled, may stop it on the way.
-                material::MediumChange enter = crossing;
-                enter.kind = material::MediumChange::Kind::EnterMist;
-                const material::Medium inside =
-                    material::changeMedium(medium, enter, settings_.medium, mist);
-                const material::Medium extra{inside.extinction - medium.extinction, inside.albedo,
-                                             inside.eccentricity};
-                medium = inside;
-                if (extra.active()) {
-                    travelled -= hit->t;
-                    const MediumStep step = travelMedium(ray, &*hit, extra, flux, travelled, rng,
-                                                         storeRng, prob, out);
-                    if (step == MediumStep::Lost) return;
-                    if (step == MediumStep::Scattered) {
-                        mists.enter(matIndex);
-                        ++scatters;
-                        lastSpecular = false;
-                        continue;
-                    }
-                    travelled += hit->t;
-                }
+            const MediumStep step = crossMist(*mist, matIndex, *hit, pattern, ray, medium, mists,
+                                              flux, travelled, rng, storeRng, prob, out);
+            if (step == MediumStep::Lost) return;
+            if (step == MediumStep::Scattered) {
+                ++scatters;
+                lastSpecular = false;
+            } else {
+                ++passes;
             }
-            medium = material::changeMedium(medium, crossing, settings_.medium, mist);
-            ray = spawnRay(*hit, ray.dir);
-            ++passes;
             continue;
         }
         if (mi.isLight) return;  // "Light sources doan' reflect"; nothing stored

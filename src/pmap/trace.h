@@ -118,6 +118,14 @@ private:
                             double& travelled, Rng& rng, Rng& storeRng,
                             const std::array<double, kNumPhotonMapTypes>& prob,
                             PhotonBins& out) const;
+    // A photon at a mist boundary `hit` (material `matIndex`): the medium it goes on in,
+    // and, leaving a mist it never entered, the collision it may have had in it since it
+    // started there (travelMedium's steps; Reached: it goes on, `ray` spawned past).
+    MediumStep crossMist(const material::MistParams& mist, int32_t matIndex, const Hit& hit,
+                         const Color& pattern, Ray& ray, material::Medium& medium,
+                         material::MistSet& mists, Color& flux, double& travelled, Rng& rng,
+                         Rng& storeRng, const std::array<double, kNumPhotonMapTypes>& prob,
+                         PhotonBins& out) const;
 
     void setFunctionValues(int32_t material, const Hit& hit, const Vec3& dir,
                            std::optional<material::MaterialCalcEvaluator>& eval,
