@@ -93,6 +93,37 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
     }
     for (const light::LightSource& s : plan_.sources())
         sourceMaxDistance_.push_back(s.maxDistance);
+    findSourceMedia();
+}
+
+void PhotonTracer::findSourceMedia() {
+    const auto& sources = plan_.sources();
+    sourceMedium_.assign(sources.size(), settings_.medium);
+    sourceMists_.assign(sources.size(), material::MistSet{});
+    if (!material::sceneHasMist(scene_)) return;
+    const ShapeSet& shapes = geometry_.shapes();
+    Rng rng(0, RngDomain::Sampling, 0);  // mixtures along the probe; fixed, as the map is
+    for (size_t s = 0; s < sources.size(); ++s) {
+        const light::LightSource& src = sources[s];
+        const size_t i = size_t(src.shapeIndex);
+        Vec3 centre;
+        switch (src.shape) {
+        case light::EmitterShape::Sphere: centre = shapes.spheres[i].center; break;
+        case light::EmitterShape::Ring: centre = shapes.rings[i].centre; break;
+        case light::EmitterShape::Polygon: centre = shapes.polygons[i].vertexMean; break;
+        case light::EmitterShape::Cone:
+            centre = shapes.cones[i].p0 + shapes.cones[i].axis * (0.5 * shapes.cones[i].length);
+            break;
+        case light::EmitterShape::Distant: continue;  // from outside the scene
+        }
+        const auto around = material::enclosingMists(geometry_, chains_, centre, rng);
+        for (auto e = around.rbegin(); e != around.rend(); ++e) {
+            const auto& mist = std::get<material::MistParams>(*materials_.at(e->material).params);
+            material::MediumChange enter = material::mistCrossing(mist, true, e->pattern);
+            sourceMedium_[s] = material::changeMedium(sourceMedium_[s], enter, settings_.medium, &mist);
+            sourceMists_[s].enter(e->material);
+        }
+    }
 }
 
 const material::MaterialRecord& PhotonTracer::scatterer(int32_t m) const {
@@ -275,8 +306,11 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
 
     Ray ray = e.ray;
     Color flux = e.weight;
-    material::Medium medium = settings_.medium;  // RADIANCE: a photon starts in the global one
-    material::MistSet mists;                     // and inside no mist it knows of
+    // What encloses its source (RADIANCE's photons start in the global medium, whatever
+    // encloses them); photons from ports come from outside.
+    const bool local = e.source >= 0 && e.port < 0;
+    material::Medium medium = local ? sourceMedium_[size_t(e.source)] : settings_.medium;
+    material::MistSet mists = local ? sourceMists_[size_t(e.source)] : material::MistSet{};
     const bool fromPort = e.port >= 0;
     long scatters = 0;
     long passes = 0;

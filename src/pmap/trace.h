@@ -14,6 +14,7 @@
 #include "light/emitter.h"
 #include "material/material.h"
 #include "material/material_calc.h"
+#include "material/mist_probe.h"
 #include "material/surface_chain.h"
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon.h"
@@ -141,6 +142,11 @@ private:
     std::vector<SurfaceModifier> surfaces_;  // indexed by modifier (prim) index
     std::vector<uint8_t> roles_;             // MaterialRole bits, indexed by prim
     std::vector<double> sourceMaxDistance_;  // per emission source: glow radius or 0
+    // Per emission source: the medium and mists its photons start in (the mists that
+    // enclose its centre, material/mist_probe.h; the global medium for distant sources).
+    std::vector<material::Medium> sourceMedium_;
+    std::vector<material::MistSet> sourceMists_;
+    void findSourceMedia();
 };
 
 }  // namespace rp::pmap

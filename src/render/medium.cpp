@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "material/mist_probe.h"
 #include "render/renderer_impl.h"
 #include "util/henyey_greenstein.h"
 
@@ -136,6 +137,20 @@ void Renderer::Context::cross(MediaState& state, const Passage& passage, MediaSt
             state.scatter.index[size_t(kept++)] = s;
     }
     state.scatter.count = kept;
+}
+
+std::optional<MediaState> Renderer::Context::mediaAt(const Vec3& p) {
+    if (!impl.hasMists) return std::nullopt;
+    const std::vector<material::EnclosingMist> around =
+        material::enclosingMists(impl.geometry, impl.chains, p, rng);
+    if (around.empty()) return std::nullopt;
+    MediaState m{impl.globalMedium, {}, {}};
+    MediaState unused;
+    for (auto e = around.rbegin(); e != around.rend(); ++e) {
+        const auto& mist = std::get<material::MistParams>(*impl.material(e->material).params);
+        cross(m, Passage{material::mistCrossing(mist, true, e->pattern), e->material}, unused);
+    }
+    return m;
 }
 
 }  // namespace rp::render

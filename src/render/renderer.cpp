@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "material/mist_probe.h"
 #include "render/renderer_impl.h"
 #include "util/error.h"
 #include "util/warnings.h"
@@ -83,7 +84,8 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
       ambient(ambientOptions, g.sceneCube().size, s, o.limits.minWeight),
       antimatter(s, true),
       globalMedium(globalMediumOf(o.mist)),
-      mistSources(mistSourceLists(s, direct)) {
+      mistSources(mistSourceLists(s, direct)),
+      hasMists(material::sceneHasMist(s)) {
     // Every surface's chain must be evaluable (RADIANCE checks modifiers as it loads).
     for (const Primitive& p : s.prims)
         if (isSurface(p.type) && p.type != PrimType::Source) chains.checkChain(p.modifier);
@@ -125,6 +127,8 @@ RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
     result.direction = dir;
     RayState state;
     state.irradianceHit = options_.irradiance;
+    const std::optional<MediaState> start = ctx.mediaAt(origin);
+    if (start) state.media = &*start;
     double distance = 1e10;
     result.value = ctx.radiance(Ray{origin, dir, maxDistance}, state, &result, distance);
     ctx.tree = nullptr;
@@ -155,7 +159,8 @@ RayResult Renderer::irradiance(Context& ctx, const Vec3& point, const Vec3& norm
     result.distance = result.effectiveLength = 0;
     result.point = at;
     result.normal = result.unperturbedNormal = n;
-    result.value = ctx.irradianceAt(hit, n, 0, 1);
+    const std::optional<MediaState> around = ctx.mediaAt(at);
+    result.value = ctx.irradianceAt(hit, n, 0, 1, {}, around ? &*around : nullptr);
     return result;
 }
 

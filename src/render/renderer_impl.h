@@ -92,6 +92,7 @@ struct Renderer::Impl {
     material::Medium globalMedium;  // -me -ma -mg
     // Per mist material: its string arguments as direct source indices (m_mist.c).
     std::unordered_map<int32_t, std::vector<int32_t>> mistSources;
+    bool hasMists = false;  // primary rays then probe for the mists around their origin
 };
 
 class Renderer::Context : public ShadowOracle, public HemisphereTracer {
@@ -119,6 +120,10 @@ public:
     // whose clip set is `clip`.
     Color irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel, double weight,
                        const ClipSet& clip = {}, const MediaState* media = nullptr);
+
+    // The media of a ray starting at `p`: the mists enclosing it (material/mist_probe.h),
+    // entered outermost first; nullopt in a scene without mists or outside every mist.
+    std::optional<MediaState> mediaAt(const Vec3& p);
 
     const Renderer& renderer;
     const Impl& impl;
