@@ -265,6 +265,15 @@ PhotonScatter scatterPhoton(const MaterialParams& m, const SurfacePoint& sp, Rng
         m);
 }
 
+Color Medium::transmittance(double t, bool absorptionOnly) const {
+    Color out;
+    for (int k = 0; k < 3; ++k) {
+        const double e = t * extinction[k] * (absorptionOnly ? 1 - albedo[k] : 1);
+        out[k] = e <= kFtiny ? 1 : e > 92 ? 0 : std::exp(-e);
+    }
+    return out;
+}
+
 Medium changeMedium(const Medium& cur, const MediumChange& c, const Medium& global,
                     const MistParams* mist) {
     using K = MediumChange::Kind;

@@ -313,6 +313,10 @@ struct Medium {
     // RADIANCE rayparticipate: intens(cext) <= 1/FHUGE is no medium.
     bool active() const { return extinction.max() > 1e-10; }
     bool scatters() const { return active() && albedo.max() > 1e-6; }  // FTINY
+    // exp(-extinction t) per channel, with RADIANCE's cut-offs (no loss below FTINY,
+    // nothing left beyond 92); `absorptionOnly`: the absorbed part, extinction times
+    // 1 - albedo (RADIANCE's shadow rays).
+    Color transmittance(double t, bool absorptionOnly = false) const;
 };
 
 // How a spawned ray's medium follows from its parent's (one rule for backward rays,

@@ -50,4 +50,15 @@ std::vector<EnclosingMist> enclosingMists(const SceneGeometry& geometry,
     return out;
 }
 
+Medium mediumWithin(const std::vector<EnclosingMist>& around, const Medium& global,
+                    const MaterialTable& materials, MistSet& mists) {
+    Medium m = global;
+    for (auto e = around.rbegin(); e != around.rend(); ++e) {
+        const auto& mist = std::get<MistParams>(*materials.at(e->material).params);
+        m = changeMedium(m, mistCrossing(mist, true, e->pattern), global, &mist);
+        mists.enter(e->material);
+    }
+    return m;
+}
+
 }  // namespace rp::material

@@ -26,6 +26,11 @@ struct EnclosingMist {
 std::vector<EnclosingMist> enclosingMists(const SceneGeometry& geometry,
                                           const SurfaceChains& chains, const Vec3& p, Rng& rng);
 
+// The medium inside the mists `around` (enclosingMists' answer, entered outermost first)
+// from the global one, with those mists added to `mists`.
+Medium mediumWithin(const std::vector<EnclosingMist>& around, const Medium& global,
+                    const MaterialTable& materials, MistSet& mists);
+
 // Whether any surface's modifier chain can reach a mist (probing is needed at all).
 bool sceneHasMist(const Scene& scene);
 

@@ -43,7 +43,8 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
                            const light::EmissionPlan& plan, TraceSettings settings,
                            const material::SurfaceChains& chains,
                            const material::MaterialCalc* materialCalc)
-    : scene_(scene), geometry_(geometry), chains_(chains), materials_(chains.materials()),
+    : scene_(scene), geometry_(geometry), cube_(geometry.sceneCube()), chains_(chains),
+      materials_(chains.materials()),
       materialCalc_(materialCalc),
       plan_(plan), settings_(std::move(settings)) {
     const auto& prims = scene.prims;
@@ -116,13 +117,9 @@ void PhotonTracer::findSourceMedia() {
             break;
         case light::EmitterShape::Distant: continue;  // from outside the scene
         }
-        const auto around = material::enclosingMists(geometry_, chains_, centre, rng);
-        for (auto e = around.rbegin(); e != around.rend(); ++e) {
-            const auto& mist = std::get<material::MistParams>(*materials_.at(e->material).params);
-            material::MediumChange enter = material::mistCrossing(mist, true, e->pattern);
-            sourceMedium_[s] = material::changeMedium(sourceMedium_[s], enter, settings_.medium, &mist);
-            sourceMists_[s].enter(e->material);
-        }
+        sourceMedium_[s] =
+            material::mediumWithin(material::enclosingMists(geometry_, chains_, centre, rng),
+                                   settings_.medium, materials_, sourceMists_[s]);
     }
 }
 
@@ -235,9 +232,8 @@ PhotonTracer::MediumStep PhotonTracer::travelMedium(
     const Vec3 p = ray.origin + ray.dir * d;
     // Past the path limit (-ld), or scattered outside the scene's cube: leaked.
     if (!(d <= ray.tmax)) return MediumStep::Lost;
-    const SceneCube cube = geometry_.sceneCube();
     for (int k = 0; k < 3; ++k)
-        if (!(p[k] >= cube.origin[k] && p[k] <= cube.origin[k] + cube.size)) return MediumStep::Lost;
+        if (!(p[k] >= cube_.origin[k] && p[k] <= cube_.origin[k] + cube_.size)) return MediumStep::Lost;
     travelled += d;
     for (int k = 0; k < 3; ++k)
         flux[k] *= m.extinction[k] / mean * std::exp((mean - m.extinction[k]) * d);

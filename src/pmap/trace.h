@@ -134,6 +134,7 @@ private:
 
     const Scene& scene_;
     const SceneGeometry& geometry_;
+    SceneCube cube_;  // photons scattered in a medium outside it have leaked
     const material::SurfaceChains& chains_;
     const material::MaterialTable& materials_;  // chains_.materials()
     const material::MaterialCalc* materialCalc_;

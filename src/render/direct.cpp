@@ -104,11 +104,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
     material::Medium medium = at.medium ? *at.medium : material::Medium{};
     // Loss over `t` in the current medium (DirectPoint::scatterLoss).
     auto absorb = [&](double t) {
-        if (!medium.active()) return;
-        for (int k = 0; k < 3; ++k) {
-            double e = t * medium.extinction[k] * (at.scatterLoss ? 1 : 1 - medium.albedo[k]);
-            through[k] *= e <= 1e-6 ? 1 : e > 92 ? 0 : std::exp(-e);
-        }
+        if (medium.active()) through *= medium.transmittance(t, !at.scatterLoss);
     };
     for (size_t leg = 0; leg < legs; ++leg) {
         const bool last = leg + 1 == legs;

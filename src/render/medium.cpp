@@ -15,9 +15,6 @@ namespace {
 
 constexpr int kMaxScatterSamples = 16;  // RADIANCE MAXSSAMP: per ray segment and source
 
-// exp(-x) with RADIANCE's cut-offs (no loss below FTINY, nothing left beyond 92).
-double attenuation(double x) { return x <= kFtiny ? 1 : x > 92 ? 0 : std::exp(-x); }
-
 // Samples along a segment of length t (RADIANCE srcscatter: -ms apart, at most
 // MAXSSAMP, at least one).
 int scatterSamples(double t, double spacing) {
@@ -30,7 +27,7 @@ int scatterSamples(double t, double spacing) {
 Color Renderer::Context::participate(const Ray& ray, double t, const RayState& state,
                                      Color& transmit) {
     const material::Medium& m = mediumOf(state);
-    for (int k = 0; k < 3; ++k) transmit[k] = attenuation(t * m.extinction[k]);
+    transmit = m.transmittance(t);
     if (!m.scatters()) return {};
     if (impl.photons.hasVolume() && photonLookups) return volumeScatter(ray, t, state);
     Color in;
@@ -56,8 +53,7 @@ Color Renderer::Context::volumeScatter(const Ray& ray, double t, const RayState&
     Color total;
     for (int j = 0; j < n; ++j) {
         const double tj = t * (j + rng.uniform()) / n;
-        Color toPoint;
-        for (int k = 0; k < 3; ++k) toPoint[k] = attenuation(tj * m.extinction[k]);
+        const Color toPoint = m.transmittance(tj);
         if (toPoint.brightness() <= kFtiny) break;
         const Vec3 p = ray.origin + ray.dir * tj;
         total += impl.photons.volumeDensity(*photonLookups, p, -ray.dir, m.eccentricity) *
@@ -83,8 +79,7 @@ Color Renderer::Context::sourceScatter(const Ray& ray, double t, const RayState&
         const size_t source = size_t(sources.index[size_t(i)]);
         for (int j = 0; j < n; ++j) {
             const double tj = t * (j + rng.uniform()) / n;
-            Color toPoint;  // extinction from the ray's origin to the sample point
-            for (int k = 0; k < 3; ++k) toPoint[k] = attenuation(tj * m.extinction[k]);
+            const Color toPoint = m.transmittance(tj);  // from the ray's origin
             if (toPoint.brightness() <= kFtiny) break;  // too far in
             at.point = ray.origin + ray.dir * tj;
             at.normal = at.geomNormal = -ray.dir;
@@ -106,14 +101,10 @@ void Renderer::Context::cross(MediaState& state, const Passage& passage, MediaSt
     const material::MediumChange& c = passage.crossing;
     const std::vector<int32_t>& mine = impl.mistSources.at(passage.mist);
     const auto* mist = &std::get<material::MistParams>(*impl.material(passage.mist).params);
-    auto addSources = [&mine](ScatterSources& to) {
-        for (int32_t s : mine)
-            if (!to.contains(s) && to.count < ScatterSources::kMax) to.index[size_t(to.count++)] = s;
-    };
     if (c.kind == K::EnterMist) {
         state.mists.enter(passage.mist);
         state.medium = material::changeMedium(state.medium, c, impl.globalMedium, mist);
-        addSources(state.scatter);
+        addSources(state.scatter, passage.mist);
         return;
     }
     if (!state.mists.leave(passage.mist)) {
@@ -125,7 +116,7 @@ void Renderer::Context::cross(MediaState& state, const Passage& passage, MediaSt
         material::MediumChange enter = c;
         enter.kind = K::EnterMist;
         segment.medium = material::changeMedium(segment.medium, enter, impl.globalMedium, mist);
-        addSources(segment.scatter);
+        addSources(segment.scatter, passage.mist);
         state.medium = segment.medium;
     }
     state.medium = material::changeMedium(state.medium, c, impl.globalMedium, mist);
@@ -138,17 +129,19 @@ void Renderer::Context::cross(MediaState& state, const Passage& passage, MediaSt
     state.scatter.count = kept;
 }
 
+void Renderer::Context::addSources(ScatterSources& to, int32_t mist) const {
+    for (int32_t s : impl.mistSources.at(mist))
+        if (!to.contains(s) && to.count < ScatterSources::kMax) to.index[size_t(to.count++)] = s;
+}
+
 std::optional<MediaState> Renderer::Context::mediaAt(const Vec3& p) {
     if (!impl.hasMists) return std::nullopt;
     const std::vector<material::EnclosingMist> around =
         material::enclosingMists(impl.geometry, impl.chains, p, rng);
     if (around.empty()) return std::nullopt;
     MediaState m{impl.globalMedium, {}, {}};
-    MediaState unused;
-    for (auto e = around.rbegin(); e != around.rend(); ++e) {
-        const auto& mist = std::get<material::MistParams>(*impl.material(e->material).params);
-        cross(m, Passage{material::mistCrossing(mist, true, e->pattern), e->material}, unused);
-    }
+    m.medium = material::mediumWithin(around, impl.globalMedium, impl.chains.materials(), m.mists);
+    for (const material::EnclosingMist& e : around) addSources(m.scatter, e.material);
     return m;
 }
 

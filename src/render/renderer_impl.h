@@ -163,6 +163,8 @@ private:
     // The media after `passage` (m_mist.c); `segment` receives those of the segment
     // before it (a ray leaving a mist it did not know it was in was in it).
     void cross(MediaState& media, const Passage& passage, MediaState& segment) const;
+    // Adds the sources mist material `mist` names (m_mist.c add2slist).
+    void addSources(ScatterSources& to, int32_t mist) const;
     const material::Medium& mediumOf(const RayState& s) const {
         return s.media ? s.media->medium : impl.globalMedium;
     }
