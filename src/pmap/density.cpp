@@ -82,12 +82,7 @@ std::span<PhotonHit> PhotonLookup::search(const Vec3& pos, const Vec3* normal, s
     return {hits_.data(), found_};
 }
 
-std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& normal) {
-    std::array<double, 3> irrad = {0, 0, 0};
-    if (map_->empty()) return irrad;
-    const auto hits = search(pos, &normal, static_cast<size_t>(bandwidth_) + 1);
-    if (hits.size() < 2) return irrad;  // need at least 2 photons
-
+double PhotonLookup::estimateRadius2(std::span<const PhotonHit> hits) const {
     // hits[0] is the furthest (search()); d2 is the second furthest. RADIANCE compat: d1 is
     // pmap->maxDist2 after the search, i.e. the furthest photon when the queue filled up
     // and the search limit otherwise; RADIANCE takes d2 from the heap's children of the
@@ -97,7 +92,16 @@ std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& 
     float second = hits[1].dist2;
     for (size_t i = 2; i < hits.size(); ++i) second = std::max(second, hits[i].dist2);
     const double d2 = second;
-    const double r2 = 0.25 * (d1 + d2 + 2 * std::sqrt(d1 * d2));
+    return 0.25 * (d1 + d2 + 2 * std::sqrt(d1 * d2));
+}
+
+std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& normal) {
+    std::array<double, 3> irrad = {0, 0, 0};
+    if (map_->empty()) return irrad;
+    const auto hits = search(pos, &normal, static_cast<size_t>(bandwidth_) + 1);
+    if (hits.size() < 2) return irrad;  // need at least 2 photons
+
+    const double r2 = estimateRadius2(hits);
 
     // Skip the extra (furthest) photon; uniform kernel. The fluxes are RGBE values (8-bit
     // mantissas), so their sum in double is exact and does not depend on the order of the
@@ -125,11 +129,7 @@ std::array<double, 3> PhotonLookup::volumeDensity(const Vec3& pos, const Vec3& o
     if (map_->empty()) return sum;
     auto hits = search(pos, nullptr, static_cast<size_t>(bandwidth_) + 1);
     if (hits.size() < 2) return sum;
-    const double d1 = lastSearchDist2_;
-    float second = hits[1].dist2;
-    for (size_t i = 2; i < hits.size(); ++i) second = std::max(second, hits[i].dist2);
-    const double d2 = second;
-    const double r2 = 0.25 * (d1 + d2 + 2 * std::sqrt(d1 * d2));
+    const double r2 = estimateRadius2(hits);
     for (size_t i = 1; i < hits.size(); ++i) {
         const size_t idx = index_ ? index_->photonIndex(hits[i].index) : hits[i].index;
         const Photon& p = map_->searchedPhoton(idx);

@@ -111,6 +111,10 @@ public:
     uint64_t shortLookups() const { return shortLookups_; }
 
 private:
+    // RADIANCE's squared estimate radius for `hits` (>= 2, the furthest first): the mean
+    // of the radii of the furthest (the search limit if the queue did not fill) and the
+    // second furthest, squared.
+    double estimateRadius2(std::span<const PhotonHit> hits) const;
     // findPhotons with a queue of queueLen (<= hits_.size()).
     std::span<PhotonHit> search(const Vec3& pos, const Vec3* normal, size_t queueLen);
 
