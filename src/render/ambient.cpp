@@ -125,19 +125,18 @@ Color Ambient::ambientValue() const {
 }
 
 Color Ambient::Impl::fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) const {
-    // RADIANCE compat (ambcomp.c): without the cache the division count follows the ray
-    // weight, lowered so that samples stay above -lw; each sample carries its share of
-    // the weight (the material's ambient coefficient is assumed to be AVGREFL: the caller
-    // applies the real one afterwards).
+    // RADIANCE compat (ambcomp.c samp_hemi): without the cache the division count follows
+    // the ray weight, lowered so that samples stay above -lw; each sample carries its
+    // share of the weight times the material's ambient coefficient.
     double wt = at.weight;
     if (minWeight > 0) {
-        double cap = 0.8 * kAverageReflectance * at.weight / (opt.divisions * minWeight);
+        double cap = 0.8 * at.coefficient * at.weight / (opt.divisions * minWeight);
         wt = std::min(wt, cap);
     }
     HemisphereParams p = hemisphereDivisions(opt.divisions, opt.supersamples, wt, 1);
     p.sampleLevel = at.ambientLevel + 1;
     p.sampleWeight =
-        at.weight * kAverageReflectance / (double(p.thetaDivisions) * p.phiDivisions);
+        at.weight * std::min(1.0, at.coefficient / (double(p.thetaDivisions) * p.phiDivisions));
     p.gradients = false;
     if (p.superSamples <= 8) p.superSamples = 0;  // RADIANCE 5: not worth it below 9
     return sampleHemisphere(at.offsetOrigin, at.normal, p, tracer, rng).value;

@@ -28,9 +28,11 @@ public:
         Vec3 normal;              // geometric normal there, either sign (zero: unknown)
     };
     // `ambientLevel` is the level of the new ray (1 for rays from a primary hit);
-    // `weight` its RADIANCE ray weight (for -lw and the division count at deeper levels).
-    virtual Sample trace(const Vec3& origin, const Vec3& dir, int ambientLevel,
-                         double weight) = 0;
+    // `weight` its RADIANCE ray weight (for -lw and the division count at deeper levels);
+    // `share` the fraction of the hemisphere's value its radiance makes (rcontrib's path
+    // coefficients; exact without super-samples, which rcontrib turns off).
+    virtual Sample trace(const Vec3& origin, const Vec3& dir, int ambientLevel, double weight,
+                         double share) = 0;
 };
 
 // The surface point needing indirect irradiance.
@@ -41,6 +43,10 @@ struct AmbientPoint {
     int32_t modifier = -1;   // for -ae/-ai
     int ambientLevel = 0;    // bounces already made by the ray that hit this point
     double weight = 1;       // the hitting ray's weight
+    // The largest component of the material's ambient coefficient (RADIANCE intens of
+    // the ambient colour; pi for rtrace -I's white receiver): without the cache the
+    // division count and the samples' weights follow it.
+    double coefficient = 0.5;
 };
 
 class Ambient {

@@ -43,6 +43,8 @@ HemisphereParams hemisphereDivisions(int divisions, int supersamples, double wei
     HemisphereParams p;
     p.thetaDivisions = std::max(minTheta, int(std::sqrt(divisions * weight / kPi) + 0.5));
     p.phiDivisions = std::max(1, int(kPi * p.thetaDivisions + 0.5));
+    if (minTheta <= 1 && p.thetaDivisions == 1)
+        p.phiDivisions = std::clamp(int(divisions * weight + 0.5), 1, p.phiDivisions);
     p.superSamples = std::max(0, int(supersamples * weight + 0.5));
     return p;
 }
@@ -56,6 +58,7 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
     tangentFrame(normal, ux, uy);
     std::vector<Division> div(size_t(M) * N);
     HemisphereEstimate est;
+    const double share = 1.0 / (double(M) * N);  // of a division's only sample
 
     // One jittered sample in division (j, k): sin^2(theta) is uniform for a cosine
     // density, so rows of equal sin^2 width carry equal weight (Ward et al. 1988).
@@ -66,7 +69,7 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
         Vec3 dir = normalize(ux * (std::cos(phi) * sinT) + uy * (std::sin(phi) * sinT) +
                              normal * cosT);
         HemisphereTracer::Sample s =
-            tracer.trace(origin, dir, params.sampleLevel, params.sampleWeight);
+            tracer.trace(origin, dir, params.sampleLevel, params.sampleWeight, share);
         Division& d = div[size_t(j) * N + k];
         double b = s.radiance.brightness();
         d.sum += s.radiance;

@@ -28,7 +28,9 @@ struct HemisphereParams {
 
 // RADIANCE 3 inithemi's division counts for `divisions` (-ad) times `weight`:
 // M = sqrt(ad*wt/pi) + .5 (at least `minTheta`), N = pi*M + .5, and the -as super-sample
-// count as*wt + .5.
+// count as*wt + .5. With minTheta 1 (no cache) a single row has the samples ad*wt asks
+// for, at least one and at most N: RADIANCE 5 (ambcomp.c samp_hemi) goes down to one
+// sample for rays of little weight.
 HemisphereParams hemisphereDivisions(int divisions, int supersamples, double weight,
                                      int minTheta);
 
