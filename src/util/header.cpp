@@ -1,5 +1,7 @@
 #include "util/header.h"
 
+#include <cctype>
+
 #include "util/error.h"
 
 namespace rp {
@@ -69,12 +71,18 @@ std::string commandLine(int argc, const char* const* argv) {
     std::string s;
     for (int i = 0; i < argc; ++i) {
         if (i) s += ' ';
-        std::string a = argv[i];
-        bool quote = a.empty() || a.find_first_of(" \t'\"\\$*?;&|<>()") != std::string::npos;
-        if (quote) {
-            s += '\'';
-            for (char c : a) s += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-            s += '\'';
+        const std::string a = argv[i];
+        bool space = false;
+        char quote = 0;
+        for (size_t k = 0; k < a.size(); ++k) {
+            const char c = a[k];
+            if (std::isspace(static_cast<unsigned char>(c))) space = true;
+            else if (k > 0 && k + 1 < a.size() && c == '"') quote = '\'';
+            else if (k > 0 && k + 1 < a.size() && c == '\'') quote = '"';
+        }
+        if (space || quote) {
+            if (!quote) quote = '"';
+            s += quote + a + quote;
         } else {
             s += a;
         }

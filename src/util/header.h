@@ -33,8 +33,9 @@ bool tryReadHeader(std::istream& in, Header& out);
 // Writes the magic line, each line, and the empty line.
 void writeHeader(std::ostream& out, const Header& h);
 
-// "prog arg1 arg2 ..." as RADIANCE's printargs writes a command line (arguments that
-// contain spaces are single-quoted so the line can be pasted back into a shell).
+// "prog arg1 arg2 ..." as RADIANCE's printargs writes a command line (fputword): a word
+// with white space goes in double quotes, or in single quotes when it holds a double
+// quote (not first or last), and in double quotes when it holds a single one.
 std::string commandLine(int argc, const char* const* argv);
 
 }  // namespace rp

@@ -42,9 +42,11 @@ TEST(Header, TruncatedHeaderIsInputError) {
     EXPECT_THROW(readHeader(ss, "t.pm"), InputError);
 }
 
-TEST(Header, CommandLineQuotesWhatAShellWouldSplit) {
-    const char* argv[] = {"rtrace", "-ap", "my map.pm", "50"};
-    EXPECT_EQ(commandLine(4, argv), "rtrace -ap 'my map.pm' 50");
+TEST(Header, CommandLineQuotesAsRadiancePrintargs) {
+    // RADIANCE compat (fputword): examples checked against RADIANCE 5.4's rcontrib header.
+    const char* argv[] = {"rtrace", "-ap", "my map.pm", "50", "it's", "say\"hi\"", "a'", "tab\there"};
+    EXPECT_EQ(commandLine(8, argv),
+              "rtrace -ap \"my map.pm\" 50 \"it's\" 'say\"hi\"' a' \"tab\there\"");
 }
 
 }  // namespace rp
