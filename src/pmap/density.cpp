@@ -123,6 +123,24 @@ std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& 
     return irrad;
 }
 
+std::array<double, 3> PhotonLookup::contribDensity(const Vec3& pos, const Vec3& normal,
+                                                   const PhotonShare& each) {
+    std::array<double, 3> irrad = {0, 0, 0};
+    if (map_->empty()) return irrad;
+    const auto hits = search(pos, &normal, static_cast<size_t>(bandwidth_) + 1);
+    if (hits.size() < 2) return irrad;
+    const double scale = 1.0 / (kPi * kPi * estimateRadius2(hits));
+    for (size_t i = 1; i < hits.size(); ++i) {  // the furthest is left out
+        const size_t idx = index_ ? index_->photonIndex(hits[i].index) : hits[i].index;
+        const Photon& p = map_->searchedPhoton(idx);
+        const auto f = p.fluxRgb();
+        const std::array<double, 3> share = {f[0] * scale, f[1] * scale, f[2] * scale};
+        for (int c = 0; c < 3; ++c) irrad[c] += share[c];
+        each(p, share);
+    }
+    return irrad;
+}
+
 std::array<double, 3> PhotonLookup::volumeDensity(const Vec3& pos, const Vec3& out, double g,
                                                   double (*phase4Pi)(double, double)) {
     std::array<double, 3> sum = {0, 0, 0};

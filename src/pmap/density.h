@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -58,6 +59,13 @@ public:
     // search limit when fewer than k+1 were found, as RADIANCE's maxDist2) and d2 the
     // largest of the others. Fewer than 2 photons give 0.
     std::array<double, 3> surfaceDensity(const Vec3& pos, const Vec3& normal);
+
+    // RADIANCE's photonContrib (pmcontrib2.c) for contribution maps: surfaceDensity, with
+    // each photon's share of it (its flux / (pi * pi r^2)) handed to `each` with the photon
+    // (whose primary says which source emitted it).
+    using PhotonShare = std::function<void(const Photon&, const std::array<double, 3>&)>;
+    std::array<double, 3> contribDensity(const Vec3& pos, const Vec3& normal,
+                                         const PhotonShare& each);
 
     // RADIANCE's volumePhotonDensity: for the bandwidth nearest volume photons to `pos`
     // (no normal filter; radius as surfaceDensity's),

@@ -13,7 +13,8 @@ class FunctionTracer : public HemisphereTracer {
 public:
     using Fn = std::function<Sample(const Vec3& origin, const Vec3& dir)>;
     explicit FunctionTracer(Fn fn) : fn_(std::move(fn)) {}
-    Sample trace(const Vec3& origin, const Vec3& dir, int level, double weight) override {
+    Sample trace(const Vec3& origin, const Vec3& dir, int level, double weight,
+                 double /*share*/) override {
         calls.fetch_add(1, std::memory_order_relaxed);
         lastLevel = level;
         lastWeight = weight;

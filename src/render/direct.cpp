@@ -25,6 +25,14 @@ struct Candidate {
     uint32_t crossings = 0;  // first index into the relay crossing points
 };
 
+// Where a shadow path that reached its source ended, for contributions.
+struct ShadowEnd {
+    Color through;   // what the path transmits (glass, mirrors, prisms, medium)
+    Color radiance;  // the source's radiance toward the point
+    int32_t modifier = -1;  // of the source surface (distant: of the `source`)
+    Vec3 point, dir;        // where it met the source, travelling dir
+};
+
 constexpr int kMaxShadowSurfaces = 64;  // transmitting surfaces crossed per leg at most
 
 }  // namespace
@@ -37,8 +45,9 @@ struct DirectLighting::Impl {
 
     // Radiance reaching the shaded point along candidate `c`'s shadow path, zero if
     // blocked. `crossings` are the points where the path meets the relays (virtual).
+    // `end` (may be null) receives how it ended when it reached the source.
     Color trace(const DirectPoint& at, const Candidate& c, const Vec3* crossings,
-                ShadowOracle& oracle) const;
+                ShadowOracle& oracle, ShadowEnd* end = nullptr) const;
 };
 
 DirectLighting::DirectLighting(const Scene& scene, const SceneGeometry& geometry,
@@ -88,7 +97,8 @@ bool passesIllum(const DirectSource& src, const Hit& hit) {
 }  // namespace
 
 Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
-                                  const Vec3* crossings, ShadowOracle& oracle) const {
+                                  const Vec3* crossings, ShadowOracle& oracle,
+                                  ShadowEnd* end) const {
     const DirectSource& src = list.sources[size_t(c.source)];
     const size_t legs = src.relays.size() + 1;
     Vec3 dir = c.toLight;
@@ -105,6 +115,10 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
     // Loss over `t` in the current medium (DirectPoint::scatterLoss).
     auto absorb = [&](double t) {
         if (medium.active()) through *= medium.transmittance(t, !at.scatterLoss);
+    };
+    auto reached = [&](const Color& radiance, int32_t modifier, const Vec3& point) {
+        if (end) *end = ShadowEnd{through, radiance, modifier, point, dir};
+        return through * radiance;
     };
     for (size_t leg = 0; leg < legs; ++leg) {
         const bool last = leg + 1 == legs;
@@ -135,16 +149,19 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
                         const DistantSource& d = geometry.sources()[size_t(src.light.shapeIndex)];
                         if (2 * kPi * (1 - dot(d.dir, dir)) > d.solidAngle) return {};
                     }
-                    return through * oracle.distantRadiance(src.light.shapeIndex, dir);
+                    const DistantSource& d = geometry.sources()[size_t(src.light.shapeIndex)];
+                    return reached(oracle.distantRadiance(src.light.shapeIndex, dir), d.modifier,
+                                   ray.origin + dir * 1e10);
                 }
                 if (anywhere) return {};
                 // Reached the target although the accelerator did not report the
                 // (grazed) source surface: it is there by construction.
                 absorb(remaining);
-                ShadowEvent ev = oracle.event(
-                    sourceSurfaceHit(src, geometry.shapes(), list.regions, goal, dir, remaining),
-                    dir);
-                return ev.kind == ShadowEvent::Kind::Emit ? through * ev.colour : Color{};
+                const Hit h =
+                    sourceSurfaceHit(src, geometry.shapes(), list.regions, goal, dir, remaining);
+                ShadowEvent ev = oracle.event(h, dir);
+                return ev.kind == ShadowEvent::Kind::Emit ? reached(ev.colour, h.modifier, h.point)
+                                                          : Color{};
             }
             absorb(hit->t);
             if (relay && hit->prim == relay->prim) {
@@ -169,7 +186,10 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
             }
             const bool target = last && !escape && hit->prim == src.light.prim;
             ShadowEvent ev = oracle.event(*hit, dir, !target && passesIllum(src, *hit));
-            if (target) return ev.kind == ShadowEvent::Kind::Emit ? through * ev.colour : Color{};
+            if (target)
+                return ev.kind == ShadowEvent::Kind::Emit
+                           ? reached(ev.colour, hit->modifier, hit->point)
+                           : Color{};
             // Glass and trans pass light on; anything else (an opaque surface, another
             // source, a relay not on this path) blocks it.
             if (ev.kind != ShadowEvent::Kind::Transmit) return {};
@@ -359,7 +379,14 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
         double window = sn + nshadcheck >= n ? tail[sn] : tail[sn] - tail[sn + nshadcheck];
         if (window < threshold * total.brightness()) break;
         const Candidate& c = cands[sn];
-        Color value = c.coef * im.trace(at, c, crossings.data() + c.crossings, oracle);
+        ShadowEnd end;
+        Color value = c.coef * im.trace(at, c, crossings.data() + c.crossings, oracle,
+                                        at.contrib ? &end : nullptr);
+        // RADIANCE compat (source.c direct, rcontrib.c trace_contrib): the shadow ray that
+        // reached its source tells rcontrib its coefficient and the source's radiance.
+        if (at.contrib && end.modifier >= 0 && at.contrib->tracks(end.modifier))
+            at.contrib->add(end.modifier, end.point, end.dir,
+                            at.contribCoef * c.coef * end.through, end.radiance);
         total += value;
         testedEstimate += c.brt;
         testedFound += value.brightness();

@@ -16,6 +16,7 @@
 #include "geometry/scene_geometry.h"
 #include "material/material.h"
 #include "render/render_options.h"
+#include "render/renderer.h"
 #include "render/source_list.h"
 #include "scene/primitive.h"
 #include "util/color.h"
@@ -82,6 +83,11 @@ struct DirectPoint {
     // light to surfaces (a global map), counting it here as well would count it twice.
     const material::Medium* medium = nullptr;  // null: none
     bool scatterLoss = false;
+    // rcontrib: each shadow ray that reaches a source is reported to `contrib` (if any)
+    // with the path coefficient `contribCoef` times the sample's coefficient and what the
+    // shadow path transmits (RADIANCE: the shadow ray's trace_contrib call).
+    ContributionSink* contrib = nullptr;
+    Color contribCoef{1, 1, 1};
 };
 
 // RADIANCE's coefficient function for one source sample: the material's BRDF*cos for

@@ -19,6 +19,9 @@ PhotonLighting::Lookups::Lookups(const PhotonLighting& owner) : owner_(owner) {
         // With bias compensation the search radius is sized for the upper bandwidth.
         p.bandwidth = m.use.bandwidth2 > 0 ? m.use.bandwidth2 : m.use.bandwidth;
         p.maxSearchRadius = owner.maxSearchRadius_;
+        // RADIANCE compat (pmcontrib2.c): contribution lookups count as short unless the
+        // queue fills, so every requested photon's contribution is there.
+        if (m.map.type() == pmap::PhotonMapType::Contrib) p.gatherTolerance = 1;
         // Eager indexes exist already (get() returns at once); lazy ones are chosen per
         // lookup (PhotonLighting::density).
         lookups.emplace_back(m.map, p,
@@ -38,6 +41,11 @@ PhotonLighting::Lookups::~Lookups() {
 
 namespace {
 
+std::string lowerCase(std::string s) {
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
 int64_t fileMtime(const std::string& path) {
     std::error_code ec;
     auto t = std::filesystem::last_write_time(path, ec);
@@ -49,7 +57,7 @@ int64_t fileMtime(const std::string& path) {
 }  // namespace
 
 PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double maxSearchRadius,
-                               const Scene& scene)
+                               const Scene& scene, bool contributions)
     : maxSearchRadius_(maxSearchRadius) {
     int64_t newestInput = 0;
     std::string newestName;
@@ -76,8 +84,8 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
             m.map = pmap::PhotonMap::load(uses[i].file, pmap::PhotonMap::TreeOrder::Unchecked,
                                           /*causticOnDemand=*/true);
             const T type = m.map.type();
-            if (!m.indexedOnDemand() && type != T::Contrib)
-                m.index.get(m.map.photons());  // contribution maps are refused below
+            if (!m.indexedOnDemand() && (type != T::Contrib) != contributions)
+                m.index.get(m.map.photons());  // maps refused below are not indexed
         } catch (...) {
             failed[i] = std::current_exception();
         }
@@ -91,17 +99,22 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         m.file = use.file;
         T type = m.map.type();
         const char* name = pmap::photonMapTypeName(type);
-        if (type == T::Contrib)
+        if (type == T::Contrib && !contributions)
             throw InputError(use.file +
                              ": contribution photon maps are used by rcontrib, "
                              "not by the renderer");
+        // RADIANCE compat (pmcontrib2.c initPmapContrib).
+        if (type != T::Contrib && contributions)
+            throw InputError(use.file + ": " + lowerCase(name) +
+                             " photon map does not support contributions");
         if (type == T::Volume && use.bandwidth2 > 0)
             throw InputError(use.file +
                              ": bias compensation is not available with volume photon maps");
-        int* slot = type == T::Caustic  ? &caustic_
-                    : type == T::Direct ? &direct_
-                    : type == T::Volume ? &volume_
-                                        : &global_;
+        int* slot = type == T::Caustic   ? &caustic_
+                    : type == T::Direct  ? &direct_
+                    : type == T::Volume  ? &volume_
+                    : type == T::Contrib ? &contrib_
+                                         : &global_;
         if (*slot >= 0)
             throw InputError(use.file + ": more than one " + std::string(name) +
                              " photon map given with -ap");
@@ -130,8 +143,7 @@ std::string PhotonLighting::biasReport() const {
     std::lock_guard<std::mutex> lock(statsMutex_);
     std::string out;
     for (size_t i = 0; i < maps_.size(); ++i) {
-        std::string type = pmap::photonMapTypeName(maps_[i].map.type());
-        for (char& c : type) c = char(std::tolower(static_cast<unsigned char>(c)));
+        const std::string type = lowerCase(pmap::photonMapTypeName(maps_[i].map.type()));
         std::string r = biasStats_[i].report(type.c_str());
         if (r.empty()) continue;
         if (!out.empty()) out += ", ";
@@ -170,6 +182,19 @@ Color PhotonLighting::causticDensity(Lookups& l, const Vec3& pos, const Vec3& no
 }
 Color PhotonLighting::directDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const {
     return density(l, direct_, pos, normal);
+}
+
+Color PhotonLighting::contribDensity(Lookups& l, const Vec3& pos, const Vec3& normal,
+                                     const Color& coef, ContributionSink* sink) const {
+    if (contrib_ < 0) return {};
+    const pmap::PhotonMap& map = maps_[size_t(contrib_)].map;
+    const auto& primaries = map.primaries();
+    auto share = [&](const pmap::Photon& p, const std::array<double, 3>& v) {
+        if (!sink || p.primary >= primaries.size()) return;
+        sink->addPhotons(primaries[p.primary].srcIdx, pos, coef * Color{v[0], v[1], v[2]});
+    };
+    auto d = l.lookups[size_t(contrib_)].contribDensity(pos, normal, share);
+    return Color{d[0], d[1], d[2]};
 }
 
 Color PhotonLighting::volumeDensity(Lookups& l, const Vec3& pos, const Vec3& out,

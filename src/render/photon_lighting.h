@@ -20,6 +20,7 @@
 #include "pmap/lookup_index.h"
 #include "pmap/photon_map.h"
 #include "render/render_options.h"
+#include "render/renderer.h"
 #include "scene/primitive.h"
 #include "util/color.h"
 #include "util/vec.h"
@@ -32,12 +33,13 @@ constexpr int kDefaultBandwidth = 40;
 class PhotonLighting {
 public:
     // Loads each -ap map. Throws InputError for a missing, foreign or truncated file,
-    // two maps of one type, a contribution map (rcontrib's business), a bandwidth range
-    // with bw2 <= bw1 or any range for a volume map (RADIANCE has no bias compensation
-    // for them), and a map older than any of the scene's input files ("stale": rerun
-    // mkpmap). An empty `uses` gives an inactive set.
+    // two maps of one type, a bandwidth range with bw2 <= bw1 or any range for a volume
+    // map (RADIANCE has no bias compensation for them), and a map older than any of the
+    // scene's input files ("stale": rerun mkpmap). Contribution maps are rcontrib's
+    // (`contributions`): there every other type is refused, elsewhere they are. An empty
+    // `uses` gives an inactive set.
     PhotonLighting(const std::vector<PhotonMapUse>& uses, double maxSearchRadius,
-                   const Scene& scene);
+                   const Scene& scene, bool contributions = false);
     ~PhotonLighting();
 
     bool active() const { return !maps_.empty(); }
@@ -45,6 +47,7 @@ public:
     bool hasCaustic() const { return caustic_ >= 0; }
     bool hasDirect() const { return direct_ >= 0; }
     bool hasVolume() const { return volume_ >= 0; }
+    bool hasContrib() const { return contrib_ >= 0; }
 
     // Per-thread lookup state (adaptive radius, result buffers); adds its lookup counts
     // to the owner's when destroyed.
@@ -81,6 +84,15 @@ public:
     Color globalDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
     Color causticDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
     Color directDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
+    // The contribution map's irradiance / pi at a final-gather hit, as the global map's;
+    // each photon's share of it, times the path coefficient `coef`, goes to `sink` with
+    // the source that emitted it (RADIANCE photonContrib). Zero without a contribution map.
+    Color contribDensity(Lookups& l, const Vec3& pos, const Vec3& normal, const Color& coef,
+                         ContributionSink* sink) const;
+    // The contribution map (for the source list its primaries index); null without one.
+    const pmap::PhotonMap* contribMap() const {
+        return contrib_ >= 0 ? &maps_[size_t(contrib_)].map : nullptr;
+    }
     // From the volume map at `pos`: light scattered toward unit `out` per unit length of
     // a ray, over the medium's albedo, with eccentricity `g` (pmap::PhotonLookup::
     // volumeDensity); zero without a volume map.
@@ -108,7 +120,7 @@ private:
 
     std::vector<Map> maps_;
     double maxSearchRadius_ = 0;
-    int global_ = -1, caustic_ = -1, direct_ = -1, volume_ = -1;
+    int global_ = -1, caustic_ = -1, direct_ = -1, volume_ = -1, contrib_ = -1;
     mutable std::atomic<uint64_t> shortLookups_{0}, lookups_{0};
     mutable std::mutex statsMutex_;
     mutable std::vector<pmap::BiasCompStats> biasStats_;  // per map, merged from threads

@@ -86,6 +86,8 @@ struct RenderOptions {
     int threads = 1;                       // -n
     std::string errorFile;                 // -e: diagnostics go here instead of stderr
     bool warnings = true;                  // -w
+    // rcontrib: -ap maps must be contribution maps (PhotonLighting), not other types.
+    bool contributions = false;
 };
 
 // Consumes one common option starting at args[i] (and its values), advancing i past

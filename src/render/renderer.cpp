@@ -71,7 +71,7 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
       options(o),
       chains(s, searchPath),
       materialCalc(s, std::move(searchPath)),
-      photons(o.photonMaps, o.photonMaxRadius, s),
+      photons(o.photonMaps, o.photonMaxRadius, s, o.contributions),
       ambientOptions(photonAmbientOptions(o, photons)),
       // RADIANCE compat (source.c): in photon-map mode virtual sources are not made;
       // light from mirrors (and prisms) then arrives through caustic photons.
@@ -117,7 +117,7 @@ const PhotonLighting& Renderer::photons() const { return impl_->photons; }
 
 RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
                           uint64_t rayIndex, std::vector<TracedRay>* tree,
-                          double maxDistance) const {
+                          double maxDistance, ContributionSink* contrib) const {
     ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);
     if (ctx.photonLookups) ctx.photonLookups->startRay(rayIndex);  // like the random numbers
     ctx.tree = tree;
@@ -127,6 +127,7 @@ RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
     result.direction = dir;
     RayState state;
     state.irradianceHit = options_.irradiance;
+    state.contrib = contrib;
     const std::optional<MediaState> start = ctx.mediaAt(origin);
     if (start) state.media = &*start;
     double distance = 1e10;
@@ -136,7 +137,7 @@ RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
 }
 
 RayResult Renderer::irradiance(Context& ctx, const Vec3& point, const Vec3& normal,
-                               uint64_t rayIndex) const {
+                               uint64_t rayIndex, ContributionSink* contrib) const {
     ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);
     if (ctx.photonLookups) ctx.photonLookups->startRay(rayIndex);
     RayResult result;
@@ -160,7 +161,10 @@ RayResult Renderer::irradiance(Context& ctx, const Vec3& point, const Vec3& norm
     result.point = at;
     result.normal = result.unperturbedNormal = n;
     const std::optional<MediaState> around = ctx.mediaAt(at);
-    result.value = ctx.irradianceAt(hit, n, 0, 1, {}, around ? &*around : nullptr);
+    RayState state;
+    state.media = around ? &*around : nullptr;
+    state.contrib = contrib;
+    result.value = ctx.irradianceAt(hit, n, state);
     return result;
 }
 

@@ -53,6 +53,31 @@ class DirectLighting;
 class Ambient;
 class PhotonLighting;
 
+// rcontrib's view of the ray tree (RADIANCE rcontrib.c trace_contrib, pmcontrib2.c
+// photonContrib). Every ray that ends on a surface whose modifier is tracked, every
+// shadow ray that reaches a source and every ray that leaves the scene through a distant
+// source is reported with its path coefficient: the product of the coefficients of the
+// rays from the input ray down to it (RADIANCE raycontrib). Photon contributions come
+// per photon from a contribution map. One sink per input ray (not shared by threads).
+class ContributionSink {
+public:
+    virtual ~ContributionSink() = default;
+    // Whether rays ending on surfaces modified by `modifier` are reported (cheap; asked
+    // before anything is computed for them).
+    virtual bool tracks(int32_t modifier) const = 0;
+    // A ray travelling unit `dir` ended at `point` on a surface modified by `modifier`
+    // (tracked), or left the scene through distant source `modifier` (point far along
+    // dir). `coef`: its path coefficient; `value`: the radiance it brings back (after
+    // shading). A light that the direct calculation counts already is not reported
+    // (RADIANCE zeroes that ray's coefficient).
+    virtual void add(int32_t modifier, const Vec3& point, const Vec3& dir, const Color& coef,
+                     const Color& value) = 0;
+    // Photon contribution (rcontrib -ap): flux density `value` (already times the path
+    // coefficient, as irradiance / pi) of photons emitted by source `source` (index into
+    // the map's source list, light::EmissionPlan order) found at `point`.
+    virtual void addPhotons(int32_t source, const Vec3& point, const Color& value) = 0;
+};
+
 class Renderer {
 public:
     // Resolves materials and patterns, builds the source list and the ambient cache
@@ -80,9 +105,10 @@ public:
     // `tree` (may be null) receives every ray traced for this one, for rtrace -o~.
     // `maxDistance` (rtrace -ld): surfaces beyond it are not seen and a ray reaching it
     // ends there with nothing (RADIANCE's clipped ray), no source or sky behind.
+    // `contrib` (may be null): rcontrib's sink, told about every contribution.
     RayResult trace(Context& ctx, const Vec3& origin, const Vec3& dir, uint64_t rayIndex,
-                    std::vector<TracedRay>* tree = nullptr,
-                    double maxDistance = HUGE_VAL) const;
+                    std::vector<TracedRay>* tree = nullptr, double maxDistance = HUGE_VAL,
+                    ContributionSink* contrib = nullptr) const;
 
     // rtrace -I: irradiance at `point` on a surface facing unit `normal` (light arriving
     // from the side the normal points to), direct plus ambient, as RADIANCE computes it
@@ -90,7 +116,7 @@ public:
     // in front of `point`, as RADIANCE's rtrace does.
     static constexpr double kIrradianceOffset = 1e-4;
     RayResult irradiance(Context& ctx, const Vec3& point, const Vec3& normal,
-                         uint64_t rayIndex) const;
+                         uint64_t rayIndex, ContributionSink* contrib = nullptr) const;
 
     const Scene& scene() const { return scene_; }
     const SceneGeometry& geometry() const { return geometry_; }

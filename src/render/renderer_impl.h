@@ -61,6 +61,11 @@ struct RayState {
     // the storage of whoever changed it, which outlives the ray (rays are traced depth
     // first), so that rays outside media copy no more than a pointer.
     const MediaState* media = nullptr;
+    // rcontrib (ContributionSink): where contributions go, null when nobody asks, and
+    // the ray's path coefficient (RADIANCE raycontrib: the product of its ancestors'
+    // rcoef). Participating media are not part of it, as in RADIANCE.
+    ContributionSink* contrib = nullptr;
+    Color contribCoef{1, 1, 1};
 };
 
 // One material record, checked once. `error` holds the message for a record that cannot
@@ -107,8 +112,8 @@ public:
     material::Redirection redirect(const Hit& hit, const Vec3& dir, int projection,
                                    const Vec3& toSource) override;
     // HemisphereTracer
-    Sample trace(const Vec3& origin, const Vec3& dir, int ambientLevel,
-                 double weight) override;
+    Sample trace(const Vec3& origin, const Vec3& dir, int ambientLevel, double weight,
+                 double share) override;
 
     // Radiance arriving at ray.origin from ray.dir. `first` (may be null) receives what
     // the first surface hit was; `distance` the distance to it (1e10 if none).
@@ -116,10 +121,9 @@ public:
     Color radiance(const Ray& ray, const RayState& state, RayResult* first, double& distance,
                    Vec3* hitNormal = nullptr);
 
-    // Irradiance at a point on a white Lambertian surface facing `normal`, for a ray
-    // whose clip set is `clip`.
-    Color irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel, double weight,
-                       const ClipSet& clip = {}, const MediaState* media = nullptr);
+    // Irradiance at a point on a white Lambertian surface facing `normal`, for a ray in
+    // `state` (its ambient level, weight, clip set, medium and contribution path).
+    Color irradianceAt(const Hit& hit, const Vec3& normal, const RayState& state);
 
     // The media of a ray starting at `p`: the mists enclosing it (material/mist_probe.h),
     // entered outermost first; nullopt in a scene without mists or outside every mist.
@@ -144,6 +148,9 @@ private:
     struct Passage {
         material::MediumChange crossing;
         int32_t mist = -1;
+        // A light seen where the direct calculation counts it (RADIANCE zeroes the ray's
+        // coefficient): not a contribution.
+        bool uncounted = false;
     };
     Color shadeHit(const Ray& ray, const Hit& hit, const RayState& state, RayResult* first,
                    Color& passWeight, Passage& passage);
@@ -177,8 +184,10 @@ private:
     Color directAt(const Hit& hit, const material::MaterialParams& params,
                    const material::SurfacePoint& sp, bool transmits, const RayState& state,
                    bool behindOnly = false);
+    // The ambient term at `hit`, which the caller multiplies by `coef` (the material's
+    // ambient coefficient; for contributions).
     Color ambientAt(const Hit& hit, const Vec3& normal, int32_t modifier,
-                    const RayState& state);
+                    const RayState& state, const Color& coef);
     material::ChainResult resolve(int32_t modifier, const Hit& hit, const Vec3& dir);
     // Radiance of a light material reached through `modifier` (patterns applied) seen
     // along `dir`; `isGlow`/`isLight` say what it was (both false: not a light).

@@ -139,12 +139,34 @@ RtraceOptions parseRtraceArgs(std::vector<std::string> args) {
         else throw InputError("unknown option '" + opt + "'");
     }
     o.optionCount = std::min(i, args.size());
+    o.sceneFile = sceneArgument(args, i);
+    o.args = std::move(args);
+    return o;
+}
+
+const std::string& sceneArgument(const std::vector<std::string>& args, size_t i) {
     if (i >= args.size()) throw InputError("missing octree argument");
     if (i + 1 < args.size())
         throw InputError("unexpected argument '" + args[i + 1] + "' after octree '" + args[i] + "'");
-    o.sceneFile = args[i];
-    o.args = std::move(args);
-    return o;
+    return args[i];
+}
+
+std::string formatRayDefaults(int threads, int xres, int yres, bool limitDistance, bool header,
+                              char inputFormat, char outputFormat) {
+    std::string out;
+    char line[256];
+    auto put = [&](const char* fmt, auto... a) {
+        std::snprintf(line, sizeof line, fmt, a...);
+        out += line;
+    };
+    put("-n %-2d\t\t\t\t# number of rendering processes\n", threads);
+    put("-x %-9d\t\t\t# %s\n", xres, xres && yres ? "x resolution" : "flush interval");
+    put("-y %-9d\t\t\t# y resolution\n", yres);
+    out += limitDistance ? "-ld+\t\t\t\t# limit distance on\n" : "-ld-\t\t\t\t# limit distance off\n";
+    put("-h%c\t\t\t\t# %s header\n", header ? '+' : '-', header ? "output" : "no");
+    put("-f%c%c\t\t\t\t# format input/output = %s/%s\n", inputFormat, outputFormat,
+        formatName(inputFormat), formatName(outputFormat));
+    return out;
 }
 
 std::string formatRtraceDefaults(const RtraceOptions& o) {
@@ -156,13 +178,8 @@ std::string formatRtraceDefaults(const RtraceOptions& o) {
     };
     // RADIANCE compat: rtmain.c printdefaults, lines and formats.
     if (o.immediateIrradiance) out += "-I+\t\t\t\t# immediate irradiance on\n";
-    put("-n %-2d\t\t\t\t# number of rendering processes\n", o.render.threads);
-    put("-x %-9d\t\t\t# %s\n", o.xres, o.xres && o.yres ? "x resolution" : "flush interval");
-    put("-y %-9d\t\t\t# y resolution\n", o.yres);
-    out += o.limitDistance ? "-ld+\t\t\t\t# limit distance on\n" : "-ld-\t\t\t\t# limit distance off\n";
-    put("-h%c\t\t\t\t# %s header\n", o.header ? '+' : '-', o.header ? "output" : "no");
-    put("-f%c%c\t\t\t\t# format input/output = %s/%s\n", o.inputFormat, o.outputFormat,
-        formatName(o.inputFormat), formatName(o.outputFormat));
+    out += formatRayDefaults(o.render.threads, o.xres, o.yres, o.limitDistance, o.header,
+                             o.inputFormat, o.outputFormat);
     put("-o%-9s\t\t\t# output", o.outputSpec.c_str());
     for (char c : o.outputSpec) out += specName(c);
     out += '\n';

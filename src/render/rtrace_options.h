@@ -55,4 +55,12 @@ std::string formatRtraceDefaults(const RtraceOptions& opt);
 // "ascii", "float", "double" or "32-bit_rle_rgbe" (RADIANCE formstr).
 const char* formatName(char format);
 
+// The -n -x -y -ld -h -f lines of `-defaults` that RADIANCE's rtrace and rcontrib share.
+std::string formatRayDefaults(int threads, int xres, int yres, bool limitDistance, bool header,
+                              char inputFormat, char outputFormat);
+
+// The octree argument at args[i], which must be the last (rtrace, rcontrib): throws
+// InputError "missing octree argument" or for an argument after it.
+const std::string& sceneArgument(const std::vector<std::string>& args, size_t i);
+
 }  // namespace rp::render

@@ -1,10 +1,12 @@
-// The RayTraceFn (rtrace_run.h) that traces with a Renderer: one Renderer::Context per
+// The RayTraceFn (rtrace_run.h) and ContribTraceFn (rcontrib_run.h) that trace with a Renderer: one Renderer::Context per
 // worker thread, -I (immediate irradiance) or ordinary rays. Lives in src/render because a
 // Context is only complete here (renderer_impl.h).
 #pragma once
 
 #include <memory>
 
+#include "render/rcontrib.h"
+#include "render/rcontrib_run.h"
 #include "render/renderer.h"
 #include "render/rtrace_run.h"
 
@@ -20,6 +22,8 @@ public:
     RendererTracer& operator=(const RendererTracer&) = delete;
 
     RayTraceFn trace() const;
+    // rcontrib: each ray's contributions tallied by `targets` (outliving this object).
+    ContribTraceFn contributions(const ContribTargets& targets) const;
 
 private:
     struct Contexts;

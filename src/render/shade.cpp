@@ -40,6 +40,16 @@ void recordFirst(RayResult* f, const Hit& hit, const Vec3& normal, int32_t mater
     f->material = material;
 }
 
+// The state a mixture's layer `i` is shaded in: its weight joins the path coefficient
+// (rcontrib). `storage` holds the copy when one is needed.
+const RayState& layerState(const RayState& state, const material::ChainResult& chain, int i,
+                           std::optional<RayState>& storage) {
+    if (!state.contrib || chain.count < 2) return state;
+    storage = state;
+    storage->contribCoef = state.contribCoef * chain.layers[size_t(i)].weight;
+    return *storage;
+}
+
 // The function-space view of a hit that patterns and material functions see.
 material::PatternPoint patternPoint(const Hit& hit, const Vec3& dir) {
     return material::PatternPoint::atHit(dir, hit);
@@ -119,6 +129,7 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
     // Transparent surfaces (antimatter, void mixtures, invisible illums) pass the ray on;
     // bounded so that a pathological stack of them cannot loop.
     for (int pass = 0; pass < 64; ++pass) {
+        if (state.contrib) cur.contribCoef = state.contribCoef * coef;
         std::optional<Hit> hit = impl.geometry.closestHit(r);
         Color transmit{1, 1, 1};
         if (!hit) {
@@ -139,6 +150,10 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
             passWeight = Color{1, 1, 1};
         } else {
             c = shadeHit(r, *hit, cur, record, passWeight, passage);
+            // RADIANCE compat (rcontrib.c trace_contrib): a tracked surface reports what
+            // the ray brings back from it.
+            if (cur.contrib && !passage.uncounted && cur.contrib->tracks(hit->modifier))
+                cur.contrib->add(hit->modifier, hit->point, r.dir, cur.contribCoef, c);
         }
         if (passage.mist >= 0) {
             MediaState segment = mediaOf(cur);  // cross may learn that it was a mist
@@ -184,10 +199,12 @@ Color Renderer::Context::shadeHit(const Ray& ray, const Hit& hit, const RayState
                                   RayResult* first, Color& passWeight, Passage& passage) {
     material::ChainResult chain = resolve(hit.modifier, hit, ray.dir);
     Color value;
+    std::optional<RayState> weighted;  // a mixture's layer: its weight in the path coefficient
     for (int i = 0; i < chain.count; ++i) {
         const material::ShadingLayer& layer = chain.layers[size_t(i)];
         bool pass = false;
-        Color c = shadeLayer(ray, hit, state, layer, first, pass, passage);
+        Color c = shadeLayer(ray, hit, layerState(state, chain, i, weighted), layer, first, pass,
+                             passage);
         value += c * layer.weight;
         if (pass) passWeight += Color{1, 1, 1} * layer.weight;
     }
@@ -235,6 +252,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
                                  light.glowMaxRadius >= -1e-6 && hit.t > light.glowMaxRadius;
         if (state.indirect && hit.front && !distantGlow) {
             fillFirst(first);
+            passage.uncounted = true;
             return {};
         }
         if (light.kind == material::LightParams::Kind::Illum) {
@@ -242,7 +260,10 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
             return shadeAlternate(ray, hit, state, e.alternate, first, passThrough, passage);
         }
         fillFirst(first);
-        if (source && !impl.options.direct.visibility && !state.indirect) return {};  // -dv-
+        if (source && !impl.options.direct.visibility && !state.indirect) {  // -dv-
+            passage.uncounted = true;
+            return {};
+        }
         material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
         return b.emitted;
     }
@@ -254,7 +275,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         }
         fillFirst(first);
         // -i: the first surface is white Lambertian; the value is its irradiance.
-        return irradianceAt(hit, n, state.ambientLevel, state.weight, state.clip, state.media);
+        return irradianceAt(hit, n, state);
     }
 
     if (e.hasAlternate && std::holds_alternative<material::MirrorParams>(params)) {
@@ -319,6 +340,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         child.primary = false;
         child.irradianceHit = false;
         child.indirect = state.indirect || sr.sampled;
+        child.contribCoef = state.contribCoef * rc;
         if (sr.medium.kind != material::MediumChange::Kind::Unchanged) {
             childMedia = mediaOf(state);
             childMedia->medium = material::changeMedium(childMedia->medium, sr.medium, impl.globalMedium);
@@ -334,6 +356,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
                 if (rng.uniform() >= p) continue;
                 rc = rc / p;  // promote the survivor (Russian roulette)
                 child.weight = lim.minWeight;
+                child.contribCoef = state.contribCoef * rc;
             }
         }
         Ray out = spawnRay(hit, sr.dir);
@@ -371,9 +394,10 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         }
     }
     if (b.ambientReflect.max() > 0)
-        value += b.ambientReflect * ambientAt(hit, n, layer.material, state);
+        value += b.ambientReflect * ambientAt(hit, n, layer.material, state, b.ambientReflect);
     if (b.ambientTransmit.max() > 0)
-        value += b.ambientTransmit * ambientAt(farSide, -n, layer.material, state);
+        value += b.ambientTransmit *
+                 ambientAt(farSide, -n, layer.material, state, b.ambientTransmit);
     if (first && first->prim == hit.prim && state.primary) {
         first->unmirrored = value - first->mirrored;
         first->unmirroredLength = hit.t;
@@ -390,9 +414,11 @@ Color Renderer::Context::shadeAlternate(const Ray& ray, const Hit& hit, const Ra
     }
     material::ChainResult c = resolve(alternate, hit, ray.dir);
     Color v;
+    std::optional<RayState> weighted;
     for (int i = 0; i < c.count; ++i) {
         bool p = false;
-        v += shadeLayer(ray, hit, state, c.layers[size_t(i)], first, p, passage) *
+        v += shadeLayer(ray, hit, layerState(state, c, i, weighted), c.layers[size_t(i)], first,
+                        p, passage) *
              c.layers[size_t(i)].weight;
         if (p) passThrough = true;
     }
@@ -404,6 +430,8 @@ Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams
                                   const RayState& state, bool behindOnly) {
     DirectPoint at;
     at.weight = state.weight;
+    at.contrib = state.contrib;
+    at.contribCoef = state.contribCoef;
     at.medium = &mediumOf(state);
     at.scatterLoss = impl.photons.hasGlobal();
     shadowBase_ = shadowClip_ = state.clip;  // shadow rays start with the ray's set
@@ -422,7 +450,7 @@ Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams
 }
 
 Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t modifier,
-                                   const RayState& state) {
+                                   const RayState& state, const Color& coef) {
     AmbientPoint ap;
     ap.point = hit.point;
     ap.normal = normal;
@@ -431,6 +459,7 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
     ap.modifier = modifier;
     ap.ambientLevel = state.ambientLevel;
     ap.weight = state.weight;
+    ap.coefficient = coef.max();
     Color c;
     const PhotonLighting& pm = impl.photons;
     if (pm.active()) {
@@ -438,21 +467,28 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
         // the global map, which holds caustic light too; hits of other rays add the
         // caustic map and gather the rest. Without a global map the caustic map fills in
         // at the samples' hits as well (ambPmapCaustic), or that light would be lost.
+        if (pm.hasContrib() && (state.ambientLevel > 0 || impl.ambientOptions.bounces < 0))
+            return pm.contribDensity(*photonLookups, hit.point, normal,
+                                     state.contribCoef * coef, state.contrib);
         if (pm.hasGlobal() && (state.ambientLevel > 0 || impl.ambientOptions.bounces < 0))
             return pm.globalDensity(*photonLookups, hit.point, normal);
         if (pm.hasCaustic() && (state.ambientLevel == 0 || !pm.hasGlobal()))
             c += pm.causticDensity(*photonLookups, hit.point, normal);
     }
     const RayState* saved = sampleParent_;
-    sampleParent_ = &state;
+    std::optional<RayState> parent;  // with the ambient coefficient in its path (rcontrib)
+    if (state.contrib) {
+        parent = state;
+        parent->contribCoef = state.contribCoef * coef;
+    }
+    sampleParent_ = parent ? &*parent : &state;
     c += impl.ambient.indirect(ap, *this, rng);
     sampleParent_ = saved;
     return c;
 }
 
-Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int ambientLevel,
-                                      double weight, const ClipSet& clip,
-                                      const MediaState* media) {
+Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal,
+                                      const RayState& state) {
     // White Lambertian receiver: direct irradiance sum L cos omega, plus pi times the
     // ambient calculation's average radiance.
     DirectPoint at;
@@ -460,13 +496,13 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int am
     at.normal = normal;
     at.geomNormal = normal;
     at.hit = &hit;
-    at.weight = weight;
-    at.medium = media ? &media->medium : &impl.globalMedium;
+    at.weight = state.weight;
+    at.contrib = state.contrib;
+    at.contribCoef = state.contribCoef;
+    at.medium = &mediumOf(state);
     at.scatterLoss = impl.photons.hasGlobal();
-    RayState here;
-    here.ambientLevel = ambientLevel;
-    shadowBlockedByTransparent_ = shadowInPhotonMap(here);
-    shadowBase_ = shadowClip_ = clip;
+    shadowBlockedByTransparent_ = shadowInPhotonMap(state);
+    shadowBase_ = shadowClip_ = state.clip;
     Color e = impl.direct.compute(
         at,
         [&](const Vec3& toLight, double) {
@@ -475,12 +511,14 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, int am
         },
         *this, rng);
     RayState st;
-    st.ambientLevel = ambientLevel;
-    st.weight = weight;
+    st.ambientLevel = state.ambientLevel;
+    st.weight = state.weight;
     st.depth = sampleParent_ ? sampleParent_->depth : 0;
-    st.clip = clip;
-    st.media = media;
-    return e + ambientAt(hit, normal, kVoid, st) * kPi;
+    st.clip = state.clip;
+    st.media = state.media;
+    st.contrib = state.contrib;
+    st.contribCoef = state.contribCoef;
+    return e + ambientAt(hit, normal, kVoid, st, Color::grey(kPi)) * kPi;
 }
 
 bool Renderer::Context::shadowInPhotonMap(const RayState& state) const {

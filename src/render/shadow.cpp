@@ -286,23 +286,44 @@ Color Renderer::Context::escaped(const Ray& ray, const RayState& state) {
     bool directSource = impl.direct.isDistantSource(chosen);
     if (directSource && state.indirect) return {};  // counted by the direct calculation
     if (directSource && !impl.options.direct.visibility) return {};
+    const int32_t modifier = impl.geometry.sources()[size_t(chosen)].modifier;
+    if (state.contrib && state.contrib->tracks(modifier))
+        state.contrib->add(modifier, ray.origin + ray.dir * kNoHit, ray.dir, state.contribCoef,
+                           chosenValue);
     return chosenValue;
 }
 
 HemisphereTracer::Sample Renderer::Context::trace(const Vec3& origin, const Vec3& dir,
-                                                  int ambientLevel, double weight) {
+                                                  int ambientLevel, double weight,
+                                                  double share) {
     // The parent's clip set, medium and mists, with a sample's own depth and weight
     // (ambientAt, which set sampleParent_, restores it after its own samples).
     RayState st = *sampleParent_;
     st.depth = sampleParent_->depth + 1;
+    // RADIANCE compat (raytrace.c rayorigin): a sample lighter than -lw is traced with
+    // probability weight / -lw and then counts as -lw (Russian roulette, -lr <= 0), or
+    // not at all (-lr > 0); -lr < 0 also limits the depth.
+    const LimitOptions& lim = impl.options.limits;
+    double promote = 1;
+    if (lim.maxDepth > 0) {
+        if (st.depth > lim.maxDepth || weight < lim.minWeight) return Sample{};
+    } else if (lim.maxDepth < 0 && st.depth > -lim.maxDepth) {
+        return Sample{};
+    } else if (weight < lim.minWeight) {
+        const double p = weight / lim.minWeight;
+        if (!(rng.uniform() < p)) return Sample{};
+        promote = 1 / p;
+        weight = lim.minWeight;
+    }
     st.weight = weight;
     st.ambientLevel = ambientLevel;
     st.indirect = true;
     st.primary = false;
     st.irradianceHit = false;
+    st.contribCoef = sampleParent_->contribCoef * (share * promote);
     Sample s;
     double d = kNoHit;
-    s.radiance = radiance(Ray{origin, dir}, st, nullptr, d, &s.normal);
+    s.radiance = radiance(Ray{origin, dir}, st, nullptr, d, &s.normal) * promote;
     s.distance = d;
     return s;
 }

@@ -1,0 +1,93 @@
+// rcontrib's tally (RADIANCE rcontrib.c trace_contrib, pmcontrib2.c photonContrib): the
+// tracked modifiers with their bins, the bin expressions compiled once, and a per-thread
+// ContributionSink that adds each reported contribution to its modifier's bin.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "calc/program.h"
+#include "render/rcontrib_options.h"
+#include "render/renderer.h"
+#include "scene/primitive.h"
+#include "util/color.h"
+#include "util/warnings.h"
+
+namespace rp::render {
+
+// Evaluates a -bn value: the definitions so far, then `expr` (rcmain.c eval). Throws
+// InputError if it does not evaluate.
+double evalBinCount(const std::vector<CalcDefinition>& defs, const std::string& expr);
+
+class ContribTargets {
+public:
+    // `modifiers` as parsed; `defs` the -e/-f definitions (loaded after rayinit.cal, each
+    // modifier's -p values after them). `photonSources`: the names of the light materials
+    // of the sources a contribution map's primaries index (light::findLightSources
+    // order), empty without -ap. `sourceRadiance`: their radiance (for -V- with photons).
+    // Throws InputError for a bin expression that does not evaluate, and (with photon
+    // sources) "modifiers not in photon map" when none of the modifiers is one.
+    ContribTargets(const Scene& scene, const std::vector<ContribModifier>& modifiers,
+                   const std::vector<CalcDefinition>& defs, bool contributions,
+                   const std::vector<std::string>& photonSources = {},
+                   const std::vector<Color>& sourceRadiance = {});
+    ~ContribTargets();
+
+    const std::vector<ContribModifier>& modifiers() const { return modifiers_; }
+    // Values per input ray: every modifier's bins, in modifier order (offset(m) + bin).
+    size_t size() const { return size_; }
+    size_t offset(size_t m) const { return offsets_[m]; }
+
+    // Bin numbers of the input that were too large for -bn (reported at the end).
+    WarningCounter& badBins() const { return badBins_; }
+
+    struct Target;
+    const Target* targetOfModifier(int32_t prim) const {
+        return prim >= 0 && size_t(prim) < byModifier_.size() ? byModifier_[size_t(prim)] : nullptr;
+    }
+    const Target* targetOfSource(int32_t source) const {
+        return source >= 0 && size_t(source) < bySource_.size() ? bySource_[size_t(source)] : nullptr;
+    }
+    const std::vector<std::shared_ptr<const calc::Program>>& programs() const { return programs_; }
+    bool contributions() const { return contributions_; }
+
+private:
+    std::vector<ContribModifier> modifiers_;
+    std::vector<size_t> offsets_;
+    size_t size_ = 0;
+    std::vector<std::unique_ptr<Target>> targets_;
+    std::vector<const Target*> byModifier_;  // per scene record
+    std::vector<const Target*> bySource_;    // per photon source
+    std::vector<std::shared_ptr<const calc::Program>> programs_;
+    bool contributions_ = false;
+    mutable WarningCounter badBins_{"bad bin numbers (ignored)"};
+};
+
+// One thread's tally of one input ray's contributions (reset between rays).
+class ContribTally : public ContributionSink {
+public:
+    explicit ContribTally(const ContribTargets& targets);
+    ~ContribTally() override;
+
+    void reset();
+    const std::vector<Color>& values() const { return values_; }
+
+    bool tracks(int32_t modifier) const override {
+        return targets_.targetOfModifier(modifier) != nullptr;
+    }
+    void add(int32_t modifier, const Vec3& point, const Vec3& dir, const Color& coef,
+             const Color& value) override;
+    void addPhotons(int32_t source, const Vec3& point, const Color& value) override;
+
+private:
+    // The bin of `t` for a ray at `point` travelling `dir`; -1 to drop it.
+    int bin(const ContribTargets::Target& t, const Vec3& point, const Vec3& dir);
+
+    const ContribTargets& targets_;
+    std::vector<calc::Evaluator> evaluators_;  // one per program
+    std::vector<Color> values_;
+};
+
+}  // namespace rp::render

@@ -1,0 +1,196 @@
+#include "render/rcontrib_output.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "render/rcontrib_run.h"
+#include "util/error.h"
+#include "util/temp_dir_for_tests.h"
+
+namespace rp::render {
+namespace {
+
+RcontribOptions options(std::vector<ContribModifier> mods, char format = 'a', bool header = true) {
+    RcontribOptions o = rcontribDefaults();
+    o.modifiers = std::move(mods);
+    o.outputFormat = format;
+    o.header = header;
+    o.commandWords = {"rcontrib", "-I+", "-m", "lamp"};
+    return o;
+}
+
+ContribModifier mod(const std::string& name, int bins = 1, const std::string& out = "") {
+    ContribModifier m;
+    m.name = name;
+    m.bins = bins;
+    m.binExpr = bins > 1 ? "b" : "0";
+    m.outSpec = out;
+    return m;
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// The header with its date lines removed.
+std::string stableHeader(const std::string& text) {
+    std::istringstream in(text);
+    std::string out, line;
+    while (std::getline(in, line)) {
+        if (line.rfind("CAPDATE=", 0) == 0 || line.rfind("GMT=", 0) == 0) continue;
+        out += line + "\n";
+        if (line.empty()) break;
+    }
+    return out;
+}
+
+TEST(ContribOutputName, RadiancesConversions) {
+    std::string n;
+    bool m = false, b = false;
+    ASSERT_TRUE(contribOutputName("c_%s_%03d.txt", "sky", 7, n, m, b));
+    EXPECT_EQ(n, "c_sky_007.txt");
+    EXPECT_TRUE(m && b);
+    ASSERT_TRUE(contribOutputName("%d_%s.txt", "sun", 2, n, m, b));  // either order
+    EXPECT_EQ(n, "2_sun.txt");
+    ASSERT_TRUE(contribOutputName("100%%_%x", "s", 255, n, m, b));
+    EXPECT_EQ(n, "100%_ff");
+    EXPECT_FALSE(m);
+    EXPECT_FALSE(contribOutputName("x_%s_%s.txt", "a", 0, n, m, b));
+    EXPECT_FALSE(contribOutputName("x_%d_%i.txt", "a", 0, n, m, b));
+    EXPECT_FALSE(contribOutputName("x_%f.txt", "a", 0, n, m, b));
+}
+
+TEST(ContribOutput, StandardOutputHeaderAndRecordsAsRadiance) {
+    // Layout checked against RADIANCE 5.4a: `rcontrib -I+ -m lampA -m lampB -m skyglow`
+    // writes NCOMP=3, NCOLS=<values per record>, FORMAT=ascii, and each record as
+    // "%.6e\t" per component with a newline after the last tab.
+    RcontribOptions o = options({mod("lamp"), mod("sky", 2)});
+    std::ostringstream out;
+    ContribOutput co(o, {"oconv scene.rad"}, out);
+    co.writeRecord({Color{1, 2, 3}, Color{0.5, 0, 0}, Color{}}, 1, false);
+    co.writeRecord({Color{2, 4, 6}, Color{}, Color{1, 1, 1}}, 0.5, false);
+    co.close();
+    const std::string text = out.str();
+    EXPECT_EQ(stableHeader(text),
+              "#?RADIANCE\noconv scene.rad\nrcontrib -I+ -m lamp\nSOFTWARE= radphoton\n"
+              "NCOMP=3\nNCOLS=3\nFORMAT=ascii\n\n");
+    EXPECT_NE(text.find("\n\n1.000000e+00\t2.000000e+00\t3.000000e+00\t5.000000e-01\t"
+                        "0.000000e+00\t0.000000e+00\t0.000000e+00\t0.000000e+00\t0.000000e+00\t\n"
+                        "1.000000e+00\t2.000000e+00\t3.000000e+00\t0.000000e+00\t"),
+              std::string::npos)
+        << text;
+}
+
+TEST(ContribOutput, FilesPerModifierAndBin) {
+    TempDir dir;
+    const std::string spec = dir.file("c_%s_%d.dat");
+    RcontribOptions o = options({mod("sky", 2, spec)}, 'f');
+    std::ostringstream out;
+    {
+        ContribOutput co(o, {}, out);
+        co.writeRecord({Color{1, 2, 3}, Color{4, 5, 6}}, 1, true);
+        co.close();
+    }
+    EXPECT_TRUE(out.str().empty());
+    const std::string f1 = slurp(dir.file("c_sky_1.dat"));
+    // RADIANCE compat: MODIFIER= and BIN= for files, byte order for binary formats.
+    const std::string h = stableHeader(f1);
+    EXPECT_NE(h.find("MODIFIER=sky\nBIN=1\nNCOLS=1\nBigEndian=0\nFORMAT=float\n\n"),
+              std::string::npos)
+        << h;
+    const size_t data = f1.find("\n\n") + 2;
+    ASSERT_EQ(f1.size(), data + 12);
+    float v[3];
+    std::memcpy(v, f1.data() + data, sizeof v);
+    EXPECT_EQ(v[0], 4);
+    EXPECT_EQ(v[2], 6);
+}
+
+TEST(ContribOutput, ExistingFileIsKeptWithoutForce) {
+    TempDir dir;
+    const std::string f = dir.file("lamp.txt");
+    std::ofstream(f) << "precious";
+    RcontribOptions o = options({mod("lamp", 1, f)});
+    std::ostringstream out;
+    try {
+        ContribOutput co(o, {}, out);
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "cannot open '" + f + "' for writing: File exists");
+    }
+    EXPECT_EQ(slurp(f), "precious");
+    o.force = true;
+    ContribOutput co(o, {}, out);
+    co.writeRecord({Color{1, 1, 1}}, 1, false);
+    co.close();
+    EXPECT_NE(slurp(f).find("1.000000e+00"), std::string::npos);
+}
+
+TEST(ContribOutput, PicturesOfSeveralModifiersTakeTheirOwnBinNumbers) {
+    // rcontrib.c addmodifier: with -fc -x -y, "img_%d.hdr" shared by two modifiers gives
+    // the second bins 1.. instead of writing both into img_0.hdr.
+    TempDir dir;
+    RcontribOptions o = options({mod("a", 1, dir.file("img_%d.hdr")),
+                                 mod("b", 2, dir.file("img_%d.hdr"))},
+                                'c');
+    o.xres = 1;
+    o.yres = 1;
+    std::ostringstream out;
+    ContribOutput co(o, {}, out);
+    co.writeRecord({Color{1, 1, 1}, Color{2, 2, 2}, Color{3, 3, 3}}, 1, false);
+    co.close();
+    for (int k = 0; k < 3; ++k) {
+        const std::string t = slurp(dir.file("img_" + std::to_string(k) + ".hdr"));
+        EXPECT_NE(t.find("\n\n-Y 1 +X 1\n"), std::string::npos) << k;
+    }
+    EXPECT_NE(slurp(dir.file("img_2.hdr")).find("MODIFIER=b\nBIN=2\nNROWS=1\n"), std::string::npos);
+}
+
+// A run that stops after `n` records leaves files that -r continues.
+TEST(ContribOutput, RecoverKeepsCompleteRecords) {
+    TempDir dir;
+    const std::string f = dir.file("r_%s.bin");
+    RcontribOptions o = options({mod("lamp", 2, f)}, 'd');
+    auto traceFn = [](const Vec3&, const Vec3&, uint64_t i, double, std::vector<Color>& v) {
+        v[0] = Color::grey(double(i));
+        v[1] = Color::grey(10.0 + double(i));
+    };
+    std::ostringstream out;
+    RcontribRunSettings s;
+    s.values = 2;
+    {
+        std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n");
+        ContribOutput co(o, {}, out);
+        runRcontrib(s, in, co, traceFn);
+    }
+    const std::string full = slurp(dir.file("r_lamp.bin"));
+    // Cut the file inside its third record, as a killed run leaves it.
+    std::filesystem::resize_file(dir.file("r_lamp.bin"), full.size() - 20);
+    o.recover = true;
+    ContribOutput co(o, {}, out);
+    s.skipRecords = co.recover();
+    EXPECT_EQ(s.skipRecords, 2u);
+    std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n");
+    runRcontrib(s, in, co, traceFn);
+    const std::string again = slurp(dir.file("r_lamp.bin"));
+    EXPECT_EQ(again, full);
+}
+
+TEST(ContribOutput, RecoveryRules) {
+    RcontribOptions o = options({mod("lamp")});
+    o.recover = true;
+    std::ostringstream out;
+    ContribOutput ascii(o, {}, out);
+    EXPECT_THROW(ascii.recover(), InputError);  // "cannot recover ASCII output"
+    o.outputFormat = 'f';
+    ContribOutput toStdout(o, {}, out);
+    EXPECT_THROW(toStdout.recover(), InputError);  // "cannot recover from stdout"
+}
+
+}  // namespace
+}  // namespace rp::render

@@ -1,0 +1,119 @@
+// rcontrib: contributions of tracked modifiers (light sources, sky patches) to rays from
+// standard input (RADIANCE rcontrib.1), classic or from a contribution photon map (-ap).
+// Options in src/render/rcontrib_options.h, the tally in rcontrib.h, outputs in
+// rcontrib_output.h, the loop in rcontrib_run.h.
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "calc/search_path.h"
+#include "gen/builtin_commands.h"
+#include "geometry/scene_geometry.h"
+#include "light/light_sources.h"
+#include "material/mist_probe.h"
+#include "render/command_args.h"
+#include "render/photon_lighting.h"
+#include "render/rcontrib.h"
+#include "render/rcontrib_options.h"
+#include "render/rcontrib_output.h"
+#include "render/rcontrib_run.h"
+#include "render/renderer.h"
+#include "render/rtrace_tracer.h"
+#include "scene/scene_load.h"
+#include "util/error.h"
+#include "util/header.h"
+#include "util/paths.h"
+#include "util/warnings.h"
+
+namespace {
+
+using namespace rp::render;
+
+// The scene file's header lines but FORMAT (RADIANCE checkheader copies them into every
+// output header); none for a file without a header.
+std::vector<std::string> sceneHeaderLines(const std::string& file) {
+    std::vector<std::string> lines;
+    std::ifstream in(file, std::ios::binary);
+    rp::Header h;
+    if (!in || !rp::tryReadHeader(in, h)) return lines;
+    for (const std::string& l : h.lines)
+        if (l.rfind("FORMAT=", 0) != 0) lines.push_back(l);
+    return lines;
+}
+
+// The names and radiances of the sources a contribution map's primaries index (mkpmap's
+// source list, light::findLightSources).
+void photonSources(const rp::Scene& scene, const rp::SceneGeometry& geometry,
+                   std::vector<std::string>& names, std::vector<rp::Color>& radiance) {
+    for (const rp::light::LightSource& s : rp::light::findLightSources(scene, geometry)) {
+        names.push_back(scene.prims[size_t(s.material)].name);
+        radiance.push_back(s.params.radiance);
+    }
+}
+
+int run(const RcontribOptions& o) {
+    const bool warnings = o.render.warnings;
+    rp::setWarningSink([warnings](const std::string& m) {
+        if (warnings) std::cerr << "rcontrib: warning: " << m << '\n';
+    });
+    const auto threads = threadLimit(o.render);
+    rp::Scene scene = rp::loadScene({o.sceneFile}, rp::gen::builtinLoadOptions());
+    rp::SceneGeometry geometry(scene);
+    Renderer renderer(scene, geometry, o.render, rp::calc::defaultSearchPath(rp::projectLibDir()));
+    // RADIANCE compat (raytrace.c raycontrib): coefficients leave participating media out.
+    if (o.render.mist.any() || rp::material::sceneHasMist(scene))
+        rp::warn("ray contribution calculation does not support participating media");
+
+    std::vector<std::string> sourceNames;
+    std::vector<rp::Color> sourceRadiance;
+    if (renderer.photons().hasContrib()) {
+        photonSources(scene, geometry, sourceNames, sourceRadiance);
+        int bandwidth = o.render.photonMaps.front().bandwidth;
+        if (bandwidth <= 0) bandwidth = kDefaultBandwidth;
+        // RADIANCE compat (pmcontrib2.c initPmapContrib).
+        if (size_t(bandwidth) < o.modifiers.size())
+            rp::warn("photon density estimate bandwidth too low, contributions may be underestimated");
+    }
+    ContribTargets targets(scene, o.modifiers, o.definitions, o.contributions, sourceNames,
+                           sourceRadiance);
+    ContribOutput output(o, sceneHeaderLines(o.sceneFile), std::cout);
+    RendererTracer tracer(renderer, o.immediateIrradiance);
+
+    RcontribRunSettings s;
+    s.inputFormat = o.inputFormat;
+    s.xres = o.xres;
+    s.yres = o.yres;
+    s.accumulate = o.accumulate;
+    s.threads = o.render.threads;
+    s.limitDistance = o.limitDistance;
+    s.reportSeconds = o.reportSeconds;
+    s.progress = &std::cerr;
+    s.values = targets.size();
+    if (o.recover) s.skipRecords = output.recover();
+    runRcontrib(s, std::cin, output, tracer.contributions(targets));
+    targets.badBins().report();
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::ios::sync_with_stdio(false);
+    try {
+        RcontribOptions o = parseRcontribArgs(argVector(argc, argv), &evalBinCount);
+        if (o.printDefaults) {
+            std::cout << formatRcontribDefaults(o);
+            return 0;
+        }
+        return run(o);
+    } catch (const rp::InputError& e) {
+        std::cout.flush();
+        std::cerr << "rcontrib: " << e.what() << '\n';
+        return 1;
+    } catch (const std::exception& e) {
+        std::cout.flush();
+        std::cerr << "rcontrib: internal error: " << e.what() << '\n';
+        return 2;
+    }
+}
