@@ -21,7 +21,7 @@ PhotonLighting::Lookups::Lookups(const PhotonLighting& owner) : owner_(owner) {
         p.maxSearchRadius = owner.maxSearchRadius_;
         // RADIANCE compat (pmcontrib2.c): contribution lookups count as short unless the
         // queue fills, so every requested photon's contribution is there.
-        if (m.map.type() == pmap::PhotonMapType::Contrib) p.gatherTolerance = 1;
+        if (!m.map.primaries().empty()) p.gatherTolerance = 1;
         // Eager indexes exist already (get() returns at once); lazy ones are chosen per
         // lookup (PhotonLighting::density).
         lookups.emplace_back(m.map, p,
@@ -135,8 +135,23 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
                              " (stale: rerun mkpmap)");
         *slot = int(maps_.size());
         maps_.push_back(std::move(m));
+        if (type == T::Contrib) addContribCaustics();
     }
     biasStats_.resize(maps_.size());
+}
+
+void PhotonLighting::addContribCaustics() {
+    const Map& c = maps_[size_t(contrib_)];
+    std::vector<pmap::Photon> caustic;
+    for (const pmap::Photon& p : c.map.photons())
+        if (p.caustic()) caustic.push_back(p);
+    if (caustic.empty()) return;
+    Map m;
+    m.map = pmap::PhotonMap(pmap::PhotonMapType::Contrib, std::move(caustic), c.map.primaries());
+    m.use = c.use;
+    m.file = c.file;
+    contribCaustic_ = int(maps_.size());
+    maps_.push_back(std::move(m));
 }
 
 std::string PhotonLighting::biasReport() const {
@@ -185,15 +200,20 @@ Color PhotonLighting::directDensity(Lookups& l, const Vec3& pos, const Vec3& nor
 }
 
 Color PhotonLighting::contribDensity(Lookups& l, const Vec3& pos, const Vec3& normal,
-                                     const Color& coef, ContributionSink* sink) const {
-    if (contrib_ < 0) return {};
-    const pmap::PhotonMap& map = maps_[size_t(contrib_)].map;
+                                     const Color& coef, ContributionSink* sink,
+                                     bool caustic) const {
+    const int index = caustic ? contribCaustic_ : contrib_;
+    if (index < 0) return {};
+    const Map& m = maps_[size_t(index)];
+    const pmap::PhotonMap& map = m.map;
     const auto& primaries = map.primaries();
     auto share = [&](const pmap::Photon& p, const std::array<double, 3>& v) {
         if (!sink || p.primary >= primaries.size()) return;
         sink->addPhotons(primaries[p.primary].srcIdx, pos, coef * Color{v[0], v[1], v[2]});
     };
-    auto d = l.lookups[size_t(contrib_)].contribDensity(pos, normal, share);
+    pmap::PhotonLookup& lookup = l.lookups[size_t(index)];
+    if (m.indexedOnDemand()) lookup.useIndex(l.earlyRay ? nullptr : &m.index.get(map.photons()));
+    auto d = lookup.contribDensity(pos, normal, share);
     return Color{d[0], d[1], d[2]};
 }
 

@@ -48,6 +48,9 @@ public:
     bool hasDirect() const { return direct_ >= 0; }
     bool hasVolume() const { return volume_ >= 0; }
     bool hasContrib() const { return contrib_ >= 0; }
+    // Caustic photons at the hits of non-ambient rays: a caustic map's, or those of a
+    // contribution map that arrived through specular surfaces (RADIANCE ambPmapCaustic).
+    bool hasCausticLight() const { return caustic_ >= 0 || contribCaustic_ >= 0; }
 
     // Per-thread lookup state (adaptive radius, result buffers); adds its lookup counts
     // to the owner's when destroyed.
@@ -84,11 +87,12 @@ public:
     Color globalDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
     Color causticDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
     Color directDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
-    // The contribution map's irradiance / pi at a final-gather hit, as the global map's;
+    // The contribution map's irradiance / pi at a final-gather hit, as the global map's
+    // (or with `caustic`, of its caustic photons only, at other hits, as a caustic map's);
     // each photon's share of it, times the path coefficient `coef`, goes to `sink` with
     // the source that emitted it (RADIANCE photonContrib). Zero without a contribution map.
     Color contribDensity(Lookups& l, const Vec3& pos, const Vec3& normal, const Color& coef,
-                         ContributionSink* sink) const;
+                         ContributionSink* sink, bool caustic = false) const;
     // The contribution map (for the source list its primaries index); null without one.
     const pmap::PhotonMap* contribMap() const {
         return contrib_ >= 0 ? &maps_[size_t(contrib_)].map : nullptr;
@@ -117,10 +121,14 @@ private:
         std::string file;
     };
     Color density(Lookups& l, int index, const Vec3& pos, const Vec3& normal) const;
+    void addContribCaustics();  // makes contribCaustic_ from the contribution map
 
     std::vector<Map> maps_;
     double maxSearchRadius_ = 0;
     int global_ = -1, caustic_ = -1, direct_ = -1, volume_ = -1, contrib_ = -1;
+    // The contribution map's caustic photons as a map of their own: RADIANCE filters its
+    // search by the caustic flag; a map of them gives the same nearest photons.
+    int contribCaustic_ = -1;
     mutable std::atomic<uint64_t> shortLookups_{0}, lookups_{0};
     mutable std::mutex statsMutex_;
     mutable std::vector<pmap::BiasCompStats> biasStats_;  // per map, merged from threads

@@ -329,7 +329,7 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     const PhotonLighting& pmaps = impl.photons;
     const bool specularInPmap =
         pmaps.active() && state.ambientLevel > 0 &&
-        (impl.ambientOptions.bounces < 0 || state.depth > 1 || pmaps.hasCaustic());
+        (impl.ambientOptions.bounces < 0 || state.depth > 1 || pmaps.hasCausticLight());
     std::optional<MediaState> childMedia;  // of a child entering or leaving a dielectric
     for (int i = 0; i < (specularInPmap ? 0 : b.numRays); ++i) {
         const material::SpecularRay& sr = b.rays[size_t(i)];
@@ -467,9 +467,14 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
         // the global map, which holds caustic light too; hits of other rays add the
         // caustic map and gather the rest. Without a global map the caustic map fills in
         // at the samples' hits as well (ambPmapCaustic), or that light would be lost.
-        if (pm.hasContrib() && (state.ambientLevel > 0 || impl.ambientOptions.bounces < 0))
-            return pm.contribDensity(*photonLookups, hit.point, normal,
-                                     state.contribCoef * coef, state.contrib);
+        // A contribution map plays both parts, its caustic photons the caustic map's.
+        if (pm.hasContrib()) {
+            const bool gather = state.ambientLevel > 0 || impl.ambientOptions.bounces < 0;
+            Color d = pm.contribDensity(*photonLookups, hit.point, normal,
+                                        state.contribCoef * coef, state.contrib, !gather);
+            if (gather) return d;
+            c += d;
+        }
         if (pm.hasGlobal() && (state.ambientLevel > 0 || impl.ambientOptions.bounces < 0))
             return pm.globalDensity(*photonLookups, hit.point, normal);
         if (pm.hasCaustic() && (state.ambientLevel == 0 || !pm.hasGlobal()))
@@ -527,7 +532,7 @@ bool Renderer::Context::shadowInPhotonMap(const RayState& state) const {
     const PhotonLighting& pm = impl.photons;
     if (!pm.active()) return false;
     if (impl.ambientOptions.bounces < 0) return true;
-    return state.ambientLevel > 0 ? true : pm.hasCaustic();
+    return state.ambientLevel > 0 ? true : pm.hasCausticLight();
 }
 
 }  // namespace rp::render
