@@ -240,6 +240,9 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
     cands.clear();
     crossings.clear();
     samples.clear();
+    // -dt 0 (rcontrib's setting) tests every sample: no estimate is needed to order them
+    // or to stand in for untested ones.
+    const bool testAll = !(im.options.threshold > 0);
 
     for (size_t si = 0; si < list.sources.size(); ++si) {
         const DirectSource& src = list.sources[si];
@@ -331,6 +334,12 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
                 crossings.resize(c.crossings);
                 continue;
             }
+            if (testAll) {
+                c.estimate = c.coef * mirrorColour;
+                c.brt = 1;
+                cands.push_back(c);
+                continue;
+            }
             // Unoccluded value (RADIANCE srcvalue): the source's radiance toward us.
             Color radiance;
             if (src.distant()) {
@@ -355,8 +364,9 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
     // nshadcheck = n^dc estimates together fall below dt/weight times what has been
     // found so far. Stable sort: ties keep source order, so results are reproducible.
     // A handful of candidates is usual (stableSortSmall: no buffer allocated per call).
-    stableSortSmall(cands.begin(), cands.end(),
-                    [](const Candidate& a, const Candidate& b) { return a.brt > b.brt; });
+    if (!testAll)
+        stableSortSmall(cands.begin(), cands.end(),
+                        [](const Candidate& a, const Candidate& b) { return a.brt > b.brt; });
     const size_t n = cands.size();
     tail.assign(n + 1, 0.0);
     for (size_t i = n; i-- > 0;) tail[i] = tail[i + 1] + cands[i].brt;
