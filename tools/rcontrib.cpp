@@ -42,22 +42,22 @@ std::vector<std::string> sceneHeaderLines(const std::string& file) {
     return lines;
 }
 
-// The names and radiances of the sources a contribution map's primaries index (mkpmap's
-// source list, light::findLightSources).
-void photonSources(const rp::Scene& scene, const rp::SceneGeometry& geometry,
-                   std::vector<std::string>& names, std::vector<rp::Color>& radiance) {
-    for (const rp::light::LightSource& s : rp::light::findLightSources(scene, geometry)) {
-        names.push_back(scene.prims[size_t(s.material)].name);
-        radiance.push_back(s.params.radiance);
-    }
+// The sources a contribution map's primaries index (mkpmap's source list,
+// light::findLightSources).
+std::vector<PhotonSource> photonSources(const rp::Scene& scene, const rp::SceneGeometry& geometry) {
+    std::vector<PhotonSource> out;
+    for (const rp::light::LightSource& s : rp::light::findLightSources(scene, geometry))
+        out.push_back({scene.prims[size_t(s.material)].name, s.params.radiance, s.distant()});
+    return out;
 }
 
-int run(const RcontribOptions& o) {
+int run(RcontribOptions o) {
     const bool warnings = o.render.warnings;
     rp::setWarningSink([warnings](const std::string& m) {
         if (warnings) std::cerr << "rcontrib: warning: " << m << '\n';
     });
     const auto threads = threadLimit(o.render);
+    for (const ContribModifier& m : o.modifiers) o.render.contribModifiers.push_back(m.name);
     rp::Scene scene = rp::loadScene({o.sceneFile}, rp::gen::builtinLoadOptions());
     rp::SceneGeometry geometry(scene);
     Renderer renderer(scene, geometry, o.render, rp::calc::defaultSearchPath(rp::projectLibDir()));
@@ -65,18 +65,16 @@ int run(const RcontribOptions& o) {
     if (o.render.mist.any() || rp::material::sceneHasMist(scene))
         rp::warn("ray contribution calculation does not support participating media");
 
-    std::vector<std::string> sourceNames;
-    std::vector<rp::Color> sourceRadiance;
+    std::vector<PhotonSource> sources;
     if (renderer.photons().hasContrib()) {
-        photonSources(scene, geometry, sourceNames, sourceRadiance);
+        sources = photonSources(scene, geometry);
         int bandwidth = o.render.photonMaps.front().bandwidth;
         if (bandwidth <= 0) bandwidth = kDefaultBandwidth;
         // RADIANCE compat (pmcontrib2.c initPmapContrib).
         if (size_t(bandwidth) < o.modifiers.size())
             rp::warn("photon density estimate bandwidth too low, contributions may be underestimated");
     }
-    ContribTargets targets(scene, o.modifiers, o.definitions, o.contributions, sourceNames,
-                           sourceRadiance);
+    ContribTargets targets(scene, o.modifiers, o.definitions, o.contributions, sources);
     ContribOutput output(o, sceneHeaderLines(o.sceneFile), std::cout);
     RendererTracer tracer(renderer, o.immediateIrradiance);
 

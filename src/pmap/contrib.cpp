@@ -15,6 +15,7 @@
 #include <tbb/task_arena.h>
 
 #include "pmap/distribute.h"
+#include "util/dir_code.h"
 #include "util/error.h"
 #include "util/rng.h"
 #include "util/warnings.h"
@@ -30,14 +31,26 @@ using Clock = std::chrono::steady_clock;
 struct PathBatch {
     std::vector<RawPhoton> photons;
     std::vector<uint32_t> pathSizes;
+    std::vector<PrimaryRay> rays;  // per path, when primary rays are kept
     long runaways = 0;
 
     void append(PathBatch&& b) {
         photons.insert(photons.end(), b.photons.begin(), b.photons.end());
         pathSizes.insert(pathSizes.end(), b.pathSizes.begin(), b.pathSizes.end());
+        rays.insert(rays.end(), b.rays.begin(), b.rays.end());
         runaways += b.runaways;
     }
 };
+
+// Where emitted photon `index` left its source and the direction back to it (the tracer
+// emitted it from the same (seed, index) stream, so it is the same photon).
+PrimaryRay primaryRay(const light::EmissionPlan& plan, uint64_t seed, uint64_t index) {
+    const light::EmittedPhoton e = plan.emitPhoton(seed, index);
+    PrimaryRay r;
+    r.pos = {float(e.ray.origin.x), float(e.ray.origin.y), float(e.ray.origin.z)};
+    r.dir = encodeDirection({-e.ray.dir.x, -e.ray.dir.y, -e.ray.dir.z});
+    return r;
+}
 
 class Reporter {
 public:
@@ -69,8 +82,10 @@ private:
     std::atomic<uint64_t> emitted_{0}, stored_{0};
 };
 
+// `rays` (may be null): the plan to record each storing path's primary ray from.
 PathBatch traceRange(const PhotonTracer& tracer, tbb::task_arena& arena, uint64_t seed,
-                     uint64_t begin, uint64_t end, Reporter& reporter) {
+                     uint64_t begin, uint64_t end, Reporter& reporter,
+                     const light::EmissionPlan* rays) {
     if (end <= begin) return {};
     std::array<double, kNumPhotonMapTypes> all{};
     all.fill(1.0);
@@ -89,7 +104,9 @@ PathBatch traceRange(const PhotonTracer& tracer, tbb::task_arena& arena, uint64_
                     for (uint64_t i = i0; i < i1; ++i) {
                         const size_t before = g.size();
                         tracer.trace(seed, i, all, bins);
-                        if (g.size() > before) b.pathSizes.push_back(uint32_t(g.size() - before));
+                        if (g.size() == before) continue;
+                        b.pathSizes.push_back(uint32_t(g.size() - before));
+                        if (rays) b.rays.push_back(primaryRay(*rays, seed, i));
                     }
                     b.photons = std::move(g);
                     b.runaways = bins.runaways;
@@ -135,6 +152,7 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
         }
         light::EmissionPlan single(geometry, {sources[s]}, emission);
         PhotonTracer tracer(scene, geometry, single, trace, chains, materialCalc);
+        const light::EmissionPlan* rays = settings.primaryRays ? &single : nullptr;
         const uint64_t seed = mix64(settings.seed + 0x632be59bd9b4e019ULL * (s + 1));
 
         // Prepass: a fraction of the source's share, doubled while nothing is stored.
@@ -143,7 +161,8 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
         uint64_t pass = std::max<uint64_t>(1, uint64_t(std::ceil(settings.preDistrib * srcTarget)));
         bool ok = false;
         for (int prepass = 1; prepass <= settings.maxPrepass; ++prepass, pass *= 2) {
-            batch.append(traceRange(tracer, arena, seed, emitted, emitted + pass, reporter));
+            batch.append(
+                traceRange(tracer, arena, seed, emitted, emitted + pass, reporter, rays));
             emitted += pass;
             if (!batch.photons.empty()) {
                 ok = true;
@@ -161,7 +180,7 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
         const double ratio = srcTarget / double(batch.photons.size());
         const uint64_t total =
             std::max(emitted, uint64_t(std::ceil(double(emitted) * std::max(1.0, ratio))));
-        batch.append(traceRange(tracer, arena, seed, emitted, total, reporter));
+        batch.append(traceRange(tracer, arena, seed, emitted, total, reporter, rays));
         result.emitted[s] = total;
         result.stored[s] = batch.photons.size();
         result.totalEmitted += total;
@@ -172,6 +191,8 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
         const double scale = 1.0 / double(total);
         size_t k = 0;
         result.photons.reserve(result.photons.size() + batch.photons.size());
+        if (settings.primaryRays)
+            result.primaryRays.insert(result.primaryRays.end(), batch.rays.begin(), batch.rays.end());
         for (uint32_t n : batch.pathSizes) {
             const uint32_t primary = uint32_t(result.primaries.size());
             result.primaries.push_back(PhotonPrimary{int16_t(s)});

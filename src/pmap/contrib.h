@@ -3,8 +3,9 @@
 // about n / nsources photons, whatever its flux, and its photons carry that source's
 // flux divided by the number it emitted, so energy balance holds per source. Every
 // emitted photon whose path stores at least one photon gets a primary (PhotonPrimary:
-// the emitting source's index; RADIANCE's default build, file version 3.1k, has no
-// primary position or direction), and all photons stored along that path index it.
+// the emitting source's index, as RADIANCE's default build, file version 3.1k; with
+// -apCPD also its PrimaryRay, as its PMAP_CBDM build, 3.1kPD), and all photons stored
+// along that path index it.
 // Photons are stored where global photons are (indirect hits; pmapmat.c addPhotons).
 #pragma once
 
@@ -28,11 +29,13 @@ struct ContribSettings {
     int threads = 1;           // -n
     int reportSeconds = 0;     // -t (manual 4.4 line, stored photons under "global")
     std::ostream* progress = nullptr;
+    bool primaryRays = false;  // -apCPD: keep where each primary left its source
 };
 
 struct ContribResult {
     std::vector<Photon> photons;  // normalised flux, primary = index into primaries
     std::vector<PhotonPrimary> primaries;
+    std::vector<PrimaryRay> primaryRays;  // one per primary with primaryRays, else empty
     std::vector<uint64_t> emitted;  // per source (index into plan.sources())
     std::vector<uint64_t> stored;   // per source
     uint64_t totalEmitted = 0;

@@ -133,6 +133,7 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
     auto t0 = Clock::now();
     DistributionResult dist;
     std::vector<PhotonPrimary> primaries;  // contribution map only
+    std::vector<PrimaryRay> primaryRays;   // with -apCPD
     if (o.wants(PhotonMapType::Contrib)) {
         ContribSettings cs;
         cs.target = o.maps[size_t(PhotonMapType::Contrib)]->target;
@@ -142,9 +143,11 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         cs.threads = o.nproc;
         cs.reportSeconds = o.reportSeconds;
         cs.progress = &diag;
+        cs.primaryRays = o.maps[size_t(PhotonMapType::Contrib)]->primaryRays;
         ContribResult cr = distributeContrib(scene, geometry, plan, eo, ts, cs, chains, &functions);
         dist.photons[size_t(PhotonMapType::Contrib)] = std::move(cr.photons);
         primaries = std::move(cr.primaries);
+        primaryRays = std::move(cr.primaryRays);
         dist.emitted = cr.totalEmitted;
         dist.runaways = cr.runaways;
     } else {
@@ -201,6 +204,7 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
                             PhotonMapType(t) == PhotonMapType::Contrib ? std::move(primaries)
                                                                        : std::vector<PhotonPrimary>{},
                             o.nproc > 1);
+        if (PhotonMapType(t) == PhotonMapType::Contrib) maps[t].setPrimaryRays(std::move(primaryRays));
     };
     if (o.nproc > 1)
         arena.execute([&] {

@@ -109,7 +109,10 @@ MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
         else if (opt == "-apc") mapOpt(opt, PhotonMapType::Caustic, false);
         else if (opt == "-apv") mapOpt(opt, PhotonMapType::Volume, false);
         else if (opt == "-apd") mapOpt(opt, PhotonMapType::Direct, false);
-        else if (opt == "-apC") mapOpt(opt, PhotonMapType::Contrib, false);
+        else if (opt == "-apC" || opt == "-apCPD") {
+            mapOpt(opt, PhotonMapType::Contrib, false);
+            o.maps[size_t(PhotonMapType::Contrib)]->primaryRays = opt == "-apCPD";
+        }
         else if (opt == "-app") mapOpt(opt, PhotonMapType::PreComp, true);
         else if (opt == "-apD")
             o.preDistrib = positive(a.real(opt), "predistribution factor must be > 0");

@@ -20,6 +20,9 @@ struct MapRequest {
     std::string file;
     uint64_t target = 0;  // nphotons
     int bandwidth = 0;    // -app only
+    // -apCPD: a contribution map that keeps where each primary left its source
+    // (RADIANCE's 3.1kPD variant), so that rcontrib can bin photons by direction.
+    bool primaryRays = false;
 };
 
 // -api box (xmin ymin zmin xmax ymax zmax).

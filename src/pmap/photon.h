@@ -65,11 +65,21 @@ static_assert(sizeof(Photon) == 24, "photon record must stay at RADIANCE's 24 by
 Photon makePhoton(const Vec3& p, const Vec3& n, const std::array<double, 3>& rgb,
                   bool caustic = false, uint32_t primary = 0);
 
-// A primary ray of a contribution photon map (RADIANCE's default build: source index
-// only; the P/D file variants with position and direction are not supported yet).
+// A primary ray of a contribution photon map: the emitting source's index (RADIANCE's
+// default build, file version 3.1k).
 struct PhotonPrimary {
     int16_t srcIdx = -1;
     bool operator==(const PhotonPrimary& o) const = default;
+};
+
+// Where a primary left its source, kept by maps of RADIANCE's 3.1kPD variant (its
+// PMAP_CBDM build; mkpmap -apCPD): the emission point and the direction back toward the
+// source (the reverse of the emitted one) as a util/dir_code.h code, so that rcontrib can
+// bin photon contributions by where they came from.
+struct PrimaryRay {
+    std::array<float, 3> pos{};
+    int32_t dir = 0;
+    bool operator==(const PrimaryRay& o) const = default;
 };
 
 }  // namespace rp::pmap

@@ -75,6 +75,11 @@ std::span<const Photon> PhotonMap::photons() const {
     return onDemand_ ? onDemand_->all() : std::span<const Photon>(photons_);
 }
 
+void PhotonMap::setPrimaryRays(std::vector<PrimaryRay> rays) {
+    RP_CHECK(rays.empty() || rays.size() == primaries_.size());
+    primaryRays_ = std::move(rays);
+}
+
 const Photon& PhotonMap::searchedPhoton(size_t i) const {
     return onDemand_ ? onDemand_->photon(i) : photons_[i];
 }

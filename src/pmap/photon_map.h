@@ -23,6 +23,8 @@ class OnDemandPhotons;
 // RADIANCE's file format version for in-core kd-tree maps with RGBE flux and plain
 // primaries (pmapio.h PMAP_FILEVER); the only one we read and write so far.
 constexpr const char* kPhotonMapFileVersion = "3.1k";
+// RADIANCE's PMAP_CBDM build: primaries with position and direction.
+constexpr const char* kPhotonMapFileVersionPD = "3.1kPD";
 
 // "Radiance_<Type>_kdT_Photon_Map", the FORMAT= value RADIANCE writes for a kd-tree map.
 std::string photonMapFormat(PhotonMapType type);
@@ -70,6 +72,9 @@ public:
     const Photon& searchedPhoton(size_t i) const;
     const PhotonMapStats& stats() const { return stats_; }
     const std::vector<PhotonPrimary>& primaries() const { return primaries_; }
+    // One per primary in maps of the 3.1kPD variant, else empty.
+    const std::vector<PrimaryRay>& primaryRays() const { return primaryRays_; }
+    void setPrimaryRays(std::vector<PrimaryRay> rays);
 
     // ---- Files (photon_map_io.cpp) ----
 
@@ -77,6 +82,8 @@ public:
     // line): the command line (skipped if empty), NumPhotons, AvgFlux, Bbox, CoG,
     // MaxDist^2, "<n> primary rays" (contrib maps with primaries), FORMAT, VERSION.
     Header fileHeader(const std::string& commandLine) const;
+    // "3.1k", or "3.1kPD" for a map with primary rays.
+    const char* fileVersion() const;
 
     // Writes the complete file (info header + portable binary part) to `out`.
     void write(std::ostream& out, const std::string& commandLine) const;
@@ -118,6 +125,7 @@ private:
     BulkVector<Photon> photons_;
     std::shared_ptr<const OnDemandPhotons> onDemand_;  // set instead of photons_ on demand
     std::vector<PhotonPrimary> primaries_;
+    std::vector<PrimaryRay> primaryRays_;
     PhotonMapStats stats_;
 };
 

@@ -2,7 +2,8 @@
 // pmapkdt.c kdT_SavePhotons/kdT_LoadPhotons): info header, then in portable encoding
 //   version string (NUL-terminated), numPhotons (8 B), avg flux (3 flt), bbox interleaved
 //   min0,max0,min1,max1,min2,max2 (6 flt), CoG (3 flt), CoGdist (1 flt), numPrimary (4 B),
-//   primaries (srcIdx 2 B each), photons in kd-tree order, 27 B each:
+//   primaries (srcIdx 2 B each; "3.1kPD": srcIdx 2 B, direction code 4 B, position 3 flt,
+//   21 B), photons in kd-tree order, 27 B each:
 //   pos 3 flt | norm 3 x 1 B | RGBE 4 x 1 B | primary 4 B | flags 1 B.
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -12,6 +13,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -41,6 +43,7 @@ using portable::kPortableFloatSize;
 namespace {
 
 constexpr size_t kPrimaryRecordSize = 2;
+constexpr size_t kPrimaryRayRecordSize = 2 + 4 + 3 * kPortableFloatSize;  // 3.1kPD
 // Bytes after the version string up to and including numPrimary.
 constexpr size_t kFixedBinarySize = 8 + (3 + 6 + 3 + 1) * kPortableFloatSize + 4;  // 77
 constexpr size_t kMaxVersionLength = 32;
@@ -73,10 +76,14 @@ std::string versionProblem(const std::string& v) {
         return "out-of-core photon maps not supported yet (VERSION=" + v + ")";
     if (v.rfind("3.1k", 0) == 0 && v.find_first_not_of("fPD", 4) == std::string::npos)
         return "photon map file version " + v +
-               " not supported yet (only 3.1k: RGBE flux, primaries without the float-flux 'f', "
-               "primary-position 'P' or primary-direction 'D' variants)";
+               " not supported yet (3.1k and 3.1kPD only: RGBE flux, primaries with neither "
+               "or both of position 'P' and direction 'D')";
     return "incompatible photon map file version '" + v + "' (expected " + kPhotonMapFileVersion +
-           ")";
+           " or " + kPhotonMapFileVersionPD + ")";
+}
+
+bool knownVersion(const std::string& v) {
+    return v == kPhotonMapFileVersion || v == kPhotonMapFileVersionPD;
 }
 
 // Identifies the map type from the FORMAT line; throws for anything but a kd-tree map.
@@ -111,6 +118,10 @@ bool readBytes(std::istream& in, void* dst, size_t n) {
 
 }  // namespace
 
+const char* PhotonMap::fileVersion() const {
+    return primaryRays_.empty() ? kPhotonMapFileVersion : kPhotonMapFileVersionPD;
+}
+
 Header PhotonMap::fileHeader(const std::string& commandLine) const {
     Header h;
     std::string cmd = commandLine;
@@ -131,7 +142,7 @@ Header PhotonMap::fileHeader(const std::string& commandLine) const {
     if (!primaries_.empty())
         h.lines.push_back(cFormat("%u primary rays", static_cast<unsigned>(primaries_.size())));
     h.lines.push_back("FORMAT=" + photonMapFormat(type_));
-    h.lines.push_back(std::string("VERSION=") + kPhotonMapFileVersion);
+    h.lines.push_back(std::string("VERSION=") + fileVersion());
     return h;
 }
 
@@ -140,7 +151,7 @@ void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
     const PhotonMapStats& s = stats_;
     const std::span<const Photon> photons = this->photons();  // all of a map read on demand
     std::string b;
-    putStr(b, kPhotonMapFileVersion);
+    putStr(b, fileVersion());
     putInt(b, static_cast<int64_t>(photons.size()), 8);
     for (int a = 0; a < 3; ++a) putFlt(b, s.avgFlux[a]);
     for (int a = 0; a < 3; ++a) {
@@ -150,7 +161,14 @@ void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
     for (int a = 0; a < 3; ++a) putFlt(b, s.cog[a]);
     putFlt(b, s.cogDist2);
     putInt(b, static_cast<int64_t>(primaries_.size()), 4);
-    for (const PhotonPrimary& p : primaries_) putInt(b, p.srcIdx, 2);
+    for (size_t i = 0; i < primaries_.size(); ++i) {
+        putInt(b, primaries_[i].srcIdx, 2);
+        if (primaryRays_.empty()) continue;
+        // RADIANCE compat (pmapio.c): the direction before the position.
+        const PrimaryRay& r = primaryRays_[i];
+        putInt(b, r.dir, 4);
+        for (int a = 0; a < 3; ++a) putFlt(b, r.pos[size_t(a)]);
+    }
     out.write(b.data(), static_cast<std::streamsize>(b.size()));
     // Chunks are encoded in parallel (in the caller's task arena), a batch at a time to
     // bound the buffer memory, and written in order: the bytes do not depend on threads.
@@ -240,7 +258,7 @@ PhotonMap PhotonMap::readPrologue(std::istream& in, const std::string& what) {
     const std::string headerVersion = h.value("VERSION");
     // RADIANCE itself only checks the binary version below; the header line lets us give
     // the clearer message before reading binary data.
-    if (!headerVersion.empty() && headerVersion != kPhotonMapFileVersion)
+    if (!headerVersion.empty() && !knownVersion(headerVersion))
         throw InputError(loc, versionProblem(headerVersion));
 
     // Size of the binary part, to check the photon count before allocating anything.
@@ -256,7 +274,9 @@ PhotonMap PhotonMap::readPrologue(std::istream& in, const std::string& what) {
     if (!in || version.size() > kMaxVersionLength)
         throw InputError(loc, "truncated or corrupt photon map (no binary version string)");
     remaining -= version.size() + 1;
-    if (version != kPhotonMapFileVersion) throw InputError(loc, versionProblem(version));
+    if (!knownVersion(version)) throw InputError(loc, versionProblem(version));
+    const bool withRays = version == kPhotonMapFileVersionPD;
+    const size_t recordSize = withRays ? kPrimaryRayRecordSize : kPrimaryRecordSize;
 
     unsigned char fixed[kFixedBinarySize];
     if (remaining < kFixedBinarySize || !readBytes(in, fixed, kFixedBinarySize))
@@ -279,7 +299,7 @@ PhotonMap PhotonMap::readPrologue(std::istream& in, const std::string& what) {
         throw InputError(loc, fmt::format("corrupt photon map (photon count {})", numPhotons));
     s.numPhotons = static_cast<uint64_t>(numPhotons);
 
-    const uint64_t primaryBytes = numPrimary * kPrimaryRecordSize;
+    const uint64_t primaryBytes = numPrimary * recordSize;
     const bool sizeOk = primaryBytes <= remaining &&
                         s.numPhotons == (remaining - primaryBytes) / kPhotonRecordSize &&
                         (remaining - primaryBytes) % kPhotonRecordSize == 0;
@@ -303,8 +323,17 @@ PhotonMap PhotonMap::readPrologue(std::istream& in, const std::string& what) {
     if (!readBytes(in, buf.data(), primaryBytes))
         throw InputError(loc, "truncated photon map (primary rays incomplete)");
     map.primaries_.resize(numPrimary);
-    for (size_t i = 0; i < numPrimary; ++i)
-        map.primaries_[i].srcIdx = static_cast<int16_t>(getInt(&buf[i * kPrimaryRecordSize], 2));
+    if (withRays) map.primaryRays_.resize(numPrimary);
+    for (size_t i = 0; i < numPrimary; ++i) {
+        ByteReader p(&buf[i * recordSize], recordSize);
+        map.primaries_[i].srcIdx = static_cast<int16_t>(p.getInt(2));
+        if (!withRays) continue;
+        PrimaryRay& ray = map.primaryRays_[i];
+        ray.dir = static_cast<int32_t>(p.getInt(4));
+        for (size_t a = 0; a < 3; ++a) ray.pos[a] = static_cast<float>(p.getFlt());
+        if (!std::isfinite(ray.pos[0]) || !std::isfinite(ray.pos[1]) || !std::isfinite(ray.pos[2]))
+            throw InputError(loc, fmt::format("corrupt photon map (primary ray {})", i));
+    }
     return map;
 }
 

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "util/portable_io.h"
+#include "util/dir_code.h"
 #include "util/error.h"
 #include "pmap/pmap_test_util.h"
 #include "util/temp_dir_for_tests.h"
@@ -187,6 +188,31 @@ TEST(PhotonMap, RoundTripIsBitExact) {
         }
     }
     EXPECT_EQ(dir.count(), 4u);  // no temporary files left behind
+}
+
+TEST(PhotonMap, PrimaryRaysRoundTripAsVersion31kPD) {
+    // RADIANCE's PMAP_CBDM build (pmapio.c): VERSION=3.1kPD, each primary 21 bytes:
+    // srcIdx (2), direction code (4), position (3 portable floats).
+    TempDir dir;
+    PhotonMap m = randomMap(PhotonMapType::Contrib, 5000, 5, 200);
+    std::vector<PrimaryRay> rays(200);
+    for (size_t i = 0; i < rays.size(); ++i) {
+        rays[i].pos = {float(i) * 0.25f, -1.5f, 2.75f};
+        rays[i].dir = encodeDirection({0.6, 0, -0.8});
+    }
+    m.setPrimaryRays(rays);
+    const std::string f = dir.file("pd.pm");
+    m.save(f, "mkpmap test", false);
+    const std::string bytes = slurp(f);
+    EXPECT_NE(bytes.find("\nVERSION=3.1kPD\n"), std::string::npos);
+    EXPECT_NE(bytes.find(std::string("3.1kPD\0", 7)), std::string::npos);
+    PhotonMap r = PhotonMap::load(f);
+    expectSameMap(m, r);
+    EXPECT_EQ(r.primaryRays(), rays);
+    // 21 bytes per primary instead of 2, and 2 more in each version string.
+    PhotonMap plain = randomMap(PhotonMapType::Contrib, 5000, 5, 200);
+    plain.save(dir.file("plain.pm"), "mkpmap test", false);
+    EXPECT_EQ(bytes.size(), slurp(dir.file("plain.pm")).size() + 200 * 19 + 4);
 }
 
 TEST(PhotonMap, RefusesToOverwrite) {

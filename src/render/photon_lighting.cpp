@@ -2,11 +2,14 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <exception>
 #include <filesystem>
 #include <string>
 
+#include "util/dir_code.h"
 #include "util/error.h"
 #include "util/henyey_greenstein.h"
 #include "util/warnings.h"
@@ -57,8 +60,9 @@ int64_t fileMtime(const std::string& path) {
 }  // namespace
 
 PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double maxSearchRadius,
-                               const Scene& scene, bool contributions)
+                               const Scene& scene, const std::vector<bool>* trackedSources)
     : maxSearchRadius_(maxSearchRadius) {
+    const bool contributions = trackedSources != nullptr;
     int64_t newestInput = 0;
     std::string newestName;
     for (const SceneInput& in : scene.inputs)
@@ -135,19 +139,35 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
                              " (stale: rerun mkpmap)");
         *slot = int(maps_.size());
         maps_.push_back(std::move(m));
-        if (type == T::Contrib) addContribCaustics();
+        if (type == T::Contrib) prepareContrib(*trackedSources);
     }
     biasStats_.resize(maps_.size());
 }
 
-void PhotonLighting::addContribCaustics() {
-    const Map& c = maps_[size_t(contrib_)];
+void PhotonLighting::prepareContrib(const std::vector<bool>& trackedSources) {
+    Map& full = maps_[size_t(contrib_)];
+    const auto& primaries = full.map.primaries();
+    auto tracked = [&](const pmap::Photon& p) {
+        const int s = p.primary < primaries.size() ? primaries[p.primary].srcIdx : -1;
+        return s >= 0 && size_t(s) < trackedSources.size() && trackedSources[size_t(s)];
+    };
+    const auto photons = full.map.photons();
+    if (!std::all_of(photons.begin(), photons.end(), tracked)) {
+        std::vector<pmap::Photon> kept;
+        std::copy_if(photons.begin(), photons.end(), std::back_inserter(kept), tracked);
+        std::vector<pmap::PrimaryRay> rays = full.map.primaryRays();
+        full.map = pmap::PhotonMap(pmap::PhotonMapType::Contrib, std::move(kept), primaries);
+        full.map.setPrimaryRays(std::move(rays));
+        full.index = pmap::LazyPhotonIndex{};
+    }
+    const Map& c = full;
     std::vector<pmap::Photon> caustic;
     for (const pmap::Photon& p : c.map.photons())
         if (p.caustic()) caustic.push_back(p);
     if (caustic.empty()) return;
     Map m;
     m.map = pmap::PhotonMap(pmap::PhotonMapType::Contrib, std::move(caustic), c.map.primaries());
+    m.map.setPrimaryRays(c.map.primaryRays());
     m.use = c.use;
     m.file = c.file;
     contribCaustic_ = int(maps_.size());
@@ -207,9 +227,19 @@ Color PhotonLighting::contribDensity(Lookups& l, const Vec3& pos, const Vec3& no
     const Map& m = maps_[size_t(index)];
     const pmap::PhotonMap& map = m.map;
     const auto& primaries = map.primaries();
+    const auto& rays = map.primaryRays();
     auto share = [&](const pmap::Photon& p, const std::array<double, 3>& v) {
         if (!sink || p.primary >= primaries.size()) return;
-        sink->addPhotons(primaries[p.primary].srcIdx, pos, coef * Color{v[0], v[1], v[2]});
+        const Color value = coef * Color{v[0], v[1], v[2]};
+        if (rays.empty()) {
+            sink->addPhotons(primaries[p.primary].srcIdx, nullptr, value);
+            return;
+        }
+        const pmap::PrimaryRay& r = rays[p.primary];
+        const std::array<double, 3> d = decodeDirection(r.dir);
+        const ContributionSink::PhotonOrigin o{Vec3{r.pos[0], r.pos[1], r.pos[2]},
+                                               Vec3{d[0], d[1], d[2]}};
+        sink->addPhotons(primaries[p.primary].srcIdx, &o, value);
     };
     pmap::PhotonLookup& lookup = l.lookups[size_t(index)];
     if (m.indexedOnDemand()) lookup.useIndex(l.earlyRay ? nullptr : &m.index.get(map.photons()));

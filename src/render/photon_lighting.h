@@ -36,10 +36,12 @@ public:
     // two maps of one type, a bandwidth range with bw2 <= bw1 or any range for a volume
     // map (RADIANCE has no bias compensation for them), and a map older than any of the
     // scene's input files ("stale": rerun mkpmap). Contribution maps are rcontrib's
-    // (`contributions`): there every other type is refused, elsewhere they are. An empty
-    // `uses` gives an inactive set.
+    // (`trackedSources` non-null): there every other type is refused, elsewhere they
+    // are; a contribution map's photons from sources not marked in `trackedSources`
+    // (light::findLightSources order) are left out, as RADIANCE's lookups skip them. An
+    // empty `uses` gives an inactive set.
     PhotonLighting(const std::vector<PhotonMapUse>& uses, double maxSearchRadius,
-                   const Scene& scene, bool contributions = false);
+                   const Scene& scene, const std::vector<bool>* trackedSources = nullptr);
     ~PhotonLighting();
 
     bool active() const { return !maps_.empty(); }
@@ -121,7 +123,9 @@ private:
         std::string file;
     };
     Color density(Lookups& l, int index, const Vec3& pos, const Vec3& normal) const;
-    void addContribCaustics();  // makes contribCaustic_ from the contribution map
+    // Leaves untracked sources' photons out of the contribution map, then makes
+    // contribCaustic_ from it.
+    void prepareContrib(const std::vector<bool>& trackedSources);
 
     std::vector<Map> maps_;
     double maxSearchRadius_ = 0;

@@ -18,7 +18,6 @@ struct ContribTargets::Target {
     int program = -1;  // index into programs(); -1: constant bin 0
     calc::Entry expr;
     bool constant() const { return program < 0; }
-    Color sourceRadiance{1, 1, 1};  // photon coefficients (-V-) divide by it
 };
 
 namespace {
@@ -65,9 +64,8 @@ double evalBinCount(const std::vector<CalcDefinition>& defs, const std::string& 
 
 ContribTargets::ContribTargets(const Scene& scene, const std::vector<ContribModifier>& modifiers,
                                const std::vector<CalcDefinition>& defs, bool contributions,
-                               const std::vector<std::string>& photonSources,
-                               const std::vector<Color>& sourceRadiance)
-    : modifiers_(modifiers), contributions_(contributions) {
+                               const std::vector<PhotonSource>& photonSources)
+    : modifiers_(modifiers), photonSources_(photonSources), contributions_(contributions) {
     std::unordered_map<std::string, const Target*> byName;
     // Modifiers that share parameters share one program (a -M list of hundreds of lamps
     // with one -p and -b compiles once).
@@ -112,13 +110,10 @@ ContribTargets::ContribTargets(const Scene& scene, const std::vector<ContribModi
     }
     // pmcontrib2.c: photons by the name of their source's light material.
     bool any = photonSources.empty();
-    for (size_t s = 0; s < photonSources.size(); ++s) {
-        auto it = byName.find(photonSources[s]);
-        const Target* t = it != byName.end() ? it->second : nullptr;
-        bySource_.push_back(t);
-        if (!t) continue;
-        any = true;
-        if (s < sourceRadiance.size()) const_cast<Target*>(t)->sourceRadiance = sourceRadiance[s];
+    for (const PhotonSource& s : photonSources) {
+        auto it = byName.find(s.material);
+        bySource_.push_back(it != byName.end() ? it->second : nullptr);
+        any = any || bySource_.back();
     }
     if (!any) throw InputError("modifiers not in photon map");
 }
@@ -163,27 +158,39 @@ void ContribTally::add(int32_t modifier, const Vec3& point, const Vec3& dir, con
     values_[t->offset + size_t(b)] += targets_.contributions() ? coef * value : coef;
 }
 
-void ContribTally::addPhotons(int32_t source, const Vec3& point, const Color& value) {
+void ContribTally::addPhotons(int32_t source, const PhotonOrigin* origin, const Color& value) {
     const ContribTargets::Target* t = targets_.targetOfSource(source);
     if (!t) return;
+    const PhotonSource& src = targets_.photonSource(source);
+    int b = 0;
     if (!t->constant()) {
-        // RADIANCE compat (pmcontrib2.c, default build): maps without primary positions
-        // and directions cannot place a photon in a bin; RADIANCE warns and, its dummy
-        // ray meeting no source, drops the photon.
-        if (!warnedPhotonBins.exchange(true)) {
-            warn("no photon primary hitpoints for bin evaluation; using dummy (0,0,0)!");
-            warn("no photon primary directions for bin evaluation; using dummy (0,0,0)!");
+        if (!origin) {
+            // RADIANCE compat (pmcontrib2.c, default build): a map without primary rays
+            // cannot place a photon in a bin. RADIANCE warns (its advice is to rebuild
+            // RADIANCE; ours is mkpmap -apCPD) and drops the photon: its dummy ray meets
+            // no source, except a full-sky one, whose photons all land in the bin of
+            // D = 0. We drop those too.
+            if (!warnedPhotonBins.exchange(true)) {
+                warn("no photon primary hitpoints for bin evaluation; using dummy (0,0,0)!"
+                     " (make the map with mkpmap -apCPD)");
+                warn("no photon primary directions for bin evaluation; using dummy (0,0,0)!");
+            }
+            return;
         }
-        return;
+        // pmcontrib2.c with primary rays: the direction back toward the source; the point
+        // where the photon left it (RADIANCE gives a distant source's P as 0, and a local
+        // one's where its ray toward the source meets it, from the position of the photon
+        // emitted before, a slip we do not copy).
+        b = bin(*t, src.distant ? Vec3{} : origin->point, origin->toSource);
+        if (b < 0) return;
     }
-    (void)point;
     Color v = value;
     if (!targets_.contributions()) {
         // Coefficients: per unit radiance of the source (0 where it emits nothing).
-        const Color& r = t->sourceRadiance;
+        const Color& r = src.radiance;
         v = Color{r.r != 0 ? v.r / r.r : 0, r.g != 0 ? v.g / r.g : 0, r.b != 0 ? v.b / r.b : 0};
     }
-    values_[t->offset] += v;
+    values_[t->offset + size_t(b)] += v;
 }
 
 }  // namespace rp::render

@@ -21,18 +21,22 @@ namespace rp::render {
 // InputError if it does not evaluate.
 double evalBinCount(const std::vector<CalcDefinition>& defs, const std::string& expr);
 
+// A source a contribution map's primaries name (light::findLightSources order).
+struct PhotonSource {
+    std::string material;  // its light material's name: what -m must name
+    Color radiance;        // -V- divides its photons' flux by this
+    bool distant = false;  // a `source`: bins see P = 0 (RADIANCE)
+};
+
 class ContribTargets {
 public:
     // `modifiers` as parsed; `defs` the -e/-f definitions (loaded after rayinit.cal, each
-    // modifier's -p values after them). `photonSources`: the names of the light materials
-    // of the sources a contribution map's primaries index (light::findLightSources
-    // order), empty without -ap. `sourceRadiance`: their radiance (for -V- with photons).
-    // Throws InputError for a bin expression that does not evaluate, and (with photon
-    // sources) "modifiers not in photon map" when none of the modifiers is one.
+    // modifier's -p values after them). `photonSources`: empty without -ap. Throws
+    // InputError for a bin expression that does not evaluate, and (with photon sources)
+    // "modifiers not in photon map" when none of the modifiers is one.
     ContribTargets(const Scene& scene, const std::vector<ContribModifier>& modifiers,
                    const std::vector<CalcDefinition>& defs, bool contributions,
-                   const std::vector<std::string>& photonSources = {},
-                   const std::vector<Color>& sourceRadiance = {});
+                   const std::vector<PhotonSource>& photonSources = {});
     ~ContribTargets();
 
     const std::vector<ContribModifier>& modifiers() const { return modifiers_; }
@@ -50,6 +54,7 @@ public:
     const Target* targetOfSource(int32_t source) const {
         return source >= 0 && size_t(source) < bySource_.size() ? bySource_[size_t(source)] : nullptr;
     }
+    const PhotonSource& photonSource(int32_t source) const { return photonSources_[size_t(source)]; }
     const std::vector<std::shared_ptr<const calc::Program>>& programs() const { return programs_; }
     bool contributions() const { return contributions_; }
 
@@ -60,6 +65,7 @@ private:
     std::vector<std::unique_ptr<Target>> targets_;
     std::vector<const Target*> byModifier_;  // per scene record
     std::vector<const Target*> bySource_;    // per photon source
+    std::vector<PhotonSource> photonSources_;
     std::vector<std::shared_ptr<const calc::Program>> programs_;
     bool contributions_ = false;
     mutable WarningCounter badBins_{"bad bin numbers (ignored)"};
@@ -79,7 +85,7 @@ public:
     }
     void add(int32_t modifier, const Vec3& point, const Vec3& dir, const Color& coef,
              const Color& value) override;
-    void addPhotons(int32_t source, const Vec3& point, const Color& value) override;
+    void addPhotons(int32_t source, const PhotonOrigin* origin, const Color& value) override;
 
 private:
     // The bin of `t` for a ray at `point` travelling `dir`; -1 to drop it.

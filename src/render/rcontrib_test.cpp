@@ -4,6 +4,7 @@
 
 #include "scene/reader.h"
 #include "util/error.h"
+#include "util/warning_capture_for_tests.h"
 
 namespace rp::render {
 namespace {
@@ -93,14 +94,33 @@ TEST(ContribTally, PhotonContributionsBySourceMaterial) {
     // coefficients (-V-) are per unit radiance of that source.
     Scene s = parseScene(kScene);
     for (bool contributions : {false, true}) {
-        ContribTargets t(s, {mod("lamp")}, {}, contributions, {"lamp", "sky"},
-                         {Color{10, 20, 40}, Color{1, 1, 1}});
+        ContribTargets t(s, {mod("lamp")}, {}, contributions,
+                         {{"lamp", Color{10, 20, 40}, false}, {"sky", Color{1, 1, 1}, true}});
         ContribTally tally(t);
-        tally.addPhotons(0, Vec3{}, Color{1, 2, 4});
-        tally.addPhotons(1, Vec3{}, Color{5, 5, 5});  // the sky is not tracked
+        tally.addPhotons(0, nullptr, Color{1, 2, 4});
+        tally.addPhotons(1, nullptr, Color{5, 5, 5});  // the sky is not tracked
         EXPECT_EQ(tally.values()[0], contributions ? Color(1, 2, 4) : Color(0.1, 0.1, 0.1));
     }
-    EXPECT_THROW(ContribTargets(s, {mod("wall")}, {}, true, {"lamp", "sky"}), InputError);
+    EXPECT_THROW(ContribTargets(s, {mod("wall")}, {}, true, {{"lamp", {}, false}}), InputError);
+}
+
+TEST(ContribTally, PhotonBinsNeedPrimaryRays) {
+    // With primary rays (mkpmap -apCPD) a photon is binned by the direction back to its
+    // source; a distant source's point is 0 (RADIANCE). Without them, binned photons are
+    // dropped with RADIANCE's warnings.
+    Scene s = parseScene(kScene);
+    ContribTargets t(s, {mod("sky", "if(Dz, 1, 0) + if(Px*Px, 2, 0)", 4)}, {}, true,
+                     {{"sky", Color{1, 1, 1}, true}});
+    ContribTally tally(t);
+    const ContributionSink::PhotonOrigin up{Vec3{5, 5, 5}, Vec3{0, 0.6, 0.8}};
+    const ContributionSink::PhotonOrigin down{Vec3{5, 5, 5}, Vec3{0, 0.6, -0.8}};
+    tally.addPhotons(0, &up, Color{1, 1, 1});
+    tally.addPhotons(0, &down, Color{2, 2, 2});
+    EXPECT_EQ(tally.values()[1], Color(1, 1, 1));
+    EXPECT_EQ(tally.values()[0], Color(2, 2, 2));
+    WarningCapture w;
+    tally.addPhotons(0, nullptr, Color{4, 4, 4});
+    EXPECT_EQ(tally.values()[0] + tally.values()[1], Color(3, 3, 3));
 }
 
 }  // namespace

@@ -86,8 +86,11 @@ struct RenderOptions {
     int threads = 1;                       // -n
     std::string errorFile;                 // -e: diagnostics go here instead of stderr
     bool warnings = true;                  // -w
-    // rcontrib: -ap maps must be contribution maps (PhotonLighting), not other types.
+    // rcontrib: -ap maps must be contribution maps (PhotonLighting), not other types, and
+    // their lookups only see photons of sources whose light material is one of
+    // `contribModifiers` (RADIANCE pmapkdt.c: the tracked modifiers).
     bool contributions = false;
+    std::vector<std::string> contribModifiers;
 };
 
 // Consumes one common option starting at args[i] (and its values), advancing i past

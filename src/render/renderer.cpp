@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <unordered_set>
 
+#include "light/light_sources.h"
 #include "material/mist_probe.h"
 #include "render/renderer_impl.h"
 #include "util/error.h"
@@ -62,6 +64,19 @@ AmbientOptions photonAmbientOptions(const RenderOptions& o, const PhotonLighting
     return a;
 }
 
+// rcontrib: which light sources (light::findLightSources order, as a contribution map's
+// primaries count them) have a tracked light material.
+std::vector<bool> trackedLightSources(const Scene& s, const SceneGeometry& g,
+                                      const RenderOptions& o) {
+    std::vector<bool> out;
+    if (!o.contributions || o.photonMaps.empty()) return out;
+    const std::unordered_set<std::string> names(o.contribModifiers.begin(),
+                                                o.contribModifiers.end());
+    for (const light::LightSource& src : light::findLightSources(s, g))
+        out.push_back(names.count(s.prims[size_t(src.material)].name) != 0);
+    return out;
+}
+
 }  // namespace
 
 Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions& o,
@@ -71,7 +86,8 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
       options(o),
       chains(s, searchPath),
       materialCalc(s, std::move(searchPath)),
-      photons(o.photonMaps, o.photonMaxRadius, s, o.contributions),
+      trackedSources(trackedLightSources(s, g, o)),
+      photons(o.photonMaps, o.photonMaxRadius, s, o.contributions ? &trackedSources : nullptr),
       ambientOptions(photonAmbientOptions(o, photons)),
       // RADIANCE compat (source.c): in photon-map mode virtual sources are not made;
       // light from mirrors (and prisms) then arrives through caustic photons.

@@ -72,10 +72,16 @@ public:
     // (RADIANCE zeroes that ray's coefficient).
     virtual void add(int32_t modifier, const Vec3& point, const Vec3& dir, const Color& coef,
                      const Color& value) = 0;
+    // Where a photon's primary left its source (maps with primary rays, mkpmap -apCPD):
+    // the emission point and the unit direction back toward the source.
+    struct PhotonOrigin {
+        Vec3 point, toSource;
+    };
     // Photon contribution (rcontrib -ap): flux density `value` (already times the path
-    // coefficient, as irradiance / pi) of photons emitted by source `source` (index into
-    // the map's source list, light::EmissionPlan order) found at `point`.
-    virtual void addPhotons(int32_t source, const Vec3& point, const Color& value) = 0;
+    // coefficient, as irradiance / pi) of a photon emitted by source `source` (index into
+    // the map's source list, light::findLightSources order); `origin` null when the map
+    // does not keep primary rays.
+    virtual void addPhotons(int32_t source, const PhotonOrigin* origin, const Color& value) = 0;
 };
 
 class Renderer {

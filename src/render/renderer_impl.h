@@ -80,6 +80,9 @@ struct Renderer::Impl {
     const RenderOptions& options;
     material::SurfaceChains chains;
     material::MaterialCalc materialCalc;   // .cal functions of function-driven materials
+    // rcontrib: per light source (light::findLightSources), whether -m tracks its
+    // material; empty otherwise.
+    std::vector<bool> trackedSources;
     PhotonLighting photons;                // -ap maps (inactive without)
     AmbientOptions ambientOptions;         // -a options as used (photon mode adjusts -ab)
     DirectLighting direct;

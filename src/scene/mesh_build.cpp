@@ -450,34 +450,6 @@ private:
 
 }  // namespace
 
-int32_t encodeDirection(const std::array<double, 3>& dv) {
-    constexpr double kScale = 11584.5;  // ((1 << 13) - .5) * sqrt(2)
-    int32_t dc = 0;
-    int cd[3];
-    for (int i = 0; i < 3; ++i) {
-        if (dv[i] < 0.) {
-            cd[i] = static_cast<int>(dv[i] * -kScale + .5);
-            dc |= 1 << i;
-        } else {
-            cd[i] = static_cast<int>(dv[i] * kScale + .5);
-        }
-    }
-    if (!(cd[0] | cd[1] | cd[2])) return 0;
-    int cm;
-    if (cd[0] <= cd[1]) {
-        dc |= 010 | cd[0] << 5;
-        cm = cd[1];
-    } else {
-        dc |= cd[1] << 5;
-        cm = cd[0];
-    }
-    if (cd[2] <= cm)
-        dc |= 020 | cd[2] << 18;
-    else
-        dc |= cm << 18;
-    if (!dc) dc = 010;
-    return dc;
-}
 
 BuiltMesh buildMesh(const MeshSource& source, const MeshWriteOptions& options) {
     if (options.objlim < 1) throw InputError("objlim must be at least 1");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scene/mesh_write.h"
+#include "util/dir_code.h"
 
 namespace rp::meshbuild {
 
@@ -51,7 +52,7 @@ struct BuiltMesh {
 
 BuiltMesh buildMesh(const MeshSource& source, const MeshWriteOptions& options);
 
-// RADIANCE's 4-byte direction code (common/dircode.c encodedir) of a unit vector.
-int32_t encodeDirection(const std::array<double, 3>& dv);
+// RADIANCE's direction code of a unit vector (util/dir_code.h).
+using rp::encodeDirection;
 
 }  // namespace rp::meshbuild

@@ -40,6 +40,7 @@
 #include <unistd.h>
 
 #include "scene/portable_reader.h"
+#include "util/dir_code.h"
 #include "scene/radiance_objects.h"
 #include "scene/scene_file.h"
 
@@ -52,27 +53,9 @@ constexpr double kTiny = 1e-6;  // RADIANCE's FTINY
 // Smallest possible patch: flags, one vertex, all counts zero and a sole material.
 constexpr size_t kMinPatchBytes = 1 + 2 + 12 + 2 + 2 + 2 + 2 + 2;
 
-// dircode.c's 32-bit direction code: sign bits for x, y, z (bits 0-2), two 13-bit
-// components (bits 5-17 and 18-30, in units of 1/11584.5) whose axes bits 3 and 4
-// choose, and the third component making the vector unit length.
-std::array<float, 3> decodeDirection(uint32_t code) {
-    constexpr double kScale = 11584.5;
-    double a = ((code >> 5) & 0x1fff) / kScale;
-    double b = ((code >> 18) & 0x1fff) / kScale;
-    double c = std::sqrt(std::max(0.0, 1.0 - a * a - b * b));
-    bool firstIsX = code & 8, secondIsZ = code & 16;
-    double d[3];
-    if (firstIsX) {
-        d[0] = a;
-        d[1] = secondIsZ ? c : b;
-        d[2] = secondIsZ ? b : c;
-    } else {
-        d[1] = a;
-        d[0] = secondIsZ ? c : b;
-        d[2] = secondIsZ ? b : c;
-    }
-    for (int i = 0; i < 3; ++i)
-        if (code & (1u << i)) d[i] = -d[i];
+// Vertex normals are RADIANCE direction codes (util/dir_code.h).
+std::array<float, 3> decodeNormal(uint32_t code) {
+    const std::array<double, 3> d = decodeDirection(int32_t(code));
     return {static_cast<float>(d[0]), static_cast<float>(d[1]), static_cast<float>(d[2])};
 }
 
@@ -167,7 +150,7 @@ private:
             for (int64_t i = 0; i < nverts; ++i) {
                 uint32_t code = r_.u32("the normals");
                 if (code == 0) continue;
-                normals_[first + i] = decodeDirection(code);
+                normals_[first + i] = decodeNormal(code);
                 flags_[first + i] |= MeshData::kHasNormal;
                 anyNormal_ = true;
             }

@@ -29,6 +29,11 @@
 #    and lands up to 3.5 % from the exact value at these points (ours within 1 %).
 # 6. Errors: a global map, no modifier in the map, a bin expression that does not
 #    evaluate, an existing output without -fo: one line, non-zero exit, nothing written.
+# 7. Bins of photon contributions (tests/data/contrib/sunsky.rad: sun and sky over an open
+#    box): RADIANCE's 3.1kPD map gives RADIANCE's Tregenza bins (the same 22 bins, values
+#    within 0.5 %); our -apCPD map is version 3.1kPD, puts the whole sun in bin 88 and
+#    loses no photon (the bins add up to the one-bin total); a map without primary rays
+#    drops binned photons with RADIANCE's warning.
 set -u
 BIN="${RP_BIN:?RP_BIN not set}"
 DATA="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/tests/data/contrib"
@@ -171,4 +176,32 @@ err "bad bin expression" "undefined function 'nosuch'" -I -b 'nosuch(Dx)' -bn 4 
 echo keep > c_lamp_red.txt
 err "existing output" "cannot open 'c_lamp_red.txt' for writing: File exists" -I -o c_%s.txt -m lamp_red c.oct
 [ "$(cat c_lamp_red.txt)" = keep ] || { echo "FAIL existing output was changed"; fail=1; }
+
+# 7. photon bins by direction
+oconv "$DATA/sunsky.rad" > ss.oct && cp "$DATA/radiance/sunsky_pd.pm" . && touch sunsky_pd.pm
+bins="-f tregenza.cal -b tbin -bn Ntbins"
+echo "0 0 0.001 0 0 1" > pt.txt
+rcontrib -h -I -ab -1 -ap sunsky_pd.pm 50 $bins -m skyglow -m sunmod ss.oct < pt.txt > pd.txt
+d=$(paste <(tr '\t' '\n' < pd.txt | awk 'NF') <(tr '\t' '\n' < "$DATA/radiance/sunsky_pd_tbin.txt" | awk 'NF') |
+    awk '{ if (($1 == 0) != ($2 == 0)) bad++; else if ($2 != 0) { r = $1 / $2 - 1; if (r < 0) r = -r; if (r > w) w = r } }
+         END { printf "%d %.4f", bad, w }')
+read -r bad w <<< "$d"
+check "RADIANCE's 3.1kPD map: same bins ($bad differ), worst value $w" "$bad == 0 && $w < 0.005" "$d"
+mkpmap -apCPD own.pm 20k ss.oct > /dev/null 2>&1 || exit 1
+getinfo own.pm | grep -q "VERSION=3.1kPD" && echo "ok   -apCPD writes VERSION=3.1kPD" || { echo "FAIL -apCPD version"; fail=1; }
+rcontrib -h -I -u- -ab -1 -ap own.pm 50 $bins -m skyglow -m sunmod ss.oct < pt.txt | tr '\t' '\n' | awk 'NF' | awk 'NR % 3 == 2' > own.txt
+rcontrib -h -I -u- -ab -1 -ap own.pm 50 -m skyglow -m sunmod ss.oct < pt.txt | awk '{ print $2, $5 }' > own1.txt
+res=$(awk -v t="$(cat own1.txt)" 'BEGIN { split(t, one, " ") } { if (NR <= 146) sky += $1; else { sun += $1; if (NR == 146 + 89) at88 = $1 } }
+      END { printf "%.6g %.6g %.6g %.6g %.6g", sky, one[1], sun, one[2], at88 }' own.txt)
+read -r sky sky1 sun sun1 at88 <<< "$res"
+check "-apCPD: sky bins add up ($sky vs $sky1)" "sqrt(($sky / $sky1 - 1)^2) < 1e-5" "$res"
+check "-apCPD: the sun all in bin 88 ($at88 of $sun1)" "$sun1 > 0 && sqrt(($at88 / $sun1 - 1)^2) < 1e-5 && sqrt(($sun / $sun1 - 1)^2) < 1e-5" "$res"
+mkpmap -apC plain.pm 20k ss.oct > /dev/null 2>&1 || exit 1
+rcontrib -h -I -ab -1 -ap plain.pm 50 $bins -m skyglow ss.oct < pt.txt > plain.txt 2> plain.err
+z=$(tr '\t' '\n' < plain.txt | awk 'NF { s += $1 } END { print s + 0 }')
+if grep -q "no photon primary directions for bin evaluation" plain.err && [ "$z" = 0 ]; then
+    echo "ok   map without primary rays: binned photons dropped, RADIANCE's warning"
+else
+    echo "FAIL map without primary rays ($z; $(cat plain.err))"; fail=1
+fi
 exit $fail
