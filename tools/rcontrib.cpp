@@ -88,7 +88,10 @@ int run(RcontribOptions o) {
     s.reportSeconds = o.reportSeconds;
     s.progress = &std::cerr;
     s.values = targets.size();
-    if (o.recover) s.skipRecords = output.recover();
+    // RADIANCE compat (rcontrib.c rcinit): -r continues binary records, or with -c 0
+    // adds to the totals the outputs hold.
+    if (o.recover && o.accumulate <= 0) s.totals = output.reload();
+    else if (o.recover) s.skipRecords = output.recover();
     runRcontrib(s, std::cin, output, tracer.contributions(targets));
     targets.badBins().report();
     return 0;

@@ -263,6 +263,62 @@ uint64_t ContribOutput::recover() {
     return records;
 }
 
+std::vector<Color> ContribOutput::reload() {
+    std::vector<Color> totals;
+    std::vector<std::unique_ptr<std::ifstream>> inputs(streams_.size());
+    std::vector<bool> missing(streams_.size(), false);
+    for (size_t m = 0; m < streamOf_.size(); ++m) {
+        for (size_t j = 0; j < streamOf_[m].size(); ++j) {
+            const size_t si = streamOf_[m][j];
+            const Stream& s = *streams_[si];
+            if (s.name.empty()) throw InputError("cannot reload from stdout");
+            if (s.pipe) throw InputError("cannot reload from command");
+            Color v;
+            if (!inputs[si] && !missing[si]) {
+                inputs[si] = std::make_unique<std::ifstream>(s.name, std::ios::binary);
+                std::ifstream& in = *inputs[si];
+                if (!in) {
+                    warn("missing reload file '" + s.name + "'");
+                    missing[si] = true;
+                } else {
+                    Header h;
+                    if (o_.header && (!tryReadHeader(in, h) || h.format() != formatName(o_.outputFormat)))
+                        throw InputError("format mismatch for '" + s.name + "'");
+                    std::string line;
+                    if (s.reclen == 1 && o_.xres > 0 && o_.yres > 0 && !std::getline(in, line))
+                        throw InputError("resolution mismatch for '" + s.name + "'");
+                }
+            }
+            if (!missing[si] && !readValue(*inputs[si], v))
+                throw InputError("missing data in '" + s.name + "'");
+            totals.push_back(v);
+        }
+    }
+    return totals;
+}
+
+bool ContribOutput::readValue(std::istream& in, Color& v) const {
+    switch (o_.outputFormat) {
+    case 'a': return bool(in >> v.r >> v.g >> v.b);
+    case 'f': {
+        float f[3];
+        if (!in.read(reinterpret_cast<char*>(f), sizeof f)) return false;
+        v = Color{f[0], f[1], f[2]};
+        return true;
+    }
+    case 'd': return bool(in.read(reinterpret_cast<char*>(&v.r), sizeof(double)) &&
+                          in.read(reinterpret_cast<char*>(&v.g), sizeof(double)) &&
+                          in.read(reinterpret_cast<char*>(&v.b), sizeof(double)));
+    default: {
+        Colr c;
+        if (!in.read(reinterpret_cast<char*>(c.data()), 4)) return false;
+        const auto rgb = colrToRgb(c);
+        v = Color{rgb[0], rgb[1], rgb[2]};
+        return true;
+    }
+    }
+}
+
 void ContribOutput::writeRecord(const std::vector<Color>& values, double scale, bool flush) {
     size_t k = 0;
     char buf[96];

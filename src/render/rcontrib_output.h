@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <istream>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -39,6 +40,12 @@ public:
     // whose header does not match this run (format, size) or for a pipe.
     uint64_t recover();
 
+    // -r with -c 0 (rc2.c reload_output): the totals the existing outputs hold, in
+    // modifier-then-bin order, to which this run adds; zero where an output is missing
+    // (with a warning). The outputs are then written anew. Throws InputError for standard
+    // output, a pipe, a header of another format or values missing.
+    std::vector<Color> reload();
+
     // Writes one record: `values` in modifier-then-bin order (ContribTargets), each
     // multiplied by `scale` (1 / -c when averaging). `flush` forces the streams out.
     void writeRecord(const std::vector<Color>& values, double scale, bool flush);
@@ -51,6 +58,7 @@ public:
 
 private:
     Stream& open(size_t stream);
+    bool readValue(std::istream& in, Color& v) const;  // one RGB value in the output format
     const RcontribOptions& o_;
     std::vector<std::string> sceneHeader_;
     std::ostream& stdout_;

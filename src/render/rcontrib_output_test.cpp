@@ -181,6 +181,32 @@ TEST(ContribOutput, RecoverKeepsCompleteRecords) {
     EXPECT_EQ(again, full);
 }
 
+TEST(ContribOutput, ReloadAddsToTotals) {
+    // rc2.c reload_output: with -c 0 and -r, a second run adds to what the files hold.
+    TempDir dir;
+    RcontribOptions o = options({mod("lamp", 2, dir.file("t_%s.txt"))});
+    o.accumulate = 0;
+    auto traceFn = [](const Vec3&, const Vec3&, uint64_t i, double, std::vector<Color>& v) {
+        v[0] = Color::grey(1.0 + double(i));
+        v[1] = Color{0.5, 0, 0};
+    };
+    RcontribRunSettings s;
+    s.values = 2;
+    s.accumulate = 0;
+    std::ostringstream out;
+    for (int run = 0; run < 2; ++run) {
+        std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n");
+        ContribOutput co(o, {}, out);
+        if (run == 1) s.totals = co.reload();
+        runRcontrib(s, in, co, traceFn);
+        o.recover = true;
+    }
+    const std::string t = slurp(dir.file("t_lamp.txt"));
+    EXPECT_NE(t.find("\n\n6.000000e+00\t6.000000e+00\t6.000000e+00\t2.000000e+00\t0.000000e+00"),
+              std::string::npos)
+        << t;
+}
+
 TEST(ContribOutput, RecoveryRules) {
     RcontribOptions o = options({mod("lamp")});
     o.recover = true;

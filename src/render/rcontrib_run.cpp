@@ -80,6 +80,7 @@ RcontribRunStats runRcontrib(const RcontribRunSettings& s, std::istream& in, Con
     uint64_t index = s.skipRecords * perRecord;
 
     std::vector<Color> sum(s.values);
+    if (s.accumulate <= 0 && s.totals.size() == s.values) sum = s.totals;
     int account = s.accumulate;  // rays left in this record
     uint64_t inRecord = 0;
     bool warnedDummy = false, ended = false;

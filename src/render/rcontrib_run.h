@@ -33,6 +33,7 @@ struct RcontribRunSettings {
     std::ostream* progress = nullptr;
     size_t values = 0;           // bins over all modifiers
     uint64_t skipRecords = 0;    // -r: records the outputs hold already
+    std::vector<Color> totals;   // -r with -c 0: what the outputs hold, added to
     size_t batchSize = 0;        // rays per batch; 0: 64 per thread
 };
 
