@@ -53,6 +53,8 @@ double tryEval(const std::shared_ptr<const calc::Program>& prog, calc::Entry e) 
 
 std::atomic<bool> warnedPhotonBins{false};
 
+constexpr size_t kMaxValues = size_t(50) << 20;  // 1.2 GB of RGB doubles
+
 }  // namespace
 
 double evalBinCount(const std::vector<CalcDefinition>& defs, const std::string& expr) {
@@ -78,6 +80,11 @@ ContribTargets::ContribTargets(const Scene& scene, const std::vector<ContribModi
         t->bins = m.bins;
         offsets_.push_back(size_);
         size_ += size_t(m.bins);
+        // Each thread keeps every bin, and each ray of a batch too: beyond this a run
+        // would exhaust memory rather than compute.
+        if (size_ > kMaxValues)
+            throw InputError("too many bins: " + std::to_string(size_) +
+                             " over all modifiers (at most " + std::to_string(kMaxValues) + ")");
         char* end = nullptr;
         std::strtod(m.binExpr.c_str(), &end);
         const bool constant = *end == '\0';

@@ -85,6 +85,7 @@ TEST(ContribTally, ParametersAndDefinitionsPerModifier) {
 
 TEST(ContribTally, BinExpressionThatDoesNotEvaluateIsAnError) {
     Scene s = parseScene(kScene);
+    EXPECT_THROW(ContribTargets(s, {mod("sky", "Dx", 1000000000)}, {}, false), InputError);
     EXPECT_THROW(ContribTargets(s, {mod("sky", "nosuchname * 2", 4)}, {}, false), InputError);
     EXPECT_THROW(ContribTargets(s, {mod("sky", "Dx +", 4)}, {}, false), InputError);
 }
