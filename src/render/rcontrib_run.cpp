@@ -53,6 +53,127 @@ private:
     std::chrono::steady_clock::time_point start_, last_;
 };
 
+// The input: rays read into batches, -y counting, -r skipping (rcontrib.c rcontrib()).
+class RayInput {
+public:
+    RayInput(const RcontribRunSettings& s, std::istream& in)
+        : s_(s), reader_(in, s.inputFormat), perRecord_(s.accumulate > 1 ? uint64_t(s.accumulate) : 1) {
+        // RADIANCE compat (rcontrib.c rcinit): with -y the input holds x*y (or y) records
+        // of -c rays each.
+        remaining_ = s.yres > 0 ? uint64_t(s.yres) * uint64_t(s.xres > 0 ? s.xres : 1) * perRecord_ : 0;
+        counted_ = remaining_ > 0;
+        total_ = remaining_;
+        // -r: the records the outputs hold already are not traced again.
+        for (uint64_t k = 0; k < s.skipRecords * perRecord_; ++k) {
+            InputRay r;
+            if (reader_.next(r) != RayReader::Status::Ok) throw InputError("unexpected EOF on input");
+            if (counted_) --remaining_;
+        }
+        index_ = s.skipRecords * perRecord_;
+    }
+
+    // Fills `batch` with up to `size` rays; false once the input is over. A zero-direction
+    // ray ends the batch: a program driving rcontrib through a pipe waits for the flushed
+    // record before it sends more.
+    bool fill(std::vector<Ray>& batch, size_t size) {
+        batch.clear();
+        while (batch.size() < size) {
+            if (counted_ && remaining_ == 0) return false;
+            InputRay in;
+            const RayReader::Status st = reader_.next(in);
+            if (st == RayReader::Status::End) return false;
+            if (st == RayReader::Status::Bad) {
+                error_ = reader_.error();
+                return false;
+            }
+            if (counted_) --remaining_;
+            Ray r;
+            r.index = index_++;
+            r.origin = in.origin;
+            const double len = length(in.direction);
+            if (!finite(in.origin) || !std::isfinite(len))
+                throw InputError("non-finite ray input (record " + std::to_string(r.index + 1) + ")");
+            r.dummy = len == 0;
+            if (r.dummy && s_.accumulate <= 0) {
+                // RADIANCE compat (rcontrib.c): no flushing while summing everything.
+                if (!warnedDummy_) warn("dummy ray(s) ignored during accumulation");
+                warnedDummy_ = true;
+                continue;
+            }
+            if (!r.dummy) r.dir = in.direction / len;
+            if (s_.limitDistance && !r.dummy) r.maxDistance = len;
+            batch.push_back(std::move(r));
+            if (batch.back().dummy) break;
+        }
+        return true;
+    }
+
+    // Bad input met (after the rays before it), or short input with -y.
+    void check() const {
+        if (!error_.empty()) throw InputError(error_);
+        if (counted_ && remaining_ > 0) throw InputError("unexpected EOF on input");
+    }
+    uint64_t total() const { return total_; }
+    uint64_t done() const { return total_ - remaining_; }
+
+private:
+    const RcontribRunSettings& s_;
+    RayReader reader_;
+    uint64_t perRecord_;
+    uint64_t remaining_ = 0, total_ = 0, index_ = 0;
+    bool counted_ = false, warnedDummy_ = false;
+    std::string error_;
+};
+
+// The records: -c rays averaged into each (rcontrib.c done_contrib), -c 0 summing all,
+// flushes at -x and after zero-direction rays (rc2.c end_record).
+class Records {
+public:
+    Records(const RcontribRunSettings& s, ContribOutput& out, RcontribRunStats& stats)
+        : s_(s), out_(out), stats_(stats), sum_(s.values), account_(s.accumulate),
+          flushEvery_(s.yres > 0 && s.xres > 1 ? 0 : s.xres), untilFlush_(flushEvery_) {
+        if (s.accumulate <= 0 && s.totals.size() == s.values) sum_ = s.totals;
+    }
+
+    void add(const Ray& r) {
+        for (size_t v = 0; v < s_.values; ++v) sum_[v] += r.values[v];
+        ++inRecord_;
+        if (!r.dummy) ++stats_.rays;
+        if (r.dummy && (s_.yres <= 0 || s_.xres <= 1)) untilFlush_ = 1;
+        if (account_ > 0 && --account_ == 0) {
+            const bool flush = --untilFlush_ == 0;
+            if (flush) untilFlush_ = flushEvery_;
+            emit(s_.accumulate > 1 ? 1.0 / double(s_.accumulate) : 1.0, flush);
+            account_ = s_.accumulate;
+        }
+    }
+
+    // The last record: the sum of everything (-c 0) or what a short -c record holds.
+    void finish() {
+        if (s_.accumulate <= 0) {
+            emit(1.0, true);
+        } else if (inRecord_ > 0) {
+            warn("partial accumulation in final record");
+            emit(inRecord_ > 1 ? 1.0 / double(inRecord_) : 1.0, true);
+        }
+    }
+
+private:
+    void emit(double scale, bool flush) {
+        out_.writeRecord(sum_, scale, flush);
+        std::fill(sum_.begin(), sum_.end(), Color{});
+        inRecord_ = 0;
+        ++stats_.records;
+    }
+    const RcontribRunSettings& s_;
+    ContribOutput& out_;
+    RcontribRunStats& stats_;
+    std::vector<Color> sum_;
+    int account_;  // rays left in this record
+    uint64_t inRecord_ = 0;
+    long flushEvery_, untilFlush_;
+};
+
 }  // namespace
 
 RcontribRunStats runRcontrib(const RcontribRunSettings& s, std::istream& in, ContribOutput& out,
@@ -67,71 +188,13 @@ RcontribRunStats runRcontrib(const RcontribRunSettings& s, std::istream& in, Con
     const size_t batchSize =
         s.batchSize > 0 ? s.batchSize
                         : std::clamp(kBatchBytes / perRay, size_t(threads), size_t(64) * size_t(threads));
-    const uint64_t perRecord = s.accumulate > 1 ? uint64_t(s.accumulate) : 1;
-    // RADIANCE compat (rcontrib.c rcinit): with -y the input holds x*y (or y) records of
-    // -c rays each; -x alone is the flush interval, -x with -y a picture (no flushing).
-    uint64_t remaining = s.yres > 0 ? uint64_t(s.yres) * uint64_t(s.xres > 0 ? s.xres : 1) * perRecord
-                                    : 0;
-    const bool counted = remaining > 0;
-    Progress progress(s, remaining);
-    const uint64_t total = remaining;
-    long flushEvery = s.yres > 0 && s.xres > 1 ? 0 : s.xres;
-    long untilFlush = flushEvery;
-
-    RayReader reader(in, s.inputFormat);
-    // -r: the records the outputs hold already are not traced again.
-    for (uint64_t k = 0; k < s.skipRecords * perRecord; ++k) {
-        InputRay r;
-        if (reader.next(r) != RayReader::Status::Ok) throw InputError("unexpected EOF on input");
-        if (counted) --remaining;
-    }
-    uint64_t index = s.skipRecords * perRecord;
-
-    std::vector<Color> sum(s.values);
-    if (s.accumulate <= 0 && s.totals.size() == s.values) sum = s.totals;
-    int account = s.accumulate;  // rays left in this record
-    uint64_t inRecord = 0;
-    bool warnedDummy = false, ended = false;
-    std::string pendingError;
+    RayInput input(s, in);
+    Records records(s, out, stats);
+    Progress progress(s, input.total());
     tbb::task_arena arena(threads);
     std::vector<Ray> batch;
-    auto emit = [&](double scale, bool flush) {
-        out.writeRecord(sum, scale, flush);
-        std::fill(sum.begin(), sum.end(), Color{});
-        ++stats.records;
-    };
-
-    while (!ended) {
-        batch.clear();
-        // A zero-direction ray ends the batch: a program driving rcontrib through a pipe
-        // waits for the flushed record before it sends more.
-        while (batch.size() < batchSize) {
-            if (counted && remaining == 0) { ended = true; break; }
-            InputRay in;
-            RayReader::Status st = reader.next(in);
-            if (st == RayReader::Status::End) { ended = true; break; }
-            if (st == RayReader::Status::Bad) { pendingError = reader.error(); ended = true; break; }
-            if (counted) --remaining;
-            Ray r;
-            r.index = index++;
-            r.origin = in.origin;
-            const double len = length(in.direction);
-            if (!finite(in.origin) || !std::isfinite(len))
-                throw InputError("non-finite ray input (record " + std::to_string(r.index + 1) + ")");
-            r.dummy = len == 0;
-            if (r.dummy && s.accumulate <= 0) {
-                // RADIANCE compat (rcontrib.c): no flushing while summing everything.
-                if (!warnedDummy) warn("dummy ray(s) ignored during accumulation");
-                warnedDummy = true;
-                continue;
-            }
-            if (!r.dummy) r.dir = in.direction / len;
-            if (s.limitDistance && !r.dummy) r.maxDistance = len;
-            const bool stop = r.dummy;
-            batch.push_back(std::move(r));
-            if (stop) break;
-        }
-
+    for (bool more = true; more;) {
+        more = input.fill(batch, batchSize);
         arena.execute([&] {
             tbb::parallel_for(size_t(0), batch.size(), [&](size_t k) {
                 Ray& r = batch[k];
@@ -139,34 +202,14 @@ RcontribRunStats runRcontrib(const RcontribRunSettings& s, std::istream& in, Con
                 if (!r.dummy) trace(r.origin, r.dir, r.index, r.maxDistance, r.values);
             });
         });
-        for (Ray& r : batch) {
-            for (size_t v = 0; v < s.values; ++v) sum[v] += r.values[v];
-            ++inRecord;
-            if (!r.dummy) ++stats.rays;
-            // rcontrib.c done_contrib: a record per -c rays (none until the end with -c 0).
-            bool flushMark = r.dummy && (s.yres <= 0 || s.xres <= 1);
-            if (flushMark) untilFlush = 1;
-            if (account > 0 && --account == 0) {
-                --untilFlush;
-                const bool flush = untilFlush == 0;
-                if (flush) untilFlush = flushEvery;
-                emit(perRecord > 1 ? 1.0 / double(perRecord) : 1.0, flush);
-                account = s.accumulate;
-                inRecord = 0;
-            }
-            progress.update(total - remaining);
+        for (const Ray& r : batch) {
+            records.add(r);
+            progress.update(input.done());
         }
     }
-    // The last record: the sum of everything (-c 0) or what a short -c record holds.
-    if (s.accumulate <= 0) {
-        emit(1.0, true);
-    } else if (inRecord > 0) {
-        warn("partial accumulation in final record");
-        emit(inRecord > 1 ? 1.0 / double(inRecord) : 1.0, true);
-    }
+    records.finish();
     out.close();
-    if (!pendingError.empty()) throw InputError(pendingError);
-    if (counted && remaining > 0) throw InputError("unexpected EOF on input");
+    input.check();
     return stats;
 }
 
