@@ -10,7 +10,6 @@
 #include "calc/search_path.h"
 #include "gen/builtin_commands.h"
 #include "geometry/scene_geometry.h"
-#include "light/light_sources.h"
 #include "material/mist_probe.h"
 #include "render/command_args.h"
 #include "render/photon_lighting.h"
@@ -42,15 +41,6 @@ std::vector<std::string> sceneHeaderLines(const std::string& file) {
     return lines;
 }
 
-// The sources a contribution map's primaries index (mkpmap's source list,
-// light::findLightSources).
-std::vector<PhotonSource> photonSources(const rp::Scene& scene, const rp::SceneGeometry& geometry) {
-    std::vector<PhotonSource> out;
-    for (const rp::light::LightSource& s : rp::light::findLightSources(scene, geometry))
-        out.push_back({scene.prims[size_t(s.material)].name, s.params.radiance, s.distant()});
-    return out;
-}
-
 int run(RcontribOptions o) {
     const bool warnings = o.render.warnings;
     rp::setWarningSink([warnings](const std::string& m) {
@@ -67,7 +57,7 @@ int run(RcontribOptions o) {
 
     std::vector<PhotonSource> sources;
     if (renderer.photons().hasContrib()) {
-        sources = photonSources(scene, geometry);
+        sources = contributionSources(scene, geometry);
         int bandwidth = o.render.photonMaps.front().bandwidth;
         if (bandwidth <= 0) bandwidth = kDefaultBandwidth;
         // RADIANCE compat (pmcontrib2.c initPmapContrib).

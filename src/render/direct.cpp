@@ -145,11 +145,8 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
                 if (!last) return {};  // grazed past the relay's edge
                 if (escape) {
                     absorb(HUGE_VAL);
-                    if (redirected) {
-                        const DistantSource& d = geometry.sources()[size_t(src.light.shapeIndex)];
-                        if (2 * kPi * (1 - dot(d.dir, dir)) > d.solidAngle) return {};
-                    }
                     const DistantSource& d = geometry.sources()[size_t(src.light.shapeIndex)];
+                    if (redirected && 2 * kPi * (1 - dot(d.dir, dir)) > d.solidAngle) return {};
                     return reached(oracle.distantRadiance(src.light.shapeIndex, dir), d.modifier,
                                    ray.origin + dir * 1e10);
                 }

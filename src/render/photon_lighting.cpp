@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <iterator>
 #include <exception>
 #include <filesystem>
+#include <iterator>
 #include <string>
 
 #include "util/dir_code.h"
@@ -160,16 +160,15 @@ void PhotonLighting::prepareContrib(const std::vector<bool>& trackedSources) {
         full.map.setPrimaryRays(std::move(rays));
         full.index = pmap::LazyPhotonIndex{};
     }
-    const Map& c = full;
     std::vector<pmap::Photon> caustic;
-    for (const pmap::Photon& p : c.map.photons())
+    for (const pmap::Photon& p : full.map.photons())
         if (p.caustic()) caustic.push_back(p);
     if (caustic.empty()) return;
     Map m;
-    m.map = pmap::PhotonMap(pmap::PhotonMapType::Contrib, std::move(caustic), c.map.primaries());
-    m.map.setPrimaryRays(c.map.primaryRays());
-    m.use = c.use;
-    m.file = c.file;
+    m.map = pmap::PhotonMap(pmap::PhotonMapType::Contrib, std::move(caustic), full.map.primaries());
+    m.map.setPrimaryRays(full.map.primaryRays());
+    m.use = full.use;
+    m.file = full.file;
     contribCaustic_ = int(maps_.size());
     maps_.push_back(std::move(m));
 }

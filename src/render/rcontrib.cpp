@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "calc/search_path.h"
+#include "light/light_sources.h"
 #include "util/error.h"
 #include "util/paths.h"
 
@@ -57,6 +58,13 @@ constexpr size_t kMaxValues = size_t(50) << 20;  // 1.2 GB of RGB doubles
 
 }  // namespace
 
+std::vector<PhotonSource> contributionSources(const Scene& scene, const SceneGeometry& geometry) {
+    std::vector<PhotonSource> out;
+    for (const light::LightSource& s : light::findLightSources(scene, geometry))
+        out.push_back({scene.prims[size_t(s.material)].name, s.params.radiance, s.distant()});
+    return out;
+}
+
 double evalBinCount(const std::vector<CalcDefinition>& defs, const std::string& expr) {
     calc::Builder b = definitionsBuilder(defs);
     int id = b.addExpression(expr, SourceLoc{"-bn", 0});
@@ -85,10 +93,7 @@ ContribTargets::ContribTargets(const Scene& scene, const std::vector<ContribModi
         if (size_ > kMaxValues)
             throw InputError("too many bins: " + std::to_string(size_) +
                              " over all modifiers (at most " + std::to_string(kMaxValues) + ")");
-        char* end = nullptr;
-        std::strtod(m.binExpr.c_str(), &end);
-        const bool constant = *end == '\0';
-        if (!constant) {
+        if (!isConstantBin(m.binExpr)) {
             auto [it, fresh] = programOf.try_emplace(m.params, int(builders.size()));
             if (fresh) {
                 builders.push_back(definitionsBuilder(defs));

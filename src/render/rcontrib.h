@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "calc/program.h"
+#include "geometry/scene_geometry.h"
 #include "render/rcontrib_options.h"
 #include "render/renderer.h"
 #include "scene/primitive.h"
@@ -27,6 +28,10 @@ struct PhotonSource {
     Color radiance;        // -V- divides its photons' flux by this
     bool distant = false;  // a `source`: bins see P = 0 (RADIANCE)
 };
+
+// The sources a contribution map's primaries index, in mkpmap's order
+// (light::findLightSources).
+std::vector<PhotonSource> contributionSources(const Scene& scene, const SceneGeometry& geometry);
 
 class ContribTargets {
 public:

@@ -56,13 +56,6 @@ int binCount(const std::string& text, const RcontribOptions& o, BinCountEval eva
     return int(v + 0.5);
 }
 
-bool isConstant(const std::string& e) {
-    char* end = nullptr;
-    std::strtod(e.c_str(), &end);
-    while (*end == ' ' || *end == '\t') ++end;
-    return !e.empty() && *end == '\0';
-}
-
 void addModifier(RcontribOptions& o, std::unordered_set<std::string>& seen,
                  const std::string& name, const std::string& out, const std::string& params,
                  const std::string& binExpr, int bins) {
@@ -74,7 +67,7 @@ void addModifier(RcontribOptions& o, std::unordered_set<std::string>& seen,
     m.outSpec = out;
     m.params = params;
     m.binExpr = binExpr.empty() ? "0" : binExpr;
-    if (isConstant(m.binExpr)) {
+    if (isConstantBin(m.binExpr)) {
         if (int(std::strtod(m.binExpr.c_str(), nullptr) + 1.5) != 1)
             throw InputError("illegal non-zero constant for bin (" + m.binExpr + ")");
         m.bins = 1;
@@ -100,6 +93,13 @@ void addModifierFile(RcontribOptions& o, std::unordered_set<std::string>& seen,
 }
 
 }  // namespace
+
+bool isConstantBin(const std::string& e) {
+    char* end = nullptr;
+    std::strtod(e.c_str(), &end);
+    while (*end == ' ' || *end == '\t') ++end;
+    return !e.empty() && *end == '\0';
+}
 
 RcontribOptions rcontribDefaults() {
     RcontribOptions o;

@@ -68,6 +68,9 @@ using BinCountEval =
 RcontribOptions parseRcontribArgs(std::vector<std::string> args,
                                   BinCountEval evalCount = nullptr);
 
+// Whether a -b expression is a plain number (one bin, no evaluation per ray).
+bool isConstantBin(const std::string& expr);
+
 // What `rcontrib -defaults` prints (rcmain.c printdefaults, then the common options).
 std::string formatRcontribDefaults(const RcontribOptions& opt);
 

@@ -1,6 +1,7 @@
 // rcontrib's outputs (see rcontrib_output.h).
 #include "render/rcontrib_output.h"
 
+#include <bit>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -44,13 +45,6 @@ std::string timeLines() {
     gmtime_r(&now, &tmv);
     std::strftime(buf, sizeof buf, "GMT= %Y:%m:%d %H:%M:%S\n", &tmv);
     return s + buf;
-}
-
-bool bigEndian() {
-    const uint16_t one = 1;
-    unsigned char b;
-    std::memcpy(&b, &one, 1);
-    return b == 0;
 }
 
 }  // namespace
@@ -199,7 +193,7 @@ ContribOutput::Stream& ContribOutput::open(size_t index) {
         h += "NCOMP=3\n";
         h += info;
         if (o_.outputFormat == 'f' || o_.outputFormat == 'd')
-            h += bigEndian() ? "BigEndian=1\n" : "BigEndian=0\n";
+            h += std::endian::native == std::endian::big ? "BigEndian=1\n" : "BigEndian=0\n";
         h += std::string("FORMAT=") + formatName(o_.outputFormat) + "\n\n";
         s.buffer += h;
     }

@@ -5,8 +5,8 @@
 #include <random>
 #include <unordered_set>
 
-#include "light/light_sources.h"
 #include "material/mist_probe.h"
+#include "render/rcontrib.h"
 #include "render/renderer_impl.h"
 #include "util/error.h"
 #include "util/warnings.h"
@@ -72,8 +72,8 @@ std::vector<bool> trackedLightSources(const Scene& s, const SceneGeometry& g,
     if (!o.contributions || o.photonMaps.empty()) return out;
     const std::unordered_set<std::string> names(o.contribModifiers.begin(),
                                                 o.contribModifiers.end());
-    for (const light::LightSource& src : light::findLightSources(s, g))
-        out.push_back(names.count(s.prims[size_t(src.material)].name) != 0);
+    for (const PhotonSource& src : contributionSources(s, g))
+        out.push_back(names.count(src.material) != 0);
     return out;
 }
 
