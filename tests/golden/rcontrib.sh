@@ -31,7 +31,8 @@
 #    evaluate, an existing output without -fo: one line, non-zero exit, nothing written.
 # 7. Bins of photon contributions (tests/data/contrib/sunsky.rad: sun and sky over an open
 #    box): RADIANCE's 3.1kPD map gives RADIANCE's Tregenza bins (the same 22 bins, values
-#    within 0.5 %); our -apCPD map is version 3.1kPD, puts the whole sun in bin 88 and
+#    within 0.5 %; with the sky alone tracked, the sun's photons are left out of the
+#    lookups as RADIANCE leaves them out: the same 39 bins); our -apCPD map is version 3.1kPD, puts the whole sun in bin 88 and
 #    loses no photon (the bins add up to the one-bin total); a map without primary rays
 #    drops binned photons with RADIANCE's warning.
 set -u
@@ -193,6 +194,12 @@ d=$(paste <(tr '\t' '\n' < pd.txt | awk 'NF') <(tr '\t' '\n' < "$DATA/radiance/s
          END { printf "%d %.4f", bad, w }')
 read -r bad w <<< "$d"
 check "RADIANCE's 3.1kPD map: same bins ($bad differ), worst value $w" "$bad == 0 && $w < 0.005" "$d"
+rcontrib -h -I -ab -1 -ap sunsky_pd.pm 50 $bins -m skyglow ss.oct < pt.txt > pd_sky.txt
+d=$(paste <(tr '\t' '\n' < pd_sky.txt | awk 'NF') <(tr '\t' '\n' < "$DATA/radiance/sunsky_pd_tbin_sky.txt" | awk 'NF') |
+    awk '{ if (($1 == 0) != ($2 == 0)) bad++; else if ($2 != 0) { r = $1 / $2 - 1; if (r < 0) r = -r; if (r > w) w = r }; if ($2 != 0) nz++ }
+         END { printf "%d %.4f %d", bad, w, nz }')
+read -r bad w nz <<< "$d"
+check "sky alone tracked: untracked photons skipped ($nz non-zero values, 39 bins x 3; $bad differ, worst $w)" "$bad == 0 && $w < 0.005 && $nz == 117" "$d"
 mkpmap -apCPD own.pm 20k ss.oct > /dev/null 2>&1 || exit 1
 getinfo own.pm | grep -q "VERSION=3.1kPD" && echo "ok   -apCPD writes VERSION=3.1kPD" || { echo "FAIL -apCPD version"; fail=1; }
 rcontrib -h -I -u- -ab -1 -ap own.pm 50 $bins -m skyglow -m sunmod ss.oct < pt.txt | tr '\t' '\n' | awk 'NF' | awk 'NR % 3 == 2' > own.txt
