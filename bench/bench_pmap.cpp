@@ -1,17 +1,19 @@
 // Photon map speed: kd-tree build of 1 M photons (1 thread and all threads), k-NN lookups
-// per second for k = 50 and 500 (old kd-tree walk vs the bucket index of lookup_index.h) on
-// photons on the surfaces of a room-like box and uniform in a box, bias-compensated lookups
-// (50..500), the index build, file save and load, load + index, and bytes per photon.
+// per second for k = 50 and 500 through each photon store (in core, incore_store.h; out of
+// core with a 100k-photon cache, ooc_store.h) on photons on the surfaces of a room-like
+// box and uniform in a box, bias-compensated lookups (50..500), the in-core store's build,
+// file save and load, opening a map for searching, and bytes per photon.
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <mutex>
 #include <random>
 
 #include "pmap/density.h"
-#include "pmap/lookup_index.h"
+#include "pmap/incore_store.h"
 #include "pmap/photon_map.h"
 
 namespace {
@@ -104,14 +106,26 @@ const PhotonMap& boxMap() {
     return map;
 }
 
-// Built on first use (by whichever benchmark asks first), as a renderer would.
-const PhotonIndex& roomIndex() {
-    static const LazyPhotonIndex lazy;
-    return lazy.get(roomMap().photons());
+std::string tempMapPath(const char* name) {
+    return (std::filesystem::temp_directory_path() /
+            ("bench_pmap_" + std::to_string(::getpid()) + name))
+        .string();
 }
-const PhotonIndex& boxIndex() {
-    static const LazyPhotonIndex lazy;
-    return lazy.get(boxMap().photons());
+
+// The map opened for searching, in core or out of core (100k photons resident and cached
+// per thread, pages of 4 x 50), as a renderer opens it; made on first use.
+const PhotonMap& searchable(bool box, bool outOfCore) {
+    static std::once_flag once[2][2];
+    static PhotonMap maps[2][2];
+    std::call_once(once[box][outOfCore], [&] {
+        const std::string path = tempMapPath(box ? "_box.pm" : "_room.pm");
+        (box ? boxMap() : roomMap()).save(path, "bench_pmap", true);
+        StoreOptions o;
+        if (outOfCore) o.cachePhotons = 100000;
+        maps[box][outOfCore] = PhotonMap::open(path, o);
+        std::filesystem::remove(path);  // the out-of-core store keeps it open
+    });
+    return maps[box][outOfCore];
 }
 
 // Query points: on the room's surfaces with their normals (room map), or uniform in the
@@ -127,21 +141,20 @@ std::vector<SurfacePoint> queryPoints(bool box, uint64_t seed) {
 }
 
 // One lookup per iteration (k+1 nearest, adaptive radius) through PhotonLookup; each
-// benchmark thread has its own. Args: k, map (0 room surfaces, 1 uniform box), search
-// (0 old kd-tree walk, 1 bucket index).
+// benchmark thread has its own. Args: k, map (0 room surfaces, 1 uniform box), store
+// (0 in core, 1 out of core).
 void BM_Lookup1M(benchmark::State& state) {
     const int k = static_cast<int>(state.range(0));
-    const bool box = state.range(1) != 0, indexed = state.range(2) != 0;
-    const PhotonMap& map = box ? boxMap() : roomMap();
-    const PhotonIndex* index = indexed ? (box ? &boxIndex() : &roomIndex()) : nullptr;
-    PhotonLookup lookup(map, LookupParams{k, 0, 0.5}, index);
+    const bool box = state.range(1) != 0, outOfCore = state.range(2) != 0;
+    const PhotonMap& map = searchable(box, outOfCore);
+    PhotonLookup lookup(map, LookupParams{k, 0, 0.5});
     const auto queries = queryPoints(box, 100 + state.thread_index());
     size_t i = 0, found = 0;
     for (auto _ : state) {
         const SurfacePoint& q = queries[i++ & 4095];
         found += lookup.findPhotons(q.pos, box ? nullptr : &q.normal).size();
     }
-    state.SetLabel(std::string(box ? "box" : "room") + (indexed ? " index" : " kd-tree"));
+    state.SetLabel(std::string(box ? "box " : "room ") + map.store().describe());
     state.counters["lookups/s"] =
         benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
     state.counters["found"] = double(found) / double(state.iterations());
@@ -158,25 +171,24 @@ BENCHMARK(BM_Lookup1M)
 
 // Full density estimate (lookup + flux sum) for comparison with the bare lookup.
 void BM_SurfaceDensity1M(benchmark::State& state) {
-    const bool indexed = state.range(1) != 0;
-    PhotonLookup lookup(roomMap(), LookupParams{static_cast<int>(state.range(0)), 0, 0.5},
-                        indexed ? &roomIndex() : nullptr);
+    const PhotonMap& map = searchable(false, state.range(1) != 0);
+    PhotonLookup lookup(map, LookupParams{static_cast<int>(state.range(0)), 0, 0.5});
     const auto queries = queryPoints(false, 7);
     size_t i = 0;
     for (auto _ : state) {
         const SurfacePoint& q = queries[i++ & 4095];
         benchmark::DoNotOptimize(lookup.surfaceDensity(q.pos, q.normal));
     }
-    state.SetLabel(indexed ? "index" : "kd-tree");
+    state.SetLabel(map.store().describe());
     state.counters["lookups/s"] =
         benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_SurfaceDensity1M)->ArgsProduct({{50, 500}, {0, 1}})->Unit(benchmark::kMicrosecond);
 
-// Bias-compensated estimate, bandwidth 50..500, on the room map (with the index).
+// Bias-compensated estimate, bandwidth 50..500, on the room map.
 void BM_BiasCompDensity1M(benchmark::State& state) {
-    const bool indexed = state.range(0) != 0;
-    PhotonLookup lookup(roomMap(), LookupParams{500, 0, 0.5}, indexed ? &roomIndex() : nullptr);
+    const PhotonMap& map = searchable(false, state.range(0) != 0);
+    PhotonLookup lookup(map, LookupParams{500, 0, 0.5});
     const auto queries = queryPoints(false, 9);
     BiasCompStats stats;
     size_t i = 0;
@@ -184,36 +196,30 @@ void BM_BiasCompDensity1M(benchmark::State& state) {
         const SurfacePoint& q = queries[i++ & 4095];
         benchmark::DoNotOptimize(lookup.biasCompensatedDensity(q.pos, q.normal, 50, 500, &stats));
     }
-    state.SetLabel(stats.report("global") + (indexed ? " index" : " kd-tree"));
+    state.SetLabel(stats.report("global") + " " + map.store().describe());
     state.counters["lookups/s"] =
         benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_BiasCompDensity1M)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
-// Index build over 1 M photons (all threads) and its size.
-void BM_BuildIndex1M(benchmark::State& state) {
+// In-core store build over 1 M photons (all threads) and its size.
+void BM_BuildStore1M(benchmark::State& state) {
     const PhotonMap& map = roomMap();
     size_t bytes = 0;
     for (auto _ : state) {
-        PhotonIndex index(map.photons(), true);
-        bytes = index.memoryBytes();
-        benchmark::DoNotOptimize(&index);
+        InCoreStore store = InCoreStore::copyOf(map.photons(), {}, true);
+        bytes = store.memoryBytes();
+        benchmark::DoNotOptimize(&store);
     }
-    state.counters["index bytes/photon"] = double(bytes) / double(map.size());
+    state.counters["store bytes/photon"] = double(bytes) / double(map.size());
     state.counters["photons/s"] =
         benchmark::Counter(double(kMillion) * state.iterations(), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_BuildIndex1M)->Unit(benchmark::kMillisecond)->UseRealTime();
-
-std::string tempMapPath() {
-    return (std::filesystem::temp_directory_path() /
-            ("bench_pmap_" + std::to_string(::getpid()) + ".pm"))
-        .string();
-}
+BENCHMARK(BM_BuildStore1M)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_SaveLoad1M(benchmark::State& state) {
     const PhotonMap& map = roomMap();
-    const std::string path = tempMapPath();
+    const std::string path = tempMapPath(".pm");
     const bool load = state.range(0) != 0;
     if (load) map.save(path, "bench_pmap", true);
     for (auto _ : state) {
@@ -234,23 +240,23 @@ void BM_SaveLoad1M(benchmark::State& state) {
 }
 BENCHMARK(BM_SaveLoad1M)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// What a renderer does before its first lookup: read the file, check it, build the index.
-void BM_LoadAndIndex1M(benchmark::State& state) {
-    const std::string path = tempMapPath();
+// What a renderer does before its first lookup: open the map for searching in core (read
+// and check the file, build the store).
+void BM_OpenInCore1M(benchmark::State& state) {
+    const std::string path = tempMapPath(".pm");
     roomMap().save(path, "bench_pmap", true);
     size_t bytes = 0;
     for (auto _ : state) {
-        PhotonMap m = PhotonMap::load(path);
-        PhotonIndex index(m.photons(), true);
-        bytes = index.memoryBytes();
-        benchmark::DoNotOptimize(&index);
+        PhotonMap m = PhotonMap::open(path, StoreOptions{});
+        bytes = m.store().memoryBytes();
+        benchmark::DoNotOptimize(&m);
     }
     std::filesystem::remove(path);
-    state.counters["index bytes/photon"] = double(bytes) / double(kMillion);
+    state.counters["store bytes/photon"] = double(bytes) / double(kMillion);
     state.counters["photons/s"] =
         benchmark::Counter(double(kMillion) * state.iterations(), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_LoadAndIndex1M)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_OpenInCore1M)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

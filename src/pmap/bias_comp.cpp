@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "util/vec.h"
 
@@ -41,21 +42,25 @@ std::string BiasCompStats::report(const char* photonType) const {
                        rmsError());
 }
 
-BiasCompResult compensateBias(std::span<PhotonHit> hits, const PhotonMap& map,
-                              double searchDist2, bool full, int bwMin, int bwMax,
+BiasCompResult compensateBias(std::span<FoundPhoton> hits, double searchDist2, bool full,
+                              int bwMin, int bwMax,
                               std::vector<std::array<double, 3>>& prefix) {
     BiasCompResult res;
     const size_t m = hits.size();
     if (m < 2) return res;
-    // Ties broken by index so the order (and so the sums) never depends on the search.
-    std::sort(hits.begin(), hits.end(), [](const PhotonHit& a, const PhotonHit& b) {
-        return a.dist2 < b.dist2 || (a.dist2 == b.dist2 && a.index < b.index);
-    });
+    // Ties broken by the photons' contents so the order (and so the sums) never depends
+    // on the search or the store.
+    auto key = [](const FoundPhoton& f) {
+        return std::tuple(f.dist2, f.flux[0], f.flux[1], f.flux[2], f.flux[3], f.norm[0],
+                          f.norm[1], f.norm[2], f.flags, f.primary);
+    };
+    std::sort(hits.begin(), hits.end(),
+              [&](const FoundPhoton& a, const FoundPhoton& b) { return key(a) < key(b); });
     // prefix[j] = flux of photons 1..j (1-based), summed in distance order.
     if (prefix.size() < m + 1) prefix.resize(m + 1);
     prefix[0] = {0, 0, 0};
     for (size_t i = 0; i < m; ++i) {
-        const auto f = map.searchedPhoton(hits[i].index).fluxRgb();
+        const auto f = hits[i].fluxRgb();
         for (int c = 0; c < 3; ++c) prefix[i + 1][c] = prefix[i][c] + f[c];
     }
     const int last = static_cast<int>(m) - 1;  // largest bandwidth with a (j+1)-th distance

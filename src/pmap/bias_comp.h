@@ -13,7 +13,7 @@
 
 #include "pmap/kdtree.h"
 #include "pmap/photon.h"
-#include "pmap/photon_map.h"
+#include "pmap/photon_store.h"
 
 namespace rp::pmap {
 
@@ -71,13 +71,12 @@ struct BiasCompResult {
 };
 
 // The bandwidth choice above over the photons `hits` found around the query (any order;
-// sorted in place by dist2), `map` the map whose photons they index (read through
-// PhotonMap::searchedPhoton), `searchDist2` the search
+// sorted in place by dist2), `searchDist2` the search
 // radius^2 of the lookup, `full` whether the search filled its queue (then the furthest
 // photon only sets the radius of E(m-1)). `prefix` is scratch (reused, no allocation once
 // large enough). Deterministic: depends on nothing else.
-BiasCompResult compensateBias(std::span<PhotonHit> hits, const PhotonMap& map,
-                              double searchDist2, bool full, int bwMin, int bwMax,
+BiasCompResult compensateBias(std::span<FoundPhoton> hits, double searchDist2, bool full,
+                              int bwMin, int bwMax,
                               std::vector<std::array<double, 3>>& prefix);
 
 }  // namespace rp::pmap

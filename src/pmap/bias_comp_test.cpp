@@ -12,7 +12,6 @@
 #include <random>
 
 #include "pmap/density.h"
-#include "pmap/lookup_index.h"
 #include "pmap/photon_map.h"
 
 namespace rp::pmap {
@@ -25,7 +24,9 @@ PhotonMap planeMap(size_t n, double xMax, uint32_t seed, std::array<double, 3> f
     std::vector<Photon> v;
     for (size_t i = 0; i < n; ++i)
         v.push_back(makePhoton(Vec3(u(rng) * xMax, u(rng), 0), Vec3(0, 0, 1), flux));
-    return PhotonMap(PhotonMapType::Global, std::move(v));
+    PhotonMap map(PhotonMapType::Global, std::move(v));
+    map.makeSearchable();
+    return map;
 }
 
 const Vec3 kUp(0, 0, 1);
@@ -33,8 +34,7 @@ const Vec3 kUp(0, 0, 1);
 TEST(BiasComp, UniformDensityGrowsToUpperBandwidth) {
     const size_t n = 200000;
     const PhotonMap map = planeMap(n, 1.0, 11, {1e-3, 2e-3, 5e-4});
-    const PhotonIndex index(map.photons());
-    PhotonLookup lookup(map, LookupParams{500, 0, 0.5}, &index);
+    PhotonLookup lookup(map, LookupParams{500, 0, 0.5});
     BiasCompStats stats;
     const auto flux = map.photons()[0].fluxRgb();
     double sum = 0;
@@ -64,9 +64,8 @@ TEST(BiasComp, StaysSmallNextToDensityEdge) {
     const size_t n = 100000;
     const PhotonMap map = planeMap(n, 0.5, 12, {1e-3, 1e-3, 1e-3});
     const double truth = 2.0 * n * map.photons()[0].fluxRgb()[0] / kPi;
-    const PhotonIndex index(map.photons());
-    PhotonLookup lookup(map, LookupParams{500, 0, 0.5}, &index);
-    PhotonLookup fixed(map, LookupParams{500, 0, 0.5}, &index);
+    PhotonLookup lookup(map, LookupParams{500, 0, 0.5});
+    PhotonLookup fixed(map, LookupParams{500, 0, 0.5});
     BiasCompStats stats;
     double errComp = 0, errFixed = 0;
     int m = 0;
@@ -123,7 +122,6 @@ TEST(BiasComp, EqualBandwidthsMatchSurfaceDensity) {
 
 TEST(BiasComp, IndependentOfQueryOrderAndThreads) {
     const PhotonMap map = planeMap(50000, 1.0, 16, {1e-3, 1e-3, 1e-3});
-    const PhotonIndex index(map.photons());
     std::vector<Vec3> queries;
     std::mt19937 rng(4);
     std::uniform_real_distribution<double> u(0, 1);
@@ -133,18 +131,18 @@ TEST(BiasComp, IndependentOfQueryOrderAndThreads) {
     std::vector<std::array<double, 3>> forward(queries.size()), backward(queries.size()),
         threaded(queries.size());
     {
-        PhotonLookup l(map, params, &index);
+        PhotonLookup l(map, params);
         for (size_t i = 0; i < queries.size(); ++i)
             forward[i] = l.biasCompensatedDensity(queries[i], kUp, 40, 400);
     }
     {
-        PhotonLookup l(map, params);  // and without the index
+        PhotonLookup l(map, params);
         for (size_t i = queries.size(); i-- > 0;)
             backward[i] = l.biasCompensatedDensity(queries[i], kUp, 40, 400);
     }
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-        tbb::enumerable_thread_specific<PhotonLookup> lookups(map, params, &index);
+        tbb::enumerable_thread_specific<PhotonLookup> lookups(map, params);
         tbb::parallel_for(size_t(0), queries.size(), [&](size_t i) {
             threaded[i] = lookups.local().biasCompensatedDensity(queries[i], kUp, 40, 400);
         });

@@ -17,15 +17,14 @@ constexpr int kMaxDistCount = 1000;
 constexpr size_t kShortLookupThreshold = 1;
 }  // namespace
 
-PhotonLookup::PhotonLookup(const PhotonMap& map, const LookupParams& params,
-                           const PhotonIndex* index)
+PhotonLookup::PhotonLookup(const PhotonMap& map, const LookupParams& params)
     : map_(&map),
-      index_(index),
+      cursor_(map.searchable() ? map.store().makeCursor() : nullptr),
+      causticOnly_(params.causticOnly),
       bandwidth_(static_cast<int>(
           std::min<uint64_t>(std::max(params.bandwidth, 1), std::max<uint64_t>(map.size(), 1)))),
       fixedRadius_(params.maxSearchRadius > 0),
       gatherTolerance_(params.gatherTolerance) {
-    RP_CHECK(!index || index->size() == map.size());
     const size_t queueLen = static_cast<size_t>(bandwidth_) + 1;
     hits_.resize(queueLen);
     if (fixedRadius_) {
@@ -40,30 +39,16 @@ PhotonLookup::PhotonLookup(const PhotonMap& map, const LookupParams& params,
     maxDist2_ = maxDist2Limit_;
 }
 
-void PhotonLookup::useIndex(const PhotonIndex* index) {
-    RP_CHECK(!index || index->size() == map_->size());
-    index_ = index;
+std::span<const FoundPhoton> PhotonLookup::findPhotons(const Vec3& pos, const Vec3* normal) {
+    return search(pos, normal, static_cast<size_t>(bandwidth_) + 1);
 }
 
-std::span<const PhotonHit> PhotonLookup::findPhotons(const Vec3& pos, const Vec3* normal) {
-    auto hits = search(pos, normal, static_cast<size_t>(bandwidth_) + 1);
-    if (index_) {
-        for (PhotonHit& h : hits) h.index = index_->photonIndex(h.index);
-        std::make_heap(hits.begin(), hits.end(),
-                       [](const PhotonHit& a, const PhotonHit& b) { return a.dist2 < b.dist2; });
-    }
-    return hits;
-}
-
-// With an index, the hits name the index's slots (PhotonIndex::findNearestSlots), so that
-// surfaceDensity can sum flux from the index's leaf-ordered copy; callers that hand hits out
-// map them to photon indices first. Either way hits_[0] is the furthest; with the index the
-// others are in no particular order (without, they form the kd-tree walk's heap).
-std::span<PhotonHit> PhotonLookup::search(const Vec3& pos, const Vec3* normal, size_t queueLen) {
+// hits_[0] is the furthest, the others in no particular order (PhotonStore::findNearest).
+std::span<FoundPhoton> PhotonLookup::search(const Vec3& pos, const Vec3* normal,
+                                            size_t queueLen) {
     lastSearchDist2_ = static_cast<float>(maxDist2_);
-    found_ = index_ ? index_->findNearestSlots(pos, normal, lastSearchDist2_, queueLen, hits_)
-                    : map_->findNearest(pos, normal, lastSearchDist2_,
-                                        std::span<PhotonHit>(hits_.data(), queueLen));
+    const PhotonQuery query{pos, normal, causticOnly_, lastSearchDist2_, queueLen};
+    found_ = map_->store().findNearest(*cursor_, query, hits_);
     ++lookups_;
     if (found_ == queueLen) lastSearchDist2_ = hits_[0].dist2;
 
@@ -82,7 +67,7 @@ std::span<PhotonHit> PhotonLookup::search(const Vec3& pos, const Vec3* normal, s
     return {hits_.data(), found_};
 }
 
-double PhotonLookup::estimateRadius2(std::span<const PhotonHit> hits) const {
+double PhotonLookup::estimateRadius2(std::span<const FoundPhoton> hits) const {
     // hits[0] is the furthest (search()); d2 is the second furthest. RADIANCE compat: d1 is
     // pmap->maxDist2 after the search, i.e. the furthest photon when the queue filled up
     // and the search limit otherwise; RADIANCE takes d2 from the heap's children of the
@@ -105,17 +90,10 @@ std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& 
 
     // Skip the extra (furthest) photon; uniform kernel. The fluxes are RGBE values (8-bit
     // mantissas), so their sum in double is exact and does not depend on the order of the
-    // hits (the index keeps a copy of each photon's RGBE flux).
-    if (index_) {
-        for (size_t i = 1; i < hits.size(); ++i) {
-            const auto f = index_->slotFlux(hits[i].index);
-            for (int c = 0; c < 3; ++c) irrad[c] += f[c];
-        }
-    } else {
-        for (size_t i = 1; i < hits.size(); ++i) {
-            const auto f = map_->searchedPhoton(hits[i].index).fluxRgb();
-            for (int c = 0; c < 3; ++c) irrad[c] += f[c];
-        }
+    // hits.
+    for (size_t i = 1; i < hits.size(); ++i) {
+        const auto f = hits[i].fluxRgb();
+        for (int c = 0; c < 3; ++c) irrad[c] += f[c];
     }
     // Divide by the search area pi r^2 and by pi, RADIANCE's ambient normalisation.
     const double scale = 1.0 / (kPi * kPi * r2);
@@ -131,8 +109,7 @@ std::array<double, 3> PhotonLookup::contribDensity(const Vec3& pos, const Vec3& 
     if (hits.size() < 2) return irrad;
     const double scale = 1.0 / (kPi * kPi * estimateRadius2(hits));
     for (size_t i = 1; i < hits.size(); ++i) {  // the furthest is left out
-        const size_t idx = index_ ? index_->photonIndex(hits[i].index) : hits[i].index;
-        const Photon& p = map_->searchedPhoton(idx);
+        const FoundPhoton& p = hits[i];
         const auto f = p.fluxRgb();
         const std::array<double, 3> share = {f[0] * scale, f[1] * scale, f[2] * scale};
         for (int c = 0; c < 3; ++c) irrad[c] += share[c];
@@ -149,8 +126,7 @@ std::array<double, 3> PhotonLookup::volumeDensity(const Vec3& pos, const Vec3& o
     if (hits.size() < 2) return sum;
     const double r2 = estimateRadius2(hits);
     for (size_t i = 1; i < hits.size(); ++i) {
-        const size_t idx = index_ ? index_->photonIndex(hits[i].index) : hits[i].index;
-        const Photon& p = map_->searchedPhoton(idx);
+        const FoundPhoton& p = hits[i];
         const Vec3 in = Vec3(p.norm[0], p.norm[1], p.norm[2]) / 127.0;
         const double w = phase4Pi(g, dot(in, out) / std::max(length(in), 1e-9));
         const auto f = p.fluxRgb();
@@ -170,10 +146,7 @@ std::array<double, 3> PhotonLookup::biasCompensatedDensity(const Vec3& pos, cons
     const size_t queueLen = static_cast<size_t>(upper) + 1;
     if (hits_.size() < queueLen) hits_.resize(queueLen);
     auto hits = search(pos, &normal, queueLen);
-    if (index_)
-        for (PhotonHit& h : hits) h.index = index_->photonIndex(h.index);
-    // The hits' photons are read either way (the index was built from all of them).
-    const BiasCompResult r = compensateBias(hits, *map_, lastSearchDist2_,
+    const BiasCompResult r = compensateBias(hits, lastSearchDist2_,
                                             hits.size() == queueLen, std::min(bwMin, upper),
                                             upper, biasPrefix_);
     // compensateBias sorted the hits: no longer a heap, so forget them.
@@ -182,24 +155,12 @@ std::array<double, 3> PhotonLookup::biasCompensatedDensity(const Vec3& pos, cons
     return r.density;
 }
 
-std::array<double, 3> PhotonLookup::precompDensity(const Vec3& pos, const Vec3& normal) const {
-    std::array<double, 3> irrad = {0, 0, 0};
-    if (map_->empty()) return irrad;
+std::array<double, 3> PhotonLookup::precompDensity(const Vec3& pos, const Vec3& normal) {
+    if (map_->empty()) return {0, 0, 0};
     // RADIANCE compat: find1Photon searches within the squared radius CoGdist.
-    int64_t idx = -1;
-    if (index_) {
-        PhotonHit hit{};
-        if (index_->findNearestSlots(pos, &normal, map_->stats().cogDist2, {&hit, 1}) == 1) {
-            const auto f = index_->slotFlux(hit.index);
-            return {f[0], f[1], f[2]};
-        }
-    } else {
-        PhotonHit hit{};
-        if (map_->findNearest(pos, &normal, map_->stats().cogDist2, {&hit, 1}) == 1)
-            idx = hit.index;
-    }
-    if (idx < 0) return irrad;
-    const auto f = map_->searchedPhoton(static_cast<size_t>(idx)).fluxRgb();
+    const PhotonQuery query{pos, &normal, false, map_->stats().cogDist2, 1};
+    if (map_->store().findNearest(*cursor_, query, hits_) == 0) return {0, 0, 0};
+    const auto f = hits_[0].fluxRgb();
     return {f[0], f[1], f[2]};
 }
 

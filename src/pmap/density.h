@@ -1,19 +1,20 @@
 // Photon density estimates as RADIANCE computes them (pmutil.c photonDensity,
 // photonPreCompDensity) and the automatic maximum search radius of findPhotons
 // (pmapdata.c; manual section 3.2.3), and the bias-compensated estimate (-ap file min max;
-// the bandwidth choice itself is in bias_comp.h). The search index is lookup_index.h.
+// the bandwidth choice itself is in bias_comp.h). Photons come from the map's store
+// (photon_store.h), whichever it is.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "pmap/bias_comp.h"
-#include "pmap/kdtree.h"
-#include "pmap/lookup_index.h"
 #include "pmap/photon_map.h"
+#include "pmap/photon_store.h"
 #include "util/vec.h"
 
 namespace rp::pmap {
@@ -22,6 +23,7 @@ struct LookupParams {
     int bandwidth = 40;  // photons per density estimate (-ap file bwidth; RADIANCE default 40)
     double maxSearchRadius = 0;    // -am: fixed maximum search radius (not squared); 0 = automatic
     double gatherTolerance = 0.5;  // short lookup: found < tolerance x queue length (contrib: 1)
+    bool causticOnly = false;      // only caustic photons (a contribution map's, at non-ambient hits)
 };
 
 // Per-thread lookup state for one photon map: the result buffer (k+1 entries, allocated once)
@@ -30,13 +32,10 @@ struct LookupParams {
 // each thread its own PhotonLookup (e.g. tbb::enumerable_thread_specific).
 class PhotonLookup {
 public:
-    // The map must outlive this object. Bandwidths above the photon count are clamped to it
-    // (RADIANCE compat: loadPmaps "adjusting density estimate bandwidth"). With `index`
-    // (built over map.photons(), outliving this object; share one per map between threads,
-    // e.g. via LazyPhotonIndex) searches use it: the same photons, several times faster.
-    // Without, they walk the map's kd-tree (PhotonMap::findNearest).
-    PhotonLookup(const PhotonMap& map, const LookupParams& params,
-                 const PhotonIndex* index = nullptr);
+    // The map must be searchable (PhotonMap::store) and outlive this object. Bandwidths
+    // above the photon count are clamped to it (RADIANCE compat: loadPmaps "adjusting
+    // density estimate bandwidth").
+    PhotonLookup(const PhotonMap& map, const LookupParams& params);
 
     // RADIANCE's findPhotons: up to bandwidth+1 nearest photons to `pos` (normal filter if
     // `normal` is non-null; null for volume photons) within the current maximum radius,
@@ -47,8 +46,9 @@ public:
     //    below the limit (RADIANCE compat: it may then overshoot the limit by up to x4, as in
     //    pmapdata.c; the redo of PMAP_LOOKUP_REDO is not done) and the run of good lookups
     //    restarts; every 1000 consecutive good lookups: squared radius x0.9.
-    // Returns the hits as a max-heap (element 0 is the furthest); valid until the next call.
-    std::span<const PhotonHit> findPhotons(const Vec3& pos, const Vec3* normal);
+    // Returns the hits, the furthest first (the others in no particular order); valid
+    // until the next call.
+    std::span<const FoundPhoton> findPhotons(const Vec3& pos, const Vec3* normal);
 
     // RADIANCE's photonDensity (surface maps without bias compensation). Returns
     //   sum(flux of the k nearest) / (pi * pi r^2)
@@ -63,7 +63,7 @@ public:
     // RADIANCE's photonContrib (pmcontrib2.c) for contribution maps: surfaceDensity, with
     // each photon's share of it (its flux / (pi * pi r^2)) handed to `each` with the photon
     // (whose primary says which source emitted it).
-    using PhotonShare = std::function<void(const Photon&, const std::array<double, 3>&)>;
+    using PhotonShare = std::function<void(const FoundPhoton&, const std::array<double, 3>&)>;
     std::array<double, 3> contribDensity(const Vec3& pos, const Vec3& normal,
                                          const PhotonShare& each);
 
@@ -81,7 +81,7 @@ public:
     // RADIANCE's photonPreCompDensity: the flux of the single nearest photon with a similar
     // normal within squared radius CoGdist (precomputed maps store irradiance / pi there);
     // 0 if none.
-    std::array<double, 3> precompDensity(const Vec3& pos, const Vec3& normal) const;
+    std::array<double, 3> precompDensity(const Vec3& pos, const Vec3& normal);
 
     // Bias-compensated surfaceDensity (-ap file bwMin bwMax): gathers up to bwMax+1 photons
     // (findPhotons' search and adaptive radius, with a queue of bwMax+1) and returns E/pi at
@@ -93,11 +93,6 @@ public:
     // order and threads. Adds the lookup to `stats` when non-null.
     std::array<double, 3> biasCompensatedDensity(const Vec3& pos, const Vec3& normal, int bwMin,
                                                  int bwMax, BiasCompStats* stats = nullptr);
-
-    // Searches through `index` from now on (nullptr: the map's kd-tree, whose order must
-    // have been checked). The photons found are the same either way except among ties at
-    // the furthest distance, so callers must choose by something deterministic.
-    void useIndex(const PhotonIndex* index);
 
     // Starts the adaptive radius afresh (the limit, no run of good lookups), as for a new
     // lookup object. RADIANCE keeps this state for a whole run, so its results depend on
@@ -122,12 +117,13 @@ private:
     // RADIANCE's squared estimate radius for `hits` (>= 2, the furthest first): the mean
     // of the radii of the furthest (the search limit if the queue did not fill) and the
     // second furthest, squared.
-    double estimateRadius2(std::span<const PhotonHit> hits) const;
-    // findPhotons with a queue of queueLen (<= hits_.size()).
-    std::span<PhotonHit> search(const Vec3& pos, const Vec3* normal, size_t queueLen);
+    double estimateRadius2(std::span<const FoundPhoton> hits) const;
+    // findPhotons with a queue of queueLen.
+    std::span<FoundPhoton> search(const Vec3& pos, const Vec3* normal, size_t queueLen);
 
     const PhotonMap* map_;
-    const PhotonIndex* index_;
+    std::unique_ptr<PhotonStore::Cursor> cursor_;
+    bool causticOnly_;
     int bandwidth_;
     bool fixedRadius_;
     double gatherTolerance_;
@@ -137,7 +133,7 @@ private:
     int goodRun_ = 0;
     uint64_t lookups_ = 0;
     uint64_t shortLookups_ = 0;
-    std::vector<PhotonHit> hits_;
+    std::vector<FoundPhoton> hits_;
     size_t found_ = 0;
     std::vector<std::array<double, 3>> biasPrefix_;  // scratch for compensateBias
 };

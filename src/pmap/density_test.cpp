@@ -18,7 +18,9 @@ PhotonMap unitSquareMap(size_t n, uint32_t seed, std::array<double, 3> flux) {
     v.reserve(n);
     for (size_t i = 0; i < n; ++i)
         v.push_back(makePhoton(Vec3(u(rng), u(rng), 0), Vec3(0, 0, 1), flux));
-    return PhotonMap(PhotonMapType::Global, std::move(v));
+    PhotonMap map(PhotonMapType::Global, std::move(v));
+    map.makeSearchable();
+    return map;
 }
 
 // Truth: irradiance E = N * flux / area, and RADIANCE's estimate is E / pi.
@@ -65,6 +67,7 @@ TEST(Density, VolumeDensityOfUniformPhotons) {
     for (size_t i = 0; i < n; ++i)
         v.push_back(makePhoton(Vec3(u(rng), u(rng), u(rng)), Vec3(1, 0, 0), {1e-3, 1e-3, 1e-3}));
     PhotonMap map(PhotonMapType::Volume, std::move(v));
+    map.makeSearchable();
     const double flux = map.photons()[0].fluxRgb()[0];
     PhotonLookup lookup(map, LookupParams{k, 0, 0.5});
     const auto hg = [](double g, double c) {
@@ -157,6 +160,7 @@ TEST(Density, PrecompTakesNearestPhotonFlux) {
                              makePhoton(Vec3(1, 0, 0), Vec3(0, 0, 1), {4, 5, 6}),
                              makePhoton(Vec3(0.2, 0, 0), Vec3(0, 0, -1), {7, 8, 9})};
     PhotonMap map(PhotonMapType::PreComp, v);
+    map.makeSearchable();
     PhotonLookup lookup(map, LookupParams{1, 0, 0.5});
     auto e = lookup.precompDensity(Vec3(0.3, 0, 0), Vec3(0, 0, 1));  // skips the -z photon
     const auto want = map.photons()[static_cast<size_t>(findNearestPhoton(

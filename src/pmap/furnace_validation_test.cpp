@@ -43,7 +43,7 @@ void expectFurnace(const std::string& scene, const Vec3& centre, const std::stri
     std::ostringstream diag;
     runMkpmap(parseMkpmapArgs(int(argv.size()), argv.data()), "mkpmap furnace test", diag);
 
-    PhotonMap g = PhotonMap::load(map);
+    PhotonMap g = PhotonMap::open(map, StoreOptions{});
     // Stored flux = Phi rho / (1 - rho (1 - a)): photons die on the lamp with probability
     // a = (r/R)^2 per bounce. Phi = 9.8696 W, rho = 0.5, a = 0.0025 -> 9.8450 W per channel.
     double stored = g.stats().avgFlux[1] * double(g.size());

@@ -221,6 +221,7 @@ struct InMemoryTree {
     const Photon* photons;
     const Photon& at(size_t i) const { return photons[i]; }
     void prefetch(size_t i) const { __builtin_prefetch(photons + i); }
+    bool accepts(const Photon&) const { return true; }
     void misplaced(size_t) const {}
 };
 }  // namespace

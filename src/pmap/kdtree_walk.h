@@ -1,8 +1,8 @@
 // The k-nearest walk over a kd-tree in RADIANCE's heap order, shared by the in-memory tree
-// (kdtree.cpp findNearestPhotons) and maps read on demand (on_demand_photons.cpp), with its
+// (kdtree.cpp findNearestPhotons) and the out-of-core store (ooc_store.cpp), with its
 // bounded max-heap of results and its normal filter.
 // RADIANCE compat: pmapkdt.c keeps a queue of maxGather+1 entries the same way. (The
-// bucket index, lookup_index.cpp, collects candidates and selects instead; it keeps the
+// in-core store, incore_store_search.cpp, collects candidates and selects instead; it keeps the
 // same photons up to ties at the k-th distance.)
 #pragma once
 
@@ -59,10 +59,11 @@ inline void offerPhoton(PhotonHit* heap, size_t k, size_t& found, float& maxDist
 // down (pre-order) where RADIANCE's recursion tests it after both subtrees; the photons
 // found are the same (the k nearest within the radius; among equal distances either may be
 // kept) and pre-order with a prefetch of the near grandchildren measured ~1.5x faster.
-// `tree` gives photon i (0-based, heap order) by tree.at(i) and takes prefetch hints by
-// tree.prefetch(i). With Tree::kCheckOrder the walk carries each cell's bounds and calls
+// `tree` gives photon i (0-based, heap order) by tree.at(i), takes prefetch hints by
+// tree.prefetch(i) and may refuse photons by tree.accepts(photon) (filters beyond the
+// normal's). With Tree::kCheckOrder the walk carries each cell's bounds and calls
 // tree.misplaced(i) (which must throw) for a visited photon outside them: the photons it
-// sees are then checked as checkKdTreeOrder would, which maps read on demand need.
+// sees are then checked as checkKdTreeOrder would, which maps searched out of core need.
 template <bool kFilter, class Tree>
 size_t walkKdTree(const Tree& tree, size_t n, const float q[3], const QueryNormal& qn,
                   float maxDist2, PhotonHit* heap, size_t k) {
@@ -110,7 +111,7 @@ size_t walkKdTree(const Tree& tree, size_t n, const float q[3], const QueryNorma
             }
             const float dx = q[0] - p.pos[0], dy = q[1] - p.pos[1], dz = q[2] - p.pos[2];
             const float d2 = dx * dx + dy * dy + dz * dz;
-            if (d2 < maxDist2 && (!kFilter || qn.accepts(p)))
+            if (d2 < maxDist2 && (!kFilter || qn.accepts(p)) && tree.accepts(p))
                 offerPhoton(heap, k, found, maxDist2, d2, static_cast<uint32_t>(node - 1));
             if constexpr (Tree::kCheckOrder) (d >= 0 ? cell.lo : cell.hi)[axis] = p.pos[axis];
             node = nearChild;

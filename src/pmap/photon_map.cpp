@@ -3,7 +3,7 @@
 
 #include <limits>
 
-#include "pmap/on_demand_photons.h"
+#include "pmap/incore_store.h"
 #include "util/portable_io.h"
 #include "util/error.h"
 
@@ -71,23 +71,29 @@ PhotonMap::PhotonMap(PhotonMapType type, std::vector<Photon> photons,
     photons_ = buildKdTree(std::move(photons), parallel);
 }
 
-std::span<const Photon> PhotonMap::photons() const {
-    return onDemand_ ? onDemand_->all() : std::span<const Photon>(photons_);
-}
-
 void PhotonMap::setPrimaryRays(std::vector<PrimaryRay> rays) {
     RP_CHECK(rays.empty() || rays.size() == primaries_.size());
     primaryRays_ = std::move(rays);
 }
 
-const Photon& PhotonMap::searchedPhoton(size_t i) const {
-    return onDemand_ ? onDemand_->photon(i) : photons_[i];
+const PhotonStore& PhotonMap::store() const {
+    RP_CHECK(store_ != nullptr);
+    return *store_;
 }
 
-size_t PhotonMap::findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,
-                              std::span<PhotonHit> out) const {
-    return onDemand_ ? onDemand_->findNearest(pos, normal, maxDist2, out)
-                     : findNearestPhotons(photons_, pos, normal, maxDist2, out);
+PhotonMap PhotonMap::searchableFrom(PhotonMapType type, std::vector<Photon> photons,
+                                    bool parallel) {
+    PhotonMap map;
+    map.type_ = type;
+    map.stats_ = computeStats(photons);
+    map.store_ = std::make_shared<InCoreStore>(photons, InCoreStore::attributesFor(type),
+                                               parallel, /*consume=*/true);
+    return map;
+}
+
+void PhotonMap::makeSearchable(bool parallel) {
+    store_ = std::make_shared<InCoreStore>(
+        InCoreStore::copyOf(photons_, InCoreStore::attributesFor(type_), parallel));
 }
 
 }  // namespace rp::pmap

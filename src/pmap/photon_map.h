@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <span>
@@ -14,11 +15,10 @@
 
 #include "pmap/kdtree.h"
 #include "pmap/photon.h"
+#include "pmap/photon_store.h"
 #include "util/header.h"
 
 namespace rp::pmap {
-
-class OnDemandPhotons;
 
 // RADIANCE's file format version for in-core kd-tree maps with RGBE flux and plain
 // primaries (pmapio.h PMAP_FILEVER); the only one we read and write so far.
@@ -59,17 +59,19 @@ public:
     PhotonMapType type() const { return type_; }
     size_t size() const { return stats_.numPhotons; }
     bool empty() const { return size() == 0; }
-    // Photons in kd-tree (= file) order. A map loaded on demand reads and checks the
-    // photons no search has reached yet first (once; InputError if the file turns out to
-    // be corrupt or truncated).
-    std::span<const Photon> photons() const;
+    // Photons in kd-tree (= file) order; empty for a map opened for searching (open()).
+    std::span<const Photon> photons() const { return photons_; }
 
-    // The kd-tree walk (kdtree.h findNearestPhotons), for maps loaded either way.
-    size_t findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,
-                       std::span<PhotonHit> out) const;
-    // Photon i, which findNearest must have returned (photons()[i] without reading the
-    // rest of a map loaded on demand).
-    const Photon& searchedPhoton(size_t i) const;
+    // The search over the photons (photon_store.h): set by open(), or by makeSearchable()
+    // for a map built or read in memory. RP_CHECKs that there is one.
+    const PhotonStore& store() const;
+    bool searchable() const { return store_ != nullptr; }
+    // An in-core store over a copy of photons() (tests).
+    void makeSearchable(bool parallel = true);
+    // A map of `photons` (any order) for searching only: statistics and an in-core store
+    // built from them, no kd-tree, photons() empty (mkpmap's precomputation).
+    static PhotonMap searchableFrom(PhotonMapType type, std::vector<Photon> photons,
+                                    bool parallel = true);
     const PhotonMapStats& stats() const { return stats_; }
     const std::vector<PhotonPrimary>& primaries() const { return primaries_; }
     // One per primary in maps of the 3.1kPD variant, else empty.
@@ -98,18 +100,20 @@ public:
     // bytes that follow, split axes, finite positions, kd-tree order (unless
     // TreeOrder::Unchecked) and primary indices. Every problem is an InputError; no
     // allocation is made before the size has been checked.
-    // Unchecked is for callers that search the photons only through a PhotonIndex, which
-    // does not depend on the file's order (the renderer): the order check is a walk over
-    // every photon, a visible part of loading a map with one thread.
     enum class TreeOrder { Checked, Unchecked };
     static PhotonMap read(std::istream& in, const std::string& what,
                           TreeOrder order = TreeOrder::Checked);
-    // With `causticOnDemand`, a caustic map's photons are read as searches reach them
-    // (pmap/on_demand_photons.h), each checked then; the header, statistics and file size
-    // are checked at once either way. For the renderer, which looks caustic maps up about
-    // once per primary ray and may never need most of a million photons.
-    static PhotonMap load(const std::string& path, TreeOrder order = TreeOrder::Checked,
-                          bool causticOnDemand = false);
+    static PhotonMap load(const std::string& path, TreeOrder order = TreeOrder::Checked);
+
+    // Opens the map at `path` for searching (the renderer, rcontrib): header, statistics
+    // and primaries as read() checks them, the photons into the store `options` choose
+    // (photon_store.h StoreOptions; photon_map_open.cpp), with a message when a map is
+    // searched out of core without -aC asking for it. With `trackedSources` (rcontrib), a
+    // contribution map's photons from sources not marked there (by the primaries' source
+    // index) are never found, as RADIANCE's lookups skip them; the statistics stay the
+    // whole map's, as RADIANCE's do. photons() stays empty.
+    static PhotonMap open(const std::string& path, const StoreOptions& options,
+                          const std::vector<bool>* trackedSources = nullptr);
     // The kd-tree order check that read() skips with TreeOrder::Unchecked, for a map that
     // turns out to need it after all; throws the same InputError naming `what`.
     void checkTreeOrder(const std::string& what) const;
@@ -123,7 +127,7 @@ private:
 
     PhotonMapType type_ = PhotonMapType::Global;
     BulkVector<Photon> photons_;
-    std::shared_ptr<const OnDemandPhotons> onDemand_;  // set instead of photons_ on demand
+    std::shared_ptr<const PhotonStore> store_;
     std::vector<PhotonPrimary> primaries_;
     std::vector<PrimaryRay> primaryRays_;
     PhotonMapStats stats_;

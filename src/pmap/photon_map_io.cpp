@@ -22,7 +22,6 @@
 #include <ostream>
 #include <random>
 
-#include "pmap/on_demand_photons.h"
 #include "pmap/photon_map.h"
 #include "pmap/photon_records.h"
 #include "util/bulk_memory.h"
@@ -149,7 +148,7 @@ Header PhotonMap::fileHeader(const std::string& commandLine) const {
 void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
     writeHeader(out, fileHeader(commandLine));
     const PhotonMapStats& s = stats_;
-    const std::span<const Photon> photons = this->photons();  // all of a map read on demand
+    const std::span<const Photon> photons = this->photons();
     std::string b;
     putStr(b, fileVersion());
     putInt(b, static_cast<int64_t>(photons.size()), 8);
@@ -244,8 +243,7 @@ std::string treeProblem(const std::string& problem) {
 }
 
 void PhotonMap::checkTreeOrder(const std::string& what) const {
-    // read() has checked every record already (and built maps have valid ones); so has
-    // photons() of a map loaded on demand, with the order.
+    // read() has checked every record already (and built maps have valid ones).
     const std::string problem = checkKdTreeOrder(photons());
     if (!problem.empty()) throw InputError(SourceLoc{what, 0}, treeProblem(problem));
 }
@@ -370,20 +368,13 @@ void PhotonMap::readPhotons(std::istream& in, const std::string& what, TreeOrder
                                                   p.primary, numPrimary));
 }
 
-PhotonMap PhotonMap::load(const std::string& path, TreeOrder order, bool causticOnDemand) {
+PhotonMap PhotonMap::load(const std::string& path, TreeOrder order) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw InputError(SourceLoc{path, 0},
                          fmt::format("can't open photon map file: {}", std::strerror(errno)));
     PhotonMap map = readPrologue(in, path);
-    if (!causticOnDemand || map.type_ != PhotonMapType::Caustic) {
-        map.readPhotons(in, path, order);
-        return map;
-    }
-    const std::streampos records = in.tellg();
-    if (records < 0 || !in) throw InputError(SourceLoc{path, 0}, "can't determine file size");
-    map.onDemand_ = std::make_shared<const OnDemandPhotons>(
-        path, static_cast<uint64_t>(records), map.stats_.numPhotons);
+    map.readPhotons(in, path, order);
     return map;
 }
 

@@ -1,6 +1,6 @@
 // The 27-byte photon record of RADIANCE "3.1k" map files (pmapkdt.c kdT_SavePhotons) and
 // the messages for records that fail their checks, shared by the eager reader
-// (photon_map_io.cpp) and the on-demand one (on_demand_photons.cpp).
+// (photon_map_io.cpp) and the out-of-core store (ooc_store.cpp).
 #pragma once
 
 #include <cstddef>

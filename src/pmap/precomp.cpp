@@ -43,7 +43,7 @@ std::vector<Photon> precomputeGlobal(std::vector<Photon> global, const PrecompSe
     tbb::task_arena arena(std::max(1, s.threads));
     PhotonMap map;
     arena.execute([&] {
-        map = PhotonMap(PhotonMapType::Global, std::move(global), {}, s.threads > 1);
+        map = PhotonMap::searchableFrom(PhotonMapType::Global, std::move(global), s.threads > 1);
     });
     LookupParams lp;
     lp.bandwidth = std::max(1, s.bandwidth);

@@ -61,7 +61,8 @@ TEST(Precomp, StoresTheDensityEstimateOverTheFullMap) {
     s.threads = 2;
     EXPECT_EQ(precomputeGlobal(all, s), pre) << "depends on the thread count";
 
-    const PhotonMap global(PhotonMapType::Global, all, {}, false);
+    PhotonMap global(PhotonMapType::Global, all, {}, false);
+    global.makeSearchable(false);
     int checked = 0, matched = 0;
     double interiorSum = 0;
     int interior = 0;
@@ -105,7 +106,7 @@ TEST(Precomp, FurnaceMapEndToEnd) {
     run({"-apg", g, "40k", "-apr", "3"});  // the same global photons (same seed and target)
     run({"-app", p2, "40k", "50", "-apP", "0.4", "-apr", "3", "-n", "2"});
 
-    PhotonMap pre = PhotonMap::load(p), glob = PhotonMap::load(g);
+    PhotonMap pre = PhotonMap::load(p), glob = PhotonMap::open(g, StoreOptions{});
     EXPECT_EQ(pre.type(), PhotonMapType::PreComp);
     EXPECT_EQ(PhotonMap::load(p2).photons().size(), pre.size());
     EXPECT_TRUE(std::equal(pre.photons().begin(), pre.photons().end(),

@@ -16,19 +16,24 @@
 
 namespace rp::render {
 
+pmap::LookupParams PhotonLighting::lookupParams(const Map& m) const {
+    pmap::LookupParams p;
+    // With bias compensation the search radius is sized for the upper bandwidth.
+    p.bandwidth = m.use.bandwidth2 > 0 ? m.use.bandwidth2 : m.use.bandwidth;
+    p.maxSearchRadius = maxSearchRadius_;
+    // RADIANCE compat (pmcontrib2.c): contribution lookups count as short unless the
+    // queue fills, so every requested photon's contribution is there.
+    if (!m.map.primaries().empty()) p.gatherTolerance = 1;
+    return p;
+}
+
 PhotonLighting::Lookups::Lookups(const PhotonLighting& owner) : owner_(owner) {
-    for (const Map& m : owner.maps_) {
-        pmap::LookupParams p;
-        // With bias compensation the search radius is sized for the upper bandwidth.
-        p.bandwidth = m.use.bandwidth2 > 0 ? m.use.bandwidth2 : m.use.bandwidth;
-        p.maxSearchRadius = owner.maxSearchRadius_;
-        // RADIANCE compat (pmcontrib2.c): contribution lookups count as short unless the
-        // queue fills, so every requested photon's contribution is there.
-        if (!m.map.primaries().empty()) p.gatherTolerance = 1;
-        // Eager indexes exist already (get() returns at once); lazy ones are chosen per
-        // lookup (PhotonLighting::density).
-        lookups.emplace_back(m.map, p,
-                             m.indexedOnDemand() ? nullptr : &m.index.get(m.map.photons()));
+    for (const Map& m : owner.maps_) lookups.emplace_back(m.map, owner.lookupParams(m));
+    if (owner.contribCaustic_) {
+        const Map& m = owner.maps_[size_t(owner.contrib_)];
+        pmap::LookupParams p = owner.lookupParams(m);
+        p.causticOnly = true;
+        contribCaustic.emplace(m.map, p);
     }
     biasStats.resize(owner.maps_.size());
 }
@@ -37,6 +42,10 @@ PhotonLighting::Lookups::~Lookups() {
     for (const pmap::PhotonLookup& l : lookups) {
         owner_.shortLookups_ += l.shortLookups();
         owner_.lookups_ += l.lookups();
+    }
+    if (contribCaustic) {
+        owner_.shortLookups_ += contribCaustic->shortLookups();
+        owner_.lookups_ += contribCaustic->lookups();
     }
     std::lock_guard<std::mutex> lock(owner_.statsMutex_);
     for (size_t i = 0; i < biasStats.size(); ++i) owner_.biasStats_[i].merge(biasStats[i]);
@@ -60,7 +69,8 @@ int64_t fileMtime(const std::string& path) {
 }  // namespace
 
 PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double maxSearchRadius,
-                               const Scene& scene, const std::vector<bool>* trackedSources)
+                               const Scene& scene, const std::vector<bool>* trackedSources,
+                               const pmap::StoreOptions& store)
     : maxSearchRadius_(maxSearchRadius) {
     const bool contributions = trackedSources != nullptr;
     int64_t newestInput = 0;
@@ -70,26 +80,17 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
             newestInput = in.mtime;
             newestName = in.path;
         }
-    // The maps load and get their search indexes concurrently, each index as soon as its
-    // map is loaded (with two threads, the global map's index is built while the larger
-    // caustic map still loads); errors are reported in command-line order whatever the
-    // threads did.
+    // The maps are opened concurrently (with two threads, the global map's store is built
+    // while the larger caustic map still loads); errors are reported in command-line
+    // order whatever the threads did.
     using T = pmap::PhotonMapType;
     std::vector<Map> loaded(uses.size());
     std::vector<std::exception_ptr> failed(uses.size());
     tbb::parallel_for(size_t(0), uses.size(), [&](size_t i) {
         try {
-            // Searched through a PhotonIndex (pmap/lookup_index.h: same photons as the
-            // kd-tree walk, about 1.7x faster), so the file's kd-tree order is not
-            // checked here. Caustic maps, whose first rays walk it (Lookups::kKdTreeRays),
-            // are read on demand: the walks read and check the photons they visit, and
-            // the rest is read when the index is built.
-            Map& m = loaded[i];
-            m.map = pmap::PhotonMap::load(uses[i].file, pmap::PhotonMap::TreeOrder::Unchecked,
-                                          /*causticOnDemand=*/true);
-            const T type = m.map.type();
-            if (!m.indexedOnDemand() && (type != T::Contrib) != contributions)
-                m.index.get(m.map.photons());  // maps refused below are not indexed
+            pmap::StoreOptions o = store;
+            o.bandwidth = std::max({uses[i].bandwidth, uses[i].bandwidth2, kDefaultBandwidth});
+            loaded[i].map = pmap::PhotonMap::open(uses[i].file, o, trackedSources);
         } catch (...) {
             failed[i] = std::current_exception();
         }
@@ -139,38 +140,11 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
                              " (stale: rerun mkpmap)");
         *slot = int(maps_.size());
         maps_.push_back(std::move(m));
-        if (type == T::Contrib) prepareContrib(*trackedSources);
+        // RADIANCE compat (pmapamb.c ambPmapCaustic, pmapmat.h srcRayInPmap): with a
+        // contribution map its caustic photons stand for light through specular surfaces.
+        if (type == T::Contrib) contribCaustic_ = true;
     }
     biasStats_.resize(maps_.size());
-}
-
-void PhotonLighting::prepareContrib(const std::vector<bool>& trackedSources) {
-    Map& full = maps_[size_t(contrib_)];
-    const auto& primaries = full.map.primaries();
-    auto tracked = [&](const pmap::Photon& p) {
-        const int s = p.primary < primaries.size() ? primaries[p.primary].srcIdx : -1;
-        return s >= 0 && size_t(s) < trackedSources.size() && trackedSources[size_t(s)];
-    };
-    const auto photons = full.map.photons();
-    if (!std::all_of(photons.begin(), photons.end(), tracked)) {
-        std::vector<pmap::Photon> kept;
-        std::copy_if(photons.begin(), photons.end(), std::back_inserter(kept), tracked);
-        std::vector<pmap::PrimaryRay> rays = full.map.primaryRays();
-        full.map = pmap::PhotonMap(pmap::PhotonMapType::Contrib, std::move(kept), primaries);
-        full.map.setPrimaryRays(std::move(rays));
-        full.index = pmap::LazyPhotonIndex{};
-    }
-    std::vector<pmap::Photon> caustic;
-    for (const pmap::Photon& p : full.map.photons())
-        if (p.caustic()) caustic.push_back(p);
-    if (caustic.empty()) return;
-    Map m;
-    m.map = pmap::PhotonMap(pmap::PhotonMapType::Contrib, std::move(caustic), full.map.primaries());
-    m.map.setPrimaryRays(full.map.primaryRays());
-    m.use = full.use;
-    m.file = full.file;
-    contribCaustic_ = int(maps_.size());
-    maps_.push_back(std::move(m));
 }
 
 std::string PhotonLighting::biasReport() const {
@@ -196,7 +170,6 @@ Color PhotonLighting::density(Lookups& l, int index, const Vec3& pos, const Vec3
     if (index < 0) return {};
     pmap::PhotonLookup& lookup = l.lookups[size_t(index)];
     const Map& m = maps_[size_t(index)];
-    if (m.indexedOnDemand()) lookup.useIndex(l.earlyRay ? nullptr : &m.index.get(m.map.photons()));
     std::array<double, 3> d;
     if (m.map.type() == pmap::PhotonMapType::PreComp)
         d = lookup.precompDensity(pos, normal);
@@ -221,13 +194,11 @@ Color PhotonLighting::directDensity(Lookups& l, const Vec3& pos, const Vec3& nor
 Color PhotonLighting::contribDensity(Lookups& l, const Vec3& pos, const Vec3& normal,
                                      const Color& coef, ContributionSink* sink,
                                      bool caustic) const {
-    const int index = caustic ? contribCaustic_ : contrib_;
-    if (index < 0) return {};
-    const Map& m = maps_[size_t(index)];
-    const pmap::PhotonMap& map = m.map;
+    if (contrib_ < 0) return {};
+    const pmap::PhotonMap& map = maps_[size_t(contrib_)].map;
     const auto& primaries = map.primaries();
     const auto& rays = map.primaryRays();
-    auto share = [&](const pmap::Photon& p, const std::array<double, 3>& v) {
+    auto share = [&](const pmap::FoundPhoton& p, const std::array<double, 3>& v) {
         if (!sink || p.primary >= primaries.size()) return;
         const Color value = coef * Color{v[0], v[1], v[2]};
         if (rays.empty()) {
@@ -240,8 +211,7 @@ Color PhotonLighting::contribDensity(Lookups& l, const Vec3& pos, const Vec3& no
                                                Vec3{d[0], d[1], d[2]}};
         sink->addPhotons(primaries[p.primary].srcIdx, &o, value);
     };
-    pmap::PhotonLookup& lookup = l.lookups[size_t(index)];
-    if (m.indexedOnDemand()) lookup.useIndex(l.earlyRay ? nullptr : &m.index.get(map.photons()));
+    pmap::PhotonLookup& lookup = caustic ? *l.contribCaustic : l.lookups[size_t(contrib_)];
     auto d = lookup.contribDensity(pos, normal, share);
     return Color{d[0], d[1], d[2]};
 }

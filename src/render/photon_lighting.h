@@ -17,8 +17,8 @@
 
 #include "pmap/bias_comp.h"
 #include "pmap/density.h"
-#include "pmap/lookup_index.h"
 #include "pmap/photon_map.h"
+#include "pmap/photon_store.h"
 #include "render/render_options.h"
 #include "render/renderer.h"
 #include "scene/primitive.h"
@@ -39,9 +39,11 @@ public:
     // (`trackedSources` non-null): there every other type is refused, elsewhere they
     // are; a contribution map's photons from sources not marked in `trackedSources`
     // (light::findLightSources order) are left out, as RADIANCE's lookups skip them. An
-    // empty `uses` gives an inactive set.
+    // empty `uses` gives an inactive set. `store` sizes the maps' stores (-ac, -aC, -n;
+    // its bandwidth is set per map).
     PhotonLighting(const std::vector<PhotonMapUse>& uses, double maxSearchRadius,
-                   const Scene& scene, const std::vector<bool>* trackedSources = nullptr);
+                   const Scene& scene, const std::vector<bool>* trackedSources = nullptr,
+                   const pmap::StoreOptions& store = {});
     ~PhotonLighting();
 
     bool active() const { return !maps_.empty(); }
@@ -52,7 +54,7 @@ public:
     bool hasContrib() const { return contrib_ >= 0; }
     // Caustic photons at the hits of non-ambient rays: a caustic map's, or those of a
     // contribution map that arrived through specular surfaces (RADIANCE ambPmapCaustic).
-    bool hasCausticLight() const { return caustic_ >= 0 || contribCaustic_ >= 0; }
+    bool hasCausticLight() const { return caustic_ >= 0 || contribCaustic_; }
 
     // Per-thread lookup state (adaptive radius, result buffers); adds its lookup counts
     // to the owner's when destroyed.
@@ -61,22 +63,14 @@ public:
         explicit Lookups(const PhotonLighting& owner);
         ~Lookups();
         std::vector<pmap::PhotonLookup> lookups;  // one per map, in maps_ order
+        // The contribution map's caustic photons, with their own adaptive radius.
+        std::optional<pmap::PhotonLookup> contribCaustic;
         std::vector<pmap::BiasCompStats> biasStats;  // one per map
-        // Called at the start of every primary ray (PhotonLookup::restartAdaptiveRadius)
-        // with the ray's index in the run (input line, pixel sample).
-        void startRay(uint64_t rayIndex) {
+        // Called at the start of every primary ray (PhotonLookup::restartAdaptiveRadius).
+        void startRay() {
             for (pmap::PhotonLookup& l : lookups) l.restartAdaptiveRadius();
-            earlyRay = rayIndex < kKdTreeRays;
+            if (contribCaustic) contribCaustic->restartAdaptiveRadius();
         }
-        // Caustic maps answer the first kKdTreeRays primary rays by walking the file's
-        // kd-tree and build their search index only when a later ray needs them (see
-        // Map::indexedOnDemand): a sensor grid of a few hundred points then never pays for
-        // indexing a million caustic photons (0.07 s of a 0.8 s Cornell run), nor for
-        // reading them (they are read as the walks reach them). Chosen by
-        // the ray's index, not by whether the index happens to exist yet, so results do
-        // not depend on threads (the two searches may differ among equidistant photons).
-        static constexpr uint64_t kKdTreeRays = 10000;
-        bool earlyRay = false;
 
     private:
         const PhotonLighting& owner_;
@@ -114,25 +108,18 @@ public:
 private:
     struct Map {
         pmap::PhotonMap map;
-        // Cache-friendly search structure, built at load, or on first use when
-        // indexedOnDemand (caustic maps: about one lookup per primary ray,
-        // Lookups::kKdTreeRays).
-        pmap::LazyPhotonIndex index;
-        bool indexedOnDemand() const { return map.type() == pmap::PhotonMapType::Caustic; }
         PhotonMapUse use;
         std::string file;
     };
     Color density(Lookups& l, int index, const Vec3& pos, const Vec3& normal) const;
-    // Leaves untracked sources' photons out of the contribution map, then makes
-    // contribCaustic_ from it.
-    void prepareContrib(const std::vector<bool>& trackedSources);
+    pmap::LookupParams lookupParams(const Map& m) const;
 
     std::vector<Map> maps_;
     double maxSearchRadius_ = 0;
     int global_ = -1, caustic_ = -1, direct_ = -1, volume_ = -1, contrib_ = -1;
-    // The contribution map's caustic photons as a map of their own: RADIANCE filters its
-    // search by the caustic flag; a map of them gives the same nearest photons.
-    int contribCaustic_ = -1;
+    // Whether the contribution map holds caustic photons (searched with the caustic
+    // filter, as RADIANCE's ambPmapCaustic does).
+    bool contribCaustic_ = false;
     mutable std::atomic<uint64_t> shortLookups_{0}, lookups_{0};
     mutable std::mutex statsMutex_;
     mutable std::vector<pmap::BiasCompStats> biasStats_;  // per map, merged from threads

@@ -3,6 +3,8 @@
 // error messages are ours, one line each.
 #include "render/render_options.h"
 
+#include "pmap/mkpmap_options.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -149,6 +151,13 @@ bool parseRenderOption(const std::vector<std::string>& args, size_t& i, RenderOp
     } else if (o == "-am") {
         opt.photonMaxRadius = v.real();
         v.require(opt.photonMaxRadius > 0, "invalid max photon search radius");
+    } else if (o == "-ac") {
+        opt.photonPageSize = v.real();
+        v.require(opt.photonPageSize > 0, "invalid photon cache page size");
+    } else if (o == "-aC") {
+        const std::optional<uint64_t> n = pmap::parsePhotonCount(v.word());
+        v.require(n && *n > 0, "invalid photon cache size");
+        opt.photonCache = *n;
     } else if (o == "-me") opt.mist.extinction = readColor(v);
     else if (o == "-ma") opt.mist.albedo = readColor(v);
     else if (o == "-mg") opt.mist.eccentricity = v.real();

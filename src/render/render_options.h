@@ -78,6 +78,9 @@ struct RenderOptions {
     MistOptions mist;
     std::vector<PhotonMapUse> photonMaps;  // -ap (repeatable)
     double photonMaxRadius = 0;            // -am: fixed maximum search radius, 0 = automatic
+    // Out-of-core photon maps (RADIANCE's OOC build, manual 3.2; pmap/photon_store.h):
+    double photonPageSize = 4;             // -ac: cache page size, x the bandwidth
+    uint64_t photonCache = 0;              // -aC: photons cached per thread; 0 = by memory
     bool backVisible = true;               // -bv
     bool irradiance = false;               // -i: compute irradiance at surfaces hit
     // -u: uncorrelated (random) sampling. RADIANCE compat: rpict's default is off; rtrace

@@ -77,6 +77,15 @@ std::vector<bool> trackedLightSources(const Scene& s, const SceneGeometry& g,
     return out;
 }
 
+// How the photon maps' stores are sized (-ac, -aC, -n).
+pmap::StoreOptions photonStoreOptions(const RenderOptions& o) {
+    pmap::StoreOptions s;
+    s.cachePhotons = o.photonCache;
+    s.pageSize = o.photonPageSize;
+    s.threads = std::max(1, o.threads);
+    return s;
+}
+
 }  // namespace
 
 Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions& o,
@@ -87,7 +96,8 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
       chains(s, searchPath),
       materialCalc(s, std::move(searchPath)),
       trackedSources(trackedLightSources(s, g, o)),
-      photons(o.photonMaps, o.photonMaxRadius, s, o.contributions ? &trackedSources : nullptr),
+      photons(o.photonMaps, o.photonMaxRadius, s, o.contributions ? &trackedSources : nullptr,
+              photonStoreOptions(o)),
       ambientOptions(photonAmbientOptions(o, photons)),
       // RADIANCE compat (source.c): in photon-map mode virtual sources are not made;
       // light from mirrors (and prisms) then arrives through caustic photons.
@@ -135,7 +145,7 @@ RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
                           uint64_t rayIndex, std::vector<TracedRay>* tree,
                           double maxDistance, ContributionSink* contrib) const {
     ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);
-    if (ctx.photonLookups) ctx.photonLookups->startRay(rayIndex);  // like the random numbers
+    if (ctx.photonLookups) ctx.photonLookups->startRay();  // like the random numbers
     ctx.tree = tree;
     ctx.treeDepth = 0;
     RayResult result;
@@ -155,7 +165,7 @@ RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
 RayResult Renderer::irradiance(Context& ctx, const Vec3& point, const Vec3& normal,
                                uint64_t rayIndex, ContributionSink* contrib) const {
     ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);
-    if (ctx.photonLookups) ctx.photonLookups->startRay(rayIndex);
+    if (ctx.photonLookups) ctx.photonLookups->startRay();
     RayResult result;
     result.origin = point;
     result.direction = normal;

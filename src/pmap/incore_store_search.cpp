@@ -1,8 +1,6 @@
-// Bucket index for nearest-photon lookups (see lookup_index.h): the k-nearest search
-// (the build is in lookup_index_build.cpp).
-#include "pmap/lookup_index.h"
-
-#include <tbb/task_arena.h>
+// The in-core store's k-nearest search (see incore_store.h; the build is in
+// incore_store_build.cpp).
+#include "pmap/incore_store.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,7 +39,7 @@ inline uint32_t laneMask(V4i m) {
 
 }  // namespace
 
-struct PhotonIndex::Search {
+struct InCoreStore::Search {
     float q[3];
     float n[3];
     PhotonHit* buf;  // candidates, cap >= k + kLeafSize entries
@@ -54,6 +52,7 @@ struct PhotonIndex::Search {
     // kGuessMargin x guessK photons, reported in `bound`.
     size_t guessK = 0;
     float bound = 0;
+    const uint8_t* causticFlags = nullptr;  // non-null: only photons with the caustic bit
 };
 
 namespace {
@@ -163,13 +162,10 @@ constexpr float kGuessMargin = 1.6f;
 constexpr float kGuessGrowth = 4.0f;  // squared radius per further pass
 }  // namespace
 
-PhotonIndex::PhotonIndex(std::span<const Photon> photons, bool parallel) {
-    build(photons, parallel);
-}
-
-size_t PhotonIndex::memoryBytes() const {
-    return nodes_.capacity() * sizeof(Node) + leaves_.capacity() + flux_.capacity() * sizeof(Colr) +
-           index_.capacity() * sizeof(uint32_t);
+size_t InCoreStore::memoryBytes() const {
+    return nodes_.capacity() * sizeof(Node) + leaves_.capacity() +
+           flux_.capacity() * sizeof(Colr) + flags_.capacity() +
+           primary_.capacity() * sizeof(uint32_t) + norm_.capacity() * 3;
 }
 
 // Why the pruning is exact: `off` holds, per axis, |fl(q - bound)| for the nearest bound of
@@ -184,7 +180,7 @@ size_t PhotonIndex::memoryBytes() const {
 // child is pushed only if its cell is within the radius, and tested again when popped
 // (the radius shrinks when a full buffer is cut down to the k nearest).
 template <bool kFilter>
-void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
+void InCoreStore::searchNode(uint32_t root, float rootOff[3], Search& s) const {
     // The cell offsets live in one vector register (lane 3 zero): written to and read
     // back from a stack array with a per-node axis index, each descent step waited on
     // store-to-load forwarding (the largest single stall of the walk in perf).
@@ -193,7 +189,7 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
         uint32_t node;
         float rd;  // cell distance (squared) of the far child
     };
-    // Depth <= 96 (lookup_index_build.cpp: 63 code bits plus 32 count splits).
+    // Depth <= 96 (incore_store_build.cpp: 63 bit splits plus 32 count splits).
     Pending stack[100];
     int top = 0;
     const float q0 = s.q[0], q1 = s.q[1], q2 = s.q[2];
@@ -260,6 +256,11 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
         }
         static_assert(kLeafSize <= 64, "the lane mask is one 64-bit word");
         if (count < 64) mask &= (uint64_t{1} << count) - 1;
+        if (s.causticFlags)
+            for (uint64_t m = mask; m; m &= m - 1) {
+                const uint32_t i = static_cast<uint32_t>(__builtin_ctzll(m));
+                if (!(s.causticFlags[b + i] & Photon::kCausticBit)) mask &= ~(uint64_t{1} << i);
+            }
         if (mask) {
             // Density estimates read the flux of the photons found (flux_, by slot) right
             // after the search: fetch this leaf's now, overlapped with the rest of the
@@ -376,8 +377,12 @@ void PhotonIndex::searchNode(uint32_t root, float rootOff[3], Search& s) const {
     s.maxDist2 = maxDist2;
 }
 
-size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float maxDist2, size_t k,
+size_t InCoreStore::findNearestSlots(const PhotonQuery& query,
                                      std::vector<PhotonHit>& scratch) const {
+    const size_t k = query.k;
+    const float maxDist2 = query.maxDist2;
+    const Vec3& pos = query.pos;
+    const Vec3* normal = query.normal;
     if (k == 0 || nodes_.empty()) return 0;
     const size_t cap = 4 * k + 2 * kLeafSize;
     if (scratch.size() < 2 * cap) scratch.resize(2 * cap);  // candidates, then selection room
@@ -389,6 +394,10 @@ size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float 
              k,
              0,
              maxDist2};
+    if (query.causticOnly) {
+        if (flags_.empty()) return 0;  // flags are kept for contribution maps only
+        s.causticFlags = flags_.data();
+    }
     float rootOff[3];
     for (int a = 0; a < 3; ++a) {
         const float q = s.q[a];
@@ -434,30 +443,34 @@ size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float 
     return n;
 }
 
-size_t PhotonIndex::findNearestSlots(const Vec3& pos, const Vec3* normal, float maxDist2,
-                                     std::span<PhotonHit> out) const {
-    thread_local std::vector<PhotonHit> scratch;
-    const size_t n = findNearestSlots(pos, normal, maxDist2, out.size(), scratch);
-    std::copy(scratch.begin(), scratch.begin() + static_cast<std::ptrdiff_t>(n), out.begin());
-    std::make_heap(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n), Nearer{});
+namespace {
+struct InCoreCursor final : PhotonStore::Cursor {
+    std::vector<PhotonHit> scratch;
+};
+}  // namespace
+
+std::unique_ptr<PhotonStore::Cursor> InCoreStore::makeCursor() const {
+    return std::make_unique<InCoreCursor>();
+}
+
+size_t InCoreStore::findNearest(Cursor& cursor, const PhotonQuery& q,
+                                std::vector<FoundPhoton>& out) const {
+    std::vector<PhotonHit>& hits = static_cast<InCoreCursor&>(cursor).scratch;
+    const size_t n = findNearestSlots(q, hits);
+    if (out.size() < n) out.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const uint32_t slot = hits[i].index;
+        FoundPhoton& f = out[i];
+        f.dist2 = hits[i].dist2;
+        f.flux = flux_[slot];
+        f.flags = attrs_.contrib ? flags_[slot] : uint8_t{0};
+        f.primary = attrs_.contrib ? primary_[slot] : 0;
+        if (attrs_.normals)
+            std::memcpy(f.norm, norm_[slot].data(), 3);
+        else
+            f.norm[0] = f.norm[1] = f.norm[2] = 0;
+    }
     return n;
-}
-
-size_t PhotonIndex::findNearest(const Vec3& pos, const Vec3* normal, float maxDist2,
-                                std::span<PhotonHit> out) const {
-    const size_t found = findNearestSlots(pos, normal, maxDist2, out);
-    for (size_t i = 0; i < found; ++i) out[i].index = index_[out[i].index];
-    return found;
-}
-
-const PhotonIndex& LazyPhotonIndex::get(std::span<const Photon> photons) const {
-    std::call_once(state_->once, [&] {
-        // Isolated: while this thread waits for its build tasks it must not pick up an
-        // outer task that would call get() again and block on the same once_flag.
-        tbb::this_task_arena::isolate(
-            [&] { state_->index = std::make_unique<PhotonIndex>(photons, true); });
-    });
-    return *state_->index;
 }
 
 }  // namespace rp::pmap
