@@ -20,6 +20,7 @@
 #include <fmt/format.h>
 #include <sys/mman.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
@@ -71,102 +72,137 @@ inline uint64_t spreadBits(uint32_t v) {
 
 // The photon's Morton code, shifted left by one so that eight whole bytes hold it: bit
 // 3i + 3 - a holds bit i of axis a's cell number (x highest within each triple).
-inline uint64_t mortonCode(const Grid& g, const Photon& p) {
+[[gnu::always_inline]] inline uint64_t mortonCode(const Grid& g, const Photon& p) {
     return (spreadBits(g.cell(p, 0)) << 3) | (spreadBits(g.cell(p, 1)) << 2) |
            (spreadBits(g.cell(p, 2)) << 1);
 }
 int axisOfBit(int bit) { return 2 - (bit - 1) % 3; }
 
-// Sorts photons [a, a + n) in place by their codes' bytes from `level` (0 = most
-// significant) on, leaving buckets of at most kLeafSize photons unsorted.
-void radixSort(Photon* a, size_t n, int level, const Grid& g, bool parallel) {
-    while (n > InCoreStore::kLeafSize && level < 8) {
-        const int shift = 56 - 8 * level;
-        auto digit = [&](const Photon& p) { return (mortonCode(g, p) >> shift) & 255; };
+// The byte of each photon's code at `shift` into digits[0, n) with their histogram; in
+// parallel chunks for a large range.
+std::array<size_t, 256> digitsOf(const Photon* a, uint8_t* digits, size_t n, int shift,
+                                 const Grid& g, bool parallel) {
+    auto run = [&](size_t b, size_t e) {
         std::array<size_t, 256> count{};
-        for (size_t i = 0; i < n; ++i) ++count[digit(a[i])];
-        if (*std::max_element(count.begin(), count.end()) == n) {  // one bucket: next byte
-            ++level;
-            continue;
+        for (size_t i = b; i < e; ++i) {
+            const auto d = static_cast<uint8_t>(mortonCode(g, a[i]) >> shift);
+            digits[i] = d;
+            ++count[d];
         }
-        std::array<size_t, 257> start{};
-        for (int b = 0; b < 256; ++b) start[b + 1] = start[b] + count[b];
-        std::array<size_t, 256> next;
-        std::copy(start.begin(), start.end() - 1, next.begin());
-        // Each photon is moved straight to its bucket, the one it displaces carried on.
-        for (int b = 0; b < 256; ++b)
-            while (next[b] < start[b + 1]) {
-                Photon x = a[next[b]];
-                for (size_t d = digit(x); d != size_t(b); d = digit(x)) std::swap(x, a[next[d]++]);
-                a[next[b]++] = x;
-            }
-        tbb::task_group group;
-        for (int b = 0; b < 256; ++b) {
-            Photon* sub = a + start[b];
-            const size_t m = count[b];
-            if (m <= InCoreStore::kLeafSize) continue;
-            if (parallel && m > kGrain)
-                group.run([=, &g] { radixSort(sub, m, level + 1, g, true); });
-            else
-                radixSort(sub, m, level + 1, g, false);
-        }
-        group.wait();
-        return;
-    }
+        return count;
+    };
+    if (!parallel || n <= kGrain) return run(0, n);
+    return tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, n, kGrain), std::array<size_t, 256>{},
+        [&](const tbb::blocked_range<size_t>& r, std::array<size_t, 256> c) {
+            const auto mine = run(r.begin(), r.end());
+            for (int b = 0; b < 256; ++b) c[b] += mine[b];
+            return c;
+        },
+        [](std::array<size_t, 256> x, const std::array<size_t, 256>& y) {
+            for (int b = 0; b < 256; ++b) x[b] += y[b];
+            return x;
+        });
 }
 
 using Node = InCoreStore::Node;
 
-// Lays out the subtree of the sorted photons [begin, begin + count) depth-first into
-// `out`: inner nodes' links relative to out's start, leaves' links the index of their
-// first photon. A range splits at the highest bit in which its first and last codes
-// differ (the highest in which any of its photons differ: the range is sorted down to
-// that bit, radixSort), photons with identical codes by count. Depth: at most 63 bit
-// splits plus 32 count splits (within the search's stack).
-void layout(const Photon* ph, uint32_t begin, uint32_t count, const Grid& g, bool parallel,
-            std::vector<Node>& out) {
-    const uint32_t id = static_cast<uint32_t>(out.size());
-    if (count <= InCoreStore::kLeafSize) {
-        out.push_back({0, 0, kLeafTag | (count << 2), begin});
-        return;
+// The sort and the tree in one recursion: after a range is sorted on one byte of the
+// codes, the tree's splits within that byte fall at its buckets' boundaries, so the
+// nodes are read off the bucket counts (no search, no code computed again).
+struct TreeBuild {
+    Photon* photons;
+    uint8_t* digits;  // scratch: each photon's current byte, moved with it
+    const Grid& grid;
+
+    // Sorts photons [begin, begin + count) in place on the byte at `level` (0 = most
+    // significant) of their codes; starts[b] is where bucket b begins (starts[256] the end).
+    void sortByte(uint32_t begin, uint32_t count, int level, bool parallel,
+                  std::array<uint32_t, 257>& starts) const {
+        Photon* a = photons + begin;
+        uint8_t* d = digits + begin;
+        const std::array<size_t, 256> n = digitsOf(a, d, count, 56 - 8 * level, grid, parallel);
+        starts[0] = begin;
+        for (int b = 0; b < 256; ++b) starts[b + 1] = starts[b] + static_cast<uint32_t>(n[b]);
+        std::array<uint32_t, 256> next;
+        for (int b = 0; b < 256; ++b) next[b] = starts[b] - begin;
+        // Each photon is moved straight to its bucket, the one it displaces carried on.
+        for (int b = 0; b < 256; ++b)
+            while (next[b] < starts[b + 1] - begin) {
+                Photon x = a[next[b]];
+                uint8_t digit = d[next[b]];
+                while (digit != b) {
+                    const uint32_t to = next[digit]++;
+                    std::swap(x, a[to]);
+                    std::swap(digit, d[to]);
+                }
+                a[next[b]++] = x;
+            }
     }
-    const Photon* first = ph + begin;
-    const uint64_t c0 = mortonCode(g, first[0]), c1 = mortonCode(g, first[count - 1]);
-    uint32_t nLeft = count / 2;
-    int axis = 0;
-    if (c0 != c1) {
-        const int bit = 63 - __builtin_clzll(c0 ^ c1);
-        const uint64_t mask = uint64_t{1} << bit;
-        nLeft = static_cast<uint32_t>(
-            std::partition_point(first, first + count,
-                                 [&](const Photon& p) { return !(mortonCode(g, p) & mask); }) -
-            first);
-        axis = axisOfBit(bit);
-    }
-    out.push_back({0, 0, static_cast<uint32_t>(axis), 0});
-    const bool fork = parallel && count > kGrain;
-    if (!fork) {
-        layout(ph, begin, nLeft, g, false, out);
-        out[id].link = static_cast<uint32_t>(out.size());
-        layout(ph, begin + nLeft, count - nLeft, g, false, out);
-        return;
-    }
-    std::vector<Node> l, r;
-    tbb::task_group group;
-    group.run([&] { layout(ph, begin, nLeft, g, true, l); });
-    layout(ph, begin + nLeft, count - nLeft, g, true, r);
-    group.wait();
-    auto append = [&](const std::vector<Node>& sub) {
-        const uint32_t offset = static_cast<uint32_t>(out.size());
-        for (Node n : sub) {
-            if ((n.axisInfo & 3) != kLeafTag) n.link += offset;
-            out.push_back(n);
+
+    // Lays out, depth-first into `out`, the subtree of photons [begin, begin + count),
+    // which are buckets [lo, hi) of the byte at `level`, sorted on it (`starts` as
+    // sortByte's). Inner nodes' links are relative to out's start, leaves' links the
+    // index of their first photon. A range of buckets splits at the highest bit in which
+    // its first and last non-empty buckets differ; one bucket goes on to the next byte;
+    // photons with identical codes split by count. Depth: at most 63 bit splits plus 32
+    // count splits (within the search's stack).
+    void layout(uint32_t begin, uint32_t count, int level, const std::array<uint32_t, 257>* starts,
+                int lo, int hi, bool parallel, std::vector<Node>& out) const {
+        const uint32_t id = static_cast<uint32_t>(out.size());
+        if (count <= InCoreStore::kLeafSize) {
+            out.push_back({0, 0, kLeafTag | (count << 2), begin});
+            return;
         }
-    };
-    append(l);
-    out[id].link = static_cast<uint32_t>(out.size());
-    append(r);
-}
+        while (starts && (*starts)[lo + 1] == (*starts)[lo]) ++lo;   // first non-empty
+        while (starts && (*starts)[hi - 1] == (*starts)[hi]) --hi;   // last non-empty
+        if (!starts || hi - lo == 1) {
+            if (level + 1 >= 8) {  // identical codes: split by count
+                out.push_back({0, 0, 0, 0});
+                descend(begin, count / 2, count - count / 2, 8, nullptr, 0, 0, 0, 0, parallel,
+                        id, out);
+                return;
+            }
+            std::array<uint32_t, 257> next;
+            sortByte(begin, count, level + 1, parallel, next);
+            layout(begin, count, level + 1, &next, 0, 256, parallel, out);
+            return;
+        }
+        const int bit = 31 - __builtin_clz(static_cast<unsigned>(lo ^ (hi - 1)));
+        const int mid = ((lo >> bit) | 1) << bit;  // first bucket with the bit set
+        const uint32_t nLeft = (*starts)[mid] - begin;
+        out.push_back({0, 0, static_cast<uint32_t>(axisOfBit(56 - 8 * level + bit)), 0});
+        descend(begin, nLeft, count - nLeft, level, starts, lo, mid, mid, hi, parallel, id, out);
+    }
+
+    // The two children of node `id`: [begin, begin + nLeft) as buckets [lo0, hi0), the
+    // rest as [lo1, hi1); as two tasks for a large range.
+    void descend(uint32_t begin, uint32_t nLeft, uint32_t nRight, int level,
+                 const std::array<uint32_t, 257>* starts, int lo0, int hi0, int lo1, int hi1,
+                 bool parallel, uint32_t id, std::vector<Node>& out) const {
+        if (!(parallel && nLeft + nRight > kGrain)) {
+            layout(begin, nLeft, level, starts, lo0, hi0, false, out);
+            out[id].link = static_cast<uint32_t>(out.size());
+            layout(begin + nLeft, nRight, level, starts, lo1, hi1, false, out);
+            return;
+        }
+        std::vector<Node> l, r;
+        tbb::task_group group;
+        group.run([&] { layout(begin, nLeft, level, starts, lo0, hi0, true, l); });
+        layout(begin + nLeft, nRight, level, starts, lo1, hi1, true, r);
+        group.wait();
+        auto append = [&](const std::vector<Node>& sub) {
+            const uint32_t offset = static_cast<uint32_t>(out.size());
+            for (Node n : sub) {
+                if ((n.axisInfo & 3) != kLeafTag) n.link += offset;
+                out.push_back(n);
+            }
+        };
+        append(l);
+        out[id].link = static_cast<uint32_t>(out.size());
+        append(r);
+    }
+};
 
 struct Bounds {
     float lo[3], hi[3];
@@ -257,9 +293,12 @@ InCoreStore::InCoreStore(std::span<Photon> photons, Attributes attrs, bool paral
         const float extent = boundsHi_[a] - boundsLo_[a];
         g.scale[a] = extent > 0 ? static_cast<float>(kMaxCell + 1) / extent : 0.f;
     }
-    radixSort(photons.data(), n, 0, g, parallel);
-    nodes_.reserve(n / 16 + 1);
-    layout(photons.data(), 0, static_cast<uint32_t>(n), g, parallel, nodes_);
+    {
+        BulkVector<uint8_t> digits(n);
+        const TreeBuild build{photons.data(), digits.data(), g};
+        nodes_.reserve(n / 16 + 1);
+        build.layout(0, static_cast<uint32_t>(n), -1, nullptr, 0, 0, parallel, nodes_);
+    }
 
     // Slots in depth-first order; the leaves' photons are already contiguous in that order.
     std::vector<uint32_t> leaves;  // node ids of the leaves, in order

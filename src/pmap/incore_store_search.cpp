@@ -458,6 +458,8 @@ size_t InCoreStore::findNearest(Cursor& cursor, const PhotonQuery& q,
     std::vector<PhotonHit>& hits = static_cast<InCoreCursor&>(cursor).scratch;
     const size_t n = findNearestSlots(q, hits);
     if (out.size() < n) out.resize(n);
+    // Field by field: a record assembled on the stack and copied whole stalled on the
+    // store forwarding of its 16 bytes.
     for (size_t i = 0; i < n; ++i) {
         const uint32_t slot = hits[i].index;
         FoundPhoton& f = out[i];
