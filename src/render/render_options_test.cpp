@@ -128,6 +128,20 @@ TEST(RenderOptions, PhotonMaps) {
     EXPECT_EQ(errorOf({"-ap"}), "missing value for option '-ap'");
 }
 
+// RADIANCE's out-of-core options: -ac page size (x bandwidth), -aC photons with k/M/G.
+TEST(RenderOptions, PhotonCache) {
+    RenderOptions d = parse({});
+    EXPECT_EQ(d.photonCache, 0u);  // unset: the store is chosen by memory
+    EXPECT_DOUBLE_EQ(d.photonPageSize, 4);
+    RenderOptions o = parse({"-aC", "2.5M", "-ac", "8"});
+    EXPECT_EQ(o.photonCache, 2500000u);
+    EXPECT_DOUBLE_EQ(o.photonPageSize, 8);
+    EXPECT_EQ(parse({"-aC", "10k"}).photonCache, 10000u);
+    EXPECT_EQ(errorOf({"-aC", "0"}), "option '-aC': invalid photon cache size");
+    EXPECT_NE(errorOf({"-aC", "lots"}), "");
+    EXPECT_NE(errorOf({"-ac", "0"}), "");
+}
+
 // -n bounds all of TBB's parallelism while the limit lives (map loading included), and
 // -n 0 or less counts as 1.
 TEST(RenderOptions, ThreadLimitBoundsParallelism) {

@@ -94,6 +94,10 @@ for k in 1 2 3; do
     d=$(paste pm_l.txt ref_l.txt | awk -v k=$k '{ s += $k / $(k + 3) - 1 } END { printf "%.4f", s / NR }')
     check "pmap source $k: mean relative to RADIANCE $d" "sqrt(($d)^2) < 0.03" "$d"
 done
+# Out of core (-aC below the map's size): the same photons, so the same contributions.
+rcontrib -I -h -V -u- -ap cp.pm 50 -aC 30k -M modfile.txt c.oct < "$VAL/points.txt" > pmooc.txt 2> /dev/null
+cmp -s pmooc.txt pm.txt && echo "pmap out of core: same as in core" ||
+    { echo "FAIL pmap out of core differs from in core"; fail=1; }
 rcontrib -I -h -V -u- -ad 2048 -ap cp.pm 50 -M modfile.txt c.oct < "$VAL/points.txt" | lum > pm2.txt
 rtrace -I -h -u- -ab 1 -ad 2048 -ap g.pm 50 c.oct < "$VAL/points.txt" | lum > tot.txt
 d=$(paste pm2.txt tot.txt | awk '{ r = ($1 + $2 + $3) / $4 - 1; if (r < 0) r = -r; if (r > w) w = r } END { printf "%.4f", w }')
