@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace rp::pmap {
 
@@ -27,22 +28,13 @@ void nthElement(Photon* first, Photon* nth, Photon* last, int axis) {
                      [axis](const Photon& a, const Photon& b) { return photonKeyLess(a, b, axis); });
 }
 
-// Sorts the m <= kSmallRange photons at p in key order (which puts every rank in place).
-// Each photon's final place is counted from its first two key words (branch-free compares
-// the compiler vectorises) and the photons are moved once. Why not std::nth_element: at
-// this size its compares mispredict about half the time, and the bottom tree levels
-// call it for every node (a quarter of the whole build). Photons whose first two words tie
-// (same two coordinates: rare) are sorted on the whole key instead.
-void sortSmall(Photon* p, size_t m, int axis) {
-    const int second = (axis + 1) % 3;
-    uint64_t key[kSmallRange];
-    for (size_t i = 0; i < m; ++i)
-        key[i] = uint64_t{orderedFloatBits(p[i].pos[axis])} << 32 |
-                 orderedFloatBits(p[i].pos[second]);
-    uint32_t rank[kSmallRange];
+// Each of the m keys' place in their sorted order, equal keys in input order (branch-free
+// compares the compiler vectorises). Returns whether any keys are equal.
+template <class Key>
+bool countRanks(const Key* key, size_t m, uint32_t* rank) {
     uint32_t ties = 0;
     for (size_t i = 0; i < m; ++i) {
-        const uint64_t x = key[i];
+        const Key x = key[i];
         uint32_t r = 0;
         for (size_t j = 0; j < i; ++j) {
             r += key[j] <= x;
@@ -51,10 +43,31 @@ void sortSmall(Photon* p, size_t m, int axis) {
         for (size_t j = i + 1; j < m; ++j) r += key[j] < x;
         rank[i] = r;
     }
-    if (ties) {
-        std::sort(p, p + m,
-                  [axis](const Photon& a, const Photon& b) { return photonKeyLess(a, b, axis); });
-        return;
+    return ties != 0;
+}
+
+// Sorts the m <= kSmallRange photons at p in key order (which puts every rank in place):
+// each photon's place is counted from the first key word (the coordinate on axis), or,
+// where coordinates repeat, the first two (photons on a floor in a cell split vertically:
+// the split axis is the cell's widest, not the photons'), and the photons are moved once.
+// Why not std::nth_element: at this size its compares mispredict about half the time, and
+// the bottom tree levels call it for every node (a quarter of the whole build). Photons
+// that share two coordinates (rare) are sorted on the whole key.
+void sortSmall(Photon* p, size_t m, int axis) {
+    uint32_t rank[kSmallRange];
+    uint32_t key[kSmallRange];
+    for (size_t i = 0; i < m; ++i) key[i] = orderedFloatBits(p[i].pos[axis]);
+    if (countRanks(key, m, rank)) {
+        const int second = (axis + 1) % 3;
+        uint64_t key2[kSmallRange];
+        for (size_t i = 0; i < m; ++i)
+            key2[i] = uint64_t{key[i]} << 32 | orderedFloatBits(p[i].pos[second]);
+        if (countRanks(key2, m, rank)) {
+            std::sort(p, p + m, [axis](const Photon& a, const Photon& b) {
+                return photonKeyLess(a, b, axis);
+            });
+            return;
+        }
     }
     Photon sorted[kSmallRange];
     for (size_t i = 0; i < m; ++i) sorted[rank[i]] = p[i];
@@ -70,27 +83,69 @@ void coordRange(const Photon* first, const Photon* last, int c, float& lo, float
     }
 }
 
-// Reorders the m photons at p in place into class 0, then 1, then 2 (cls(photon) in
-// {0, 1, 2}), without branches on the class: every step does the same two swaps, some of
-// them of a photon with itself. Invariant: [0, j0) class 0, [j0, j1) class 1,
-// [j1, i) class 2; a class-1 photon swaps with the first class-2 one, a class-0 photon
-// then further with the first class-1 one.
-template <class Class>
-void partition3(Photon* p, size_t m, Class cls) {
-    size_t j0 = 0, j1 = 0;
-    for (size_t i = 0; i < m; ++i) {
-        const uint32_t c = cls(p[i]);
-        const size_t a = c <= 1 ? j1 : i;
-        const size_t b = c == 0 ? j0 : a;
-        Photon x = p[i];
-        p[i] = p[a];
-        p[a] = x;
-        Photon y = p[a];
-        p[a] = p[b];
-        p[b] = y;
-        j1 += c <= 1;
-        j0 += c == 0;
+// Moves the photons of [first, last) for which left() holds before the others, in place;
+// returns how many there are. Block-wise, after Edelkamp and Weiss's BlockQuicksort (ESA
+// 2016): the misplaced photons of a block at each end are found without branches (their
+// offsets written unconditionally, the count advanced by the predicate) and swapped in
+// pairs. Why not a branch-free Lomuto loop: its swaps chain each photon's stores into the
+// next iteration's loads, which stalled on 24-byte records (2x slower than this).
+template <class Pred>
+size_t partition2(Photon* first, Photon* last, Pred left) {
+    constexpr size_t kBlock = 64;
+    uint8_t offL[kBlock], offR[kBlock];
+    size_t nL = 0, nR = 0, sL = 0, sR = 0;
+    Photon* l = first;  // [first, l) hold left photons
+    Photon* r = last;   // [r, last) hold the others
+    while (size_t(r - l) > 2 * kBlock) {
+        if (nL == 0) {
+            sL = 0;
+            for (size_t i = 0; i < kBlock; ++i) {
+                offL[nL] = uint8_t(i);
+                nL += !left(l[i]);
+            }
+        }
+        if (nR == 0) {
+            sR = 0;
+            for (size_t i = 0; i < kBlock; ++i) {
+                offR[nR] = uint8_t(i);
+                nR += left(r[-1 - std::ptrdiff_t(i)]);
+            }
+        }
+        const size_t k = std::min(nL, nR);
+        for (size_t j = 0; j < k; ++j)
+            std::swap(l[offL[sL + j]], r[-1 - std::ptrdiff_t(offR[sR + j])]);
+        nL -= k;
+        nR -= k;
+        sL += k;
+        sR += k;
+        if (nL == 0) l += kBlock;
+        if (nR == 0) r -= kBlock;
     }
+    // The rest (a block with photons still misplaced included): [l, r) holds any mix.
+    while (true) {
+        while (l < r && left(*l)) ++l;
+        while (l < r && !left(r[-1])) --r;
+        if (l >= r) break;
+        std::swap(*l, r[-1]);
+    }
+    return size_t(l - first);
+}
+
+// Ranges up to this size are partitioned through a per-thread scratch buffer (98 kB, in
+// L2) by a branch-free scatter: the lower tree levels are many small ranges, where the
+// block partition's remainder loop would mispredict about half its branches.
+constexpr size_t kScatterRange = 4096;
+
+// The three-way partition of the m photons at p (cls() in {0, 1, 2}; nBelow of class 0,
+// nIn of class 1) by a scatter into scratch memory and a copy back, without branches on
+// the class.
+template <class Class>
+void scatter3(Photon* p, size_t m, size_t nBelow, size_t nIn, Class cls) {
+    thread_local std::vector<Photon> scratch(kScatterRange);
+    Photon* out = scratch.data();
+    size_t next[3] = {0, nBelow, nBelow + nIn};
+    for (size_t i = 0; i < m; ++i) std::memcpy(out + next[cls(p[i])]++, p + i, sizeof(Photon));
+    std::memcpy(p, out, m * sizeof(Photon));
 }
 
 }  // namespace
@@ -151,10 +206,16 @@ void selectRank(Photon* p, size_t n, size_t k, int axis, float lo, float hi) {
             coordRange(p + first, p + last, coord, lo, hi);
             continue;
         }
-        partition3(p + first, m, [&](const Photon& q) {
-            const uint32_t bk = bucket(q);
-            return uint32_t{bk >= b} + uint32_t{bk > b};
-        });
+        if (m <= kScatterRange) {
+            scatter3(p + first, m, below, inBucket, [&](const Photon& q) {
+                const uint32_t bk = bucket(q);
+                return size_t{bk >= b} + size_t{bk > b};
+            });
+        } else {  // three-way partition as two: below b, then b before the rest
+            partition2(p + first, p + last, [&](const Photon& q) { return bucket(q) < b; });
+            partition2(p + first + below, p + last,
+                       [&](const Photon& q) { return bucket(q) == b; });
+        }
         last = first + below + inBucket;
         first = first + below;
         coordRange(p + first, p + last, coord, lo, hi);

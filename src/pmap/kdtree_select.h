@@ -1,5 +1,5 @@
 // Median selection for the kd-tree build, in place: a histogram of the coordinates
-// (radix-select style) finds the bucket holding the median, then a branch-free three-way
+// (radix-select style) finds the bucket holding the median, then a block-wise three-way
 // partition in place sets apart the photons below, in and above it; only that bucket is
 // examined again. In place, so that a build needs no second photon buffer (mkpmap's
 // memory is the photons and little else). Why not std::nth_element: on 24-byte photons
