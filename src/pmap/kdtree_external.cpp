@@ -211,9 +211,9 @@ void buildKdTreeExternal(TempFile photons, uint64_t n, const float lo[3], const 
                          HeapSink& sink, const ExternalBuildSettings& settings) {
     RP_CHECK(photons.size() == n * sizeof(Photon));
     if (n > kMaxTreePhotons)
-        throw InputError(SourceLoc{settings.what, 0},
-                         fmt::format("too many photons for one map ({}; at most {})", n,
-                                     kMaxTreePhotons));
+        throw InputError(
+            SourceLoc{settings.what, 0},
+            fmt::format("too many photons for one map ({}; at most {})", n, kMaxTreePhotons));
     buildPart(std::move(photons), n, 1, lo, hi, sink, settings);
 }
 

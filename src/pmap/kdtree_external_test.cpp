@@ -67,8 +67,8 @@ TempFile fileOf(const TempDir& dir, const std::vector<Photon>& photons) {
     return f;
 }
 
-std::vector<Photon> externalTree(const TempDir& dir, const std::vector<Photon>& in,
-                                 uint64_t inCore, bool parallel) {
+std::vector<Photon> externalTree(const TempDir& dir, const std::vector<Photon>& in, uint64_t inCore,
+                                 bool parallel) {
     MemorySink sink(in.size());
     float lo[3], hi[3];
     photonBounds(in, lo, hi);

@@ -24,8 +24,9 @@ int digitBits(size_t n) {
 }
 
 void nthElement(Photon* first, Photon* nth, Photon* last, int axis) {
-    std::nth_element(first, nth, last,
-                     [axis](const Photon& a, const Photon& b) { return photonKeyLess(a, b, axis); });
+    std::nth_element(first, nth, last, [axis](const Photon& a, const Photon& b) {
+        return photonKeyLess(a, b, axis);
+    });
 }
 
 // Each of the m keys' place in their sorted order, equal keys in input order (branch-free

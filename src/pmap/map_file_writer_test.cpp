@@ -72,12 +72,14 @@ TEST(PhotonMapFileWriter, KeepsAnExistingFileWithoutOverwrite) {
     PhotonMap(PhotonMapType::Global, photons).save(dir.file("g.pm"), "", false);
     const std::string before = test::slurp(dir.file("g.pm"));
     PhotonMapFileInfo info{PhotonMapType::Global, computeStats(photons), {}, {}};
-    EXPECT_NE(test::errorOf([&] { PhotonMapFileWriter(dir.file("g.pm"), info, "", false); })
-                  .find("use -fo to overwrite"),
+    EXPECT_NE(test::errorOf([&] {
+                  PhotonMapFileWriter(dir.file("g.pm"), info, "", false);
+              }).find("use -fo to overwrite"),
               std::string::npos);
     info.stats.numPhotons = 0;
-    EXPECT_NE(test::errorOf([&] { PhotonMapFileWriter(dir.file("e.pm"), info, "", true); })
-                  .find("empty photon map"),
+    EXPECT_NE(test::errorOf([&] {
+                  PhotonMapFileWriter(dir.file("e.pm"), info, "", true);
+              }).find("empty photon map"),
               std::string::npos);
     EXPECT_EQ(test::slurp(dir.file("g.pm")), before);
     EXPECT_EQ(dir.count(), 1u);

@@ -59,8 +59,7 @@ uint64_t saveSpilledMap(TempFile spilled, uint64_t n, uint64_t inCorePhotons,
     PhotonMapFileWriter writer(out.file, infoOf(out, stats), out.commandLine, out.overwrite);
     float lo[3], hi[3];
     cellOf(stats, lo, hi);
-    const ExternalBuildSettings settings{inCorePhotons, folderOf(out.file), out.file,
-                                         out.parallel};
+    const ExternalBuildSettings settings{inCorePhotons, folderOf(out.file), out.file, out.parallel};
     buildKdTreeExternal(std::move(spilled), n, lo, hi, writer, settings);
     writer.commit();
     return n;

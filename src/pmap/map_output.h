@@ -17,8 +17,8 @@ namespace rp::pmap {
 struct MapOutput {
     PhotonMapType type = PhotonMapType::Global;
     std::string file;
-    std::string commandLine;  // for the header
-    bool overwrite = false;   // -fo
+    std::string commandLine;                   // for the header
+    bool overwrite = false;                    // -fo
     std::span<const PhotonPrimary> primaries;  // contribution maps
     std::span<const PrimaryRay> primaryRays;   // -apCPD
     bool parallel = true;
@@ -31,7 +31,6 @@ uint64_t saveMapInMemory(std::span<Photon> photons, const MapOutput& out);
 
 // The same for n photons in `spilled` (24-byte records in collection order), building the
 // tree externally with at most inCorePhotons photons in memory (kdtree_external.h).
-uint64_t saveSpilledMap(TempFile spilled, uint64_t n, uint64_t inCorePhotons,
-                        const MapOutput& out);
+uint64_t saveSpilledMap(TempFile spilled, uint64_t n, uint64_t inCorePhotons, const MapOutput& out);
 
 }  // namespace rp::pmap

@@ -62,8 +62,8 @@ public:
         : budget_(budget),
           folder_(std::move(folder)),
           what_(std::move(what)),
-          chunkRecords_(std::clamp<size_t>(budget->limit() / 16 / sizeof(Record), 16,
-                                           kMaxChunkRecords)) {}
+          chunkRecords_(
+              std::clamp<size_t>(budget->limit() / 16 / sizeof(Record), 16, kMaxChunkRecords)) {}
     ~RecordStore() { freeChunks(); }
     RecordStore(RecordStore&& o) noexcept { *this = std::move(o); }
     RecordStore& operator=(RecordStore&& o) noexcept {

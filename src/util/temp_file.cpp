@@ -80,7 +80,8 @@ void TempFile::append(const void* data, size_t bytes) {
     while (bytes > 0) {
         const ssize_t n = ::write(fd_, p, bytes);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) fail(what_, "error writing a temporary file (disk full?)", n < 0 ? errno : ENOSPC);
+        if (n <= 0)
+            fail(what_, "error writing a temporary file (disk full?)", n < 0 ? errno : ENOSPC);
         p += n;
         bytes -= size_t(n);
         size_ += uint64_t(n);
@@ -93,8 +94,7 @@ void TempFile::readAt(uint64_t offset, void* data, size_t bytes) const {
         const ssize_t n = ::pread(fd_, p, bytes, off_t(offset));
         if (n < 0 && errno == EINTR) continue;
         if (n < 0) fail(what_, "error reading a temporary file", errno);
-        if (n == 0)
-            throw InputError(SourceLoc{what_, 0}, "temporary file shorter than written");
+        if (n == 0) throw InputError(SourceLoc{what_, 0}, "temporary file shorter than written");
         p += n;
         bytes -= size_t(n);
         offset += uint64_t(n);
