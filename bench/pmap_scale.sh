@@ -47,7 +47,7 @@ lookup="-h -I -ab -1 -ap g.pm 50 -n 2 -u-"
 # Peak of an rtrace run without photons (the scene, the rays), the base of bytes/photon.
 run "$bin/rtrace" -h -I -ab 0 -n 2 -u- office.oct; base=$peak
 if [ -n "${RADIANCE:-}" ]; then  # its own octree (needs its gensky, genblinds, xform)
-    PATH="$RADIANCE:$PATH" "$RADIANCE/oconv" scene.rad > radiance.oct
+    PATH="$RADIANCE:$PATH" RAYPATH=".:$RADIANCE/../lib" "$RADIANCE/oconv" -f scene.rad > radiance.oct
     run "$RADIANCE/rtrace" -h -I -ab 0 -n 2 -u- radiance.oct; radbase=$peak
 fi
 

@@ -16,8 +16,8 @@
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
-#include "util/bulk_memory.h"
 #include "util/error.h"
+#include "util/temp_file.h"
 
 namespace rp::pmap {
 
@@ -88,18 +88,6 @@ private:
     uint64_t passBegin_ = 0, passEnd_ = 0;
 };
 
-// The prepass deposits, as per-chunk bins in photon index order. Kept as chunks rather
-// than concatenated: each concatenation copied every photon into fresh memory, and first
-// touching fresh memory (page faults) cost more than the copy itself. They are read once,
-// thinned into the final records (PhotonOutput) before the main pass streams its own.
-using Chunks = std::vector<PhotonBins>;
-
-uint64_t storedIn(const Chunks& chunks, size_t t) {
-    uint64_t n = 0;
-    for (const PhotonBins& b : chunks) n += b.maps[t].size();
-    return n;
-}
-
 // Sizes bins' lists for n photons expected to deposit perPhoton[t] each in map t (0 if
 // unknown), so that they are not copied as they grow: +10 % and 4 sigma, rarely outgrown.
 void reserveFor(PhotonBins& bins, const std::array<double, kNumPhotonMapTypes>& perPhoton,
@@ -110,74 +98,23 @@ void reserveFor(PhotonBins& bins, const std::array<double, kNumPhotonMapTypes>& 
                                         4 * std::sqrt(perPhoton[t] * double(n)) + 16));
 }
 
-// Traces photon indices [begin, end) in fixed chunks on `arena` and appends their
-// deposits to `out` in index order (the prepass: its chunks are kept until the main pass
-// knows how to thin them). `perPhoton` as reserveFor.
-void traceRange(const PhotonTracer& tracer, tbb::task_arena& arena, uint64_t seed,
-                uint64_t begin, uint64_t end,
-                const std::array<double, kNumPhotonMapTypes>& prob,
-                const std::array<double, kNumPhotonMapTypes>& perPhoton, Progress& progress,
-                Chunks& out) {
-    if (end <= begin) return;
-    const uint64_t chunks = (end - begin + kPhotonsPerChunk - 1) / kPhotonsPerChunk;
-    const size_t first = out.size();
-    out.resize(first + chunks);
-    PhotonBins* bins = out.data() + first;
-    progress.setPass(begin, end);
-    arena.execute([&] {
-        tbb::parallel_for(
-            tbb::blocked_range<uint64_t>(0, chunks, 1),
-            [&](const tbb::blocked_range<uint64_t>& r) {
-                for (uint64_t c = r.begin(); c != r.end(); ++c) {
-                    uint64_t i0 = begin + c * kPhotonsPerChunk;
-                    uint64_t i1 = std::min(end, i0 + kPhotonsPerChunk);
-                    reserveFor(bins[c], perPhoton, i1 - i0);
-                    for (uint64_t i = i0; i < i1; ++i) tracer.trace(seed, i, prob, bins[c]);
-                    progress.add(i1 - i0, bins[c]);
-                }
-            },
-            tbb::simple_partitioner());
-    });
+// The final 24-byte record of a deposit, its flux scaled by `scale` (distributePhotons'
+// normalisation).
+Photon finalPhoton(const RawPhoton& s, double scale) {
+    Photon p;
+    std::copy(s.pos, s.pos + 3, p.pos);
+    std::copy(s.norm, s.norm + 3, p.norm);
+    p.flags = 0;
+    p.setCaustic(s.caustic != 0);
+    p.setFlux(s.flux[0] * scale, s.flux[1] * scale, s.flux[2] * scale);
+    p.primary = 0;
+    return p;
 }
 
-// The final photon records of one map, appended chunk by chunk in index order. The array
-// is advised for huge pages before its first touch: 4 KiB page faults on fresh memory
-// cost more than filling it (util/bulk_memory.h).
-class PhotonOutput {
-public:
-    void reserve(size_t n) {
-        std::vector<Photon> v;
-        v.reserve(n);
-        adviseHugePages(v.data(), n * sizeof(Photon));
-        v.insert(v.end(), photons_.begin(), photons_.end());
-        photons_.swap(v);
-    }
-    // Appends raw's deposits with u < keepBelow (the prepass's thinning; +inf keeps all)
-    // with flux x scale.
-    void append(const std::vector<RawPhoton>& raw, double keepBelow, double scale) {
-        if (photons_.size() + raw.size() > photons_.capacity())
-            reserve(std::max(2 * photons_.capacity(), photons_.size() + raw.size()));
-        for (const RawPhoton& s : raw) {
-            if (!(double(s.u) < keepBelow)) continue;
-            Photon& p = photons_.emplace_back();
-            std::copy(s.pos, s.pos + 3, p.pos);
-            std::copy(s.norm, s.norm + 3, p.norm);
-            p.flags = 0;
-            p.setCaustic(s.caustic != 0);
-            p.setFlux(s.flux[0] * scale, s.flux[1] * scale, s.flux[2] * scale);
-            p.primary = 0;
-        }
-    }
-    std::vector<Photon> take() { return std::move(photons_); }
-
-private:
-    std::vector<Photon> photons_;
-};
-
-// The main pass: traces [begin, end) in chunks in parallel and hands each chunk's bins to
-// `consume` in index order (a serial in-order stage), so a chunk's memory is reused as
-// soon as its photons are converted instead of the whole pass being held (and its fresh
-// memory faulted in) first.
+// Traces [begin, end) in chunks in parallel and hands each chunk's bins to `consume` in
+// index order (a serial in-order stage), so a chunk's memory is reused as soon as its
+// photons are stored instead of the whole pass being held (and its fresh memory faulted
+// in) first. The prepass and the main pass both run this way.
 template <class Consume>
 void traceStreamed(const PhotonTracer& tracer, tbb::task_arena& arena, int threads,
                    uint64_t seed, uint64_t begin, uint64_t end,
@@ -216,60 +153,70 @@ void traceStreamed(const PhotonTracer& tracer, tbb::task_arena& arena, int threa
     });
 }
 
-}  // namespace
+// A store for map t's records: within the settings' budget, spilling beside the map's
+// file; in memory only without a budget.
+template <class Record>
+RecordStore<Record> newStore(const DistributionSettings& s, size_t t) {
+    if (!s.budget) return RecordStore<Record>();
+    return RecordStore<Record>(s.budget, folderOf(s.files[t]), s.files[t]);
+}
 
-DistributionResult distributePhotons(const PhotonTracer& tracer,
-                                     const DistributionSettings& settings) {
+struct Prepass {
+    std::array<RecordStore<RawPhoton>, kNumPhotonMapTypes> deposits;  // all, in index order
+    uint64_t emitted = 0;
+    int passes = 0;
+    long runaways = 0;
+};
+
+// The prepass: traces from index 0 storing every deposit, doubling while a map is empty
+// (up to -apM passes) or sparse, to measure each map's photons stored per photon emitted.
+Prepass runPrepass(const PhotonTracer& tracer, tbb::task_arena& arena,
+                   const DistributionSettings& settings, const std::vector<size_t>& active,
+                   Progress& progress) {
     const auto& targets = settings.targets;
-    std::vector<size_t> active;
     uint64_t minTarget = 0, sumTargets = 0;
-    for (size_t t = 0; t < targets.size(); ++t)
-        if (targets[t] > 0) {
-            active.push_back(t);
-            minTarget = minTarget == 0 ? targets[t] : std::min(minTarget, targets[t]);
-            sumTargets += targets[t];
-        }
-    RP_CHECK(!active.empty());
-
-    tbb::task_arena arena(std::max(1, settings.threads));
-    Progress progress(settings);
-    DistributionResult result;
-
-    // ---- Prepass: store everything, measure photons stored per photon emitted.
+    for (size_t t : active) {
+        minTarget = minTarget == 0 ? targets[t] : std::min(minTarget, targets[t]);
+        sumTargets += targets[t];
+    }
+    Prepass pre;
+    for (size_t t : active) pre.deposits[t] = newStore<RawPhoton>(settings, t);
     std::array<double, kNumPhotonMapTypes> all{};
     all.fill(1.0);
-    Chunks chunks;
-    std::array<uint64_t, kNumPhotonMapTypes> preStored{};
     // Expected deposits per photon, for sizing the bins. Before the first prepass is
     // measured: 2 per map (a photon in a closed room deposits at about every bounce).
     // Only memory depends on it: without a guess the first prepass's bins grew by
     // doubling, and those copies and their page faults were ~1 % of a Cornell run.
     std::array<double, kNumPhotonMapTypes> perPhoton{};
     for (size_t t : active) perPhoton[t] = 2;
-    uint64_t emitted = 0;
     uint64_t passSize = std::max<uint64_t>(
         1, uint64_t(std::ceil(settings.preDistrib * double(minTarget))));
     for (;;) {
-        traceRange(tracer, arena, settings.seed, emitted, emitted + passSize, all, perPhoton,
-                   progress, chunks);
-        emitted += passSize;
-        ++result.prepasses;
-        for (size_t t : active) {
-            preStored[t] = storedIn(chunks, t);
-            perPhoton[t] = double(preStored[t]) / double(emitted);
-        }
+        progress.setPass(pre.emitted, pre.emitted + passSize);
+        traceStreamed(tracer, arena, settings.threads, settings.seed, pre.emitted,
+                      pre.emitted + passSize, all, perPhoton,
+                      [&](uint64_t photons, const PhotonBins& bins) {
+                          progress.add(photons, bins);
+                          pre.runaways += bins.runaways;
+                          for (size_t t : active)
+                              for (const RawPhoton& r : bins.maps[t]) pre.deposits[t].append(r);
+                      });
+        pre.emitted += passSize;
+        ++pre.passes;
         bool anyEmpty = false, anySparse = false;
         uint64_t storedTotal = 0;
         for (size_t t : active) {
-            anyEmpty = anyEmpty || preStored[t] == 0;
-            anySparse = anySparse || preStored[t] < std::min(kMinPrepassStored, targets[t]);
-            storedTotal += preStored[t];
+            const uint64_t stored = pre.deposits[t].size();
+            perPhoton[t] = double(stored) / double(pre.emitted);
+            anyEmpty = anyEmpty || stored == 0;
+            anySparse = anySparse || stored < std::min(kMinPrepassStored, targets[t]);
+            storedTotal += stored;
         }
         if (anyEmpty) {
-            if (result.prepasses >= settings.maxPrepass) {
+            if (pre.passes >= settings.maxPrepass) {
                 std::string empty;
                 for (size_t t : active)
-                    if (preStored[t] == 0)
+                    if (pre.deposits[t].size() == 0)
                         empty += std::string(empty.empty() ? "" : ", ") +
                                  photonMapTypeName(PhotonMapType(t));
                 throw InputError("too many prepasses, no photons stored in " + empty +
@@ -282,19 +229,37 @@ DistributionResult distributePhotons(const PhotonTracer& tracer,
         // Not part of RADIANCE's algorithm: a map with few prepass photons predicts its
         // rate poorly, so keep doubling the (never wasted) prepass while memory allows.
         if (anySparse && storedTotal < 2 * sumTargets) {
-            passSize = emitted;
+            passSize = pre.emitted;
             continue;
         }
-        break;
+        return pre;
     }
+}
+
+}  // namespace
+
+DistributionResult distributePhotons(const PhotonTracer& tracer,
+                                     const DistributionSettings& settings) {
+    const auto& targets = settings.targets;
+    std::vector<size_t> active;
+    for (size_t t = 0; t < targets.size(); ++t)
+        if (targets[t] > 0) active.push_back(t);
+    RP_CHECK(!active.empty());
+
+    tbb::task_arena arena(std::max(1, settings.threads));
+    Progress progress(settings);
+    DistributionResult result;
+    Prepass pre = runPrepass(tracer, arena, settings, active, progress);
+    const uint64_t emitted = pre.emitted;
     result.prepassEmitted = emitted;
-    const size_t prepassChunks = chunks.size();
+    result.prepasses = pre.passes;
+    result.runaways = pre.runaways;
 
     // ---- Prediction: one total N and one storage probability per map.
     std::array<double, kNumPhotonMapTypes> need{};  // photons to emit for map t alone
     double maxNeed = 0;
     for (size_t t : active) {
-        need[t] = double(targets[t]) * double(emitted) / double(preStored[t]);
+        need[t] = double(targets[t]) * double(emitted) / double(pre.deposits[t].size());
         maxNeed = std::max(maxNeed, need[t]);
     }
     const uint64_t total = std::max(emitted, uint64_t(std::ceil(maxNeed)));
@@ -302,30 +267,22 @@ DistributionResult distributePhotons(const PhotonTracer& tracer,
     for (size_t t : active) prob[t] = std::min(1.0, need[t] / std::max(maxNeed, double(emitted)));
     result.storeProbability = prob;
 
-    // The prepass deposits are thinned with the same draws the main pass uses (below);
-    // count the survivors for progress reports.
+    // ---- Output: the prepass photons thinned with the same draws the main pass uses,
+    // then the main pass as it is traced. Normalisation: flux / (N p_t) in the 24-byte
+    // record. Each prepass chunk is freed as soon as it is thinned.
+    std::array<double, kNumPhotonMapTypes> scale{}, perPhoton{};
     std::array<uint64_t, kNumPhotonMapTypes> kept{};
-    for (size_t t : active)
-        for (size_t c = 0; c < prepassChunks; ++c)
-            for (const RawPhoton& p : chunks[c].maps[t]) kept[t] += double(p.u) < prob[t];
-    progress.setStored(kept);
-
-    // ---- Output: the thinned prepass photons, then the main pass as it is traced.
-    // Normalisation: flux / (N p_t) in the 24-byte record.
-    std::array<PhotonOutput, kNumPhotonMapTypes> out;
-    std::array<double, kNumPhotonMapTypes> scale{};
     for (size_t t : active) {
         scale[t] = 1.0 / (double(total) * prob[t]);
-        perPhoton[t] *= prob[t];
-        const double n = perPhoton[t] * double(total - emitted);
-        out[t].reserve(size_t(double(kept[t]) + 1.02 * n + 4 * std::sqrt(n) + 1024));
-        for (size_t c = 0; c < prepassChunks; ++c) {
-            out[t].append(chunks[c].maps[t], prob[t], scale[t]);
-            std::vector<RawPhoton>().swap(chunks[c].maps[t]);
-        }
+        perPhoton[t] = double(pre.deposits[t].size()) / double(emitted) * prob[t];
+        RecordStore<Photon>& out = result.photons[t] = newStore<Photon>(settings, t);
+        pre.deposits[t].drain([&](std::span<const RawPhoton> block) {
+            for (const RawPhoton& r : block)
+                if (double(r.u) < prob[t]) out.append(finalPhoton(r, scale[t]));
+        });
+        kept[t] = out.size();
     }
-    for (const PhotonBins& b : chunks) result.runaways += b.runaways;
-    Chunks().swap(chunks);
+    progress.setStored(kept);
 
     // ---- Main pass.
     progress.setPass(emitted, total);
@@ -333,10 +290,11 @@ DistributionResult distributePhotons(const PhotonTracer& tracer,
                   perPhoton, [&](uint64_t photons, const PhotonBins& bins) {
                       progress.add(photons, bins);
                       result.runaways += bins.runaways;
-                      for (size_t t : active) out[t].append(bins.maps[t], HUGE_VAL, scale[t]);
+                      for (size_t t : active)
+                          for (const RawPhoton& r : bins.maps[t])
+                              result.photons[t].append(finalPhoton(r, scale[t]));
                   });
     result.emitted = total;
-    for (size_t t : active) result.photons[t] = out[t].take();
     return result;
 }
 

@@ -8,9 +8,11 @@
 #include <array>
 #include <cstdint>
 #include <iosfwd>
+#include <string>
 #include <vector>
 
 #include "pmap/photon.h"
+#include "pmap/record_store.h"
 #include "pmap/trace.h"
 
 namespace rp::pmap {
@@ -23,10 +25,16 @@ struct DistributionSettings {
     int threads = 1;           // -n
     int reportSeconds = 0;     // -t (0 = no progress reports)
     std::ostream* progress = nullptr;  // where -t reports go
+    // With a budget (mkpmap -aC), the photons held in memory (prepass deposits and final
+    // records, all maps together) stay within it; map t's photons beyond it are spilled to
+    // a temporary file beside files[t], which errors name. Without, all stay in memory.
+    MemoryBudget* budget = nullptr;
+    std::array<std::string, kNumPhotonMapTypes> files;
 };
 
 struct DistributionResult {
-    std::array<std::vector<Photon>, kNumPhotonMapTypes> photons;  // normalised flux
+    // Normalised flux, in photon index order (as the kd-tree build wants them: any order).
+    std::array<RecordStore<Photon>, kNumPhotonMapTypes> photons;
     uint64_t emitted = 0;          // photons emitted over all passes
     uint64_t prepassEmitted = 0;
     int prepasses = 0;

@@ -36,13 +36,13 @@ TEST(Distribute, IdenticalForAnyThreadCount) {
     DistributionResult c = distribute(*run, 5000, 8000, 3000, 3, 7);
     EXPECT_EQ(a.emitted, b.emitted);
     for (size_t t = 0; t < a.photons.size(); ++t) {
-        EXPECT_TRUE(a.photons[t] == b.photons[t]) << t;
-        EXPECT_TRUE(a.photons[t] == c.photons[t]) << t;
+        EXPECT_TRUE(a.photons[t].toVector() == b.photons[t].toVector()) << t;
+        EXPECT_TRUE(a.photons[t].toVector() == c.photons[t].toVector()) << t;
     }
     // A different seed gives a different map.
     DistributionResult d = distribute(*run, 5000, 8000, 3000, 2, 8);
-    EXPECT_FALSE(a.photons[size_t(PhotonMapType::Global)] ==
-                 d.photons[size_t(PhotonMapType::Global)]);
+    EXPECT_FALSE(a.photons[size_t(PhotonMapType::Global)].toVector() ==
+                 d.photons[size_t(PhotonMapType::Global)].toVector());
 }
 
 // Flux per photon is independent of the target: the total stored flux of the direct map
@@ -52,7 +52,7 @@ TEST(Distribute, FluxNormalisedOverAllPasses) {
     for (uint64_t n : {2000u, 20000u}) {
         DistributionResult r = distribute(*run, 0, 0, n);
         Color sum;
-        for (const Photon& p : r.photons[size_t(PhotonMapType::Direct)]) {
+        for (const Photon& p : r.photons[size_t(PhotonMapType::Direct)].toVector()) {
             auto f = p.fluxRgb();
             sum += Color{f[0], f[1], f[2]};
         }

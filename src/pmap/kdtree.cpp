@@ -1,4 +1,4 @@
-// kd-tree build (median partition into heap order, TBB tasks over subtrees), validation,
+// kd-tree build (median partitions in place, TBB tasks over subtrees), validation,
 // and the k-nearest / single-nearest photon searches.
 #include "pmap/kdtree.h"
 
@@ -22,22 +22,6 @@ namespace {
 // Subtrees smaller than this are built serially (task overhead would dominate).
 constexpr size_t kParallelGrain = size_t{1} << 14;
 
-// Size of the left subtree of a left-balanced complete tree with n nodes: all levels full
-// except the last, which fills left to right (RADIANCE compat: kdT_MedianPartition's m).
-size_t leftSubtreeSize(size_t n) {
-    size_t full = size_t{1} << (std::bit_width(n) - 1);  // largest power of 2 <= n
-    size_t half = full >> 1;                             // last-level slots under the left child
-    size_t lastLevel = n - (full - 1);                   // nodes on the (partial) last level
-    return (half ? half - 1 : 0) + std::min(lastLevel, half);
-}
-
-// RADIANCE compat (kdT_Build): axis of largest extent of the cell, ties going to the later
-// axis exactly as `d0 > d1 ? d0 > d2 ? 0 : 2 : d1 > d2 ? 1 : 2`.
-int splitAxis(const float lo[3], const float hi[3]) {
-    const float d0 = hi[0] - lo[0], d1 = hi[1] - lo[1], d2 = hi[2] - lo[2];
-    return d0 > d1 ? (d0 > d2 ? 0 : 2) : (d1 > d2 ? 1 : 2);
-}
-
 // Runs left() and right(): as two TBB tasks when `fork`, else one after the other.
 template <class Left, class Right>
 void forkJoin(bool fork, Left&& left, Right&& right) {
@@ -52,41 +36,21 @@ void forkJoin(bool fork, Left&& left, Right&& right) {
     }
 }
 
-// The build's two photon buffers: `a` (the input) and `b` (the output array, scratch until
-// the end), and 2 bytes of selection scratch per photon. Why this layout: the median
-// selection (kdtree_select.h) scatters a range from one buffer to the other, so it needs a
-// second buffer of n photons; rather than a third array for the heap order, every node's
-// median is left at its in-order position (s + its left subtree's size) in `a`, and one
-// final pass (gatherHeap) copies `a` into heap order in `b`. Peak memory stays the input
-// plus the output, as with the in-place std::nth_element this replaced.
-struct BuildBuffers {
-    Photon* a;
-    Photon* b;
-    uint16_t* bins;
-};
-
-// Builds the subtree of range [s, s + n), whose photons are in `cur` (bufs.a or bufs.b), into
-// bufs.a in in-order layout, each median with its split axis set. The cell bounds lo/hi
-// are narrowed at each split, as RADIANCE does, rather than recomputed from the photons,
-// so the split axes are the ones RADIANCE would choose for the same medians. The children
-// never touch the median's position, and a range's positions in the buffer its photons
-// are not in hold nothing needed any more, so writes never collide.
-void buildSubtree(const BuildBuffers& bufs, Photon* cur, size_t s, size_t n, const float lo[3],
-                  const float hi[3], bool parallel) {
+// Builds the subtree of the n photons at p in place, in in-order layout (its median at
+// kdLeftSubtreeSize(n), with its split axis set). The cell bounds lo/hi are narrowed at
+// each split, as RADIANCE does, rather than recomputed from the photons, so the split axes
+// are the ones RADIANCE would choose for the same medians. The two children's ranges are
+// disjoint, so they are built at once.
+void buildSubtree(Photon* p, size_t n, const float lo[3], const float hi[3], bool parallel) {
     if (n == 0) return;
-    const int axis = splitAxis(lo, hi);
+    const int axis = kdSplitAxis(lo, hi);
     if (n == 1) {  // a leaf (half of all nodes): no selection, no empty children to visit
-        Photon& leaf = bufs.a[s];
-        if (cur != bufs.a) leaf = cur[s];
-        leaf.setDiscr(axis);
+        p[0].setDiscr(axis);
         return;
     }
-    const size_t nLeft = leftSubtreeSize(n);
-    Photon* other = cur == bufs.a ? bufs.b : bufs.a;
-    Photon* data =
-        selectRank(cur + s, other + s, bufs.bins + s, n, nLeft, axis, lo[axis], hi[axis]) - s;
-    Photon& median = bufs.a[s + nLeft];
-    if (data != bufs.a) median = data[s + nLeft];
+    const size_t nLeft = kdLeftSubtreeSize(n);
+    selectRank(p, n, nLeft, axis, lo[axis], hi[axis]);
+    Photon& median = p[nLeft];
     median.setDiscr(axis);
 
     // Children cells: the split plane bounds the left cell above and the right one below.
@@ -94,16 +58,15 @@ void buildSubtree(const BuildBuffers& bufs, Photon* cur, size_t s, size_t n, con
     float leftHi[3] = {hi[0], hi[1], hi[2]}, rightLo[3] = {lo[0], lo[1], lo[2]};
     leftHi[axis] = split;
     rightLo[axis] = split;
-    const size_t nRight = n - nLeft - 1;
     // Recursion depth is the tree height (<= 33 for kMaxTreePhotons).
     const bool fork = parallel && n > kParallelGrain;
     forkJoin(
-        fork, [&] { buildSubtree(bufs, data, s, nLeft, lo, leftHi, fork); },
-        [&] { buildSubtree(bufs, data, s + nLeft + 1, nRight, rightLo, hi, fork); });
+        fork, [&] { buildSubtree(p, nLeft, lo, leftHi, fork); },
+        [&] { buildSubtree(p + nLeft + 1, n - nLeft - 1, rightLo, hi, fork); });
 }
 
 // Copies the in-order layout of buildSubtree (range [s, s + n) of inOrder) into heap order:
-// node `root` (1-based) of the subtree gets the median at s + leftSubtreeSize(n).
+// node `root` (1-based) of the subtree gets the median at s + kdLeftSubtreeSize(n).
 void gatherHeap(const Photon* inOrder, size_t s, size_t n, size_t root, Photon* out,
                 bool parallel) {
     if (n == 0) return;
@@ -111,7 +74,7 @@ void gatherHeap(const Photon* inOrder, size_t s, size_t n, size_t root, Photon* 
         out[root - 1] = inOrder[s];
         return;
     }
-    const size_t nLeft = leftSubtreeSize(n);
+    const size_t nLeft = kdLeftSubtreeSize(n);
     out[root - 1] = inOrder[s + nLeft];
     const bool fork = parallel && n > kParallelGrain;
     forkJoin(
@@ -119,23 +82,61 @@ void gatherHeap(const Photon* inOrder, size_t s, size_t n, size_t root, Photon* 
         [&] { gatherHeap(inOrder, s + nLeft + 1, n - nLeft - 1, 2 * root + 1, out, fork); });
 }
 
-}  // namespace
-
-BulkVector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel) {
-    const size_t n = photons.size();
+void checkTreeSize(size_t n) {
     if (n > kMaxTreePhotons)
         throw InputError(
             fmt::format("too many photons for one map ({}; at most {})", n, kMaxTreePhotons));
+}
+
+}  // namespace
+
+size_t kdLeftSubtreeSize(size_t n) {
+    size_t full = size_t{1} << (std::bit_width(n) - 1);  // largest power of 2 <= n
+    size_t half = full >> 1;                             // last-level slots under the left child
+    size_t lastLevel = n - (full - 1);                   // nodes on the (partial) last level
+    return (half ? half - 1 : 0) + std::min(lastLevel, half);
+}
+
+int kdSplitAxis(const float lo[3], const float hi[3]) {
+    const float d0 = hi[0] - lo[0], d1 = hi[1] - lo[1], d2 = hi[2] - lo[2];
+    return d0 > d1 ? (d0 > d2 ? 0 : 2) : (d1 > d2 ? 1 : 2);
+}
+
+size_t kdInOrderIndex(uint64_t node, size_t n) {
+    // Down from the root along node's bits, keeping the current subtree's first in-order
+    // position s and size m.
+    size_t s = 0, m = n;
+    for (int bit = std::bit_width(node) - 2; bit >= 0; --bit) {
+        const size_t nLeft = kdLeftSubtreeSize(m);
+        if ((node >> bit) & 1) {
+            s += nLeft + 1;
+            m -= nLeft + 1;
+        } else {
+            m = nLeft;
+        }
+    }
+    return s + kdLeftSubtreeSize(m);
+}
+
+void buildKdTreeInOrder(std::span<Photon> photons, const float lo[3], const float hi[3],
+                        bool parallel) {
+    checkTreeSize(photons.size());
+    buildSubtree(photons.data(), photons.size(), lo, hi, parallel);
+}
+
+void buildKdTreeInOrder(std::span<Photon> photons, bool parallel) {
+    float lo[3], hi[3];
+    photonBounds(photons, lo, hi);
+    buildKdTreeInOrder(photons, lo, hi, parallel);
+}
+
+BulkVector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel) {
+    const size_t n = photons.size();
+    checkTreeSize(n);
+    buildKdTreeInOrder(photons, parallel);
     // On huge pages (BulkVector): 4 KiB page faults on this fresh array cost about as much
     // as the median partitions (util/bulk_memory.h).
     BulkVector<Photon> out(n);
-    if (n == 0) return out;
-    float lo[3], hi[3];
-    photonBounds(photons, lo, hi);
-    BulkVector<uint16_t> bins;  // selection scratch, at the same offsets as the photons
-    bins.resize(n);
-    const BuildBuffers bufs{photons.data(), out.data(), bins.data()};
-    buildSubtree(bufs, photons.data(), 0, n, lo, hi, parallel);
     gatherHeap(photons.data(), 0, n, 1, out.data(), parallel);
     return out;
 }

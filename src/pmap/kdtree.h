@@ -34,11 +34,34 @@ constexpr float kNormalTolerance = 0.01f * 127.0f;
 // Largest map the tree indexes (32-bit photon indices, like RADIANCE's OOC data index).
 constexpr uint64_t kMaxTreePhotons = 0xfffffffful;
 
-// Returns the photons reordered into RADIANCE's kd-tree order with split axes set in the
-// flag bytes (other flag bits, positions, normals, flux and primary are kept). With
-// `parallel`, subtrees above a size threshold are built as TBB tasks; the result does not
-// depend on the number of threads. Requires size() <= kMaxTreePhotons.
+// The kd-tree build in place, in in-order layout: the root's photon at
+// kdLeftSubtreeSize(n), its left subtree's photons before it and its right subtree's
+// after it, each subtree laid out the same way; split axes in the flag bytes (other flag
+// bits, positions, normals, flux and primary are kept). The heap (file) order is one
+// gather away (kdInOrderIndex); mkpmap writes files from this layout directly, so that a
+// build needs no second photon array. lo / hi: the cell, the photons' bounds (second form)
+// or a subtree's cell in a larger tree (the split axes depend on it). Ties are broken by
+// photonKeyLess (kdtree_select.h): the tree depends on the photon set only, not on its
+// order. With `parallel`, subtrees above a size threshold are built as TBB tasks; the
+// result does not depend on the number of threads. Requires size() <= kMaxTreePhotons and
+// finite positions.
+void buildKdTreeInOrder(std::span<Photon> photons, const float lo[3], const float hi[3],
+                        bool parallel = true);
+void buildKdTreeInOrder(std::span<Photon> photons, bool parallel = true);
+
+// Returns the photons reordered into RADIANCE's kd-tree (heap) order: buildKdTreeInOrder,
+// then a gather into a new array (for maps searched in memory).
 BulkVector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel = true);
+
+// Size of the left subtree of a left-balanced complete tree with n nodes: all levels
+// full except the last, which fills left to right (RADIANCE compat: kdT_MedianPartition).
+size_t kdLeftSubtreeSize(size_t n);
+// RADIANCE compat (kdT_Build): the axis of the cell's largest extent, ties going to the
+// later axis exactly as `d0 > d1 ? d0 > d2 ? 0 : 2 : d1 > d2 ? 1 : 2`.
+int kdSplitAxis(const float lo[3], const float hi[3]);
+// Where heap node `node` (1-based; children of i at 2i and 2i + 1) of a tree of n photons
+// lies in the in-order layout of buildKdTreeInOrder (0-based). O(tree height).
+size_t kdInOrderIndex(uint64_t node, size_t n);
 
 // The lowest and highest coordinate per axis of the photons (+inf / -inf when empty).
 void photonBounds(std::span<const Photon> photons, float lo[3], float hi[3]);

@@ -1,6 +1,7 @@
-// Histogram median selection: the rank-k coordinate equals std::sort's, the partition
-// holds, the photons are kept, on random sets with many ties, signed zeros, negative,
-// huge and subnormal values.
+// Histogram median selection in place: the rank-k photon is std::sort's on the whole key
+// (photonKeyLess), the partition holds, the photons are kept, on random sets with many
+// ties, signed zeros, negative, huge and subnormal values; a tree does not depend on the
+// order of its input.
 #include "pmap/kdtree_select.h"
 
 #include <gtest/gtest.h>
@@ -27,22 +28,26 @@ std::vector<Photon> photonsFrom(size_t n, Pick pick) {
     return v;
 }
 
-// Selects rank k on `axis` and checks the result against a sorted copy of the coordinates.
+// Selects rank k on `axis` and checks the result against a copy sorted on the whole key
+// (primary = input index makes every key distinct, so rank k is one photon).
 void checkSelect(const std::vector<Photon>& in, size_t k, int axis) {
-    std::vector<Photon> src = in, dst(in.size());
-    std::vector<uint16_t> bins(in.size());
+    std::vector<Photon> r = in;
     float lo[3], hi[3];
     photonBounds(in, lo, hi);
-    const Photon* r = selectRank(src.data(), dst.data(), bins.data(), in.size(), k, axis,
-                                 lo[axis], hi[axis]);
-    ASSERT_TRUE(r == src.data() || r == dst.data());
-    std::vector<float> sorted;
-    for (const Photon& p : in) sorted.push_back(p.pos[axis]);
-    std::sort(sorted.begin(), sorted.end());
+    selectRank(r.data(), r.size(), k, axis, lo[axis], hi[axis]);
+    std::vector<Photon> sorted = in;
+    std::sort(sorted.begin(), sorted.end(),
+              [axis](const Photon& a, const Photon& b) { return photonKeyLess(a, b, axis); });
+    ASSERT_EQ(r[k].primary, sorted[k].primary) << "n=" << in.size() << " k=" << k;
     const float m = r[k].pos[axis];
-    ASSERT_EQ(m, sorted[k]) << "n=" << in.size() << " k=" << k;
-    for (size_t i = 0; i < k; ++i) ASSERT_LE(r[i].pos[axis], m) << i;
-    for (size_t i = k + 1; i < in.size(); ++i) ASSERT_GE(r[i].pos[axis], m) << i;
+    for (size_t i = 0; i < k; ++i) {
+        ASSERT_LE(r[i].pos[axis], m) << i;
+        ASSERT_TRUE(photonKeyLess(r[i], r[k], axis)) << i;
+    }
+    for (size_t i = k + 1; i < in.size(); ++i) {
+        ASSERT_GE(r[i].pos[axis], m) << i;
+        ASSERT_TRUE(photonKeyLess(r[k], r[i], axis)) << i;
+    }
     std::vector<uint32_t> ids;
     for (size_t i = 0; i < in.size(); ++i) ids.push_back(r[i].primary);
     std::sort(ids.begin(), ids.end());
@@ -102,10 +107,8 @@ TEST(KdTreeSelect, LooseBoundsStillSplit) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(1.0f, 1.0001f);
     auto in = photonsFrom(3000, [&] { return u(rng); });
-    std::vector<Photon> src = in, dst(in.size());
-    std::vector<uint16_t> bins(in.size());
-    const Photon* r =
-        selectRank(src.data(), dst.data(), bins.data(), in.size(), 1500, 0, -1e6f, 1e6f);
+    std::vector<Photon> r = in;
+    selectRank(r.data(), in.size(), 1500, 0, -1e6f, 1e6f);
     std::vector<float> sorted;
     for (const Photon& p : in) sorted.push_back(p.pos[0]);
     std::sort(sorted.begin(), sorted.end());
@@ -115,22 +118,44 @@ TEST(KdTreeSelect, LooseBoundsStillSplit) {
 }
 
 TEST(KdTreeSelect, SmallRangeWithNaNKeepsEveryPhoton) {
-    // Outside selectRank's contract (coordinates within finite bounds), but a NaN must not
-    // make the small-range sort drop or duplicate photons: its counted places are then no
-    // permutation, and it falls back to std::nth_element.
+    // Outside selectRank's contract (finite positions), but a NaN must not make the
+    // small-range sort drop or duplicate photons.
     for (size_t n : {5u, 24u}) {
         float next = 0;
         auto in = photonsFrom(n, [&] { return next += 1.0f; });
         in[1].pos[0] = std::numeric_limits<float>::quiet_NaN();
         for (Photon& p : in) p.primary += 7;  // no id is 0, as a zeroed record would be
-        std::vector<Photon> src = in, dst(n);
-        std::vector<uint16_t> bins(n);
-        const Photon* r = selectRank(src.data(), dst.data(), bins.data(), n, n / 2, 0, 0, 1e3f);
+        std::vector<Photon> r = in;
+        selectRank(r.data(), n, n / 2, 0, 0, 1e3f);
         std::vector<uint32_t> ids;
         for (size_t i = 0; i < n; ++i) ids.push_back(r[i].primary);
         std::sort(ids.begin(), ids.end());
         for (size_t i = 0; i < n; ++i) ASSERT_EQ(ids[i], i + 7) << "n=" << n;
     }
+}
+
+TEST(KdTreeSelect, KeyOrdersCoordinatesThenRecord) {
+    Photon a, b;
+    a.pos[0] = b.pos[0] = 1.0f;
+    a.pos[1] = 2.0f;
+    b.pos[1] = -3.0f;
+    EXPECT_TRUE(photonKeyLess(b, a, 0));  // x ties, y decides
+    EXPECT_TRUE(photonKeyLess(b, a, 1));  // on y
+    EXPECT_FALSE(photonKeyLess(a, b, 2));  // z ties, then x ties, then y
+    b.pos[1] = 2.0f;
+    b.primary = 1;
+    EXPECT_TRUE(photonKeyLess(a, b, 2));  // same position: the rest of the record
+    b.primary = 0;
+    b.setDiscr(2);
+    EXPECT_FALSE(photonKeyLess(a, b, 0));  // the split axis does not count
+    EXPECT_FALSE(photonKeyLess(b, a, 0));
+    b.pos[2] = -0.0f;  // signed zeros compare equal, as floats
+    EXPECT_FALSE(photonKeyLess(a, b, 2));
+    EXPECT_FALSE(photonKeyLess(b, a, 2));
+    EXPECT_LT(orderedFloatBits(-1.0f), orderedFloatBits(-0.5f));
+    EXPECT_LT(orderedFloatBits(-0.5f), orderedFloatBits(0.0f));
+    EXPECT_LT(orderedFloatBits(0.0f), orderedFloatBits(1e-40f));
+    EXPECT_LT(orderedFloatBits(1e-40f), orderedFloatBits(3.0f));
 }
 
 TEST(KdTreeSelect, TreeWithManyTiesIsValid) {
@@ -143,6 +168,11 @@ TEST(KdTreeSelect, TreeWithManyTiesIsValid) {
     auto tree = buildKdTree(box, false);
     EXPECT_EQ(checkKdTree(tree), "");
     EXPECT_EQ(tree, buildKdTree(box, true));
+    // Ties are broken by the record, not by the input order: any order, the same tree.
+    std::shuffle(box.begin(), box.end(), rng);
+    EXPECT_EQ(tree, buildKdTree(box, true));
+    std::reverse(box.begin(), box.end());
+    EXPECT_EQ(tree, buildKdTree(box, false));
 }
 
 }  // namespace

@@ -86,6 +86,19 @@ TEST(KdTree, LeftBalancedShapeForN1To100) {
     }
 }
 
+// The in-order layout and the heap are one gather apart: kdInOrderIndex names, for
+// each heap node, the in-order position buildKdTree copies it from.
+TEST(KdTree, InOrderIndexMatchesTheHeap) {
+    for (size_t n : {1u, 2u, 3u, 5u, 8u, 13u, 64u, 100u, 1023u, 1024u, 1025u, 3000u}) {
+        auto in = randomPhotons(n, static_cast<uint32_t>(n) + 3);
+        auto tree = buildKdTree(in, false);
+        std::vector<Photon> inOrder = in;
+        buildKdTreeInOrder(inOrder, false);
+        for (size_t node = 1; node <= n; ++node)
+            ASSERT_EQ(tree[node - 1], inOrder[kdInOrderIndex(node, n)]) << n << " " << node;
+    }
+}
+
 TEST(KdTree, SplitAxisIsLargestExtent) {
     auto in = randomPhotons(1000, 3);  // extents 2 : 1 : 0.5
     auto tree = buildKdTree(in, false);

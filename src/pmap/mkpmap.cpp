@@ -23,12 +23,15 @@
 #include "material/surface_chain.h"
 #include "pmap/contrib.h"
 #include "pmap/distribute.h"
+#include "pmap/map_output.h"
 #include "pmap/photon_map.h"
 #include "pmap/precomp.h"
+#include "pmap/record_store.h"
 #include "pmap/trace.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
 #include "util/paths.h"
+#include "util/temp_file.h"
 #include "util/warnings.h"
 
 namespace rp::pmap {
@@ -86,6 +89,80 @@ MkpmapOptions withoutIgnoredMaps(const MkpmapOptions& in) {
     return o;
 }
 
+// One map's photons for its last step: in memory, or spilled to a temporary file.
+struct MapPhotons {
+    std::vector<Photon> inMemory;
+    std::optional<TempFile> spilled;
+    uint64_t spilledCount = 0;
+};
+
+// -app: the precomputed photons from the global photons of map t (in memory: the density
+// estimates search all of them).
+std::vector<Photon> precompute(const MkpmapOptions& o, size_t t, MapPhotons& m,
+                               std::ostream& diag) {
+    PrecompSettings ps;
+    ps.fraction = o.precompFraction;
+    ps.bandwidth = o.maps[t]->bandwidth;
+    ps.seed = uint64_t(o.seed);
+    ps.threads = o.nproc;
+    ps.reportSeconds = o.reportSeconds;
+    ps.progress = &diag;
+    const size_t globalCount = m.inMemory.size();
+    std::vector<Photon> pre = precomputeGlobal(std::move(m.inMemory), ps);
+    if (pre.empty())
+        throw InputError("no precomputed global photons (-apP " +
+                         std::to_string(o.precompFraction) + " of " +
+                         std::to_string(globalCount) + " global photons)");
+    return pre;
+}
+
+// Trees and files: the maps in memory first, then the spilled ones one at a time, each
+// with the whole budget (inCorePhotons) for the parts it builds in memory. With -n 2 or
+// more the maps in memory are built at once: the top splits of a tree are serial, so the
+// global and caustic trees keep each other's threads busy. Each file is the same either way.
+void saveMaps(const MkpmapOptions& o, std::array<MapPhotons, kNumPhotonMapTypes>& photons,
+              const std::string& commandLine, const std::vector<PhotonPrimary>& primaries,
+              const std::vector<PrimaryRay>& primaryRays, uint64_t inCorePhotons,
+              MkpmapReport& report) {
+    auto outputOf = [&](size_t t) {
+        MapOutput out;
+        out.type = PhotonMapType(t);
+        out.file = o.maps[t]->file;
+        out.commandLine = commandLine;
+        out.overwrite = o.overwrite;
+        if (out.type == PhotonMapType::Contrib) {
+            out.primaries = primaries;
+            out.primaryRays = primaryRays;
+        }
+        out.parallel = o.nproc > 1;
+        return out;
+    };
+    auto saveInMemory = [&](size_t t) {
+        report.stored[t] = saveMapInMemory(photons[t].inMemory, outputOf(t));
+        std::vector<Photon>().swap(photons[t].inMemory);  // freed once written
+    };
+    tbb::task_arena arena(std::max(1, o.nproc));
+    auto tb = Clock::now();
+    arena.execute([&] {
+        tbb::task_group group;
+        for (size_t t = 0; t < o.maps.size(); ++t) {
+            if (!o.maps[t] || photons[t].spilled) continue;
+            if (o.nproc > 1)
+                group.run([&saveInMemory, t] { saveInMemory(t); });
+            else
+                saveInMemory(t);
+        }
+        group.wait();
+        for (size_t t = 0; t < o.maps.size(); ++t) {
+            if (!o.maps[t] || !photons[t].spilled) continue;
+            report.stored[t] = saveSpilledMap(std::move(*photons[t].spilled),
+                                              photons[t].spilledCount, inCorePhotons, outputOf(t));
+            photons[t].spilled.reset();
+        }
+    });
+    report.buildSeconds = secondsSince(tb);
+}
+
 }  // namespace
 
 MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
@@ -134,6 +211,9 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
     DistributionResult dist;
     std::vector<PhotonPrimary> primaries;  // contribution map only
     std::vector<PrimaryRay> primaryRays;   // with -apCPD
+    std::vector<Photon> contribPhotons;    // contribution maps stay in memory
+    // Photons in memory, all maps together (mkpmap -aC); the rest goes to temporary files.
+    MemoryBudget budget(o.memoryPhotons * sizeof(Photon));
     if (o.wants(PhotonMapType::Contrib)) {
         ContribSettings cs;
         cs.target = o.maps[size_t(PhotonMapType::Contrib)]->target;
@@ -145,7 +225,7 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         cs.progress = &diag;
         cs.primaryRays = o.maps[size_t(PhotonMapType::Contrib)]->primaryRays;
         ContribResult cr = distributeContrib(scene, geometry, plan, eo, ts, cs, chains, &functions);
-        dist.photons[size_t(PhotonMapType::Contrib)] = std::move(cr.photons);
+        contribPhotons = std::move(cr.photons);
         primaries = std::move(cr.primaries);
         primaryRays = std::move(cr.primaryRays);
         dist.emitted = cr.totalEmitted;
@@ -161,6 +241,9 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         ds.threads = o.nproc;
         ds.reportSeconds = o.reportSeconds;
         ds.progress = &diag;
+        ds.budget = &budget;
+        for (size_t t = 0; t < o.maps.size(); ++t)
+            if (o.maps[t]) ds.files[t] = o.maps[t]->file;
         dist = distributePhotons(tracer, ds);
     }
     report.traceSeconds = secondsSince(t0);
@@ -172,62 +255,23 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         warn(std::to_string(dist.runaways) + " runaway photons terminated after " +
              std::to_string(o.maxBounce) + " bounces (manual 4.3)");
 
-    // Precomputation (its own parallel loops), then the kd-trees, then the files in map
-    // order. With -n 2 or more the trees of all maps are built at once: the top splits of
-    // a tree are serial, so the global and caustic trees keep each other's threads busy.
-    // With -n 1 each tree is freed once written, as before (less peak memory). Each tree
-    // and file is the same either way.
-    tbb::task_arena arena(std::max(1, o.nproc));
-    auto tb = Clock::now();
-    std::array<std::vector<Photon>, kNumPhotonMapTypes> input;
+    std::array<MapPhotons, kNumPhotonMapTypes> photons;
     for (size_t t = 0; t < o.maps.size(); ++t) {
         if (!o.maps[t]) continue;
-        input[t] = std::move(dist.photons[t]);
-        if (PhotonMapType(t) != PhotonMapType::PreComp) continue;
-        PrecompSettings ps;
-        ps.fraction = o.precompFraction;
-        ps.bandwidth = o.maps[t]->bandwidth;
-        ps.seed = uint64_t(o.seed);
-        ps.threads = o.nproc;
-        ps.reportSeconds = o.reportSeconds;
-        ps.progress = &diag;
-        const size_t globalCount = input[t].size();
-        input[t] = precomputeGlobal(std::move(input[t]), ps);
-        if (input[t].empty())
-            throw InputError("no precomputed global photons (-apP " +
-                             std::to_string(o.precompFraction) + " of " +
-                             std::to_string(globalCount) + " global photons)");
-    }
-    std::array<PhotonMap, kNumPhotonMapTypes> maps;
-    auto build = [&](size_t t) {
-        maps[t] = PhotonMap(PhotonMapType(t), std::move(input[t]),
-                            PhotonMapType(t) == PhotonMapType::Contrib ? std::move(primaries)
-                                                                       : std::vector<PhotonPrimary>{},
-                            o.nproc > 1);
-        if (PhotonMapType(t) == PhotonMapType::Contrib) maps[t].setPrimaryRays(std::move(primaryRays));
-    };
-    if (o.nproc > 1)
-        arena.execute([&] {
-            tbb::task_group group;
-            for (size_t t = 0; t < o.maps.size(); ++t)
-                if (o.maps[t]) group.run([&build, t] { build(t); });
-            group.wait();
-        });
-    report.buildSeconds = secondsSince(tb);
-    for (size_t t = 0; t < o.maps.size(); ++t) {
-        if (!o.maps[t]) continue;
-        if (o.nproc <= 1) {
-            auto tb1 = Clock::now();
-            arena.execute([&] { build(t); });
-            report.buildSeconds += secondsSince(tb1);
+        MapPhotons& m = photons[t];
+        RecordStore<Photon>& store = dist.photons[t];
+        if (PhotonMapType(t) == PhotonMapType::Contrib) {
+            m.inMemory = std::move(contribPhotons);
+        } else if (store.spilled() && PhotonMapType(t) != PhotonMapType::PreComp) {
+            m.spilledCount = store.size();
+            m.spilled = store.takeFile();
+        } else {
+            m.inMemory = store.takeAll<std::vector<Photon>>();
         }
-        auto tsave = Clock::now();
-        arena.execute([&] { maps[t].save(o.maps[t]->file, commandLine, o.overwrite); });  // -n
-        report.saveSeconds += secondsSince(tsave);
-        report.stored[t] = maps[t].size();
-        maps[t] = PhotonMap();  // free the tree once written
+        if (PhotonMapType(t) == PhotonMapType::PreComp) m.inMemory = precompute(o, t, m, diag);
     }
-
+    saveMaps(o, photons, commandLine, primaries, primaryRays, budget.limit() / sizeof(Photon),
+             report);
     char line[160];
     for (size_t t = 0; t < o.maps.size(); ++t) {
         if (!o.maps[t]) continue;

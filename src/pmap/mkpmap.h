@@ -22,8 +22,7 @@ struct MkpmapReport {
     int prepasses = 0;
     long runaways = 0;
     double traceSeconds = 0;  // prepass + main pass
-    double buildSeconds = 0;  // kd-trees of all maps (wall time; built together with -n > 1)
-    double saveSeconds = 0;
+    double buildSeconds = 0;  // kd-trees and files of all maps (wall time)
 };
 
 // -app maps are distributed as global maps, then precomputed (precomp.h); -apC uses its

@@ -2,6 +2,8 @@
 // RADIANCE's; messages are ours, one line each.
 #include "pmap/mkpmap_options.h"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -22,9 +24,16 @@ std::optional<uint64_t> parsePhotonCount(const std::string& s) {
     std::string rest(end);
     if (rest == "k" || rest == "K") v *= 1e3;
     else if (rest == "m" || rest == "M") v *= 1e6;
+    else if (rest == "g" || rest == "G") v *= 1e9;
     else if (!rest.empty()) return std::nullopt;
     if (!(v >= 1) || v > 1e15) return std::nullopt;
     return uint64_t(std::llround(v));
+}
+
+uint64_t defaultMemoryPhotons() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || pageSize <= 0) return uint64_t{1} << 27;  // unknown: 3 GB of photons
+    return uint64_t(pages) / 2 * uint64_t(pageSize) / sizeof(Photon);
 }
 
 namespace {
@@ -114,7 +123,12 @@ MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
             o.maps[size_t(PhotonMapType::Contrib)]->primaryRays = opt == "-apCPD";
         }
         else if (opt == "-app") mapOpt(opt, PhotonMapType::PreComp, true);
-        else if (opt == "-apD")
+        else if (opt == "-aC") {
+            const std::string n = a.value(opt);
+            const auto count = parsePhotonCount(n);
+            if (!count) throw InputError("bad photon count '" + n + "' for option '-aC'");
+            o.memoryPhotons = *count;
+        } else if (opt == "-apD")
             o.preDistrib = positive(a.real(opt), "predistribution factor must be > 0");
         else if (opt == "-apM") {
             o.maxPrepass = int(a.integer(opt));

@@ -34,6 +34,9 @@ struct RegionOfInterest {
     }
 };
 
+// mkpmap -aC's default: half the physical memory, in 24-byte photons.
+uint64_t defaultMemoryPhotons();
+
 struct MkpmapOptions {
     // Indexed by PhotonMapType; unset = not requested. As RADIANCE (mkpmap.1), a later
     // instance of the same type replaces an earlier one.
@@ -60,6 +63,13 @@ struct MkpmapOptions {
     double mediumEccentricity = 0;  // -mg
     int nproc = 1;                // -n
     int reportSeconds = 0;        // -t
+    // -aC N (a radphoton extension; RADIANCE's rtrace -aC sizes its out-of-core cache):
+    // hold about N photons in memory at most while building, all maps together (prepass
+    // deposits, collected photons, kd-tree parts). Photons beyond it go to temporary files
+    // beside the maps, whose trees are then built externally (kdtree_external.h); the
+    // files are the same as when built in memory. Precomputed (-app) and contribution
+    // (-apC) maps are always built in memory.
+    uint64_t memoryPhotons = defaultMemoryPhotons();
     std::vector<std::string> sceneFiles;  // the octree / scene file(s), last
 
     bool wants(PhotonMapType t) const { return maps[size_t(t)].has_value(); }
@@ -71,8 +81,8 @@ struct MkpmapOptions {
 // -apS, -aI/-al and -aE are read here (whitespace separated words).
 MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv);
 
-// "500k" -> 500000, "1m" -> 1000000, "2.5M" -> 2500000 (RADIANCE parseMultiplier);
-// nullopt for anything else or a value that is not a positive count.
+// "500k" -> 500000, "1m" -> 1000000, "2.5M" -> 2500000, "1g" -> 1e9 (RADIANCE
+// parseMultiplier); nullopt for anything else or a value that is not a positive count.
 std::optional<uint64_t> parsePhotonCount(const std::string& s);
 
 }  // namespace rp::pmap

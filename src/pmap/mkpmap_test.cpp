@@ -73,6 +73,15 @@ TEST(MkpmapOptions, Defaults) {
     EXPECT_EQ(parse({"-apm", "9", "-apg", "g", "1", "x"}).maxBounce, 9);
 }
 
+TEST(MkpmapOptions, MemoryBudget) {
+    EXPECT_EQ(parse({"-aC", "1k", "-apg", "g", "1", "x"}).memoryPhotons, 1000u);
+    EXPECT_EQ(parse({"-aC", "2.5G", "-apg", "g", "1", "x"}).memoryPhotons, 2500000000u);
+    EXPECT_EQ(parse({"-apg", "g", "1", "x"}).memoryPhotons, defaultMemoryPhotons());
+    EXPECT_GT(defaultMemoryPhotons(), 1000000u);
+    EXPECT_EQ(parseError({"-aC", "lots", "-apg", "g", "1", "x"}),
+              "bad photon count 'lots' for option '-aC'");
+}
+
 TEST(MkpmapOptions, PhotonCounts) {
     EXPECT_EQ(parsePhotonCount("500k"), 500000u);
     EXPECT_EQ(parsePhotonCount("1M"), 1000000u);
@@ -161,6 +170,46 @@ TEST_F(MkpmapRun, ErrorsOnePerKind) {
     EXPECT_NE(runError({"-apg", path("g.pm"), "1k", "-apo", "nosuchport", cornell()}),
               "(no error)");
     EXPECT_FALSE(std::filesystem::exists(path("g.pm")));
+}
+
+// The binary part of a map file: what follows the header (which holds the command line).
+std::string binaryPart(const std::string& file) {
+    const std::string all = slurp(file);
+    const size_t end = all.find("\n\n");
+    return end == std::string::npos ? std::string() : all.substr(end + 2);
+}
+
+// -aC 1k: every map is spilled and built externally, with 1000 photons in memory; the
+// files are the ones built in memory (so are photons, count and statistics), and no
+// temporary file is left in the maps' folder.
+TEST_F(MkpmapRun, SmallMemoryBudgetGivesTheSameMaps) {
+    std::ostringstream diag;
+    runMkpmap(parse({"-apg", path("g.pm"), "20k", "-apc", path("c.pm"), "5k", "-apd",
+                     path("d.pm"), "3k", "-apr", "2", "-n", "2", cornell()}),
+              "mkpmap", diag);
+    runMkpmap(parse({"-aC", "1k", "-apg", path("gs.pm"), "20k", "-apc", path("cs.pm"), "5k",
+                     "-apd", path("ds.pm"), "3k", "-apr", "2", "-n", "2", cornell()}),
+              "mkpmap", diag);
+    for (const char* m : {"g", "c", "d"}) {
+        const std::string a = path(std::string(m) + ".pm"), b = path(std::string(m) + "s.pm");
+        EXPECT_TRUE(binaryPart(a) == binaryPart(b)) << m;
+        const PhotonMap x = PhotonMap::load(a), y = PhotonMap::load(b);
+        EXPECT_GT(y.size(), 2000u);
+        EXPECT_EQ(x.size(), y.size());
+        EXPECT_EQ(x.stats(), y.stats());
+    }
+    EXPECT_EQ(dir_.count(), 6u);
+}
+
+// An error after the photons were spilled (here: the global map's name is a folder, so
+// its file cannot be named when complete) leaves no temporary file behind.
+TEST_F(MkpmapRun, NoSpillFileLeftAfterAnError) {
+    std::filesystem::create_directory(path("g.pm"));
+    EXPECT_NE(runError({"-fo", "-aC", "1k", "-apg", path("g.pm"), "5k", "-apc", path("c.pm"),
+                        "5k", cornell()}),
+              "(no error)");
+    EXPECT_EQ(dir_.count(), 1u);  // the folder g.pm, nothing else
+    EXPECT_FALSE(std::filesystem::exists(path("c.pm")));
 }
 
 }  // namespace

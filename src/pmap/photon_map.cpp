@@ -25,42 +25,64 @@ std::string photonMapFormat(PhotonMapType type) {
     return std::string("Radiance_") + photonMapTypeName(type) + "_kdT_Photon_Map";
 }
 
-PhotonMapStats computeStats(std::span<const Photon> photons) {
-    PhotonMapStats s;
-    s.numPhotons = photons.size();
-    if (photons.empty()) return s;
+StatsAccumulator::StatsAccumulator() {
+    for (int a = 0; a < 3; ++a) {
+        s_.bboxMin[a] = std::numeric_limits<float>::infinity();
+        s_.bboxMax[a] = -std::numeric_limits<float>::infinity();
+    }
+}
+
+void StatsAccumulator::addFirst(std::span<const Photon> photons) {
+    RP_CHECK(!second_);
+    s_.numPhotons += photons.size();
     // RADIANCE compat: buildPhotonMap sums flux and positions in double ("reduce summation
     // errors"). It averages the flux before the final RGBE rounding; we only have the
     // rounded flux, so this average can differ from RADIANCE's in the third digit.
-    double flux[3] = {0, 0, 0}, cog[3] = {0, 0, 0};
-    for (int a = 0; a < 3; ++a) {
-        s.bboxMin[a] = std::numeric_limits<float>::infinity();
-        s.bboxMax[a] = -std::numeric_limits<float>::infinity();
-    }
     for (const Photon& p : photons) {
         const auto f = p.fluxRgb();
         for (int a = 0; a < 3; ++a) {
-            flux[a] += f[a];
-            cog[a] += p.pos[a];
+            flux_[a] += f[a];
+            cog_[a] += p.pos[a];
             // (RADIANCE updates max only in an `else` branch after min, which can leave the
             // max short; we record the true bounding box.)
-            s.bboxMin[a] = std::min(s.bboxMin[a], p.pos[a]);
-            s.bboxMax[a] = std::max(s.bboxMax[a], p.pos[a]);
+            s_.bboxMin[a] = std::min(s_.bboxMin[a], p.pos[a]);
+            s_.bboxMax[a] = std::max(s_.bboxMax[a], p.pos[a]);
         }
     }
-    const double n = static_cast<double>(photons.size());
+}
+
+void StatsAccumulator::finishFirst() {
+    second_ = true;
+    if (s_.numPhotons == 0) return;
+    const double n = static_cast<double>(s_.numPhotons);
     for (int a = 0; a < 3; ++a) {
-        s.avgFlux[a] = static_cast<float>(flux[a] / n);
-        cog[a] /= n;
+        s_.avgFlux[a] = static_cast<float>(flux_[a] / n);
+        cog_[a] /= n;
     }
-    double dist2 = 0;
+}
+
+void StatsAccumulator::addSecond(std::span<const Photon> photons) {
+    if (!second_) finishFirst();
     for (const Photon& p : photons) {
-        const double dx = p.pos[0] - cog[0], dy = p.pos[1] - cog[1], dz = p.pos[2] - cog[2];
-        dist2 += dx * dx + dy * dy + dz * dz;
+        const double dx = p.pos[0] - cog_[0], dy = p.pos[1] - cog_[1], dz = p.pos[2] - cog_[2];
+        dist2_ += dx * dx + dy * dy + dz * dz;
     }
-    s.cogDist2 = static_cast<float>(dist2 / n);
-    for (int a = 0; a < 3; ++a) s.cog[a] = portableRound(cog[a]);
+}
+
+PhotonMapStats StatsAccumulator::stats() const {
+    if (s_.numPhotons == 0) return PhotonMapStats{};
+    RP_CHECK(second_);
+    PhotonMapStats s = s_;
+    s.cogDist2 = static_cast<float>(dist2_ / static_cast<double>(s_.numPhotons));
+    for (int a = 0; a < 3; ++a) s.cog[a] = portableRound(cog_[a]);
     return s;
+}
+
+PhotonMapStats computeStats(std::span<const Photon> photons) {
+    StatsAccumulator acc;
+    acc.addFirst(photons);
+    acc.addSecond(photons);
+    return acc.stats();
 }
 
 PhotonMap::PhotonMap(PhotonMapType type, std::vector<Photon> photons,

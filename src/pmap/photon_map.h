@@ -46,6 +46,23 @@ struct PhotonMapStats {
     bool operator==(const PhotonMapStats& o) const = default;
 };
 
+// What a map file holds besides its photon records (mkpmap writes files whose photons
+// are not in a PhotonMap: pmap/map_file_writer.h).
+struct PhotonMapFileInfo {
+    PhotonMapType type = PhotonMapType::Global;
+    PhotonMapStats stats;
+    std::span<const PhotonPrimary> primaries;
+    std::span<const PrimaryRay> primaryRays;  // 3.1kPD maps only
+    // "3.1k", or "3.1kPD" with primary rays.
+    const char* fileVersion() const;
+};
+
+// The info header lines of a map file (PhotonMap::fileHeader).
+Header photonMapFileHeader(const PhotonMapFileInfo& info, const std::string& commandLine);
+// A map file's bytes before its photon records: the info header, the binary version,
+// statistics and primaries. The records (photon_records.h) follow in heap order.
+std::string photonMapFilePrologue(const PhotonMapFileInfo& info, const std::string& commandLine);
+
 class PhotonMap {
 public:
     PhotonMap() = default;
@@ -86,6 +103,8 @@ public:
     Header fileHeader(const std::string& commandLine) const;
     // "3.1k", or "3.1kPD" for a map with primary rays.
     const char* fileVersion() const;
+    // The map's file info (valid while the map lives).
+    PhotonMapFileInfo fileInfo() const;
 
     // Writes the complete file (info header + portable binary part) to `out`.
     void write(std::ostream& out, const std::string& commandLine) const;
@@ -136,5 +155,25 @@ private:
 // Statistics of `photons` as RADIANCE's buildPhotonMap computes them: average of the
 // decoded flux, bounding box, centre of gravity, mean squared distance to it.
 PhotonMapStats computeStats(std::span<const Photon> photons);
+
+// computeStats over photons that are not in memory at once (mkpmap's external build), in
+// two passes: addFirst() every photon, then addSecond() the same photons in the same
+// order (the mean squared distance needs the centre of gravity first), then stats().
+// computeStats is this over one span: the same sums in the same order, the same numbers.
+class StatsAccumulator {
+public:
+    StatsAccumulator();
+    void addFirst(std::span<const Photon> photons);
+    void addSecond(std::span<const Photon> photons);
+    PhotonMapStats stats() const;
+
+private:
+    void finishFirst();
+
+    PhotonMapStats s_;
+    double flux_[3] = {0, 0, 0}, cog_[3] = {0, 0, 0};
+    double dist2_ = 0;
+    bool second_ = false;
+};
 
 }  // namespace rp::pmap

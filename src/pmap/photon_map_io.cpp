@@ -21,6 +21,7 @@
 #include <istream>
 #include <ostream>
 #include <random>
+#include <sstream>
 
 #include "pmap/photon_map.h"
 #include "pmap/photon_records.h"
@@ -57,16 +58,6 @@ std::string cFormat(const char* format, auto... args) {
     char buf[256];
     std::snprintf(buf, sizeof buf, format, args...);
     return buf;
-}
-
-// Writes the kPhotonRecordSize bytes of p at out.
-void encodePhoton(unsigned char* out, const Photon& p) {
-    for (int a = 0; a < 3; ++a) putFlt(out + a * kPortableFloatSize, p.pos[a]);
-    out += 3 * kPortableFloatSize;
-    for (int a = 0; a < 3; ++a) out[a] = static_cast<unsigned char>(p.norm[a]);
-    for (int a = 0; a < 4; ++a) out[3 + a] = p.flux[a];
-    putInt(out + 7, p.primary, 4);
-    out[11] = p.flags;
 }
 
 // Explains why a version string other than "3.1k" cannot be read.
@@ -117,17 +108,36 @@ bool readBytes(std::istream& in, void* dst, size_t n) {
 
 }  // namespace
 
-const char* PhotonMap::fileVersion() const {
-    return primaryRays_.empty() ? kPhotonMapFileVersion : kPhotonMapFileVersionPD;
+void encodePhoton(unsigned char* out, const Photon& p) {
+    for (int a = 0; a < 3; ++a) putFlt(out + a * kPortableFloatSize, p.pos[a]);
+    out += 3 * kPortableFloatSize;
+    for (int a = 0; a < 3; ++a) out[a] = static_cast<unsigned char>(p.norm[a]);
+    for (int a = 0; a < 4; ++a) out[3 + a] = p.flux[a];
+    putInt(out + 7, p.primary, 4);
+    out[11] = p.flags;
+}
+
+const char* PhotonMapFileInfo::fileVersion() const {
+    return primaryRays.empty() ? kPhotonMapFileVersion : kPhotonMapFileVersionPD;
+}
+
+const char* PhotonMap::fileVersion() const { return fileInfo().fileVersion(); }
+
+PhotonMapFileInfo PhotonMap::fileInfo() const {
+    return PhotonMapFileInfo{type_, stats_, primaries_, primaryRays_};
 }
 
 Header PhotonMap::fileHeader(const std::string& commandLine) const {
+    return photonMapFileHeader(fileInfo(), commandLine);
+}
+
+Header photonMapFileHeader(const PhotonMapFileInfo& info, const std::string& commandLine) {
     Header h;
     std::string cmd = commandLine;
     for (char& c : cmd)
         if (c == '\n' || c == '\r') c = ' ';  // a newline would end the header early
     if (!cmd.empty()) h.lines.push_back(cmd);
-    const PhotonMapStats& s = stats_;
+    const PhotonMapStats& s = info.stats;
     // RADIANCE compat: the exact fprintf formats of savePhotonMap (floats promoted to double).
     h.lines.push_back(cFormat("NumPhotons\t= %llu", static_cast<unsigned long long>(s.numPhotons)));
     h.lines.push_back(cFormat("AvgFlux\t\t= [%.2e, %.2e, %.2e]", double(s.avgFlux[0]),
@@ -138,20 +148,21 @@ Header PhotonMap::fileHeader(const std::string& commandLine) const {
     h.lines.push_back(cFormat("CoG\t\t= [%.3f, %.3f, %.3f]", s.cog[0], s.cog[1], s.cog[2]));
     // RADIANCE compat: labelled MaxDist^2 but the value is CoGdist.
     h.lines.push_back(cFormat("MaxDist^2\t= %.3f", double(s.cogDist2)));
-    if (!primaries_.empty())
-        h.lines.push_back(cFormat("%u primary rays", static_cast<unsigned>(primaries_.size())));
-    h.lines.push_back("FORMAT=" + photonMapFormat(type_));
-    h.lines.push_back(std::string("VERSION=") + fileVersion());
+    if (!info.primaries.empty())
+        h.lines.push_back(
+            cFormat("%u primary rays", static_cast<unsigned>(info.primaries.size())));
+    h.lines.push_back("FORMAT=" + photonMapFormat(info.type));
+    h.lines.push_back(std::string("VERSION=") + info.fileVersion());
     return h;
 }
 
-void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
-    writeHeader(out, fileHeader(commandLine));
-    const PhotonMapStats& s = stats_;
-    const std::span<const Photon> photons = this->photons();
-    std::string b;
-    putStr(b, fileVersion());
-    putInt(b, static_cast<int64_t>(photons.size()), 8);
+std::string photonMapFilePrologue(const PhotonMapFileInfo& info, const std::string& commandLine) {
+    std::ostringstream text;
+    writeHeader(text, photonMapFileHeader(info, commandLine));
+    std::string b = text.str();
+    const PhotonMapStats& s = info.stats;
+    putStr(b, info.fileVersion());
+    putInt(b, static_cast<int64_t>(s.numPhotons), 8);
     for (int a = 0; a < 3; ++a) putFlt(b, s.avgFlux[a]);
     for (int a = 0; a < 3; ++a) {
         putFlt(b, s.bboxMin[a]);
@@ -159,15 +170,22 @@ void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
     }
     for (int a = 0; a < 3; ++a) putFlt(b, s.cog[a]);
     putFlt(b, s.cogDist2);
-    putInt(b, static_cast<int64_t>(primaries_.size()), 4);
-    for (size_t i = 0; i < primaries_.size(); ++i) {
-        putInt(b, primaries_[i].srcIdx, 2);
-        if (primaryRays_.empty()) continue;
+    putInt(b, static_cast<int64_t>(info.primaries.size()), 4);
+    for (size_t i = 0; i < info.primaries.size(); ++i) {
+        putInt(b, info.primaries[i].srcIdx, 2);
+        if (info.primaryRays.empty()) continue;
         // RADIANCE compat (pmapio.c): the direction before the position.
-        const PrimaryRay& r = primaryRays_[i];
+        const PrimaryRay& r = info.primaryRays[i];
         putInt(b, r.dir, 4);
         for (int a = 0; a < 3; ++a) putFlt(b, r.pos[size_t(a)]);
     }
+    return b;
+}
+
+void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
+    const std::span<const Photon> photons = this->photons();  // all of a map read on demand
+    RP_CHECK(photons.size() == stats_.numPhotons);
+    const std::string b = photonMapFilePrologue(fileInfo(), commandLine);
     out.write(b.data(), static_cast<std::streamsize>(b.size()));
     // Chunks are encoded in parallel (in the caller's task arena), a batch at a time to
     // bound the buffer memory, and written in order: the bytes do not depend on threads.

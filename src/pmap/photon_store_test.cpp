@@ -122,7 +122,9 @@ void expectSameUpToTies(const std::vector<Result>& got, const std::vector<Result
     ASSERT_EQ(got.size(), want.size()) << what;
     for (size_t i = 0; i < got.size(); ++i) {
         ASSERT_EQ(got[i].dist2, want[i].dist2) << what << " i=" << i;
-        if (got[i].dist2 < got.back().dist2) ASSERT_EQ(got[i].id, want[i].id) << what;
+        if (got[i].dist2 < got.back().dist2) {
+            ASSERT_EQ(got[i].id, want[i].id) << what;
+        }
     }
 }
 
@@ -149,8 +151,9 @@ TEST(PhotonStore, EveryStoreEqualsBruteForce) {
         for (size_t n : {1u, 7u, 17u, 300u, 20000u}) {
             const auto photons = makePhotons(layout, n, 10 + uint32_t(n));
             const Stores stores(photons, dir);
-            if (n > 64)
+            if (n > 64) {
                 ASSERT_NE(stores.outOfCore.store().describe().find("out of core"), std::string::npos);
+            }
             std::mt19937 rng(5);
             std::uniform_real_distribution<double> u(-1.1, 1.1);
             for (const PhotonMap* m : {&stores.inCore, &stores.outOfCore}) {

@@ -18,8 +18,8 @@ using testing::mapsFor;
 using testing::sceneFromFile;
 using testing::sceneFromText;
 
-const std::vector<Photon>& mapOf(const DistributionResult& r, PhotonMapType t) {
-    return r.photons[size_t(t)];
+std::vector<Photon> mapOf(const DistributionResult& r, PhotonMapType t) {
+    return r.photons[size_t(t)].toVector();
 }
 
 double sumRed(const std::vector<Photon>& ps) {

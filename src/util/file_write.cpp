@@ -10,15 +10,11 @@
 #include <random>
 
 #include "util/error.h"
+#include "util/temp_file.h"
 
 namespace rp {
 
 namespace {
-
-std::string folderOf(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
-}
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, int err) {
     throw InputError(SourceLoc{path, 0}, what + ": " + std::strerror(err));
@@ -66,6 +62,18 @@ void AtomicFile::write(const void* data, size_t size) {
         if (n <= 0) fail(path_, "write error", n < 0 ? errno : ENOSPC);
         p += n;
         size -= size_t(n);
+    }
+}
+
+void AtomicFile::writeAt(uint64_t offset, const void* data, size_t size) {
+    const char* p = static_cast<const char*>(data);
+    while (size > 0) {
+        ssize_t n = ::pwrite(fd_, p, size, off_t(offset));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) fail(path_, "write error", n < 0 ? errno : ENOSPC);
+        p += n;
+        size -= size_t(n);
+        offset += uint64_t(n);
     }
 }
 

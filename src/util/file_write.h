@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <streambuf>
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@ public:
     bool unnamed() const { return tmpName_.empty() && !committed_; }
     // Writes all of data; throws InputError on a write error (disk full).
     void write(const void* data, size_t size);
+    // Writes all of data at byte `offset` (the append position stays), for files whose
+    // parts are produced out of order; several threads may write disjoint ranges at once.
+    void writeAt(uint64_t offset, const void* data, size_t size);
     // Syncs the data, gives it the target's name (replacing an existing file unless
     // `replace` is false, when an existing target is an InputError) and syncs the folder.
     void commit(bool replace = true);
