@@ -10,7 +10,8 @@
 # and prints wall time, peak memory (/usr/bin/time) and bytes per photon (peak less the
 # same run's peak without photons, over N), the map's size on disk, and whether the
 # out-of-core output equals the in-core one. With RADIANCE=<dir of RADIANCE's binaries> it
-# runs RADIANCE's rtrace on the same in-core cases (its memory is the yardstick).
+# runs RADIANCE's rtrace on the same maps up to RADIANCE_MAX photons (default 2e7; its
+# memory is the yardstick).
 # Needs about 6 GB of disk per 2e8 photons in TMPDIR.
 # Usage: [SIZES="1m 20m 200m"] [RADIANCE=/path/bin] bench/pmap_scale.sh [build]
 set -euo pipefail
@@ -19,6 +20,7 @@ bin=$(cd "${1:-$root/build}" && pwd)/tools
 sizes=${SIZES:-"1m 20m 200m"}
 ooc_cache=${OOC_CACHE:-14M}
 ooc_from=${OOC_FROM:-20000000}
+radiance_max=${RADIANCE_MAX:-20000000}
 mk_large=${MKPMAP_LARGE:-"-aC 100M"}
 export RAYPATH=.:$root/lib
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -74,7 +76,7 @@ for s in $sizes; do
         printf "%-8s %-28s %8.1f %9s %8s   %s\n" "$s" "rtrace -aC $ooc_cache" "$wall" \
             "$(mb "$peak")" "$(perphoton "$peak" "$base" "$stored")" "$same"
     fi
-    if [ -n "${RADIANCE:-}" ]; then
+    if [ -n "${RADIANCE:-}" ] && [ "$n" -le "$radiance_max" ]; then
         # shellcheck disable=SC2086
         run "$RADIANCE/rtrace" $lookup radiance.oct
         printf "%-8s %-28s %8.1f %9s %8s\n" "$s" "RADIANCE rtrace" "$wall" \

@@ -41,7 +41,7 @@ constexpr size_t kGrain = size_t{1} << 14;
 constexpr int kBitsPerAxis = 21;
 constexpr uint32_t kMaxCell = (1u << kBitsPerAxis) - 1;
 // Photon records converted between two releases of their memory.
-constexpr size_t kReleaseChunk = size_t{1} << 20;
+constexpr size_t kReleaseChunk = size_t{1} << 16;
 
 // Cell numbers in a 2^21 grid per axis over the photons' bounds. Non-decreasing in the
 // coordinate (float arithmetic is monotonic), so photons in cells below a split never lie
@@ -212,14 +212,15 @@ struct Bounds {
 // copied into the leaves and are not read again.
 // Only whole pages inside the array are given back, so allocator data around it is not
 // touched.
-void releaseRecords(std::span<Photon> photons, size_t& done, size_t upTo) {
-    constexpr size_t kPage = size_t{2} << 20;
-    auto* base = reinterpret_cast<unsigned char*>(photons.data());
-    const uintptr_t start = reinterpret_cast<uintptr_t>(base);
-    const uintptr_t from = (start + done * sizeof(Photon) + kPage - 1) / kPage * kPage;
+// `released` is the address up to which pages were given back (0 before the first call).
+void releaseRecords(std::span<Photon> photons, uintptr_t& released, size_t upTo) {
+    constexpr uintptr_t kPage = uintptr_t{2} << 20;
+    const auto start = reinterpret_cast<uintptr_t>(photons.data());
+    if (released == 0) released = (start + kPage - 1) / kPage * kPage;
     const uintptr_t to = (start + upTo * sizeof(Photon)) / kPage * kPage;
-    if (to > from) ::madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
-    done = upTo;
+    if (to <= released) return;
+    ::madvise(reinterpret_cast<void*>(released), to - released, MADV_DONTNEED);
+    released = to;
 }
 
 }  // namespace
@@ -325,7 +326,7 @@ InCoreStore::InCoreStore(std::span<Photon> photons, Attributes attrs, bool paral
     // Leaves filled in runs of about kReleaseChunk photons, each run's records given back
     // before the next (the peak stays at the records' size).
     BulkVector<Bounds> bounds(nodes_.size());
-    size_t released = 0;
+    uintptr_t released = 0;
     for (size_t l0 = 0; l0 < leaves.size();) {
         size_t l1 = l0;
         while (l1 < leaves.size() && firstPhoton[l1] - firstPhoton[l0] < kReleaseChunk) ++l1;

@@ -1,5 +1,5 @@
 // kd-tree build (median partitions in place, TBB tasks over subtrees), validation,
-// and the k-nearest / single-nearest photon searches.
+// and the order checks (searches: photon_store.h).
 #include "pmap/kdtree.h"
 
 #include <fmt/format.h>
@@ -11,7 +11,6 @@
 #include <limits>
 
 #include "pmap/kdtree_select.h"
-#include "pmap/kdtree_walk.h"
 #include "util/bulk_memory.h"
 #include "util/error.h"
 
@@ -213,33 +212,6 @@ std::string checkKdTreeOrder(std::span<const Photon> tree) {
     if (const size_t bad = firstMisplaced(tree.data(), n, 1, lo, hi))
         return misplacedPhoton(bad - 1);
     return {};
-}
-
-namespace {
-// walkKdTree over a tree in memory (whose order was checked at load, or built here).
-struct InMemoryTree {
-    static constexpr bool kCheckOrder = false;
-    const Photon* photons;
-    const Photon& at(size_t i) const { return photons[i]; }
-    void prefetch(size_t i) const { __builtin_prefetch(photons + i); }
-    bool accepts(const Photon&) const { return true; }
-    void misplaced(size_t) const {}
-};
-}  // namespace
-
-size_t findNearestPhotons(std::span<const Photon> tree, const Vec3& pos, const Vec3* normal,
-                          float maxDist2, std::span<PhotonHit> out) {
-    return findNearestInKdTree(InMemoryTree{tree.data()}, tree.size(), pos, normal, maxDist2,
-                               out);
-}
-
-int64_t findNearestPhoton(std::span<const Photon> tree, const Vec3& pos, const Vec3* normal,
-                          float maxDist2, float* dist2Out) {
-    PhotonHit hit{};
-    if (findNearestPhotons(tree, pos, normal, maxDist2, std::span<PhotonHit>(&hit, 1)) == 0)
-        return -1;
-    if (dist2Out) *dist2Out = hit.dist2;
-    return hit.index;
 }
 
 }  // namespace rp::pmap

@@ -1,9 +1,8 @@
-// In-core balanced kd-tree over photons in RADIANCE's order (pmapkdt.c): an implicit
+// RADIANCE's kd-tree over photons (pmapkdt.c), the order of "3.1k" map files: an implicit
 // 1-based heap (children of node i at 2i and 2i+1), left-balanced, median split on the
-// axis of largest cell extent, split axis in each photon's flag byte. Memory order is file
-// order, so a loaded map needs no rebuild and a saved one is a valid RADIANCE kd-tree.
-// We keep our own tree rather than nanoflann for this file order and for 24 bytes/photon
-// (no separate index or node arrays). Density estimates live in density.h.
+// axis of largest cell extent, split axis in each photon's flag byte. Built here for
+// mkpmap's files and checked here when files are read; searches go through the photon
+// stores (photon_store.h), the out-of-core one walking this very order (kdtree_walk.h).
 #pragma once
 
 #include <cstddef>
@@ -50,7 +49,7 @@ void buildKdTreeInOrder(std::span<Photon> photons, const float lo[3], const floa
 void buildKdTreeInOrder(std::span<Photon> photons, bool parallel = true);
 
 // Returns the photons reordered into RADIANCE's kd-tree (heap) order: buildKdTreeInOrder,
-// then a gather into a new array (for maps searched in memory).
+// then a gather into a new array (maps built in memory: precomputation, tests).
 BulkVector<Photon> buildKdTree(std::vector<Photon> photons, bool parallel = true);
 
 // Size of the left subtree of a left-balanced complete tree with n nodes: all levels
@@ -77,18 +76,5 @@ std::string checkPhotonRecords(std::span<const Photon> tree, size_t first = 0);
 std::string misplacedPhoton(size_t index);
 // The order part of checkKdTree alone, for photons whose records pass checkPhotonRecords.
 std::string checkKdTreeOrder(std::span<const Photon> tree);
-
-// Finds up to out.size() nearest photons to `pos` with squared distance < maxDist2,
-// skipping photons facing away from `normal` (no filter when normal is null, as for volume
-// photons). As RADIANCE, once `out` is full the search radius shrinks to the furthest
-// photon kept. Returns the number found; out[0..n) is a max-heap on dist2, so out[0] is the
-// furthest photon found. No allocation.
-size_t findNearestPhotons(std::span<const Photon> tree, const Vec3& pos, const Vec3* normal,
-                          float maxDist2, std::span<PhotonHit> out);
-
-// Single nearest photon with squared distance < maxDist2 and passing the normal filter
-// (RADIANCE's find1Photon, used by precomputed maps). Returns its index or -1 if none.
-int64_t findNearestPhoton(std::span<const Photon> tree, const Vec3& pos, const Vec3* normal,
-                          float maxDist2, float* dist2Out = nullptr);
 
 }  // namespace rp::pmap

@@ -119,9 +119,6 @@ TEST(KdTree, DuplicatePositions) {
         in.push_back(makePhoton(Vec3(i % 3, 0.5, (i % 7) * 0.25), Vec3(0, 0, 1), {1, 1, 1}));
     auto tree = buildKdTree(in, true);
     EXPECT_EQ(checkKdTree(tree), "");
-    PhotonHit hits[600];
-    Vec3 q(1, 0.5, 0.5);
-    EXPECT_EQ(findNearestPhotons(tree, q, nullptr, 1e30f, hits), 500u);
 }
 
 TEST(KdTree, CheckDetectsBrokenOrder) {
@@ -132,81 +129,6 @@ TEST(KdTree, CheckDetectsBrokenOrder) {
     broken = tree;
     broken[5].flags |= 3;  // split axis 3 does not exist
     EXPECT_NE(checkKdTree(broken), "");
-}
-
-// Brute force with the same single-precision arithmetic as the search.
-std::vector<float> bruteForce(std::span<const Photon> tree, const Vec3& pos, const Vec3* n,
-                              float maxDist2, size_t k) {
-    const float q[3] = {float(pos.x), float(pos.y), float(pos.z)};
-    std::vector<float> d;
-    for (const Photon& p : tree) {
-        const float dx = q[0] - p.pos[0], dy = q[1] - p.pos[1], dz = q[2] - p.pos[2];
-        const float d2 = dx * dx + dy * dy + dz * dz;
-        if (!(d2 < maxDist2)) continue;
-        if (n && !(float(n->x) * p.norm[0] + float(n->y) * p.norm[1] + float(n->z) * p.norm[2] >
-                   kNormalTolerance))
-            continue;
-        d.push_back(d2);
-    }
-    std::sort(d.begin(), d.end());
-    if (d.size() > k) d.resize(k);
-    return d;
-}
-
-TEST(KdTree, KNearestEqualsBruteForce) {
-    std::mt19937 rng(42);
-    std::uniform_real_distribution<double> u(-1.2, 1.2);
-    for (size_t n : {0u, 1u, 2u, 5u, 64u, 1000u, 5000u}) {
-        auto tree = buildKdTree(randomPhotons(n, static_cast<uint32_t>(n) + 1), n > 1000);
-        for (size_t k : {1u, 2u, 10u, 50u, 500u, 6000u}) {
-            std::vector<PhotonHit> hits(k);
-            for (float maxDist2 : {std::numeric_limits<float>::infinity(), 0.05f}) {
-                for (int trial = 0; trial < 20; ++trial) {
-                    Vec3 q(u(rng), u(rng) * 0.5, u(rng) * 0.25);
-                    Vec3 nrm = normalize(Vec3(u(rng), u(rng), u(rng)));
-                    const Vec3* np = trial % 2 ? &nrm : nullptr;
-                    size_t found = findNearestPhotons(tree, q, np, maxDist2, hits);
-                    auto want = bruteForce(tree, q, np, maxDist2, k);
-                    ASSERT_EQ(found, want.size()) << "n=" << n << " k=" << k;
-                    std::vector<float> got;
-                    for (size_t i = 0; i < found; ++i) {
-                        got.push_back(hits[i].dist2);
-                        // Max-heap on dist2.
-                        if (i) {
-                            ASSERT_LE(hits[i].dist2, hits[(i - 1) / 2].dist2);
-                        }
-                        // Each hit's distance is that of the photon it names.
-                        const Photon& p = tree[hits[i].index];
-                        const float dx = float(q.x) - p.pos[0], dy = float(q.y) - p.pos[1],
-                                    dz = float(q.z) - p.pos[2];
-                        ASSERT_EQ(hits[i].dist2, dx * dx + dy * dy + dz * dz);
-                    }
-                    std::sort(got.begin(), got.end());
-                    ASSERT_EQ(got, want) << "n=" << n << " k=" << k << " trial=" << trial;
-                }
-            }
-        }
-    }
-}
-
-TEST(KdTree, SingleNearestEqualsBruteForce) {
-    auto tree = buildKdTree(randomPhotons(3000, 77), false);
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<double> u(-1, 1);
-    for (int t = 0; t < 200; ++t) {
-        Vec3 q(u(rng), u(rng), u(rng));
-        Vec3 nrm = normalize(Vec3(u(rng), u(rng), u(rng)));
-        float d2 = -1;
-        int64_t idx = findNearestPhoton(tree, q, &nrm, 0.1f, &d2);
-        auto want = bruteForce(tree, q, &nrm, 0.1f, 1);
-        if (want.empty()) {
-            EXPECT_EQ(idx, -1);
-        } else {
-            ASSERT_GE(idx, 0);
-            EXPECT_EQ(d2, want[0]);
-        }
-    }
-    EXPECT_EQ(findNearestPhoton(std::span<const Photon>(), Vec3(), nullptr, 1.0f), -1);
 }
 
 }  // namespace
