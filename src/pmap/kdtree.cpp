@@ -144,12 +144,31 @@ namespace {
 // Depth-first over the implicit tree with the cell's bounds changed in place and restored
 // on the way back (no per-node copies: a map load checks every photon). Returns the
 // 1-based node of the first photon outside its ancestors' splits, or 0.
+// Subtrees of at least this many nodes are checked as TBB tasks.
+constexpr size_t kCheckGrain = size_t{1} << 16;
+
 size_t firstMisplaced(const Photon* tree, size_t n, size_t node, float lo[3], float hi[3]) {
     const Photon& p = tree[node - 1];
     for (int a = 0; a < 3; ++a)
         if (!(p.pos[a] >= lo[a] && p.pos[a] <= hi[a])) return node;
     const int axis = p.discr();
     const float v = p.pos[axis];
+    // A subtree rooted at depth d holds about n / 2^d nodes: large ones in parallel, each
+    // with its own cell; the smaller misplaced node of the two is reported either way, so
+    // the message does not depend on threads.
+    if (2 * node + 1 <= n && (n >> std::bit_width(node)) >= kCheckGrain) {
+        float lhi[3] = {hi[0], hi[1], hi[2]}, rlo[3] = {lo[0], lo[1], lo[2]};
+        float llo[3] = {lo[0], lo[1], lo[2]}, rhi[3] = {hi[0], hi[1], hi[2]};
+        lhi[axis] = v;
+        rlo[axis] = v;
+        size_t left = 0, right = 0;
+        tbb::task_group group;
+        group.run([&] { left = firstMisplaced(tree, n, 2 * node, llo, lhi); });
+        right = firstMisplaced(tree, n, 2 * node + 1, rlo, rhi);
+        group.wait();
+        if (left && right) return std::min(left, right);
+        return left ? left : right;
+    }
     if (2 * node <= n) {
         const float old = hi[axis];
         hi[axis] = v;

@@ -131,5 +131,19 @@ TEST(KdTree, CheckDetectsBrokenOrder) {
     EXPECT_NE(checkKdTree(broken), "");
 }
 
+// Large trees are checked in parallel subtrees: damage in either half is found, and the
+// message (the smaller misplaced node) does not depend on which task finished first.
+TEST(KdTree, ParallelOrderCheckFindsDamageInEitherHalf) {
+    const auto tree = buildKdTree(randomPhotons(300000, 21), true);
+    EXPECT_EQ(checkKdTreeOrder(tree), "");
+    for (size_t i : {size_t{70000}, size_t{200000}}) {  // under the left and right halves
+        auto broken = tree;
+        std::swap(broken[i], broken[i + 4000]);
+        const std::string a = checkKdTreeOrder(broken), b = checkKdTreeOrder(broken);
+        EXPECT_NE(a, "") << i;
+        EXPECT_EQ(a, b);
+    }
+}
+
 }  // namespace
 }  // namespace rp::pmap

@@ -1,6 +1,7 @@
-// The out-of-core store on damaged files: a record out of place, a bad record and a file
+// Damaged map files: out of core, a record out of place, a bad record and a file
 // truncated after opening are each reported, naming the file, by the search that reads
-// them. (Its answers against brute force are in photon_store_test.cpp.)
+// them; in core, the same damage is refused at opening. (Answers against brute force are
+// in photon_store_test.cpp.)
 #include "pmap/ooc_store.h"
 
 #include <gtest/gtest.h>
@@ -92,6 +93,21 @@ TEST_F(OutOfCoreBadFile, SwappedRecordsFailTheSearchThatReachesThem) {
     write();
     msg = searchError(openOutOfCore(f_));
     EXPECT_NE(msg.find("not a valid kd-tree"), std::string::npos) << msg;
+}
+
+// In core the whole map is read at opening, its records and its order checked then.
+TEST_F(OutOfCoreBadFile, InCoreOpeningRefusesWhatOutOfCoreSearchesRefuse) {
+    swapRecords(300, 600);
+    write();
+    const std::string msg = errorOf([&] { PhotonMap::open(f_, StoreOptions{}); });
+    EXPECT_NE(msg.find(f_), std::string::npos) << msg;
+    EXPECT_NE(msg.find("not a valid kd-tree"), std::string::npos) << msg;
+    data_ = slurp(f_);
+    swapRecords(300, 600);
+    data_[records_ + 500 * 27 + 26] = 3;
+    write();
+    EXPECT_NE(errorOf([&] { PhotonMap::open(f_, StoreOptions{}); }).find("photon 500 has split axis 3"),
+              std::string::npos);
 }
 
 TEST_F(OutOfCoreBadFile, BadRecordsFailAtOpeningOrInTheSearch) {

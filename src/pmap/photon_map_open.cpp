@@ -97,9 +97,10 @@ PhotonMap PhotonMap::open(const std::string& path, const StoreOptions& options,
         map.store_ = std::make_shared<OutOfCoreStore>(path, uint64_t(records), n, std::move(o));
         return map;
     }
-    // The store searches by its own tree, so the file's kd-tree order is not needed (and
-    // its check, a walk over every photon, is skipped); every record is checked.
-    map.readPhotons(in, path, TreeOrder::Unchecked);
+    // The store searches by its own tree, not the file's, but a file whose order is broken
+    // is damaged, and what else is wrong in it cannot be known: refused, as out of core
+    // (and by pmapdump). Every record is checked too.
+    map.readPhotons(in, path, TreeOrder::Checked);
     BulkVector<Photon> records = std::move(map.photons_);
     map.photons_ = {};
     if (keep) {
