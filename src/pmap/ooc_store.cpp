@@ -61,7 +61,7 @@ public:
         const uint64_t first = page * page_;
         const size_t count = static_cast<size_t>(std::min<uint64_t>(page_, nonResident() - first));
         tags_[way] = ~uint64_t{0};  // invalid until read and checked
-        store_.readPhotons(store_.resident_.size() + first, count, &data_[way * page_]);
+        store_.readPhotons(store_.resident_.size() + first, count, &data_[way * page_], raw_);
         tags_[way] = page;
         used_[way] = ++clock_;
         return data_[way * page_ + i % page_];
@@ -79,6 +79,7 @@ private:
     std::vector<uint64_t> used_;  // last use, for replacement
     uint64_t clock_ = 0;
     BulkVector<Photon> data_;
+    std::vector<unsigned char> raw_;  // a page's records as read
 };
 
 struct OutOfCoreStore::Reader {
@@ -109,9 +110,10 @@ OutOfCoreStore::OutOfCoreStore(const std::string& path, uint64_t offset, uint64_
                          fmt::format("can't open photon map file: {}", std::strerror(errno)));
     try {
         resident_.resize(wholeLevels(options_.residentPhotons, n_));
+        std::vector<unsigned char> raw;
         for (uint64_t i = 0; i < resident_.size(); i += kReadChunkPhotons)
             readPhotons(i, std::min<uint64_t>(kReadChunkPhotons, resident_.size() - i),
-                        resident_.data() + i);
+                        resident_.data() + i, raw);
     } catch (...) {
         ::close(fd_);
         throw;
@@ -122,8 +124,9 @@ OutOfCoreStore::~OutOfCoreStore() {
     if (fd_ >= 0) ::close(fd_);
 }
 
-void OutOfCoreStore::readPhotons(uint64_t first, size_t count, Photon* dst) const {
-    std::vector<unsigned char> buf(count * kPhotonRecordSize);
+void OutOfCoreStore::readPhotons(uint64_t first, size_t count, Photon* dst,
+                                 std::vector<unsigned char>& buf) const {
+    buf.resize(count * kPhotonRecordSize);
     const size_t want = buf.size();
     size_t got = 0;
     const off_t at = static_cast<off_t>(offset_ + first * kPhotonRecordSize);

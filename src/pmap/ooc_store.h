@@ -64,8 +64,10 @@ public:
 private:
     class PageCache;  // a cursor's pages (ooc_store.cpp)
     struct Reader;    // the kd-tree walk's view of the photons through a cursor
-    // Reads, decodes and checks photons [first, first + count) into dst.
-    void readPhotons(uint64_t first, size_t count, Photon* dst) const;
+    // Reads, decodes and checks photons [first, first + count) into dst (`buf` holds the
+    // records as read).
+    void readPhotons(uint64_t first, size_t count, Photon* dst,
+                     std::vector<unsigned char>& buf) const;
 
     std::string path_;
     int fd_ = -1;
