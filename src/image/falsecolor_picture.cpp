@@ -197,8 +197,8 @@ std::pair<Extreme, Extreme> findExtrema(const Picture& in) {
     Extreme lo, hi;
     lo.c = toColr(1e30f, 1e30f, 1e30f);
     hi.c = toColr(0.f, 0.f, 0.f);
-    for (int y = 0; y < in.height; ++y) {
-        int row = in.height - 1 - y;
+    for (int row = 0; row < in.height; ++row) {  // pextrem reads the top scanline first
+        int y = in.height - 1 - row;
         for (int x = in.width - 1; x >= 0; --x) {
             Colr c = toColr(in.at(x, row));
             if (c[3] > hi.c[3] || (c[3] == hi.c[3] && normBright(c) > normBright(hi.c))) hi = {x, y, c};
