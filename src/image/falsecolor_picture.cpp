@@ -128,13 +128,12 @@ void addLegendText(const FalseColorOptions& o, const LegendGeometry& g,
         // Label i-1 centred on sheight*(count-i) + sheight/2 (the unit label at i = 0 one
         // division above the top value); pcompos reads the position with atoi.
         int centre = static_cast<int>(g.sheight * (count - i) + g.sheight * 0.5);
-        Picture t = textPicture(texts[i], g.textHeight, white, black);
-        int y = centre - t.height / 2;
-        auto ink = [](const Pixel& p) { return packedBright(p) > 0.5; };
-        shadows.push_back({t, 2, y - 1, ink});
-        shadows.back().pic = textPicture(texts[i], g.textHeight, black, white);
-        shadows.back().keep = [](const Pixel& p) { return packedBright(p) < 0.1; };
-        inks.push_back({std::move(t), 0, y, ink});
+        int y = centre - g.textHeight / 2;
+        // pcompos thresholds: -t .5 keeps the white strokes, +t .1 the inverted ones.
+        shadows.push_back({textPicture(texts[i], g.textHeight, black, white), 2, y - 1,
+                           [](const Pixel& p) { return packedBright(p) < 0.1; }});
+        inks.push_back({textPicture(texts[i], g.textHeight, white, black), 0, y,
+                        [](const Pixel& p) { return packedBright(p) > 0.5; }});
     }
     for (Layer& l : shadows) layers.push_back(std::move(l));
     for (Layer& l : inks) layers.push_back(std::move(l));
