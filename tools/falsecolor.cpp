@@ -1,0 +1,30 @@
+// falsecolor: RADIANCE's false-colour luminance pictures with a legend
+// (see src/image/falsecolor.h for the mapping, legend and options).
+//   falsecolor [-i input.hdr] [-p picture|-ip picture] [-s scale|a] [-n ndivs] [-l label]
+//              [-m mult] [-d decimals] [-log decades] [-pal palette] [-r expr -g expr
+//              -b expr] [-cl|-cb|-cp] [-e] [-lw width] [-lh height] [-palettes] > out.hdr
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "image/falsecolor.h"
+#include "util/error.h"
+#include "util/header.h"
+
+int main(int argc, char** argv) {
+    try {
+        std::vector<std::string> args(argv + 1, argv + argc);
+        rp::FalseColorOptions opt = rp::parseFalseColorArgs(args);
+        std::ios::sync_with_stdio(false);
+        rp::runFalseColor(opt, rp::commandLine(argc, argv), std::cin, std::cout);
+        std::cout.flush();
+        if (!std::cout) throw rp::InputError("error writing standard output");
+        return 0;
+    } catch (const rp::InputError& e) {
+        std::cerr << "falsecolor: " << e.what() << '\n';
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "falsecolor: " << e.what() << '\n';
+        return 2;
+    }
+}
