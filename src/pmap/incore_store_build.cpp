@@ -48,11 +48,10 @@ constexpr size_t kReleaseChunk = size_t{1} << 16;
 // above those in cells above it: each split is a true plane.
 struct Grid {
     float lo[3], scale[3];
-    uint32_t cellOf(float v, int a) const {
-        const float c = (v - lo[a]) * scale[a];
+    uint32_t cell(const Photon& p, int a) const {
+        const float c = (p.pos[a] - lo[a]) * scale[a];
         return c > 0 ? std::min(kMaxCell, static_cast<uint32_t>(c)) : 0;  // NaN -> 0
     }
-    uint32_t cell(const Photon& p, int a) const { return cellOf(p.pos[a], a); }
 };
 
 // kSpread8[b]: bit i of byte b moved to bit 3i.

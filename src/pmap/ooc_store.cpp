@@ -148,7 +148,6 @@ void OutOfCoreStore::readPhotons(uint64_t first, size_t count, Photon* dst,
                 throw InputError(SourceLoc{path_, 0},
                                  fmt::format("photon refers to primary ray {} of {}",
                                              dst[j].primary, options_.numPrimaries));
-    pagesRead_.fetch_add(1, std::memory_order_relaxed);
 }
 
 std::unique_ptr<PhotonStore::Cursor> OutOfCoreStore::makeCursor() const {
@@ -181,7 +180,5 @@ std::string OutOfCoreStore::describe() const {
     return fmt::format("out of core ({} photons resident, {} cached per thread in pages of {})",
                        resident_.size(), options_.cachePhotons, options_.pagePhotons);
 }
-
-uint64_t OutOfCoreStore::pagesRead() const { return pagesRead_.load(); }
 
 }  // namespace rp::pmap

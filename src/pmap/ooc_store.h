@@ -17,7 +17,6 @@
 // instead of a SIGBUS.
 #pragma once
 
-#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -58,9 +57,6 @@ public:
     size_t memoryBytes() const override { return resident_.capacity() * sizeof(Photon); }
     std::string describe() const override;
 
-    // Pages read from the file by all cursors so far (for benchmarks and tests).
-    uint64_t pagesRead() const;
-
 private:
     class PageCache;  // a cursor's pages (ooc_store.cpp)
     struct Reader;    // the kd-tree walk's view of the photons through a cursor
@@ -75,7 +71,6 @@ private:
     uint64_t n_ = 0;
     Options options_;
     BulkVector<Photon> resident_;  // photons [0, resident_.size())
-    mutable std::atomic<uint64_t> pagesRead_{0};
 };
 
 }  // namespace rp::pmap

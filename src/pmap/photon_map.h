@@ -133,8 +133,8 @@ public:
     // whole map's, as RADIANCE's do. photons() stays empty.
     static PhotonMap open(const std::string& path, const StoreOptions& options,
                           const std::vector<bool>* trackedSources = nullptr);
-    // The kd-tree order check that read() skips with TreeOrder::Unchecked, for a map that
-    // turns out to need it after all; throws the same InputError naming `what`.
+    // The kd-tree order check that read() skips with TreeOrder::Unchecked (a caller that
+    // checks later); throws the same InputError naming `what`.
     void checkTreeOrder(const std::string& what) const;
 
 private:

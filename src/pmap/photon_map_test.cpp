@@ -326,11 +326,11 @@ TEST_F(BadFile, CorruptTreeOrder) {
     d.replace(rec, 27, b);
     d.replace(rec + 27, 27, a);
     EXPECT_NE(load(d).find("not a valid kd-tree"), std::string::npos);
-    // The renderer, which searches through its own index, skips the order check only.
+    // TreeOrder::Unchecked skips the order check only.
     std::istringstream in(d);
     const PhotonMap unchecked = PhotonMap::read(in, "swapped.pm", PhotonMap::TreeOrder::Unchecked);
     EXPECT_EQ(unchecked.size(), 1000u);
-    // ... and checks it later for a map it will walk after all (caustic maps).
+    // ... which checkTreeOrder makes later.
     try {
         unchecked.checkTreeOrder("swapped.pm");
         FAIL() << "bad order accepted";

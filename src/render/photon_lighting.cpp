@@ -6,7 +6,6 @@
 #include <cctype>
 #include <exception>
 #include <filesystem>
-#include <iterator>
 #include <string>
 
 #include "util/dir_code.h"
