@@ -1,7 +1,10 @@
-// mkpmap: generate RADIANCE photon maps (see src/pmap/mkpmap.h).
+// mkpmap: generate RADIANCE photon maps (see src/pmap/mkpmap.h). Under mpirun (the build
+// in tools/mpi/) every rank traces its share and the first writes the maps.
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 
+#include "cluster_main.h"
 #include "gen/builtin_commands.h"
 #include "pmap/mkpmap.h"
 #include "pmap/mkpmap_options.h"
@@ -12,26 +15,35 @@
 int main(int argc, char** argv) {
     std::ostream* diag = &std::cerr;
     std::ofstream diagFile;
+    std::unique_ptr<rp::Cluster> cluster;
     try {
+        cluster = rp::tools::startCluster(argc, argv);
         rp::pmap::MkpmapOptions opt = rp::pmap::parseMkpmapArgs(argc, argv);
-        if (!opt.diagnosticsFile.empty()) {
+        if (!opt.diagnosticsFile.empty() && cluster->isRoot()) {
             // RADIANCE mkpmap -e: diagnostics appended to the file.
             diagFile.open(opt.diagnosticsFile, std::ios::app);
             if (!diagFile) {
                 std::cerr << "mkpmap: cannot open diagnostics file " << opt.diagnosticsFile
                           << '\n';
-                return 2;
+                return rp::tools::endRun(*cluster, 2);
             }
             diag = &diagFile;
             *diag << "*** " << rp::commandLine(argc, argv) << '\n';
         }
         rp::setWarningSink([diag](const std::string& m) { *diag << "mkpmap: warning: " << m << '\n'; });
-        rp::pmap::runMkpmap(opt, rp::commandLine(argc, argv), *diag,
-                            rp::gen::builtinLoadOptions());
+        rp::tools::quietUnlessRoot(*cluster);
+        const rp::pmap::MkpmapReport report = rp::pmap::runMkpmap(
+            opt, rp::commandLine(argc, argv), *diag, rp::gen::builtinLoadOptions(), cluster.get());
+        if (std::getenv("RADPHOTON_STATS") && cluster->isRoot())  // for bench/mpi_scaling.sh
+            std::cerr << "mkpmap: " << report.storingSeconds << " s storing on the root\n";
         return 0;
     } catch (const rp::InputError& e) {
-        *diag << "mkpmap: " << e.what() << '\n';
-        if (diag != &std::cerr) std::cerr << "mkpmap: " << e.what() << '\n';
-        return 1;
+        rp::LocalCluster alone;
+        rp::Cluster& c = cluster ? *cluster : alone;
+        const std::string line = rp::tools::errorPrefix(c, "mkpmap") + e.what();
+        *diag << line << '\n';
+        if (diag != &std::cerr) std::cerr << line << '\n';
+        diag->flush();
+        return rp::tools::endRun(c, 1);
     }
 }

@@ -1,13 +1,16 @@
 // rcontrib: contributions of tracked modifiers (light sources, sky patches) to rays from
 // standard input (RADIANCE rcontrib.1), classic or from a contribution photon map (-ap).
 // Options in src/render/rcontrib_options.h, the tally in rcontrib.h, outputs in
-// rcontrib_output.h, the loop in rcontrib_run.h.
+// rcontrib_output.h, the loop in rcontrib_run.h. Under mpirun (the build in tools/mpi/)
+// the first rank reads the rays and writes the outputs, every rank traces.
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "calc/search_path.h"
+#include "cluster_main.h"
 #include "gen/builtin_commands.h"
 #include "geometry/scene_geometry.h"
 #include "material/mist_probe.h"
@@ -41,11 +44,12 @@ std::vector<std::string> sceneHeaderLines(const std::string& file) {
     return lines;
 }
 
-int run(RcontribOptions o) {
+int run(RcontribOptions o, rp::Cluster& cluster) {
     const bool warnings = o.render.warnings;
     rp::setWarningSink([warnings](const std::string& m) {
         if (warnings) std::cerr << "rcontrib: warning: " << m << '\n';
     });
+    rp::tools::quietUnlessRoot(cluster);
     const auto threads = threadLimit(o.render);
     for (const ContribModifier& m : o.modifiers) o.render.contribModifiers.push_back(m.name);
     rp::Scene scene = rp::loadScene({o.sceneFile}, rp::gen::builtinLoadOptions());
@@ -65,7 +69,9 @@ int run(RcontribOptions o) {
             rp::warn("photon density estimate bandwidth too low, contributions may be underestimated");
     }
     ContribTargets targets(scene, o.modifiers, o.definitions, o.contributions, sources);
-    ContribOutput output(o, sceneHeaderLines(o.sceneFile), std::cout);
+    // Only the root writes (and with -r reads) the outputs.
+    std::optional<ContribOutput> output;
+    if (cluster.isRoot()) output.emplace(o, sceneHeaderLines(o.sceneFile), std::cout);
     RendererTracer tracer(renderer, o.immediateIrradiance);
 
     RcontribRunSettings s;
@@ -78,12 +84,13 @@ int run(RcontribOptions o) {
     s.reportSeconds = o.reportSeconds;
     s.progress = &std::cerr;
     s.values = targets.size();
+    s.cluster = &cluster;
     // RADIANCE compat (rcontrib.c rcinit): -r continues binary records, or with -c 0
     // adds to the totals the outputs hold.
-    if (o.recover && o.accumulate <= 0) s.totals = output.reload();
-    else if (o.recover) s.skipRecords = output.recover();
-    runRcontrib(s, std::cin, output, tracer.contributions(targets));
-    targets.badBins().report();
+    if (output && o.recover && o.accumulate <= 0) s.totals = output->reload();
+    else if (output && o.recover) s.skipRecords = output->recover();
+    runRcontrib(s, std::cin, output ? &*output : nullptr, tracer.contributions(targets));
+    if (cluster.isRoot()) targets.badBins().report();
     return 0;
 }
 
@@ -91,20 +98,25 @@ int run(RcontribOptions o) {
 
 int main(int argc, char** argv) {
     std::ios::sync_with_stdio(false);
+    std::unique_ptr<rp::Cluster> cluster;
+    rp::LocalCluster alone;
+    auto fail = [&](const std::string& what, int code) {
+        std::cout.flush();
+        rp::Cluster& c = cluster ? *cluster : alone;
+        std::cerr << rp::tools::errorPrefix(c, "rcontrib") << what << std::endl;
+        return rp::tools::endRun(c, code);
+    };
     try {
+        cluster = rp::tools::startCluster(argc, argv);
         RcontribOptions o = parseRcontribArgs(argVector(argc, argv), &evalBinCount);
         if (o.printDefaults) {
-            std::cout << formatRcontribDefaults(o);
+            if (cluster->isRoot()) std::cout << formatRcontribDefaults(o);
             return 0;
         }
-        return run(o);
+        return run(o, *cluster);
     } catch (const rp::InputError& e) {
-        std::cout.flush();
-        std::cerr << "rcontrib: " << e.what() << '\n';
-        return 1;
+        return fail(e.what(), 1);
     } catch (const std::exception& e) {
-        std::cout.flush();
-        std::cerr << "rcontrib: internal error: " << e.what() << '\n';
-        return 2;
+        return fail(std::string("internal error: ") + e.what(), 2);
     }
 }

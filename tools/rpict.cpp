@@ -1,6 +1,8 @@
 // rpict: render a RADIANCE picture of a scene (RADIANCE rpict.1). Options in
 // src/render/rpict_options.h, the picture loop in rpict.h, the renderer in renderer.h.
 //   rpict [options] [@file] [$EVAR] scene.oct|scene.rad ...
+// Under mpirun (the build in tools/mpi/) every rank traces its share of the scanlines and
+// the first writes the picture.
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "calc/search_path.h"
+#include "cluster_main.h"
 #include "gen/builtin_commands.h"
 #include "geometry/scene_geometry.h"
 #include "image/view.h"
@@ -30,17 +33,18 @@ namespace {
 
 using namespace rp::render;
 
-int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
+int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile,
+        rp::Cluster& cluster) {
     std::vector<std::string> args = argVector(argc, argv);
     args.erase(args.begin());
     RpictCommand cmd = parseRpictCommand(args);
     const RpictOptions& o = cmd.options;
     if (cmd.printVersion) {
-        std::cout << kSoftwareName << '\n';
+        if (cluster.isRoot()) std::cout << kSoftwareName << '\n';
         return 0;
     }
     if (cmd.printDefaults) {
-        std::cout << formatRpictDefaults(o);
+        if (cluster.isRoot()) std::cout << formatRpictDefaults(o);
         return 0;
     }
     // RADIANCE compat (rpmain.c fixargv0 + printargs): the header's command line starts
@@ -49,7 +53,7 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
     std::vector<const char*> headerArgs(argv, argv + headerCount);
     headerArgs[0] = "rpict";
     const std::string commandLine = rp::commandLine(int(headerArgs.size()), headerArgs.data());
-    if (!o.render.errorFile.empty()) {
+    if (!o.render.errorFile.empty() && cluster.isRoot()) {
         // RADIANCE compat (rpmain.c -e): diagnostics appended to the file.
         diagFile.open(o.render.errorFile, std::ios::app);
         if (!diagFile) throw rp::InputError("cannot open error file " + o.render.errorFile);
@@ -61,6 +65,7 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
     rp::setWarningSink([warnTo, warnings](const std::string& m) {
         if (warnings) *warnTo << "rpict: warning: " << m << '\n';
     });
+    rp::tools::quietUnlessRoot(cluster);
     // RADIANCE reads the octree from standard input without a scene argument; we need
     // the scene to be named (use "-" for standard input).
     if (cmd.sceneFiles.empty()) throw rp::InputError("missing scene file");
@@ -89,6 +94,7 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
         biasReport();
     };
     RpictIo io;
+    io.cluster = &cluster;
     io.views = &std::cin;
     io.out = &std::cout;
     io.commandLine = commandLine;
@@ -96,14 +102,19 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
         // RADIANCE compat (rpict.c): with -t, each frame is announced with its view.
         if (o.reportInterval > 0) *diag << "FRAME " << frame << ":" << rp::formatView(view) << std::endl;
     };
+    // The -af file is written by one process only: with other ranks, the root's records.
+    auto keepAmbient = [&] {
+        if (cluster.isRoot()) renderer.flushAmbientFile();
+    };
     try {
-        runRpict(o, rendererPixelTracers(renderer), progress, io);
+        runRpict(o, rendererPixelTracers(renderer), cluster.isRoot() ? progress : ProgressCallback{},
+                 io);
     } catch (...) {
-        renderer.flushAmbientFile();  // keep the records computed so far, as RADIANCE
+        keepAmbient();  // keep the records computed so far, as RADIANCE
         throw;
     }
-    renderer.flushAmbientFile();
-    if (o.reportInterval > 0) biasReport();
+    keepAmbient();
+    if (o.reportInterval > 0 && cluster.isRoot()) biasReport();
     return 0;
 }
 
@@ -112,11 +123,17 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile) {
 int main(int argc, char** argv) {
     std::ostream* diag = &std::cerr;
     std::ofstream diagFile;
+    std::unique_ptr<rp::Cluster> cluster;
     try {
-        return run(argc, argv, diag, diagFile);
+        cluster = rp::tools::startCluster(argc, argv);
+        return run(argc, argv, diag, diagFile, *cluster);
     } catch (const rp::InputError& e) {
-        *diag << "rpict: " << e.what() << '\n';
-        if (diag != &std::cerr) std::cerr << "rpict: " << e.what() << '\n';
-        return 1;
+        rp::LocalCluster alone;
+        rp::Cluster& c = cluster ? *cluster : alone;
+        const std::string line = rp::tools::errorPrefix(c, "rpict") + e.what();
+        *diag << line << '\n';
+        if (diag != &std::cerr) std::cerr << line << '\n';
+        diag->flush();
+        return rp::tools::endRun(c, 1);
     }
 }

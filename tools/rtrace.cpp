@@ -1,5 +1,6 @@
 // rtrace: trace rays from standard input through a scene (RADIANCE rtrace.1). Options in
 // src/render/rtrace_options.h, input/output in rtrace_io.h, the loop in rtrace_run.h.
+// Under mpirun (the build in tools/mpi/) the first rank reads and writes, every rank traces.
 #include <cstdio>
 #include <fstream>
 #include <cstdlib>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "calc/search_path.h"
+#include "cluster_main.h"
 #include "gen/builtin_commands.h"
 #include "geometry/scene_geometry.h"
 #include "render/renderer.h"
@@ -29,14 +31,15 @@ std::string headerCommandLine(const rp::render::RtraceOptions& o) {
     return rp::commandLine(int(argv.size()), argv.data());
 }
 
-int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& diagFile) {
+int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& diagFile,
+        rp::Cluster& cluster) {
     using namespace rp::render;
-    if (!o.render.errorFile.empty()) {
+    if (!o.render.errorFile.empty() && cluster.isRoot()) {
         // RADIANCE compat (rtmain.c -e): diagnostics appended to the file.
         diagFile.open(o.render.errorFile, std::ios::app);
         if (!diagFile) {
             std::cerr << "rtrace: cannot open error file " << o.render.errorFile << '\n';
-            return 2;
+            return rp::tools::endRun(cluster, 2);
         }
         diag = &diagFile;
         *diag << "**************\n*** " << headerCommandLine(o) << ' ' << o.sceneFile << '\n';
@@ -46,6 +49,7 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     rp::setWarningSink([warnTo, warnings](const std::string& m) {
         if (warnings) *warnTo << "rtrace: warning: " << m << '\n';
     });
+    rp::tools::quietUnlessRoot(cluster);
     OutputSpec spec = parseOutputSpec(o.outputSpec, o.outputFormat);
 
     const auto threads = threadLimit(o.render);  // for the whole run, loading included
@@ -54,7 +58,7 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     Renderer renderer(scene, geometry, o.render, rp::calc::defaultSearchPath(rp::projectLibDir()));
 
     std::ostream& out = std::cout;
-    if (o.header) out << rtraceHeader(headerCommandLine(o), o.outputFormat);
+    if (o.header && cluster.isRoot()) out << rtraceHeader(headerCommandLine(o), o.outputFormat);
 
     // rtrace -I: the input origin is a surface point and the direction its normal.
     RendererTracer tracer(renderer, o.immediateIrradiance);
@@ -64,16 +68,21 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     settings.yres = o.yres;
     settings.threads = o.render.threads;
     settings.limitDistance = o.limitDistance;
+    settings.cluster = &cluster;
     RayWriter writer(spec, o.outputFormat, &scene);
     writer.setTraceFilter(o.trace);
+    // The -af file is written by one process only: with other ranks, the root's records.
+    auto keepAmbient = [&] {
+        if (cluster.isRoot()) renderer.flushAmbientFile();
+    };
     try {
         runRtrace(settings, std::cin, out, writer, tracer.trace());
     } catch (...) {
-        renderer.flushAmbientFile();  // keep the records computed so far, as RADIANCE
+        keepAmbient();  // keep the records computed so far, as RADIANCE
         throw;
     }
-    renderer.flushAmbientFile();
-    if (std::getenv("RADPHOTON_STATS"))  // run statistics for tuning and benchmarks
+    keepAmbient();
+    if (std::getenv("RADPHOTON_STATS") && cluster.isRoot())  // run statistics for tuning and benchmarks
         std::cerr << "rtrace: " << renderer.raysTraced() << " rays, "
                   << renderer.ambientRecords() << " ambient records\n";
     return 0;
@@ -85,17 +94,23 @@ int main(int argc, char** argv) {
     std::ios::sync_with_stdio(false);  // rays are read and written through iostreams only
     std::ostream* diag = &std::cerr;
     std::ofstream diagFile;
+    std::unique_ptr<rp::Cluster> cluster;
     try {
+        cluster = rp::tools::startCluster(argc, argv);
         rp::render::RtraceOptions o = rp::render::parseRtraceArgs(argc, argv);
         if (o.printDefaults) {
-            std::cout << rp::render::formatRtraceDefaults(o);
+            if (cluster->isRoot()) std::cout << rp::render::formatRtraceDefaults(o);
             return 0;
         }
-        return run(o, diag, diagFile);
+        return run(o, diag, diagFile, *cluster);
     } catch (const rp::InputError& e) {
         std::cout.flush();
-        *diag << "rtrace: " << e.what() << '\n';
-        if (diag != &std::cerr) std::cerr << "rtrace: " << e.what() << '\n';
-        return 1;
+        rp::LocalCluster alone;
+        rp::Cluster& c = cluster ? *cluster : alone;
+        const std::string line = rp::tools::errorPrefix(c, "rtrace") + e.what();
+        *diag << line << '\n';
+        if (diag != &std::cerr) std::cerr << line << '\n';
+        diag->flush();
+        return rp::tools::endRun(c, 1);
     }
 }

@@ -9,11 +9,9 @@
 #include <mutex>
 #include <ostream>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
+#include "pmap/chunk_stream.h"
 #include "pmap/distribute.h"
 #include "util/dir_code.h"
 #include "util/error.h"
@@ -82,41 +80,55 @@ private:
     std::atomic<uint64_t> emitted_{0}, stored_{0};
 };
 
-// `rays` (may be null): the plan to record each storing path's primary ray from.
-PathBatch traceRange(const PhotonTracer& tracer, tbb::task_arena& arena, uint64_t seed,
-                     uint64_t begin, uint64_t end, Reporter& reporter,
-                     const light::EmissionPlan* rays) {
-    if (end <= begin) return {};
+void encode(ByteWriter& w, const PathBatch& b) {
+    w.putVector(b.photons);
+    w.putVector(b.pathSizes);
+    w.putVector(b.rays);
+    w.put(b.runaways);
+}
+
+void decode(ByteReader& r, PathBatch& b) {
+    r.getVector(b.photons);
+    r.getVector(b.pathSizes);
+    r.getVector(b.rays);
+    b.runaways = r.get<long>();
+}
+
+// Traces [begin, end) over threads and ranks (chunk_stream.h); the root gets the paths in
+// index order. `rays` (may be null): the plan to record each storing path's primary ray
+// from.
+PathBatch traceRange(const PhotonTracer& tracer, tbb::task_arena& arena,
+                     const ContribSettings& s, uint64_t seed, uint64_t begin, uint64_t end,
+                     Reporter& reporter, const light::EmissionPlan* rays) {
+    PathBatch out;
+    if (end <= begin) return out;
     std::array<double, kNumPhotonMapTypes> all{};
     all.fill(1.0);
     const uint64_t chunks = (end - begin + kPhotonsPerChunk - 1) / kPhotonsPerChunk;
-    std::vector<PathBatch> batches(chunks);
-    arena.execute([&] {
-        tbb::parallel_for(
-            tbb::blocked_range<uint64_t>(0, chunks, 1),
-            [&](const tbb::blocked_range<uint64_t>& r) {
-                for (uint64_t c = r.begin(); c != r.end(); ++c) {
-                    const uint64_t i0 = begin + c * kPhotonsPerChunk;
-                    const uint64_t i1 = std::min(end, i0 + kPhotonsPerChunk);
-                    PhotonBins bins;
-                    auto& g = bins.maps[size_t(PhotonMapType::Global)];
-                    PathBatch& b = batches[c];
-                    for (uint64_t i = i0; i < i1; ++i) {
-                        const size_t before = g.size();
-                        tracer.trace(seed, i, all, bins);
-                        if (g.size() == before) continue;
-                        b.pathSizes.push_back(uint32_t(g.size() - before));
-                        if (rays) b.rays.push_back(primaryRay(*rays, seed, i));
-                    }
-                    b.photons = std::move(g);
-                    b.runaways = bins.runaways;
-                    reporter.add(i1 - i0, b.photons.size());
-                }
-            },
-            tbb::simple_partitioner());
-    });
-    PathBatch out;
-    for (PathBatch& b : batches) out.append(std::move(b));
+    streamChunks<PathBatch>(
+        s.cluster, arena, s.threads, chunks,
+        [&](uint64_t c) {
+            const uint64_t i0 = begin + c * kPhotonsPerChunk;
+            const uint64_t i1 = std::min(end, i0 + kPhotonsPerChunk);
+            PhotonBins bins;
+            auto& g = bins.maps[size_t(PhotonMapType::Global)];
+            PathBatch b;
+            for (uint64_t i = i0; i < i1; ++i) {
+                const size_t before = g.size();
+                tracer.trace(seed, i, all, bins);
+                if (g.size() == before) continue;
+                b.pathSizes.push_back(uint32_t(g.size() - before));
+                if (rays) b.rays.push_back(primaryRay(*rays, seed, i));
+            }
+            b.photons = std::move(g);
+            b.runaways = bins.runaways;
+            return b;
+        },
+        [&](uint64_t c, PathBatch& b) {
+            const uint64_t i0 = begin + c * kPhotonsPerChunk;
+            reporter.add(std::min(end, i0 + kPhotonsPerChunk) - i0, b.photons.size());
+            out.append(std::move(b));
+        });
     return out;
 }
 
@@ -159,16 +171,15 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
         PathBatch batch;
         uint64_t emitted = 0;
         uint64_t pass = std::max<uint64_t>(1, uint64_t(std::ceil(settings.preDistrib * srcTarget)));
-        bool ok = false;
+        uint64_t stored = 0;  // the root's count, known to every rank
         for (int prepass = 1; prepass <= settings.maxPrepass; ++prepass, pass *= 2) {
-            batch.append(
-                traceRange(tracer, arena, seed, emitted, emitted + pass, reporter, rays));
+            batch.append(traceRange(tracer, arena, settings, seed, emitted, emitted + pass,
+                                    reporter, rays));
             emitted += pass;
-            if (!batch.photons.empty()) {
-                ok = true;
-                break;
-            }
+            stored = broadcastValue(settings.cluster, uint64_t(batch.photons.size()));
+            if (stored > 0) break;
         }
+        const bool ok = stored > 0;
         if (!ok) {
             warn(sources[s].loc, "too many prepasses, no photons from source " + sources[s].name);
             result.emitted[s] = emitted;
@@ -177,10 +188,10 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
             continue;
         }
         // Main pass: emit the rest so that the source stores about its share.
-        const double ratio = srcTarget / double(batch.photons.size());
+        const double ratio = srcTarget / double(stored);
         const uint64_t total =
             std::max(emitted, uint64_t(std::ceil(double(emitted) * std::max(1.0, ratio))));
-        batch.append(traceRange(tracer, arena, seed, emitted, total, reporter, rays));
+        batch.append(traceRange(tracer, arena, settings, seed, emitted, total, reporter, rays));
         result.emitted[s] = total;
         result.stored[s] = batch.photons.size();
         result.totalEmitted += total;
@@ -209,7 +220,7 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
         }
         RP_CHECK(k == batch.photons.size());
     }
-    if (result.photons.empty())
+    if (broadcastValue(settings.cluster, uint64_t(result.photons.size())) == 0)
         throw InputError("empty contribution photon map (no photons stored from any source)");
     return result;
 }

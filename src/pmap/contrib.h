@@ -18,6 +18,7 @@
 #include "pmap/photon.h"
 #include "pmap/trace.h"
 #include "scene/primitive.h"
+#include "util/cluster.h"
 
 namespace rp::pmap {
 
@@ -30,6 +31,9 @@ struct ContribSettings {
     int reportSeconds = 0;     // -t (manual 4.4 line, stored photons under "global")
     std::ostream* progress = nullptr;
     bool primaryRays = false;  // -apCPD: keep where each primary left its source
+    // The ranks tracing together (null: this process alone); photons, primaries and
+    // per-source counts are the root's, the others return them empty.
+    Cluster* cluster = nullptr;
 };
 
 struct ContribResult {

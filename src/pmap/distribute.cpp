@@ -12,10 +12,9 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_pipeline.h>
-#include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
+#include "pmap/chunk_stream.h"
 #include "util/error.h"
 #include "util/temp_file.h"
 
@@ -40,10 +39,10 @@ public:
         passBegin_ = passBegin;
         passEnd_ = passEnd;
     }
-    void add(uint64_t emitted, const PhotonBins& bins) {
+    void add(uint64_t emitted, const std::array<uint64_t, kNumPhotonMapTypes>& stored) {
         emitted_.fetch_add(emitted, std::memory_order_relaxed);
-        for (size_t t = 0; t < bins.maps.size(); ++t)
-            stored_[t].fetch_add(bins.maps[t].size(), std::memory_order_relaxed);
+        for (size_t t = 0; t < stored.size(); ++t)
+            stored_[t].fetch_add(stored[t], std::memory_order_relaxed);
         if (settings_.reportSeconds > 0 && settings_.progress) maybeReport();
     }
     void setStored(const std::array<uint64_t, kNumPhotonMapTypes>& counts) {
@@ -111,46 +110,86 @@ Photon finalPhoton(const RawPhoton& s, double scale) {
     return p;
 }
 
-// Traces [begin, end) in chunks in parallel and hands each chunk's bins to `consume` in
-// index order (a serial in-order stage), so a chunk's memory is reused as soon as its
-// photons are stored instead of the whole pass being held (and its fresh memory faulted
-// in) first. The prepass and the main pass both run this way.
+// One chunk's deposits as traced, and how to send them to the root: raw in the prepass
+// (kept until the storage probabilities are known), final records in the main pass, made
+// where they are traced so that the root only appends them.
+struct Traced {
+    uint64_t photons = 0;
+    PhotonBins bins;
+    std::array<std::vector<Photon>, kNumPhotonMapTypes> final;
+
+    std::array<uint64_t, kNumPhotonMapTypes> counts() const {
+        std::array<uint64_t, kNumPhotonMapTypes> n{};
+        for (size_t t = 0; t < n.size(); ++t) n[t] = bins.maps[t].size() + final[t].size();
+        return n;
+    }
+};
+
+void encode(ByteWriter& w, const Traced& t) {
+    w.put(t.photons);
+    w.put(t.bins.runaways);
+    for (const auto& list : t.bins.maps) w.putVector(list);
+    for (const auto& list : t.final) w.putVector(list);
+}
+
+void decode(ByteReader& r, Traced& t) {
+    t.photons = r.get<uint64_t>();
+    t.bins.runaways = r.get<long>();
+    for (auto& list : t.bins.maps) r.getVector(list);
+    for (auto& list : t.final) r.getVector(list);
+}
+
+// Traces [begin, end) in chunks, in parallel over threads and ranks (chunk_stream.h),
+// and hands each chunk to `consume` on the root in index order, so a chunk's memory is
+// reused as soon as its photons are stored instead of the whole pass being held (and its
+// fresh memory faulted in) first. With `scale` (the main pass) the deposits come as final
+// records scaled by it. Returns the root's seconds storing (streamChunks).
 template <class Consume>
-void traceStreamed(const PhotonTracer& tracer, tbb::task_arena& arena, int threads,
-                   uint64_t seed, uint64_t begin, uint64_t end,
-                   const std::array<double, kNumPhotonMapTypes>& prob,
-                   const std::array<double, kNumPhotonMapTypes>& perPhoton, Consume consume) {
-    if (end <= begin) return;
+double traceStreamed(const PhotonTracer& tracer, tbb::task_arena& arena,
+                     const DistributionSettings& s, uint64_t begin, uint64_t end,
+                     const std::array<double, kNumPhotonMapTypes>& prob,
+                     const std::array<double, kNumPhotonMapTypes>& perPhoton,
+                     const std::array<double, kNumPhotonMapTypes>* scale, Consume consume) {
+    if (end <= begin) return 0;
     const uint64_t chunks = (end - begin + kPhotonsPerChunk - 1) / kPhotonsPerChunk;
-    uint64_t next = 0;
-    struct Traced {
-        uint64_t photons = 0;
-        PhotonBins bins;
-    };
-    using Token = std::shared_ptr<Traced>;  // TBB tokens must be copyable
+    return streamChunks<Traced>(
+        s.cluster, arena, s.threads, chunks,
+        [&](uint64_t c) {
+            Traced t;
+            const uint64_t i0 = begin + c * kPhotonsPerChunk;
+            const uint64_t i1 = std::min(end, i0 + kPhotonsPerChunk);
+            t.photons = i1 - i0;
+            reserveFor(t.bins, perPhoton, t.photons);
+            for (uint64_t i = i0; i < i1; ++i) tracer.trace(s.seed, i, prob, t.bins);
+            if (scale)
+                for (size_t m = 0; m < t.final.size(); ++m) {
+                    auto& raw = t.bins.maps[m];
+                    t.final[m].reserve(raw.size());
+                    for (const RawPhoton& r : raw) t.final[m].push_back(finalPhoton(r, (*scale)[m]));
+                    std::vector<RawPhoton>().swap(raw);
+                }
+            return t;
+        },
+        [&](uint64_t, const Traced& t) { consume(t); });
+}
+
+// Appends the kept prepass deposits of `block` (u < prob) to `out` as final records
+// scaled by `scale`, converted in parallel, appended in order.
+void thinBlock(std::span<const RawPhoton> block, double prob, double scale,
+               tbb::task_arena& arena, RecordStore<Photon>& out) {
+    std::vector<Photon> converted(block.size());
+    std::vector<uint8_t> keep(block.size());
     arena.execute([&] {
-        tbb::parallel_pipeline(
-            size_t(4 * std::max(1, threads)),
-            tbb::make_filter<void, uint64_t>(tbb::filter_mode::serial_in_order,
-                                             [&](tbb::flow_control& fc) -> uint64_t {
-                                                 if (next == chunks) fc.stop();
-                                                 return next < chunks ? next++ : 0;
-                                             }) &
-                tbb::make_filter<uint64_t, Token>(
-                    tbb::filter_mode::parallel,
-                    [&](uint64_t c) {
-                        auto t = std::make_shared<Traced>();
-                        uint64_t i0 = begin + c * kPhotonsPerChunk;
-                        uint64_t i1 = std::min(end, i0 + kPhotonsPerChunk);
-                        t->photons = i1 - i0;
-                        reserveFor(t->bins, perPhoton, t->photons);
-                        for (uint64_t i = i0; i < i1; ++i) tracer.trace(seed, i, prob, t->bins);
-                        return t;
-                    }) &
-                tbb::make_filter<Token, void>(
-                    tbb::filter_mode::serial_in_order,
-                    [&](const Token& t) { consume(t->photons, t->bins); }));
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, block.size(), 4096),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              for (size_t i = r.begin(); i != r.end(); ++i) {
+                                  keep[i] = double(block[i].u) < prob;
+                                  if (keep[i]) converted[i] = finalPhoton(block[i], scale);
+                              }
+                          });
     });
+    for (size_t i = 0; i < block.size(); ++i)
+        if (keep[i]) out.append(converted[i]);
 }
 
 // A store for map t's records: within the settings' budget, spilling beside the map's
@@ -162,7 +201,10 @@ RecordStore<Record> newStore(const DistributionSettings& s, size_t t) {
 }
 
 struct Prepass {
-    std::array<RecordStore<RawPhoton>, kNumPhotonMapTypes> deposits;  // all, in index order
+    // All deposits, in index order (on the root; other ranks only trace).
+    std::array<RecordStore<RawPhoton>, kNumPhotonMapTypes> deposits;
+    std::array<uint64_t, kNumPhotonMapTypes> stored{};  // deposits per map, on every rank
+    double storingSeconds = 0;
     uint64_t emitted = 0;
     int passes = 0;
     long runaways = 0;
@@ -193,20 +235,23 @@ Prepass runPrepass(const PhotonTracer& tracer, tbb::task_arena& arena,
         1, uint64_t(std::ceil(settings.preDistrib * double(minTarget))));
     for (;;) {
         progress.setPass(pre.emitted, pre.emitted + passSize);
-        traceStreamed(tracer, arena, settings.threads, settings.seed, pre.emitted,
-                      pre.emitted + passSize, all, perPhoton,
-                      [&](uint64_t photons, const PhotonBins& bins) {
-                          progress.add(photons, bins);
-                          pre.runaways += bins.runaways;
-                          for (size_t t : active)
-                              for (const RawPhoton& r : bins.maps[t]) pre.deposits[t].append(r);
-                      });
+        pre.storingSeconds += traceStreamed(
+            tracer, arena, settings, pre.emitted, pre.emitted + passSize, all, perPhoton,
+            nullptr, [&](const Traced& c) {
+                progress.add(c.photons, c.counts());
+                pre.runaways += c.bins.runaways;
+                for (size_t t : active)
+                    for (const RawPhoton& r : c.bins.maps[t]) pre.deposits[t].append(r);
+            });
         pre.emitted += passSize;
         ++pre.passes;
+        // Every rank takes the root's counts, so all decide on the next pass alike.
+        for (size_t t : active) pre.stored[t] = pre.deposits[t].size();
+        pre.stored = broadcastValue(settings.cluster, pre.stored);
         bool anyEmpty = false, anySparse = false;
         uint64_t storedTotal = 0;
         for (size_t t : active) {
-            const uint64_t stored = pre.deposits[t].size();
+            const uint64_t stored = pre.stored[t];
             perPhoton[t] = double(stored) / double(pre.emitted);
             anyEmpty = anyEmpty || stored == 0;
             anySparse = anySparse || stored < std::min(kMinPrepassStored, targets[t]);
@@ -216,7 +261,7 @@ Prepass runPrepass(const PhotonTracer& tracer, tbb::task_arena& arena,
             if (pre.passes >= settings.maxPrepass) {
                 std::string empty;
                 for (size_t t : active)
-                    if (pre.deposits[t].size() == 0)
+                    if (pre.stored[t] == 0)
                         empty += std::string(empty.empty() ? "" : ", ") +
                                  photonMapTypeName(PhotonMapType(t));
                 throw InputError("too many prepasses, no photons stored in " + empty +
@@ -254,12 +299,13 @@ DistributionResult distributePhotons(const PhotonTracer& tracer,
     result.prepassEmitted = emitted;
     result.prepasses = pre.passes;
     result.runaways = pre.runaways;
+    result.storingSeconds = pre.storingSeconds;
 
     // ---- Prediction: one total N and one storage probability per map.
     std::array<double, kNumPhotonMapTypes> need{};  // photons to emit for map t alone
     double maxNeed = 0;
     for (size_t t : active) {
-        need[t] = double(targets[t]) * double(emitted) / double(pre.deposits[t].size());
+        need[t] = double(targets[t]) * double(emitted) / double(pre.stored[t]);
         maxNeed = std::max(maxNeed, need[t]);
     }
     const uint64_t total = std::max(emitted, uint64_t(std::ceil(maxNeed)));
@@ -272,28 +318,28 @@ DistributionResult distributePhotons(const PhotonTracer& tracer,
     // record. Each prepass chunk is freed as soon as it is thinned.
     std::array<double, kNumPhotonMapTypes> scale{}, perPhoton{};
     std::array<uint64_t, kNumPhotonMapTypes> kept{};
+    const auto thinning = Clock::now();
     for (size_t t : active) {
         scale[t] = 1.0 / (double(total) * prob[t]);
-        perPhoton[t] = double(pre.deposits[t].size()) / double(emitted) * prob[t];
+        perPhoton[t] = double(pre.stored[t]) / double(emitted) * prob[t];
         RecordStore<Photon>& out = result.photons[t] = newStore<Photon>(settings, t);
         pre.deposits[t].drain([&](std::span<const RawPhoton> block) {
-            for (const RawPhoton& r : block)
-                if (double(r.u) < prob[t]) out.append(finalPhoton(r, scale[t]));
+            thinBlock(block, prob[t], scale[t], arena, out);
         });
         kept[t] = out.size();
     }
     progress.setStored(kept);
+    result.storingSeconds += std::chrono::duration<double>(Clock::now() - thinning).count();
 
     // ---- Main pass.
     progress.setPass(emitted, total);
-    traceStreamed(tracer, arena, settings.threads, settings.seed, emitted, total, prob,
-                  perPhoton, [&](uint64_t photons, const PhotonBins& bins) {
-                      progress.add(photons, bins);
-                      result.runaways += bins.runaways;
-                      for (size_t t : active)
-                          for (const RawPhoton& r : bins.maps[t])
-                              result.photons[t].append(finalPhoton(r, scale[t]));
-                  });
+    result.storingSeconds += traceStreamed(
+        tracer, arena, settings, emitted, total, prob, perPhoton, &scale, [&](const Traced& c) {
+            progress.add(c.photons, c.counts());
+            result.runaways += c.bins.runaways;
+            for (size_t t : active)
+                for (const Photon& p : c.final[t]) result.photons[t].append(p);
+        });
     result.emitted = total;
     return result;
 }

@@ -14,6 +14,7 @@
 #include "pmap/photon.h"
 #include "pmap/record_store.h"
 #include "pmap/trace.h"
+#include "util/cluster.h"
 
 namespace rp::pmap {
 
@@ -30,16 +31,23 @@ struct DistributionSettings {
     // a temporary file beside files[t], which errors name. Without, all stay in memory.
     MemoryBudget* budget = nullptr;
     std::array<std::string, kNumPhotonMapTypes> files;
+    // The ranks tracing this distribution together (null: this process alone). Every
+    // rank calls distributePhotons with the same settings; the photons are the root's.
+    Cluster* cluster = nullptr;
 };
 
 struct DistributionResult {
-    // Normalised flux, in photon index order (as the kd-tree build wants them: any order).
+    // Normalised flux, in photon index order (as the kd-tree build wants them: any order);
+    // empty on ranks other than the root. The counts are the same on every rank.
     std::array<RecordStore<Photon>, kNumPhotonMapTypes> photons;
     uint64_t emitted = 0;          // photons emitted over all passes
     uint64_t prepassEmitted = 0;
     int prepasses = 0;
     std::array<double, kNumPhotonMapTypes> storeProbability{};  // per map, all passes
     long runaways = 0;
+    // The root's seconds storing what was traced, serially (decoding other ranks' chunks,
+    // thinning, normalising, appending): the part that does not scale with ranks.
+    double storingSeconds = 0;
 };
 
 // Photons traced per work item: fixed, so that chunk boundaries (and thus the order

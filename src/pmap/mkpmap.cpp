@@ -166,7 +166,7 @@ void saveMaps(const MkpmapOptions& o, std::array<MapPhotons, kNumPhotonMapTypes>
 }  // namespace
 
 MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
-                       std::ostream& diag, const LoadOptions& load) {
+                       std::ostream& diag, const LoadOptions& load, Cluster* cluster) {
     MkpmapOptions o = withoutIgnoredMaps(options);
     checkRequest(o);
     MkpmapReport report;
@@ -224,6 +224,7 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         cs.reportSeconds = o.reportSeconds;
         cs.progress = &diag;
         cs.primaryRays = o.maps[size_t(PhotonMapType::Contrib)]->primaryRays;
+        cs.cluster = cluster;
         ContribResult cr = distributeContrib(scene, geometry, plan, eo, ts, cs, chains, &functions);
         contribPhotons = std::move(cr.photons);
         primaries = std::move(cr.primaries);
@@ -242,12 +243,16 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         ds.reportSeconds = o.reportSeconds;
         ds.progress = &diag;
         ds.budget = &budget;
+        ds.cluster = cluster;
         for (size_t t = 0; t < o.maps.size(); ++t)
             if (o.maps[t]) ds.files[t] = o.maps[t]->file;
         dist = distributePhotons(tracer, ds);
     }
     report.traceSeconds = secondsSince(t0);
+    // The other ranks have traced their share; the root builds and writes the maps.
+    if (cluster && !cluster->isRoot()) return report;
     report.emitted = dist.emitted;
+    report.storingSeconds = dist.storingSeconds;
     report.prepassEmitted = dist.prepassEmitted;
     report.prepasses = dist.prepasses;
     report.runaways = dist.runaways;

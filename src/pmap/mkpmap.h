@@ -12,6 +12,7 @@
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon.h"
 #include "scene/reader.h"
+#include "util/cluster.h"
 
 namespace rp::pmap {
 
@@ -23,6 +24,7 @@ struct MkpmapReport {
     long runaways = 0;
     double traceSeconds = 0;  // prepass + main pass
     double buildSeconds = 0;  // kd-trees and files of all maps (wall time)
+    double storingSeconds = 0;  // of traceSeconds, storing on the root (distribute.h)
 };
 
 // -app maps are distributed as global maps, then precomputed (precomp.h); -apC uses its
@@ -32,8 +34,12 @@ struct MkpmapReport {
 // supported yet (-apv), scene errors, no light sources, bad ports/sensors,
 // and distribution failure (manual 4.2). Progress (-t) and the summary go to `diag`.
 // `load` carries the scene reader's command hook (tools pass the built-in generators).
+// `cluster`: the ranks of an MPI run (null: this process alone). Every rank calls this
+// with the same options and traces its share of the photons (chunk_stream.h); the root
+// builds and writes the maps, which are the same bit for bit for any number of ranks,
+// and reports. The other ranks return an empty report.
 MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
                        std::ostream& diag,
-                       const LoadOptions& load = {});
+                       const LoadOptions& load = {}, Cluster* cluster = nullptr);
 
 }  // namespace rp::pmap

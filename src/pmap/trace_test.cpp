@@ -4,8 +4,10 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 
 #include "pmap/trace_test_util.h"
+#include "util/thread_cluster_for_tests.h"
 
 namespace rp::pmap {
 namespace {
@@ -54,6 +56,36 @@ TEST(TraceFurnace, DirectMapHoldsEmittedFlux) {
 }
 
 // -api: photons only inside the box; the distribution still meets the target.
+// Ranks of a cluster (threads here, MPI ranks in tools/mpi) trace every ranks-th chunk;
+// the root gets the same photons, in the same order, as one process, and every rank the
+// same counts (they take the same prepass decisions).
+TEST(TraceDistribution, SamePhotonsOverRanks) {
+    auto run = makeRun(sceneFromText(boxRoom()), mapsFor(true, false, true));
+    const DistributionResult one = distribute(*run, 30000, 0, 3000, 2, 5);
+    for (int ranks : {2, 3}) {
+        rp::testing::runRanks(ranks, [&](Cluster& c) {
+            DistributionSettings ds;
+            ds.targets[size_t(PhotonMapType::Global)] = 30000;
+            ds.targets[size_t(PhotonMapType::Direct)] = 3000;
+            ds.seed = 5;
+            ds.threads = 1 + c.rank() % 2;
+            ds.cluster = &c;
+            DistributionResult r = distributePhotons(*run->tracer, ds);
+            EXPECT_EQ(r.emitted, one.emitted);
+            EXPECT_EQ(r.prepasses, one.prepasses);
+            for (auto t : {PhotonMapType::Global, PhotonMapType::Direct}) {
+                const auto got = mapOf(r, t), want = mapOf(one, t);
+                if (!c.isRoot()) {
+                    EXPECT_TRUE(got.empty());
+                    continue;
+                }
+                ASSERT_EQ(got.size(), want.size()) << ranks;
+                EXPECT_EQ(std::memcmp(got.data(), want.data(), got.size() * sizeof(Photon)), 0);
+            }
+        });
+    }
+}
+
 TEST(TraceStorage, RegionOfInterestKeepsPhotonsInside) {
     TraceSettings ts = mapsFor(true, false, false);
     ts.rois.push_back({{-1, -1, -1}, {2, 5, 5}});

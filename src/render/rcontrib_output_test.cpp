@@ -166,7 +166,7 @@ TEST(ContribOutput, RecoverKeepsCompleteRecords) {
     {
         std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n");
         ContribOutput co(o, {}, out);
-        runRcontrib(s, in, co, traceFn);
+        runRcontrib(s, in, &co, traceFn);
     }
     const std::string full = slurp(dir.file("r_lamp.bin"));
     // Cut the file inside its third record, as a killed run leaves it.
@@ -176,7 +176,7 @@ TEST(ContribOutput, RecoverKeepsCompleteRecords) {
     s.skipRecords = co.recover();
     EXPECT_EQ(s.skipRecords, 2u);
     std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n");
-    runRcontrib(s, in, co, traceFn);
+    runRcontrib(s, in, &co, traceFn);
     const std::string again = slurp(dir.file("r_lamp.bin"));
     EXPECT_EQ(again, full);
 }
@@ -198,7 +198,7 @@ TEST(ContribOutput, ReloadAddsToTotals) {
         std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n");
         ContribOutput co(o, {}, out);
         if (run == 1) s.totals = co.reload();
-        runRcontrib(s, in, co, traceFn);
+        runRcontrib(s, in, &co, traceFn);
         o.recover = true;
     }
     const std::string t = slurp(dir.file("t_lamp.txt"));

@@ -5,11 +5,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "render/cluster_batch.h"
 #include "render/rtrace_io.h"
 #include "util/error.h"
 #include "util/warnings.h"
@@ -174,42 +176,74 @@ private:
     long flushEvery_, untilFlush_;
 };
 
+// What a rank needs of a ray to trace it, and what it sends back.
+void putRay(ByteWriter& w, const Ray& r) {
+    w.put(r.origin);
+    w.put(r.dir);
+    w.put(r.maxDistance);
+    w.put(r.index);
+    w.put(r.dummy);
+}
+void getRay(ByteReader& rd, Ray& r) {
+    r.origin = rd.get<Vec3>();
+    r.dir = rd.get<Vec3>();
+    r.maxDistance = rd.get<double>();
+    r.index = rd.get<uint64_t>();
+    r.dummy = rd.get<bool>();
+}
+void putValues(ByteWriter& w, const Ray& r) { w.putVector(r.values); }
+void getValues(ByteReader& rd, Ray& r) { rd.getVector(r.values); }
+
 }  // namespace
 
-RcontribRunStats runRcontrib(const RcontribRunSettings& s, std::istream& in, ContribOutput& out,
+RcontribRunStats runRcontrib(const RcontribRunSettings& s, std::istream& in, ContribOutput* out,
                              const ContribTraceFn& trace) {
     RcontribRunStats stats;
     const int threads = std::max(1, s.threads);
+    const bool spread = distributed(s.cluster);
+    const bool root = !s.cluster || s.cluster->isRoot();
+    const int ranks = spread ? s.cluster->size() : 1;
+    RP_CHECK(!root || out);
     // Each ray of a batch holds all its bins until its record is written: many modifiers
     // with fine bins (100 sources x Reinhart MF 4 is 230,000 values, 5.5 MB a ray) get
     // smaller batches, down to one ray per thread.
     constexpr size_t kBatchBytes = size_t(256) << 20;
     const size_t perRay = std::max<size_t>(1, s.values * sizeof(Color));
-    const size_t batchSize =
-        s.batchSize > 0 ? s.batchSize
-                        : std::clamp(kBatchBytes / perRay, size_t(threads), size_t(64) * size_t(threads));
-    RayInput input(s, in);
-    Records records(s, out, stats);
-    Progress progress(s, input.total());
+    const size_t perRank =
+        std::clamp(kBatchBytes / perRay, size_t(threads), size_t(64) * size_t(threads));
+    const size_t batchSize = s.batchSize > 0 ? s.batchSize : perRank * size_t(ranks);
+    std::optional<RayInput> input;
+    std::optional<Records> records;
+    if (root) {
+        input.emplace(s, in);
+        records.emplace(s, *out, stats);
+    }
+    Progress progress(s, root ? input->total() : 0);
     tbb::task_arena arena(threads);
     std::vector<Ray> batch;
     for (bool more = true; more;) {
-        more = input.fill(batch, batchSize);
+        if (root) more = input->fill(batch, batchSize);
+        if (spread) more = shareBatch(*s.cluster, batch, more, putRay, getRay);
+        const Slice mine = spread ? sliceOf(batch.size(), s.cluster->rank(), ranks)
+                                  : Slice{0, batch.size()};
         arena.execute([&] {
-            tbb::parallel_for(size_t(0), batch.size(), [&](size_t k) {
+            tbb::parallel_for(mine.begin, mine.end, [&](size_t k) {
                 Ray& r = batch[k];
                 r.values.assign(s.values, Color{});
                 if (!r.dummy) trace(r.origin, r.dir, r.index, r.maxDistance, r.values);
             });
         });
+        if (spread) collectSlices(*s.cluster, batch, mine, putValues, getValues);
+        if (!root) continue;
         for (const Ray& r : batch) {
-            records.add(r);
-            progress.update(input.done());
+            records->add(r);
+            progress.update(input->done());
         }
     }
-    records.finish();
-    out.close();
-    input.check();
+    if (!root) return stats;
+    records->finish();
+    out->close();
+    input->check();
     return stats;
 }
 

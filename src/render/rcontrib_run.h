@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/rcontrib_output.h"
+#include "util/cluster.h"
 #include "util/color.h"
 #include "util/vec.h"
 
@@ -34,7 +35,11 @@ struct RcontribRunSettings {
     size_t values = 0;           // bins over all modifiers
     uint64_t skipRecords = 0;    // -r: records the outputs hold already
     std::vector<Color> totals;   // -r with -c 0: what the outputs hold, added to
-    size_t batchSize = 0;        // rays per batch; 0: 64 per thread
+    size_t batchSize = 0;        // rays per batch; 0: 64 per thread and rank
+    // The ranks of an MPI run (null: this process alone). The root reads the input and
+    // adds and writes the records; every rank traces a contiguous slice of each batch and
+    // sends its rays' values back, so the records are the same as one process's.
+    Cluster* cluster = nullptr;
 };
 
 struct RcontribRunStats {
@@ -43,8 +48,9 @@ struct RcontribRunStats {
 };
 
 // Throws InputError for bad input (after writing every record before it) and, with -y,
-// for input that ends early ("unexpected EOF on input").
+// for input that ends early ("unexpected EOF on input"). `out` is the root's (null on the
+// other ranks of a cluster, which read nothing and return empty statistics).
 RcontribRunStats runRcontrib(const RcontribRunSettings& settings, std::istream& in,
-                             ContribOutput& out, const ContribTraceFn& trace);
+                             ContribOutput* out, const ContribTraceFn& trace);
 
 }  // namespace rp::render

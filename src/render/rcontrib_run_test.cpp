@@ -31,7 +31,7 @@ std::vector<std::string> run(RcontribRunSettings s, const std::string& input,
     std::ostringstream out;
     std::istringstream in(input);
     ContribOutput co(o, {}, out);
-    runRcontrib(s, in, co, byIndex);
+    runRcontrib(s, in, &co, byIndex);
     std::vector<std::string> lines;
     std::istringstream text(out.str());
     for (std::string l; std::getline(text, l);) lines.push_back(l.substr(0, l.find('\t')));

@@ -206,6 +206,76 @@ struct Sampler {
     }
 };
 
+// The sampled scanlines (from the top: 0, ystep, 2*ystep, ... and always the last) and
+// the step between samples along them, for -ps `spacing` (RADIANCE's quincunx steps).
+struct SampleGrid {
+    int hstep = 1;
+    std::vector<int> rows;
+};
+SampleGrid sampleGrid(int spacing, int yres) {
+    int ps = spacing;
+    if (ps < 1) {
+        ps = 1;
+    } else if (ps > kMaxSampleSpacing) {
+        warn(fmt::format("pixel sampling reduced from {} to {}", ps, kMaxSampleSpacing));
+        ps = kMaxSampleSpacing;
+    }
+    // RADIANCE compat (rpict.c render).
+    SampleGrid g;
+    g.hstep = (ps * 140 + 49) / 99;
+    const int ystep = std::max(1, (ps * 99 + 70) / 140);
+    for (int r = 0; r < yres - 1; r += ystep) g.rows.push_back(r);
+    g.rows.push_back(yres - 1);
+    if (g.rows.size() > 1 && g.rows[g.rows.size() - 2] == g.rows.back()) g.rows.pop_back();
+    return g;
+}
+
+// The rows of the band above sampled row k that are not recovered (progress counts).
+int bandRowsAfter(const std::vector<int>& rows, size_t k, int firstRow) {
+    return std::max(0, rows[k] - std::max(rows[k - 1] + 1, firstRow));
+}
+
+// Rows [r0, r1) of items [k0, k1) (rowsOf(k, r0, r1)) from the rank that traced each
+// (k % ranks) to every rank, or with `toRoot` to the root only: pixels and depths.
+template <class RowsOf>
+void shareRows(Cluster& cluster, Picture& pic, std::vector<float>& z, size_t k0, size_t k1,
+               size_t ranks, const RowsOf& rowsOf, bool toRoot) {
+    const size_t width = size_t(pic.width);
+    auto span = [&](size_t k) {
+        int r0 = 0, r1 = 0;
+        rowsOf(k, r0, r1);
+        return std::make_pair(size_t(r0) * width, size_t(std::max(r0, r1)) * width);
+    };
+    ByteWriter w;
+    for (size_t k = k0; k < k1; ++k) {
+        if (k % ranks != size_t(cluster.rank())) continue;
+        const auto [i0, i1] = span(k);
+        w.putVector(std::vector<Pixel>(pic.pixels.begin() + long(i0), pic.pixels.begin() + long(i1)));
+        w.putVector(std::vector<float>(z.begin() + long(i0), z.begin() + long(i1)));
+    }
+    std::vector<size_t> sizes;
+    const Bytes all = toRoot ? cluster.gather(w.bytes(), sizes) : cluster.allGather(w.bytes(), sizes);
+    if (toRoot && !cluster.isRoot()) return;
+    size_t at = 0;
+    std::vector<Pixel> px;
+    std::vector<float> depth;
+    for (size_t r = 0; r < ranks; ++r) {
+        ByteReader rd(std::span<const std::byte>(all).subspan(at, sizes[r]));
+        at += sizes[r];
+        for (size_t k = k0; k < k1; ++k) {
+            if (k % ranks != r) continue;
+            rd.getVector(px);
+            rd.getVector(depth);
+            if (r == size_t(cluster.rank())) continue;
+            const auto [i0, i1] = span(k);
+            RP_CHECK(px.size() == i1 - i0 && depth.size() == i1 - i0);
+            std::copy(px.begin(), px.end(), pic.pixels.begin() + long(i0));
+            std::copy(depth.begin(), depth.end(), z.begin() + long(i0));
+        }
+        RP_CHECK(rd.done());
+    }
+}
+
 }  // namespace
 
 std::vector<std::string> viewHeaderLines(const RpictOptions& options) {
@@ -223,16 +293,9 @@ Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& fac
     std::optional<ViewRays> previous;
     if (rowsIn.previousView) previous.emplace(*rowsIn.previousView);
     const PictureSize size = pictureSize(options);
-    int ps = options.sampleSpacing;
-    if (ps < 1) {
-        ps = 1;
-    } else if (ps > kMaxSampleSpacing) {
-        warn(fmt::format("pixel sampling reduced from {} to {}", ps, kMaxSampleSpacing));
-        ps = kMaxSampleSpacing;
-    }
-    // RADIANCE compat (rpict.c render): quincunx steps.
-    const int hstep = (ps * 140 + 49) / 99;
-    const int ystep = std::max(1, (ps * 99 + 70) / 140);
+    const SampleGrid grid = sampleGrid(options.sampleSpacing, size.yres);
+    const int hstep = grid.hstep;
+    const std::vector<int>& rows = grid.rows;
 
     Picture pic(size.xres, size.yres);
     std::vector<float> z(pic.pixels.size(), 0.0f);
@@ -241,12 +304,6 @@ Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& fac
     Sampler s{rays, previous, size.xres, size.yres, options.pixelJitter,
               options.sampleThreshold, options.motionBlur, options.apertureBlur,
               depth != nullptr, pic.pixels, z, traced};
-
-    // Sampled scanlines from the top: 0, ystep, 2*ystep, ... and always the last.
-    std::vector<int> rows;
-    for (int r = 0; r < size.yres - 1; r += ystep) rows.push_back(r);
-    rows.push_back(size.yres - 1);
-    if (rows.size() > 1 && rows[rows.size() - 2] == rows.back()) rows.pop_back();
 
     Progress report(progress, options.reportInterval, size.yres, firstRow, traced);
     report.start();
@@ -269,21 +326,44 @@ Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& fac
     size_t start = 0;
     while (start + 1 < rows.size() && rows[start + 1] <= firstRow) ++start;
     const int threads = std::max(1, options.render.threads);
-    const size_t chunk = size_t(std::max(8, 4 * threads));
+    Cluster* cluster = rowsIn.cluster;
+    const bool spread = distributed(cluster);
+    const size_t ranks = spread ? size_t(cluster->size()) : 1;
+    const size_t rank = spread ? size_t(cluster->rank()) : 0;
+    auto mine = [&](size_t k) { return k % ranks == rank; };
+    const size_t chunk = size_t(std::max(8, 4 * threads)) * ranks;
     int handed = firstRow;
     tbb::task_arena arena(threads);
     for (size_t k0 = start; firstRow < size.yres && k0 < rows.size(); k0 += chunk) {
         const size_t k1 = std::min(rows.size(), k0 + chunk);  // sample rows[k0..k1)
+        const size_t b0 = std::max(k0, start + 1);  // bands below rows[b0-1] .. rows[k1-1]
+        // Sampled row k and the band above it are traced by rank k % ranks; every rank
+        // needs all sampled rows (a band reads the rows at both its ends), only the root
+        // needs the bands.
+        auto sampledRows = [&](size_t k, int& r0, int& r1) { r0 = rows[k], r1 = rows[k] + 1; };
+        auto bandRows = [&](size_t k, int& r0, int& r1) { r0 = rows[k - 1] + 1, r1 = rows[k]; };
         arena.execute([&] {
             tbb::parallel_for(k0, k1, [&](size_t k) {
+                if (!mine(k)) return;
                 s.sampledRow(tracerHere(), rows[k], int(k), hstep);
                 if (rows[k] >= firstRow) report.advance(1);
             });
-            tbb::parallel_for(std::max(k0, start + 1), k1, [&](size_t k) {
+        });
+        if (spread) shareRows(*cluster, pic, z, k0, k1, ranks, sampledRows, false);
+        arena.execute([&] {
+            tbb::parallel_for(b0, k1, [&](size_t k) {
+                if (!mine(k)) return;
                 s.band(tracerHere(), rows[k - 1], rows[k]);
-                report.advance(std::max(0, rows[k] - std::max(rows[k - 1] + 1, firstRow)));
+                report.advance(bandRowsAfter(rows, k, firstRow));
             });
         });
+        if (spread) shareRows(*cluster, pic, z, b0, k1, ranks, bandRows, true);
+        if (spread && cluster->isRoot())  // the others' rows, for the root's progress
+            for (size_t k = k0; k < k1; ++k) {
+                if (mine(k)) continue;
+                if (rows[k] >= firstRow) report.advance(1);
+                if (k >= b0) report.advance(bandRowsAfter(rows, k, firstRow));
+            }
         const int end = rows[k1 - 1] + 1;
         if (rowsIn.done && end > handed) rowsIn.done(pic, z, handed, end);
         handed = std::max(handed, end);

@@ -14,6 +14,7 @@
 
 #include "image/picture.h"
 #include "render/rpict_options.h"
+#include "util/cluster.h"
 #include "util/color.h"
 #include "util/vec.h"
 
@@ -44,7 +45,8 @@ std::string formatProgress(long rays, double percentDone, double seconds);
 // The largest -ps RADIANCE allows (MAXDIV); larger values are reduced with a warning.
 constexpr int kMaxSampleSpacing = 16;
 
-// Where renderPicture starts, what it hands over while it works, and the previous view.
+// Where renderPicture starts, what it hands over while it works, the previous view, and
+// the ranks that share the work.
 struct RenderRows {
     // Rows [0, firstRow) (from the top) were recovered from an interrupted picture
     // (rpict -r): they are not passed to `done`, and in the result they hold only what
@@ -58,6 +60,12 @@ struct RenderRows {
     // -pm: the previous frame's view; each pixel's ray is moved towards the one this
     // view would trace by a random part of -pm (RADIANCE's motion blur). Null: none.
     const View* previousView = nullptr;
+    // The ranks of an MPI run (null: this process alone). Every rank renders the same
+    // picture; each traces every ranks-th sampled scanline and the band above it, all
+    // ranks share the sampled scanlines, and the root gets the bands: its picture (the
+    // only one complete, and the only one `done` is called with in full) is the same as
+    // one process's.
+    Cluster* cluster = nullptr;
 };
 
 // Renders the picture: size from pictureSize(options), header lines viewHeaderLines().

@@ -239,6 +239,18 @@ std::string moveAside(const std::string& name) {
 
 int runRpict(const RpictOptions& options, const PixelTracerFactory& factory,
              const ProgressCallback& progress, RpictIo& io) {
+    if (distributed(io.cluster)) {
+        // Sequences and recovery decide per frame from files only the root sees.
+        if (options.sequenceStart > 0 || !options.recoverFile.empty())
+            throw InputError("-S and -r render in one process, not across MPI ranks");
+        if (!io.cluster->isRoot()) {
+            RenderRows rows;
+            rows.cluster = io.cluster;
+            std::vector<float> depth;
+            renderPicture(options, factory, {}, options.zFile.empty() ? nullptr : &depth, rows);
+            return 0;
+        }
+    }
     int seq = std::max(0, options.sequenceStart);
     std::string recover = options.recoverFile;
     View view = options.view, lastView = options.view;
@@ -320,6 +332,7 @@ int runRpict(const RpictOptions& options, const PixelTracerFactory& factory,
             zout = std::make_unique<DepthOutput>(frameFileName(options.zFile, seq),
                                                  size_t(firstRow) * size_t(size.xres));
         RenderRows rows;
+        rows.cluster = io.cluster;
         rows.firstRow = firstRow;
         rows.previousView = seq ? &lastView : nullptr;
         std::vector<Colr> scan(size_t(size.xres));

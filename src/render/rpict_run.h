@@ -23,6 +23,9 @@ struct RpictIo {
     std::function<std::time_t()> clock = [] { return std::time(nullptr); };
     // Called before each frame of a sequence (rpict -t prints "FRAME n: <view>").
     std::function<void(int frame, const View& view)> frameStarted;
+    // The ranks of an MPI run (null: this process alone): one picture (no -S, no -r),
+    // traced by all, written by the root.
+    Cluster* cluster = nullptr;
 };
 
 // Renders as RADIANCE's rpict does with these options:

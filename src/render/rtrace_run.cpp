@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "render/cluster_batch.h"
 #include "util/error.h"
 #include "util/warnings.h"
 
@@ -25,75 +26,127 @@ struct Record {
 
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// The input side of the loop (on the root): records, -x/-y counting, flush points.
+class RayInput {
+public:
+    RayInput(const RtraceRunSettings& s, std::istream& in, RtraceRunStats& stats)
+        : s_(s), reader_(in, s.inputFormat), stats_(stats) {
+        // RADIANCE compat (rtrace.c rtrace): with -x and -y exactly x*y records are read
+        // (-y alone: y records); -x alone is only the flush interval.
+        remaining_ = s.xres > 1 ? uint64_t(s.xres) * uint64_t(std::max(0, s.yres))
+                                : uint64_t(std::max(0, s.yres));
+        counted_ = remaining_ > 0;
+    }
+
+    // Reads until the batch is full, a flush point or the end (a program driving rtrace
+    // through a pipe waits for the flushed results before sending more). False at the end.
+    bool fill(std::vector<Record>& batch, size_t batchSize) {
+        while (batch.size() < batchSize) {
+            if (counted_ && remaining_ == 0) return false;
+            Record r;
+            RayReader::Status st = reader_.next(r.ray);
+            if (st == RayReader::Status::End) return false;
+            if (st == RayReader::Status::Bad) {
+                pendingError_ = reader_.error();
+                return false;
+            }
+            r.index = index_++;
+            if (counted_) --remaining_;
+            classify(r);
+            const bool stop = r.flushAfter;
+            batch.push_back(std::move(r));
+            if (stop) break;
+        }
+        return true;
+    }
+
+    // Bad input met (after the rays before it), or short input with -x and -y.
+    void check() const {
+        if (!pendingError_.empty()) throw InputError(pendingError_);
+        if (counted_ && remaining_ > 0) throw InputError("unexpected EOF on input");
+    }
+
+private:
+    void classify(Record& r) {
+        const double len = std::sqrt(r.ray.direction.x * r.ray.direction.x +
+                                     r.ray.direction.y * r.ray.direction.y +
+                                     r.ray.direction.z * r.ray.direction.z);
+        if (!finite(r.ray.origin) || !finite(r.ray.direction) || !std::isfinite(len)) {
+            if (stats_.nonFinite++ == 0)
+                warn("non-finite ray input (record " + std::to_string(r.index + 1) +
+                     "): bogus record written; further ones are not reported");
+            r.bogus = true;
+        } else if (len == 0) {
+            r.bogus = true;
+        } else {
+            r.ray.direction = r.ray.direction / len;
+            if (s_.limitDistance) r.maxDistance = len;
+        }
+        // RADIANCE compat (rtrace.c): a zero direction flushes when -x is 0 or 1 or at
+        // the -x boundary; other rays flush at the -x boundary.
+        ++sinceFlush_;
+        if (r.bogus) {
+            ++stats_.bogus;
+            if (s_.xres <= 1 || sinceFlush_ >= s_.xres) r.flushAfter = true;
+        } else if (s_.xres > 0 && sinceFlush_ >= s_.xres) {
+            r.flushAfter = true;
+        }
+        if (r.flushAfter) sinceFlush_ = 0;
+    }
+
+    const RtraceRunSettings& s_;
+    RayReader reader_;
+    RtraceRunStats& stats_;
+    uint64_t remaining_ = 0, index_ = 0;
+    bool counted_ = false;
+    long sinceFlush_ = 0;
+    std::string pendingError_;
+};
+
+// What a rank needs of a record to trace it, and what it sends back.
+void putRay(ByteWriter& w, const Record& r) {
+    w.put(r.ray);
+    w.put(r.maxDistance);
+    w.put(r.index);
+    w.put(r.bogus);
+}
+void getRay(ByteReader& rd, Record& r) {
+    r.ray = rd.get<InputRay>();
+    r.maxDistance = rd.get<double>();
+    r.index = rd.get<uint64_t>();
+    r.bogus = rd.get<bool>();
+}
+void putText(ByteWriter& w, const Record& r) { w.putString(r.text); }
+void getText(ByteReader& rd, Record& r) { r.text = rd.getString(); }
+
 }  // namespace
 
 RtraceRunStats runRtrace(const RtraceRunSettings& s, std::istream& in, std::ostream& out,
                          const RayWriter& writer, const RayTraceFn& trace) {
     RtraceRunStats stats;
     const int threads = std::max(1, s.threads);
-    const size_t batchSize = s.batchSize > 0 ? s.batchSize : size_t(64) * size_t(threads);
-    // RADIANCE compat (rtrace.c rtrace): with -x and -y exactly x*y records are read
-    // (-y alone: y records); -x alone is only the flush interval.
-    uint64_t remaining = s.xres > 1 ? uint64_t(s.xres) * uint64_t(std::max(0, s.yres))
-                                    : uint64_t(std::max(0, s.yres));
-    const bool counted = remaining > 0;
-    if (s.xres > 0 && s.yres > 0) {
+    const bool spread = distributed(s.cluster);
+    const bool root = !s.cluster || s.cluster->isRoot();
+    const int ranks = spread ? s.cluster->size() : 1;
+    const size_t batchSize =
+        s.batchSize > 0 ? s.batchSize : size_t(64) * size_t(threads) * size_t(ranks);
+    if (root && s.xres > 0 && s.yres > 0) {
         out << resolutionLine(s.xres, s.yres);
         out.flush();
     }
-    RayReader reader(in, s.inputFormat);
-    long sinceFlush = 0;
-    uint64_t index = 0;
-    bool ended = false;
-    std::string pendingError;
+    RayInput input(s, in, stats);
     const bool wantTree = writer.spec().wantsTree();
     tbb::task_arena arena(threads);
     std::vector<Record> batch;
     batch.reserve(batchSize);
-
-    while (!ended) {
+    for (bool more = true; more;) {
         batch.clear();
-        // Read until the batch is full, a flush point or the end: a program driving
-        // rtrace through a pipe waits for the flushed results before sending more.
-        while (batch.size() < batchSize) {
-            if (counted && remaining == 0) { ended = true; break; }
-            Record r;
-            RayReader::Status st = reader.next(r.ray);
-            if (st == RayReader::Status::End) { ended = true; break; }
-            if (st == RayReader::Status::Bad) { pendingError = reader.error(); ended = true; break; }
-            r.index = index++;
-            if (counted) --remaining;
-            const double len = std::sqrt(r.ray.direction.x * r.ray.direction.x +
-                                         r.ray.direction.y * r.ray.direction.y +
-                                         r.ray.direction.z * r.ray.direction.z);
-            if (!finite(r.ray.origin) || !finite(r.ray.direction) || !std::isfinite(len)) {
-                if (stats.nonFinite++ == 0)
-                    warn("non-finite ray input (record " + std::to_string(r.index + 1) +
-                         "): bogus record written; further ones are not reported");
-                r.bogus = true;
-            } else if (len == 0) {
-                r.bogus = true;
-            } else {
-                r.ray.direction = r.ray.direction / len;
-                if (s.limitDistance) r.maxDistance = len;
-            }
-            // RADIANCE compat (rtrace.c): a zero direction flushes when -x is 0 or 1 or at
-            // the -x boundary; other rays flush at the -x boundary.
-            ++sinceFlush;
-            if (r.bogus) {
-                ++stats.bogus;
-                if (s.xres <= 1 || sinceFlush >= s.xres) r.flushAfter = true;
-            } else if (s.xres > 0 && sinceFlush >= s.xres) {
-                r.flushAfter = true;
-            }
-            if (r.flushAfter) sinceFlush = 0;
-            const bool stop = r.flushAfter;
-            batch.push_back(std::move(r));
-            if (stop) break;
-        }
-
+        if (root) more = input.fill(batch, batchSize);
+        if (spread) more = shareBatch(*s.cluster, batch, more, putRay, getRay);
+        const Slice mine = spread ? sliceOf(batch.size(), s.cluster->rank(), ranks)
+                                  : Slice{0, batch.size()};
         arena.execute([&] {
-            tbb::parallel_for(size_t(0), batch.size(), [&](size_t k) {
+            tbb::parallel_for(mine.begin, mine.end, [&](size_t k) {
                 Record& r = batch[k];
                 if (r.bogus) {
                     writer.writeBogus(r.text);
@@ -105,6 +158,8 @@ RtraceRunStats runRtrace(const RtraceRunSettings& s, std::istream& in, std::ostr
                 writer.write(r.text, res, wantTree ? &tree : nullptr);
             });
         });
+        if (spread) collectSlices(*s.cluster, batch, mine, putText, getText);
+        if (!root) continue;
         for (const Record& r : batch) {
             if (!r.bogus) ++stats.rays;
             out << r.text;
@@ -112,9 +167,9 @@ RtraceRunStats runRtrace(const RtraceRunSettings& s, std::istream& in, std::ostr
         }
         if (!out) throw InputError("write error on output");
     }
+    if (!root) return stats;
     out.flush();
-    if (!pendingError.empty()) throw InputError(pendingError);
-    if (counted && remaining > 0) throw InputError("unexpected EOF on input");
+    input.check();
     return stats;
 }
 

@@ -12,6 +12,7 @@
 
 #include "render/renderer.h"
 #include "render/rtrace_io.h"
+#include "util/cluster.h"
 
 namespace rp::render {
 
@@ -29,7 +30,11 @@ struct RtraceRunSettings {
     int xres = 0, yres = 0;  // -x -y
     int threads = 1;         // -n
     bool limitDistance = false;  // -ld: rays end at the length of their direction
-    size_t batchSize = 0;    // rays per batch; 0: 64 per thread (tests use small values)
+    size_t batchSize = 0;    // rays per batch; 0: 64 per thread and rank (tests use small values)
+    // The ranks of an MPI run (null: this process alone). The root reads the input and
+    // writes the output; every rank traces a contiguous slice of each batch, so the
+    // output is the same as one process's.
+    Cluster* cluster = nullptr;
 };
 
 struct RtraceRunStats {
@@ -38,7 +43,8 @@ struct RtraceRunStats {
     uint64_t nonFinite = 0;
 };
 
-// Writes the resolution line first when both -x and -y are given. Throws InputError for bad
+// Writes the resolution line first when both -x and -y are given (on the root; the other
+// ranks of a cluster read and write nothing and return empty statistics). Throws InputError for bad
 // input (after writing and flushing every result before it) and, with -x and -y, for input
 // that ends before x*y rays ("unexpected EOF on input").
 RtraceRunStats runRtrace(const RtraceRunSettings& settings, std::istream& in, std::ostream& out,

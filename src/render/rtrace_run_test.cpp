@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "util/error.h"
+#include "util/thread_cluster_for_tests.h"
 #include "util/warnings.h"
 
 namespace rp::render {
@@ -74,6 +75,34 @@ TEST(RtraceRun, OrderWithThreads) {
         char buf[100];
         std::snprintf(buf, sizeof buf, "%e\t%e\t%e\t", double(k), double(k), 1.0);
         ASSERT_EQ(line, buf);
+    }
+}
+
+// Ranks of a cluster (threads here, MPI ranks in tools/mpi): the root's output is one
+// process's, bogus records and a ray tree included; the others write nothing.
+TEST(RtraceRun, SameOutputOverRanks) {
+    std::string input = rays(500);
+    input += "7 7 7 0 0 0\n" + rays(33);
+    RayWriter w(parseOutputSpec("vo", 'a'), 'a', nullptr);
+    RtraceRunSettings s;
+    s.threads = 2;
+    std::istringstream in1(input);
+    std::ostringstream expected;
+    runRtrace(s, in1, expected, w, fake);
+    for (int ranks : {2, 3}) {
+        for (size_t batch : {size_t(0), size_t(37)}) {
+            std::ostringstream outs[3];
+            testing::runRanks(ranks, [&](Cluster& c) {
+                RtraceRunSettings rs = s;
+                rs.cluster = &c;
+                rs.batchSize = batch;
+                std::istringstream in(c.isRoot() ? input : "");
+                RtraceRunStats st = runRtrace(rs, in, outs[c.rank()], w, fake);
+                EXPECT_EQ(st.rays, c.isRoot() ? 533u : 0u);
+            });
+            EXPECT_EQ(outs[0].str(), expected.str()) << ranks << " ranks, batch " << batch;
+            for (int r = 1; r < ranks; ++r) EXPECT_EQ(outs[r].str(), "");
+        }
     }
 }
 
