@@ -4,6 +4,7 @@
 #pragma once
 
 #include <chrono>
+#include <iostream>
 #include <memory>
 #include <string>
 #include <thread>
@@ -45,6 +46,19 @@ inline std::string errorPrefix(const Cluster& cluster, const std::string& progra
 inline int endRun(Cluster& cluster, int exitCode) {
     if (distributed(&cluster)) cluster.abortAll(exitCode);
     return exitCode;
+}
+
+// Reports this rank's error on `diag` (and on standard error too when diag is a file) and
+// ends the run with `exitCode`. `cluster` may be null (MPI did not start).
+inline int failRun(Cluster* cluster, const std::string& program, const std::string& message,
+                   std::ostream& diag, int exitCode = 1) {
+    LocalCluster alone;
+    Cluster& c = cluster ? *cluster : alone;
+    const std::string line = errorPrefix(c, program) + message;
+    diag << line << '\n';
+    if (&diag != &std::cerr) std::cerr << line << '\n';
+    diag.flush();
+    return endRun(c, exitCode);
 }
 
 }  // namespace rp::tools

@@ -38,12 +38,6 @@ int main(int argc, char** argv) {
             std::cerr << "mkpmap: " << report.storingSeconds << " s storing on the root\n";
         return 0;
     } catch (const rp::InputError& e) {
-        rp::LocalCluster alone;
-        rp::Cluster& c = cluster ? *cluster : alone;
-        const std::string line = rp::tools::errorPrefix(c, "mkpmap") + e.what();
-        *diag << line << '\n';
-        if (diag != &std::cerr) std::cerr << line << '\n';
-        diag->flush();
-        return rp::tools::endRun(c, 1);
+        return rp::tools::failRun(cluster.get(), "mkpmap", e.what(), *diag);
     }
 }

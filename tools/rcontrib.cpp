@@ -99,12 +99,9 @@ int run(RcontribOptions o, rp::Cluster& cluster) {
 int main(int argc, char** argv) {
     std::ios::sync_with_stdio(false);
     std::unique_ptr<rp::Cluster> cluster;
-    rp::LocalCluster alone;
     auto fail = [&](const std::string& what, int code) {
         std::cout.flush();
-        rp::Cluster& c = cluster ? *cluster : alone;
-        std::cerr << rp::tools::errorPrefix(c, "rcontrib") << what << std::endl;
-        return rp::tools::endRun(c, code);
+        return rp::tools::failRun(cluster.get(), "rcontrib", what, std::cerr, code);
     };
     try {
         cluster = rp::tools::startCluster(argc, argv);

@@ -128,12 +128,6 @@ int main(int argc, char** argv) {
         cluster = rp::tools::startCluster(argc, argv);
         return run(argc, argv, diag, diagFile, *cluster);
     } catch (const rp::InputError& e) {
-        rp::LocalCluster alone;
-        rp::Cluster& c = cluster ? *cluster : alone;
-        const std::string line = rp::tools::errorPrefix(c, "rpict") + e.what();
-        *diag << line << '\n';
-        if (diag != &std::cerr) std::cerr << line << '\n';
-        diag->flush();
-        return rp::tools::endRun(c, 1);
+        return rp::tools::failRun(cluster.get(), "rpict", e.what(), *diag);
     }
 }

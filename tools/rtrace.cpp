@@ -105,12 +105,6 @@ int main(int argc, char** argv) {
         return run(o, diag, diagFile, *cluster);
     } catch (const rp::InputError& e) {
         std::cout.flush();
-        rp::LocalCluster alone;
-        rp::Cluster& c = cluster ? *cluster : alone;
-        const std::string line = rp::tools::errorPrefix(c, "rtrace") + e.what();
-        *diag << line << '\n';
-        if (diag != &std::cerr) std::cerr << line << '\n';
-        diag->flush();
-        return rp::tools::endRun(c, 1);
+        return rp::tools::failRun(cluster.get(), "rtrace", e.what(), *diag);
     }
 }

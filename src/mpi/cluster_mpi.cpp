@@ -73,34 +73,6 @@ public:
                   "MPI_Bcast");
     }
 
-    // Point to point rather than MPI_Gatherv, whose int displacements cap the total.
-    Bytes gather(std::span<const std::byte> mine, std::vector<size_t>& sizes) override {
-        sizes.clear();
-        if (rank_ != 0) {
-            sendBytes(0, mine);
-            return {};
-        }
-        Bytes all(mine.begin(), mine.end());
-        sizes.push_back(mine.size());
-        for (int r = 1; r < size_; ++r) {
-            Bytes part = receiveBytes(r);
-            sizes.push_back(part.size());
-            all.insert(all.end(), part.begin(), part.end());
-        }
-        return all;
-    }
-
-    Bytes allGather(std::span<const std::byte> mine, std::vector<size_t>& sizes) override {
-        Bytes all = gather(mine, sizes);
-        ByteWriter w;
-        w.putVector(sizes);
-        Bytes head = std::move(w.bytes());
-        broadcast(head);
-        ByteReader(head).getVector(sizes);
-        broadcast(all);
-        return all;
-    }
-
     void send(int to, std::span<const std::byte> bytes) override { sendBytes(to, bytes); }
     Bytes receive(int from) override { return receiveBytes(from); }
 

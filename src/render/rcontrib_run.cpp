@@ -176,23 +176,25 @@ private:
     long flushEvery_, untilFlush_;
 };
 
-// What a rank needs of a ray to trace it, and what it sends back.
-void putRay(ByteWriter& w, const Ray& r) {
-    w.put(r.origin);
-    w.put(r.dir);
-    w.put(r.maxDistance);
-    w.put(r.index);
-    w.put(r.dummy);
-}
-void getRay(ByteReader& rd, Ray& r) {
-    r.origin = rd.get<Vec3>();
-    r.dir = rd.get<Vec3>();
-    r.maxDistance = rd.get<double>();
-    r.index = rd.get<uint64_t>();
-    r.dummy = rd.get<bool>();
-}
-void putValues(ByteWriter& w, const Ray& r) { w.putVector(r.values); }
-void getValues(ByteReader& rd, Ray& r) { rd.getVector(r.values); }
+// What a rank needs of a ray to trace it, and what it sends back (cluster_batch.h).
+struct RayCodec {
+    static void putRay(ByteWriter& w, const Ray& r) {
+        w.put(r.origin);
+        w.put(r.dir);
+        w.put(r.maxDistance);
+        w.put(r.index);
+        w.put(r.dummy);
+    }
+    static void getRay(ByteReader& rd, Ray& r) {
+        r.origin = rd.get<Vec3>();
+        r.dir = rd.get<Vec3>();
+        r.maxDistance = rd.get<double>();
+        r.index = rd.get<uint64_t>();
+        r.dummy = rd.get<bool>();
+    }
+    static void putResult(ByteWriter& w, const Ray& r) { w.putVector(r.values); }
+    static void getResult(ByteReader& rd, Ray& r) { rd.getVector(r.values); }
+};
 
 }  // namespace
 
@@ -200,10 +202,8 @@ RcontribRunStats runRcontrib(const RcontribRunSettings& s, std::istream& in, Con
                              const ContribTraceFn& trace) {
     RcontribRunStats stats;
     const int threads = std::max(1, s.threads);
-    const bool spread = distributed(s.cluster);
-    const bool root = !s.cluster || s.cluster->isRoot();
-    const int ranks = spread ? s.cluster->size() : 1;
-    RP_CHECK(!root || out);
+    const BatchRole role(s.cluster);
+    RP_CHECK(!role.root() || out);
     // Each ray of a batch holds all its bins until its record is written: many modifiers
     // with fine bins (100 sources x Reinhart MF 4 is 230,000 values, 5.5 MB a ray) get
     // smaller batches, down to one ray per thread.
@@ -211,21 +211,20 @@ RcontribRunStats runRcontrib(const RcontribRunSettings& s, std::istream& in, Con
     const size_t perRay = std::max<size_t>(1, s.values * sizeof(Color));
     const size_t perRank =
         std::clamp(kBatchBytes / perRay, size_t(threads), size_t(64) * size_t(threads));
-    const size_t batchSize = s.batchSize > 0 ? s.batchSize : perRank * size_t(ranks);
+    const size_t batchSize = s.batchSize > 0 ? s.batchSize : perRank * size_t(role.ranks());
     std::optional<RayInput> input;
     std::optional<Records> records;
-    if (root) {
+    if (role.root()) {
         input.emplace(s, in);
         records.emplace(s, *out, stats);
     }
-    Progress progress(s, root ? input->total() : 0);
+    Progress progress(s, role.root() ? input->total() : 0);
     tbb::task_arena arena(threads);
     std::vector<Ray> batch;
     for (bool more = true; more;) {
-        if (root) more = input->fill(batch, batchSize);
-        if (spread) more = shareBatch(*s.cluster, batch, more, putRay, getRay);
-        const Slice mine = spread ? sliceOf(batch.size(), s.cluster->rank(), ranks)
-                                  : Slice{0, batch.size()};
+        if (role.root()) more = input->fill(batch, batchSize);
+        more = role.share<RayCodec>(batch, more);
+        const Slice mine = role.slice(batch.size());
         arena.execute([&] {
             tbb::parallel_for(mine.begin, mine.end, [&](size_t k) {
                 Ray& r = batch[k];
@@ -233,14 +232,14 @@ RcontribRunStats runRcontrib(const RcontribRunSettings& s, std::istream& in, Con
                 if (!r.dummy) trace(r.origin, r.dir, r.index, r.maxDistance, r.values);
             });
         });
-        if (spread) collectSlices(*s.cluster, batch, mine, putValues, getValues);
-        if (!root) continue;
+        role.collect<RayCodec>(batch, mine);
+        if (!role.root()) continue;
         for (const Ray& r : batch) {
             records->add(r);
             progress.update(input->done());
         }
     }
-    if (!root) return stats;
+    if (!role.root()) return stats;
     records->finish();
     out->close();
     input->check();

@@ -103,21 +103,23 @@ private:
     std::string pendingError_;
 };
 
-// What a rank needs of a record to trace it, and what it sends back.
-void putRay(ByteWriter& w, const Record& r) {
-    w.put(r.ray);
-    w.put(r.maxDistance);
-    w.put(r.index);
-    w.put(r.bogus);
-}
-void getRay(ByteReader& rd, Record& r) {
-    r.ray = rd.get<InputRay>();
-    r.maxDistance = rd.get<double>();
-    r.index = rd.get<uint64_t>();
-    r.bogus = rd.get<bool>();
-}
-void putText(ByteWriter& w, const Record& r) { w.putString(r.text); }
-void getText(ByteReader& rd, Record& r) { r.text = rd.getString(); }
+// What a rank needs of a record to trace it, and what it sends back (cluster_batch.h).
+struct RecordCodec {
+    static void putRay(ByteWriter& w, const Record& r) {
+        w.put(r.ray);
+        w.put(r.maxDistance);
+        w.put(r.index);
+        w.put(r.bogus);
+    }
+    static void getRay(ByteReader& rd, Record& r) {
+        r.ray = rd.get<InputRay>();
+        r.maxDistance = rd.get<double>();
+        r.index = rd.get<uint64_t>();
+        r.bogus = rd.get<bool>();
+    }
+    static void putResult(ByteWriter& w, const Record& r) { w.putString(r.text); }
+    static void getResult(ByteReader& rd, Record& r) { r.text = rd.getString(); }
+};
 
 }  // namespace
 
@@ -125,12 +127,10 @@ RtraceRunStats runRtrace(const RtraceRunSettings& s, std::istream& in, std::ostr
                          const RayWriter& writer, const RayTraceFn& trace) {
     RtraceRunStats stats;
     const int threads = std::max(1, s.threads);
-    const bool spread = distributed(s.cluster);
-    const bool root = !s.cluster || s.cluster->isRoot();
-    const int ranks = spread ? s.cluster->size() : 1;
+    const BatchRole role(s.cluster);
     const size_t batchSize =
-        s.batchSize > 0 ? s.batchSize : size_t(64) * size_t(threads) * size_t(ranks);
-    if (root && s.xres > 0 && s.yres > 0) {
+        s.batchSize > 0 ? s.batchSize : size_t(64) * size_t(threads) * size_t(role.ranks());
+    if (role.root() && s.xres > 0 && s.yres > 0) {
         out << resolutionLine(s.xres, s.yres);
         out.flush();
     }
@@ -141,10 +141,9 @@ RtraceRunStats runRtrace(const RtraceRunSettings& s, std::istream& in, std::ostr
     batch.reserve(batchSize);
     for (bool more = true; more;) {
         batch.clear();
-        if (root) more = input.fill(batch, batchSize);
-        if (spread) more = shareBatch(*s.cluster, batch, more, putRay, getRay);
-        const Slice mine = spread ? sliceOf(batch.size(), s.cluster->rank(), ranks)
-                                  : Slice{0, batch.size()};
+        if (role.root()) more = input.fill(batch, batchSize);
+        more = role.share<RecordCodec>(batch, more);
+        const Slice mine = role.slice(batch.size());
         arena.execute([&] {
             tbb::parallel_for(mine.begin, mine.end, [&](size_t k) {
                 Record& r = batch[k];
@@ -158,8 +157,8 @@ RtraceRunStats runRtrace(const RtraceRunSettings& s, std::istream& in, std::ostr
                 writer.write(r.text, res, wantTree ? &tree : nullptr);
             });
         });
-        if (spread) collectSlices(*s.cluster, batch, mine, putText, getText);
-        if (!root) continue;
+        role.collect<RecordCodec>(batch, mine);
+        if (!role.root()) continue;
         for (const Record& r : batch) {
             if (!r.bogus) ++stats.rays;
             out << r.text;
@@ -167,7 +166,7 @@ RtraceRunStats runRtrace(const RtraceRunSettings& s, std::istream& in, std::ostr
         }
         if (!out) throw InputError("write error on output");
     }
-    if (!root) return stats;
+    if (!role.root()) return stats;
     out.flush();
     input.check();
     return stats;

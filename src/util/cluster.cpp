@@ -5,13 +5,31 @@
 
 namespace rp {
 
-Bytes LocalCluster::gather(std::span<const std::byte> mine, std::vector<size_t>& sizes) {
-    sizes.assign(1, mine.size());
-    return Bytes(mine.begin(), mine.end());
+Bytes Cluster::gather(std::span<const std::byte> mine, std::vector<size_t>& sizes) {
+    sizes.clear();
+    if (!isRoot()) {
+        send(0, mine);
+        return {};
+    }
+    Bytes all(mine.begin(), mine.end());
+    sizes.push_back(mine.size());
+    for (int r = 1; r < size(); ++r) {
+        Bytes part = receive(r);
+        sizes.push_back(part.size());
+        all.insert(all.end(), part.begin(), part.end());
+    }
+    return all;
 }
 
-Bytes LocalCluster::allGather(std::span<const std::byte> mine, std::vector<size_t>& sizes) {
-    return gather(mine, sizes);
+Bytes Cluster::allGather(std::span<const std::byte> mine, std::vector<size_t>& sizes) {
+    Bytes all = gather(mine, sizes);
+    ByteWriter w;
+    w.putVector(sizes);
+    Bytes head = std::move(w.bytes());
+    broadcast(head);
+    ByteReader(head).getVector(sizes);
+    broadcast(all);
+    return all;
 }
 
 void LocalCluster::send(int, std::span<const std::byte>) {

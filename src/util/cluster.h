@@ -28,17 +28,19 @@ public:
 
     // The root's `bytes`, given to every rank (resized there).
     virtual void broadcast(Bytes& bytes) = 0;
-    // Every rank's `mine`, at the root in rank order (`sizes` gets each length); other
-    // ranks get nothing back.
-    virtual Bytes gather(std::span<const std::byte> mine, std::vector<size_t>& sizes) = 0;
-    // Every rank's `mine` in rank order, at every rank.
-    virtual Bytes allGather(std::span<const std::byte> mine, std::vector<size_t>& sizes) = 0;
     // Point to point; messages from one rank to another arrive in the order sent.
     virtual void send(int to, std::span<const std::byte> bytes) = 0;
     virtual Bytes receive(int from) = 0;
     // Ends every rank of the run now (a rank that cannot go on must not leave the others
     // waiting for it). Returns only for a cluster of one.
     virtual void abortAll(int exitCode) = 0;
+
+    // Every rank's `mine`, at the root in rank order (`sizes` gets each length); other
+    // ranks get nothing back. Point to point rather than MPI_Gatherv, whose int
+    // displacements cap the total.
+    Bytes gather(std::span<const std::byte> mine, std::vector<size_t>& sizes);
+    // Every rank's `mine` in rank order, at every rank.
+    Bytes allGather(std::span<const std::byte> mine, std::vector<size_t>& sizes);
 };
 
 // This process alone: rank 0 of 1.
@@ -47,8 +49,6 @@ public:
     int rank() const override { return 0; }
     int size() const override { return 1; }
     void broadcast(Bytes&) override {}
-    Bytes gather(std::span<const std::byte> mine, std::vector<size_t>& sizes) override;
-    Bytes allGather(std::span<const std::byte> mine, std::vector<size_t>& sizes) override;
     void send(int, std::span<const std::byte>) override;
     Bytes receive(int) override;
     void abortAll(int) override {}

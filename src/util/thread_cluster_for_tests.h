@@ -59,31 +59,6 @@ public:
             bytes = c_.take(0, rank_);
         }
     }
-    Bytes gather(std::span<const std::byte> mine, std::vector<size_t>& sizes) override {
-        sizes.clear();
-        if (rank_ != 0) {
-            c_.post(rank_, 0, Bytes(mine.begin(), mine.end()));
-            return {};
-        }
-        Bytes all(mine.begin(), mine.end());
-        sizes.push_back(mine.size());
-        for (int r = 1; r < size(); ++r) {
-            Bytes part = c_.take(r, 0);
-            sizes.push_back(part.size());
-            all.insert(all.end(), part.begin(), part.end());
-        }
-        return all;
-    }
-    Bytes allGather(std::span<const std::byte> mine, std::vector<size_t>& sizes) override {
-        Bytes all = gather(mine, sizes);
-        ByteWriter w;
-        w.putVector(sizes);
-        Bytes head = std::move(w.bytes());
-        broadcast(head);
-        ByteReader(head).getVector(sizes);
-        broadcast(all);
-        return all;
-    }
     void send(int to, std::span<const std::byte> bytes) override {
         c_.post(rank_, to, Bytes(bytes.begin(), bytes.end()));
     }
