@@ -1,10 +1,14 @@
 // Photon map files written by heap node (see map_file_writer.h).
 #include "pmap/map_file_writer.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <vector>
 
+#include <tbb/parallel_for.h>
+
 #include "pmap/photon_records.h"
+#include "pmap/record_checksums.h"
 #include "util/error.h"
 
 namespace rp::pmap {
@@ -27,7 +31,9 @@ PhotonMapFileWriter::PhotonMapFileWriter(const std::string& path, const PhotonMa
       overwrite_(overwrite),
       file_(path),
       numPhotons_(info.stats.numPhotons) {
-    const std::string prologue = photonMapFilePrologue(info, commandLine);
+    PhotonMapFileInfo withChecksums = info;
+    withChecksums.checksumBlock = kChecksumBlock;
+    const std::string prologue = photonMapFilePrologue(withChecksums, commandLine);
     file_.write(prologue.data(), prologue.size());
     recordsAt_ = prologue.size();
 }
@@ -40,6 +46,23 @@ void PhotonMapFileWriter::write(uint64_t first, std::span<const Photon> photons)
     file_.writeAt(recordsAt_ + (first - 1) * kPhotonRecordSize, buf.data(), buf.size());
 }
 
-void PhotonMapFileWriter::commit() { file_.commit(overwrite_); }
+void PhotonMapFileWriter::commit() {
+    // The records were written in any order: their checksums are taken from the file,
+    // block by block, once all are there (from the page cache, as a rule).
+    // Blocks in parallel (in the caller's task arena, as the writes).
+    RecordChecksums sums;
+    sums.block = kChecksumBlock;
+    sums.crc.resize(checksumBlocks(numPhotons_, kChecksumBlock));
+    tbb::parallel_for(size_t(0), sums.crc.size(), [&](size_t b) {
+        const uint64_t first = uint64_t(b) * kChecksumBlock;
+        const size_t n = size_t(std::min<uint64_t>(kChecksumBlock, numPhotons_ - first));
+        std::vector<unsigned char> raw(n * kPhotonRecordSize);
+        file_.readAt(recordsAt_ + first * kPhotonRecordSize, raw.data(), raw.size());
+        sums.crc[b] = recordsChecksum(raw.data(), raw.size());
+    });
+    const std::string trailer = sums.encode();
+    file_.writeAt(recordsAt_ + numPhotons_ * kPhotonRecordSize, trailer.data(), trailer.size());
+    file_.commit(overwrite_);
+}
 
 }  // namespace rp::pmap

@@ -109,6 +109,15 @@ OutOfCoreStore::OutOfCoreStore(const std::string& path, uint64_t offset, uint64_
         throw InputError(SourceLoc{path, 0},
                          fmt::format("can't open photon map file: {}", std::strerror(errno)));
     try {
+        if (const uint32_t block = options_.checksumBlock) {
+            const uint64_t blocks = checksumBlocks(n_, block);
+            std::vector<unsigned char> bytes(4 * blocks);
+            preadAll(offset_ + n_ * kPhotonRecordSize, bytes.data(), bytes.size(),
+                     "truncated photon map (checksums incomplete)");
+            checksums_.block = block;
+            checksums_.decode(bytes.data(), blocks);
+            verified_ = std::make_unique<std::atomic<bool>[]>(blocks);
+        }
         resident_.resize(wholeLevels(options_.residentPhotons, n_));
         std::vector<unsigned char> raw;
         for (uint64_t i = 0; i < resident_.size(); i += kReadChunkPhotons)
@@ -124,21 +133,41 @@ OutOfCoreStore::~OutOfCoreStore() {
     if (fd_ >= 0) ::close(fd_);
 }
 
-void OutOfCoreStore::readPhotons(uint64_t first, size_t count, Photon* dst,
-                                 std::vector<unsigned char>& buf) const {
-    buf.resize(count * kPhotonRecordSize);
-    const size_t want = buf.size();
+void OutOfCoreStore::preadAll(uint64_t at, unsigned char* dst, size_t want,
+                              const char* truncated) const {
     size_t got = 0;
-    const off_t at = static_cast<off_t>(offset_ + first * kPhotonRecordSize);
     while (got < want) {
-        const ssize_t r = ::pread(fd_, buf.data() + got, want - got, at + static_cast<off_t>(got));
+        const ssize_t r = ::pread(fd_, dst + got, want - got, static_cast<off_t>(at + got));
         if (r < 0 && errno == EINTR) continue;
-        if (r <= 0)
-            throw InputError(SourceLoc{path_, 0},
-                             fmt::format("truncated photon map (read error at photon {})",
-                                         first + got / kPhotonRecordSize));
+        if (r <= 0) throw InputError(SourceLoc{path_, 0}, truncated);
         got += static_cast<size_t>(r);
     }
+}
+
+void OutOfCoreStore::readRaw(uint64_t first, size_t count, std::vector<unsigned char>& buf) const {
+    buf.resize(count * kPhotonRecordSize);
+    preadAll(offset_ + first * kPhotonRecordSize, buf.data(), buf.size(),
+             fmt::format("truncated photon map (read error at photon {})", first).c_str());
+}
+
+void OutOfCoreStore::verifyBlocks(uint64_t first, size_t count) const {
+    const uint32_t block = checksums_.block;
+    if (!block || count == 0) return;
+    std::vector<unsigned char> raw;
+    for (uint64_t b = first / block; b <= (first + count - 1) / block; ++b) {
+        if (verified_[b].load(std::memory_order_acquire)) continue;
+        const uint64_t begin = b * block;
+        const size_t n = size_t(std::min<uint64_t>(block, n_ - begin));
+        readRaw(begin, n, raw);
+        checksums_.check(path_, b, recordsChecksum(raw.data(), raw.size()), n_);
+        verified_[b].store(true, std::memory_order_release);
+    }
+}
+
+void OutOfCoreStore::readPhotons(uint64_t first, size_t count, Photon* dst,
+                                 std::vector<unsigned char>& buf) const {
+    verifyBlocks(first, count);
+    readRaw(first, count, buf);
     for (size_t j = 0; j < count; ++j) dst[j] = decodePhoton(buf.data() + j * kPhotonRecordSize);
     if (const std::string problem = checkPhotonRecords({dst, count}, first); !problem.empty())
         throw InputError(SourceLoc{path_, 0}, treeProblem(problem));

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <string>
@@ -26,6 +27,7 @@
 #include "pmap/kdtree.h"
 #include "pmap/photon.h"
 #include "pmap/photon_store.h"
+#include "pmap/record_checksums.h"
 #include "util/bulk_memory.h"
 
 namespace rp::pmap {
@@ -40,6 +42,9 @@ public:
         // keeps all.
         std::function<bool(const Photon&)> keep;
         uint64_t numPrimaries = 0;  // contribution maps: photons' primary index below this
+        // Records per checksum, which follow the records (record_checksums.h); 0: none.
+        // Each block is checked the first time a read touches it.
+        uint32_t checksumBlock = 0;
     };
 
     // Photons [0, n) are the records at byte `offset` of `path`, whose size the caller
@@ -64,6 +69,12 @@ private:
     // records as read).
     void readPhotons(uint64_t first, size_t count, Photon* dst,
                      std::vector<unsigned char>& buf) const;
+    // Reads `want` bytes at byte `at` of the file (InputError `truncated` if it ends).
+    void preadAll(uint64_t at, unsigned char* dst, size_t want, const char* truncated) const;
+    // Reads the raw records [first, first + count) into buf.
+    void readRaw(uint64_t first, size_t count, std::vector<unsigned char>& buf) const;
+    // Checks the checksums of the blocks [first, first + count) touches, once each.
+    void verifyBlocks(uint64_t first, size_t count) const;
 
     std::string path_;
     int fd_ = -1;
@@ -71,6 +82,9 @@ private:
     uint64_t n_ = 0;
     Options options_;
     BulkVector<Photon> resident_;  // photons [0, resident_.size())
+    RecordChecksums checksums_;
+    // Blocks whose checksum has been checked (by any thread).
+    std::unique_ptr<std::atomic<bool>[]> verified_;
 };
 
 }  // namespace rp::pmap

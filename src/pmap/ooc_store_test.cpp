@@ -1,7 +1,9 @@
 // Damaged map files: out of core, a record out of place, a bad record and a file
 // truncated after opening are each reported, naming the file, by the search that reads
-// them; in core, the same damage is refused at opening. (Answers against brute force are
-// in photon_store_test.cpp.)
+// them; in core, the same damage is refused at opening. The fixture's maps are as
+// RADIANCE writes them (no checksums); radphoton's own maps also carry record checksums,
+// which catch what the order and record checks cannot (a changed flux). (Answers against
+// brute force are in photon_store_test.cpp.)
 #include "pmap/ooc_store.h"
 
 #include <gtest/gtest.h>
@@ -48,7 +50,9 @@ protected:
     void SetUp() override {
         f_ = dir_.file("c.pm");
         randomMap(1000, 4).save(f_, "", false);
-        data_ = slurp(f_);
+        withChecksums_ = slurp(f_);
+        data_ = test::withoutChecksums(withChecksums_, 1000);
+        write();
         records_ = data_.size() - 1000 * 27;
     }
     void write() { std::ofstream(f_, std::ios::binary) << data_; }
@@ -73,7 +77,7 @@ protected:
         return "(no InputError)";
     }
     TempDir dir_;
-    std::string f_, data_;
+    std::string f_, data_, withChecksums_;
     size_t records_ = 0;
 };
 
@@ -129,6 +133,62 @@ TEST_F(OutOfCoreBadFile, FileTruncatedAfterOpening) {
     const std::string msg = searchError(m);
     EXPECT_NE(msg.find("truncated photon map"), std::string::npos) << msg;
     EXPECT_NE(msg.find(f_), std::string::npos) << msg;
+}
+
+// Our own maps: a flipped bit in a photon's flux keeps the tree valid; the checksum of its
+// block finds it, in core at opening and out of core in the search that reads the block.
+TEST_F(OutOfCoreBadFile, ChecksumsFindAChangedFlux) {
+    data_ = withChecksums_;
+    write();
+    EXPECT_EQ(searchError(openOutOfCore(f_)), "(no InputError)");
+    EXPECT_EQ(errorOf([&] { PhotonMap::open(f_, StoreOptions{}); }), "(no InputError)");
+    const size_t records = data_.size() - 4 - 1000 * 27;
+    data_[records + 700 * 27 + 13] ^= 1;  // photon 700's flux mantissa
+    write();
+    const std::string core = errorOf([&] { PhotonMap::open(f_, StoreOptions{}); });
+    EXPECT_NE(core.find("damaged photon map: photons 0 to 999 do not match their checksum"),
+              std::string::npos)
+        << core;
+    EXPECT_NE(core.find(f_), std::string::npos) << core;
+    // Out of core: the block holding the resident top is checked at opening (this map is
+    // one block); the others when a search first reads them.
+    const std::string ooc = errorOf([&] {
+        const std::string e = searchError(openOutOfCore(f_));
+        if (e != "(no InputError)") throw InputError(e);
+    });
+    EXPECT_NE(ooc.find("do not match their checksum"), std::string::npos) << ooc;
+    // Without the checksums (as RADIANCE would write it) the same map opens.
+    data_ = test::withoutChecksums(data_, 1000);
+    write();
+    EXPECT_EQ(errorOf([&] { PhotonMap::open(f_, StoreOptions{}); }), "(no InputError)");
+}
+
+// A map of several blocks: opening reads and checks the block of the resident top only;
+// the search that first reads the damaged block reports it.
+TEST_F(OutOfCoreBadFile, ChecksumsCheckedAsBlocksAreRead) {
+    randomMap(10000, 5).save(f_, "", true);
+    data_ = slurp(f_);
+    const size_t records = data_.size() - 4 * 3 - 10000 * 27;
+    data_[records + 9000 * 27 + 13] ^= 1;  // block 2
+    write();
+    const PhotonMap m = openOutOfCore(f_);
+    const std::string msg = searchError(m);
+    EXPECT_NE(msg.find("damaged photon map: photons 8192 to 9999 do not match their checksum"),
+              std::string::npos)
+        << msg;
+}
+
+// A damaged checksum, or a file cut within the checksums, is an error too.
+TEST_F(OutOfCoreBadFile, DamagedOrMissingChecksums) {
+    data_ = withChecksums_;
+    data_.back() ^= 0x40;
+    write();
+    EXPECT_NE(errorOf([&] { PhotonMap::open(f_, StoreOptions{}); }).find("checksum"),
+              std::string::npos);
+    data_.pop_back();
+    write();
+    EXPECT_NE(errorOf([&] { PhotonMap::open(f_, StoreOptions{}); }).find("size mismatch"),
+              std::string::npos);
 }
 
 }  // namespace

@@ -53,6 +53,8 @@ struct PhotonMapFileInfo {
     PhotonMapStats stats;
     std::span<const PhotonPrimary> primaries;
     std::span<const PrimaryRay> primaryRays;  // 3.1kPD maps only
+    // Records per checksum after the records (record_checksums.h); 0: none.
+    uint32_t checksumBlock = 0;
     // "3.1k", or "3.1kPD" with primary rays.
     const char* fileVersion() const;
 };
@@ -143,8 +145,13 @@ private:
     static PhotonMap readPrologue(std::istream& in, const std::string& what);
     // The photon records that follow, decoded and checked (read()'s second half).
     void readPhotons(std::istream& in, const std::string& what, TreeOrder order);
+    // Reads the checksums after the records and compares them with `computed`, the
+    // records' own (InputError naming the first block that differs).
+    void checkChecksums(std::istream& in, const std::string& what,
+                        const std::vector<uint32_t>& computed) const;
 
     PhotonMapType type_ = PhotonMapType::Global;
+    uint32_t checksumBlock_ = 0;  // the file's RP_CRC32 line (record_checksums.h)
     BulkVector<Photon> photons_;
     std::shared_ptr<const PhotonStore> store_;
     std::vector<PhotonPrimary> primaries_;

@@ -24,6 +24,7 @@
 #include <sstream>
 
 #include "pmap/photon_map.h"
+#include "pmap/record_checksums.h"
 #include "pmap/photon_records.h"
 #include "util/bulk_memory.h"
 #include "util/error.h"
@@ -153,6 +154,8 @@ Header photonMapFileHeader(const PhotonMapFileInfo& info, const std::string& com
             cFormat("%u primary rays", static_cast<unsigned>(info.primaries.size())));
     h.lines.push_back("FORMAT=" + photonMapFormat(info.type));
     h.lines.push_back(std::string("VERSION=") + info.fileVersion());
+    if (info.checksumBlock)
+        h.lines.push_back(fmt::format("{}={}", kChecksumKey, info.checksumBlock));
     return h;
 }
 
@@ -185,8 +188,15 @@ std::string photonMapFilePrologue(const PhotonMapFileInfo& info, const std::stri
 void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
     const std::span<const Photon> photons = this->photons();  // all of a map read on demand
     RP_CHECK(photons.size() == stats_.numPhotons);
-    const std::string b = photonMapFilePrologue(fileInfo(), commandLine);
+    // Every map radphoton writes carries record checksums (record_checksums.h); each
+    // written chunk is whole checksum blocks but the last.
+    static_assert(kWriteChunkPhotons % kChecksumBlock == 0);
+    PhotonMapFileInfo info = fileInfo();
+    info.checksumBlock = kChecksumBlock;
+    const std::string b = photonMapFilePrologue(info, commandLine);
     out.write(b.data(), static_cast<std::streamsize>(b.size()));
+    RecordChecksums sums;
+    sums.block = kChecksumBlock;
     // Chunks are encoded in parallel (in the caller's task arena), a batch at a time to
     // bound the buffer memory, and written in order: the bytes do not depend on threads.
     // BulkVectors: resize() leaves them uninitialised (each byte is written once).
@@ -205,10 +215,18 @@ void PhotonMap::write(std::ostream& out, const std::string& commandLine) const {
             for (size_t j = begin; j < end; ++j, b += kPhotonRecordSize)
                 encodePhoton(b, photons[j]);
         });
-        for (size_t k = 0; k < chunks; ++k)
+        for (size_t k = 0; k < chunks; ++k) {
+            const size_t bytes = bufs[k].size();
+            constexpr size_t kBlockBytes = kChecksumBlock * kPhotonRecordSize;
+            for (size_t at = 0; at < bytes; at += kBlockBytes)
+                sums.crc.push_back(
+                    recordsChecksum(bufs[k].data() + at, std::min(kBlockBytes, bytes - at)));
             out.write(reinterpret_cast<const char*>(bufs[k].data()),
-                      static_cast<std::streamsize>(bufs[k].size()));
+                      static_cast<std::streamsize>(bytes));
+        }
     }
+    const std::string trailer = sums.encode();
+    out.write(trailer.data(), static_cast<std::streamsize>(trailer.size()));
 }
 
 void PhotonMap::save(const std::string& path, const std::string& commandLine,
@@ -276,6 +294,13 @@ PhotonMap PhotonMap::readPrologue(std::istream& in, const std::string& what) {
     // the clearer message before reading binary data.
     if (!headerVersion.empty() && !knownVersion(headerVersion))
         throw InputError(loc, versionProblem(headerVersion));
+    if (const std::string block = h.value(kChecksumKey); !block.empty()) {
+        char* end = nullptr;
+        const unsigned long b = std::strtoul(block.c_str(), &end, 10);
+        if (*end != '\0' || b == 0 || b > (1u << 30))
+            throw InputError(loc, fmt::format("bad {} line in the header", kChecksumKey));
+        map.checksumBlock_ = static_cast<uint32_t>(b);
+    }
 
     // Size of the binary part, to check the photon count before allocating anything.
     const std::streampos start = in.tellg();
@@ -316,6 +341,14 @@ PhotonMap PhotonMap::readPrologue(std::istream& in, const std::string& what) {
     s.numPhotons = static_cast<uint64_t>(numPhotons);
 
     const uint64_t primaryBytes = numPrimary * recordSize;
+    // The checksums after the records (record_checksums.h), when the header announces them.
+    const uint64_t trailer =
+        map.checksumBlock_ ? 4 * checksumBlocks(static_cast<uint64_t>(std::max<int64_t>(numPhotons, 0)),
+                                                map.checksumBlock_)
+                           : 0;
+    if (trailer > remaining)
+        throw InputError(loc, "truncated photon map (checksums incomplete)");
+    remaining -= trailer;
     const bool sizeOk = primaryBytes <= remaining &&
                         s.numPhotons == (remaining - primaryBytes) / kPhotonRecordSize &&
                         (remaining - primaryBytes) % kPhotonRecordSize == 0;
@@ -367,14 +400,24 @@ void PhotonMap::readPhotons(std::istream& in, const std::string& what, TreeOrder
     // records are fixed-size, so photon i is at byte 27 i of its chunk. The photon array is
     // on huge pages (BulkVector: 4 KiB page faults cost more than the decoding here).
     photons_.resize(s.numPhotons);
-    const size_t chunk = std::min<size_t>(kReadChunkPhotons, s.numPhotons);
-    BulkVector<unsigned char> raw(std::max<size_t>(chunk, 1) * kPhotonRecordSize);
-    for (size_t i = 0; i < s.numPhotons; i += kReadChunkPhotons) {
-        const size_t n = std::min<size_t>(kReadChunkPhotons, s.numPhotons - i);
+    // With checksums, each block's is computed as it is read: a chunk is whole blocks
+    // (one block when a block is larger than a chunk).
+    const uint64_t block = checksumBlock_;
+    const size_t step = block ? std::max<size_t>(block, kReadChunkPhotons / block * block)
+                              : kReadChunkPhotons;
+    BulkVector<unsigned char> raw(std::max<size_t>(std::min<size_t>(step, s.numPhotons), 1) *
+                                  kPhotonRecordSize);
+    std::vector<uint32_t> computed;
+    for (size_t i = 0; i < s.numPhotons; i += step) {
+        const size_t n = std::min<size_t>(step, s.numPhotons - i);
         if (!readBytes(in, raw.data(), n * kPhotonRecordSize))
             throw InputError(loc, fmt::format("truncated photon map (read error at photon {})", i));
+        for (size_t b = 0; block && b < n; b += block)
+            computed.push_back(recordsChecksum(raw.data() + b * kPhotonRecordSize,
+                                               std::min<size_t>(block, n - b) * kPhotonRecordSize));
         decodePhotons(raw.data(), n, photons_.data() + i);
     }
+    if (block) checkChecksums(in, what, computed);
 
     if (const std::string problem = checkPhotonRecords(photons_); !problem.empty())
         throw InputError(loc, treeProblem(problem));
@@ -384,6 +427,17 @@ void PhotonMap::readPhotons(std::istream& in, const std::string& what, TreeOrder
             if (p.primary >= numPrimary)
                 throw InputError(loc, fmt::format("photon refers to primary ray {} of {}",
                                                   p.primary, numPrimary));
+}
+
+void PhotonMap::checkChecksums(std::istream& in, const std::string& what,
+                               const std::vector<uint32_t>& computed) const {
+    RecordChecksums stored;
+    stored.block = checksumBlock_;
+    std::vector<unsigned char> bytes(4 * computed.size());
+    if (!readBytes(in, bytes.data(), bytes.size()))
+        throw InputError(SourceLoc{what, 0}, "truncated photon map (checksums incomplete)");
+    stored.decode(bytes.data(), computed.size());
+    for (size_t b = 0; b < computed.size(); ++b) stored.check(what, b, computed[b], stats_.numPhotons);
 }
 
 PhotonMap PhotonMap::load(const std::string& path, TreeOrder order) {

@@ -94,6 +94,7 @@ PhotonMap PhotonMap::open(const std::string& path, const StoreOptions& options,
         o.pagePhotons = place.pagePhotons;
         o.keep = keep;
         o.numPrimaries = map.primaries_.size();
+        o.checksumBlock = map.checksumBlock_;
         map.store_ = std::make_shared<OutOfCoreStore>(path, uint64_t(records), n, std::move(o));
         return map;
     }

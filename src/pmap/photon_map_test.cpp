@@ -16,6 +16,7 @@
 #include "util/dir_code.h"
 #include "util/error.h"
 #include "pmap/pmap_test_util.h"
+#include "pmap/record_checksums.h"
 #include "util/temp_dir_for_tests.h"
 
 namespace rp::pmap {
@@ -132,9 +133,12 @@ TEST(PhotonMap, ExactFileBytes) {
     const std::string file = out.str();
     const std::string head = "#?RADIANCE\n";
     ASSERT_EQ(file.compare(0, head.size(), head), 0);
-    const size_t bin = file.find("VERSION=3.1k\n\n");
+    // Our maps end their header with the record checksums' line (record_checksums.h).
+    const size_t bin = file.find("VERSION=3.1k\nRP_CRC32=4096\n\n");
     ASSERT_NE(bin, std::string::npos);
-    const std::string b = file.substr(bin + std::strlen("VERSION=3.1k\n\n"));
+    const std::string withCrc = file.substr(bin + std::strlen("VERSION=3.1k\nRP_CRC32=4096\n\n"));
+    ASSERT_GE(withCrc.size(), 4u);
+    const std::string b = withCrc.substr(0, withCrc.size() - 4);
 
     auto flt = [](double x) {
         std::string s;
@@ -157,6 +161,13 @@ TEST(PhotonMap, ExactFileBytes) {
     want += std::string("\x06", 1);
     EXPECT_EQ(b.size(), 5u + 8 + 15 + 30 + 15 + 5 + 4 + 27);
     EXPECT_EQ(b, want);
+    // Then the one block's CRC-32, most significant byte first.
+    const uint32_t crc = recordsChecksum(
+        reinterpret_cast<const unsigned char*>(want.data() + want.size() - 27), 27);
+    const std::string tail = withCrc.substr(withCrc.size() - 4);
+    EXPECT_EQ(uint32_t(uint8_t(tail[0])) << 24 | uint32_t(uint8_t(tail[1])) << 16 |
+                  uint32_t(uint8_t(tail[2])) << 8 | uint8_t(tail[3]),
+              crc);
 }
 
 void expectSameMap(const PhotonMap& a, const PhotonMap& b) {
@@ -238,7 +249,8 @@ protected:
         dir_ = std::make_unique<TempDir>();
         good_ = dir_->file("good.pm");
         randomMap(PhotonMapType::Global, 1000, 6).save(good_, "mkpmap x", false);
-        data_ = slurp(good_);
+        // As RADIANCE writes it: damage beyond what checksums catch is checked as well.
+        data_ = test::withoutChecksums(slurp(good_), 1000);
         binaryStart_ = data_.find("VERSION=3.1k\n\n") + std::strlen("VERSION=3.1k\n\n");
     }
     // Loads `data` written to a file; returns the InputError message.

@@ -30,7 +30,7 @@ int openNamedTemporary(const std::string& path, std::string& name) {
         std::snprintf(suffix, sizeof suffix, ".%08x.tmp", static_cast<unsigned>(rd()));
         name = folder + "/." + base + suffix;
         // Mode 0666: the umask decides, as for any ordinary output file.
-        int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        int fd = ::open(name.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd >= 0 || errno != EEXIST) return fd;
     }
     errno = EEXIST;
@@ -41,7 +41,7 @@ int openNamedTemporary(const std::string& path, std::string& name) {
 
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
 #ifdef O_TMPFILE
-    fd_ = ::open(folderOf(path_).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    fd_ = ::open(folderOf(path_).c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0666);
 #endif
     // Some file systems (and old kernels) have no unnamed files: a hidden name then,
     // removed again on failure (a killed run can leave it, named ".<target>.*.tmp").
@@ -71,6 +71,18 @@ void AtomicFile::writeAt(uint64_t offset, const void* data, size_t size) {
         ssize_t n = ::pwrite(fd_, p, size, off_t(offset));
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) fail(path_, "write error", n < 0 ? errno : ENOSPC);
+        p += n;
+        size -= size_t(n);
+        offset += uint64_t(n);
+    }
+}
+
+void AtomicFile::readAt(uint64_t offset, void* data, size_t size) const {
+    char* p = static_cast<char*>(data);
+    while (size > 0) {
+        ssize_t n = ::pread(fd_, p, size, off_t(offset));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) fail(path_, "read error", n < 0 ? errno : EIO);
         p += n;
         size -= size_t(n);
         offset += uint64_t(n);

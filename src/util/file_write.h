@@ -32,6 +32,8 @@ public:
     // Writes all of data at byte `offset` (the append position stays), for files whose
     // parts are produced out of order; several threads may write disjoint ranges at once.
     void writeAt(uint64_t offset, const void* data, size_t size);
+    // Reads back `size` bytes at `offset` of what was written (InputError if it cannot).
+    void readAt(uint64_t offset, void* data, size_t size) const;
     // Syncs the data, gives it the target's name (replacing an existing file unless
     // `replace` is false, when an existing target is an InputError) and syncs the folder.
     void commit(bool replace = true);
