@@ -10,3 +10,4 @@ oconv room.rad sources.rad > annual.oct
 mkpmap -fo -apC contrib.pm 2m -apo window_glass -aps sensor_plane -n 2 annual.oct
 rcontrib -fo -I -h -V- -ap contrib.pm 250 -M mods.txt -n 2 annual.oct < sensors.txt > coef.txt
 python3 annual.py metrics coef.txt "$@"
+./plan.sh 3 "DA300 %" da300_falsecolor.png   # the same plan through pvalue -r and falsecolor
