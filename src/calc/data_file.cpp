@@ -70,7 +70,9 @@ AxisWeights weights(const DataFile::Axis& a, double coord) {
     double x;                    // fractional sample index
     if (a.points.empty()) {
         x = (coord - a.begin) / (a.end - a.begin) * (a.count - 1);
-        r.i = static_cast<int>(std::floor(x));
+        // Clamped before the conversion: a far (or NaN) coordinate has no int index.
+        const double f = std::floor(x);
+        r.i = !(f >= 0) ? 0 : f > a.count - 2 ? a.count - 2 : static_cast<int>(f);
     } else {
         const auto& p = a.points;
         bool up = p.back() > p.front();

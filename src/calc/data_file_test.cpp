@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "util/error.h"
 
 namespace rp::calc {
@@ -34,6 +36,11 @@ TEST(CalcDataFile, OneDimensionRegular) {
     EXPECT_DOUBLE_EQ(at(20), (2 * 7 - 3) / (4.0 - 0));
     EXPECT_DOUBLE_EQ(at(-5), 1 - 2);
     EXPECT_DOUBLE_EQ(at(-10), (2 * 1 - 3) / 2.0);
+    // Far away the taper goes to zero; the sample index is clamped before it becomes an
+    // int (it overflowed one before: undefined behaviour, found by fuzz_data_file).
+    EXPECT_NEAR(at(1e300), 0, 1e-290);
+    EXPECT_NEAR(at(-1e300), 0, 1e-290);
+    EXPECT_TRUE(std::isnan(at(std::nan(""))));
 }
 
 TEST(CalcDataFile, CommentsWhereverANumberMayStand) {
