@@ -9,6 +9,17 @@
 
 namespace rp::calc {
 
+// An argument or select() index: RADIANCE rounds, n = value + .5 truncated. Beyond int's
+// range (or NaN) it saturates, to an index every check refuses, instead of converting
+// out of range (undefined behaviour, found by fuzz_cal).
+inline int roundedIndex(double v) {
+    const double r = v + 0.5;
+    if (!(r > -2147483648.0)) return -2147483647 - 1;  // NaN too
+    if (r >= 2147483647.0) return 2147483647;
+    return static_cast<int>(r);
+}
+
+
 struct Builtin {
     std::string_view name;
     int minArgs;

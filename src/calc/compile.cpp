@@ -438,7 +438,7 @@ private:
                 if (nargs < 2) return error(s, e.line, "select() needs an index and values");
                 args(nullptr);
                 if (isConst(kids[0])) {
-                    int k = static_cast<int>(kids[0]->num + 0.5);
+                    const int k = roundedIndex(kids[0]->num);
                     if (k == 0) return constant(nargs - 1);
                     if (k >= 1 && k < nargs) return kids[k];
                 }
@@ -458,7 +458,7 @@ private:
                     s.pure = false;
                     n = newNode(isConst(kids[0]) ? evModArg : evModArgDyn);
                 }
-                if (isConst(kids[0])) n->index = static_cast<int>(kids[0]->num + 0.5);
+                if (isConst(kids[0])) n->index = roundedIndex(kids[0]->num);
                 n->a = kids[0];
                 n->info = site;
                 return n;

@@ -83,6 +83,15 @@ TEST(CalcErrors, ModifierArgumentsMustExist) {
     EXPECT_EQ(testing::evalWith("", "A2 + AC", true, &ray), 4);
     EXPECT_EQ(errorOf([&] { testing::evalWith("", "A3", true, &ray); }),
               std::string(RP_SOURCE_DIR) + "/lib/rayinit.cal:21: missing real argument 3 (modifier has 2)");
+    // Indices beyond int's range saturate instead of overflowing the conversion
+    // (undefined behaviour before; found by fuzz_cal): constant and computed.
+    EXPECT_NE(errorOf([&] { testing::evalWith("", "arg(7.7e88)", true, &ray); })
+                  .find("missing real argument 2147483647"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { testing::evalWith("", "arg(Dx * 1e30 + 1e30)", true, &ray); })
+                  .find("missing real argument 2147483647"),
+              std::string::npos);
+    EXPECT_NE(evalError("b = select(1e30, 1, 2);", "b").find("out of range"), std::string::npos);
 }
 
 TEST(CalcErrors, RecursionWithoutBaseCase) {

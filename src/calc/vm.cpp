@@ -35,8 +35,7 @@ inline double finiteOrZero(double r, long& errors) {
     return 0;
 }
 
-// RADIANCE rounds argument indices: n = value + .5, truncated.
-inline int indexOf(double v) { return static_cast<int>(v + 0.5); }
+inline int indexOf(double v) { return roundedIndex(v); }
 
 double modArg(int n, const void* info, const RayContext& ray) {
     const auto& args = ray.args;
