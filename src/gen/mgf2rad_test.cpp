@@ -112,6 +112,13 @@ TEST(MgfColor, BlackBodyAndSpectrum) {
     ASSERT_TRUE(flat.setSpectrum(380, 780, std::vector<float>(41, 1.f), d));
     EXPECT_TRUE(flat.isGrey());
     EXPECT_FALSE(flat.setSpectrum(800, 900, {1, 1, 1}, d));  // outside the visible
+    // Degenerate spectra (overflowing sums, all zero) store saturated samples rather than
+    // converting NaN or huge values to int16 (undefined behaviour; found by fuzz_mgf).
+    // 1 nm data is box-filtered in floats, whose sums overflow to infinity here: the
+    // scale becomes 0 and infinity times 0 is NaN.
+    MgfColor huge;
+    huge.setSpectrum(400, 500, std::vector<float>(101, 3e38f), d);
+    for (int16_t v : huge.samples) EXPECT_EQ(v, 0);
 }
 
 // ---- bad input: one-line InputErrors naming the MGF file and line ----

@@ -43,8 +43,14 @@ constexpr Samples kZPrim = {4051, 4054, 4052, 4053, 4054, 4056, 4059, 4064, 4071
                             -869, -863, -855, -855, -851, -848, -847, -846, -846, -846, -845,
                             -846, -843, -845, -845, -845, -845, -845, -845};
 
-// A stored sample: RADIANCE adds frand() and truncates (dithered rounding).
-int16_t toSample(double v, MgfDither& dither) { return static_cast<int16_t>(v + dither.next()); }
+// A stored sample: RADIANCE adds frand() and truncates (dithered rounding). Saturated to
+// int16's range first (NaN: 0): a degenerate spectrum (all zero, or huge values) gives
+// values whose conversion is undefined behaviour (found by fuzz_mgf).
+int16_t toSample(double v, MgfDither& dither) {
+    const double d = v + dither.next();
+    if (!(d > -32768.0)) return d != d ? 0 : -32768;
+    return d >= 32767.0 ? int16_t(32767) : static_cast<int16_t>(d);
+}
 
 }  // namespace
 
