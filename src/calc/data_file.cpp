@@ -141,7 +141,10 @@ DataFile DataFile::parse(std::string_view text, const std::string& name) {
         if (total > (std::size_t{1} << 31)) r.fail("data array too large");
         d.axes_.push_back(std::move(a));
     }
-    d.values_.reserve(total);
+    // No more than the text can hold (a value takes at least two characters): a short
+    // file declaring a huge array fails at its end instead of reserving gigabytes first
+    // (fuzz_data_file's out-of-memory finding).
+    d.values_.reserve(std::min(total, text.size() / 2 + 1));
     for (std::size_t j = 0; j < total; ++j) d.values_.push_back(r.number("data value"));
     if (!r.atEnd())
         r.failAtNext("more data than the axes declare (" + std::to_string(total) + " values)");

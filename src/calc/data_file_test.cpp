@@ -90,6 +90,10 @@ TEST(CalcDataFile, MalformedFiles) {
     EXPECT_EQ(errorOf("9\n"), "bad.dat:1: too many dimensions (9, at most 8)");
     EXPECT_EQ(errorOf("# c\n1 # d\n0 1 2\n1 #2\n"), "bad.dat:4: unexpected end of file: expected data value");
     EXPECT_EQ(errorOf("1\n0 1 2\n1 2 # end\n#\n3"), "bad.dat:5: more data than the axes declare (2 values)");
+    // Declaring 2^31 values in a few bytes fails at the end of the text, without
+    // reserving 16 GB first (the fuzzer's out-of-memory finding).
+    EXPECT_EQ(errorOf("2\n0 1 46341\n0 1 46340\n1 2\n"),
+              "bad.dat:4: unexpected end of file: expected data value");
 }
 
 TEST(CalcDataFile, MissingFile) {
