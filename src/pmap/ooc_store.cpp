@@ -15,6 +15,7 @@
 #include "pmap/kdtree_walk.h"
 #include "pmap/photon_records.h"
 #include "util/error.h"
+#include "util/file_write.h"
 
 namespace rp::pmap {
 
@@ -135,13 +136,7 @@ OutOfCoreStore::~OutOfCoreStore() {
 
 void OutOfCoreStore::preadAll(uint64_t at, unsigned char* dst, size_t want,
                               const char* truncated) const {
-    size_t got = 0;
-    while (got < want) {
-        const ssize_t r = ::pread(fd_, dst + got, want - got, static_cast<off_t>(at + got));
-        if (r < 0 && errno == EINTR) continue;
-        if (r <= 0) throw InputError(SourceLoc{path_, 0}, truncated);
-        got += static_cast<size_t>(r);
-    }
+    if (!preadFully(fd_, at, dst, want)) throw InputError(SourceLoc{path_, 0}, truncated);
 }
 
 void OutOfCoreStore::readRaw(uint64_t first, size_t count, std::vector<unsigned char>& buf) const {

@@ -78,15 +78,23 @@ void AtomicFile::writeAt(uint64_t offset, const void* data, size_t size) {
 }
 
 void AtomicFile::readAt(uint64_t offset, void* data, size_t size) const {
+    if (!preadFully(fd_, offset, data, size)) fail(path_, "read error", errno ? errno : EIO);
+}
+
+bool preadFully(int fd, uint64_t offset, void* data, size_t size) {
     char* p = static_cast<char*>(data);
     while (size > 0) {
-        ssize_t n = ::pread(fd_, p, size, off_t(offset));
+        ssize_t n = ::pread(fd, p, size, off_t(offset));
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) fail(path_, "read error", n < 0 ? errno : EIO);
+        if (n <= 0) {
+            if (n == 0) errno = 0;
+            return false;
+        }
         p += n;
         size -= size_t(n);
         offset += uint64_t(n);
     }
+    return true;
 }
 
 void AtomicFile::commit(bool replace) {

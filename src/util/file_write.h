@@ -77,6 +77,10 @@ private:
     std::vector<char> buffer_;
 };
 
+// Reads exactly `size` bytes at byte `offset` of the open file `fd` (retrying short reads
+// and EINTR). False, with errno set (0 at the end of the file), if they are not all there.
+bool preadFully(int fd, uint64_t offset, void* data, size_t size);
+
 // Writes `data` to `path` as an AtomicFile. Throws InputError naming `path` when the
 // folder is not writable or the disk fills.
 void writeFileAtomically(const std::string& path, const std::string& data);
