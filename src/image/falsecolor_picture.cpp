@@ -62,8 +62,9 @@ Picture composeLayers(const std::vector<Layer>& layers) {
 // RGBE-rounded value.
 double packedBright(const Pixel& p) { return bright(toPixel(toColr(p))); }
 
-Picture textPicture(const std::string& text, int height, Pixel ink, Pixel paper) {
-    TextMask m = renderText(text, height);
+Picture textPicture(const std::string& text, int height, Pixel ink, Pixel paper,
+                    int maxWidth = 0) {
+    TextMask m = renderText(text, height, maxWidth);
     Picture p(std::max(m.width, 1), height);
     for (int y = 0; y < m.height; ++y)
         for (int x = 0; x < p.width; ++x)
@@ -130,9 +131,12 @@ void addLegendText(const FalseColorOptions& o, const LegendGeometry& g,
         int centre = static_cast<int>(g.sheight * (count - i) + g.sheight * 0.5);
         int y = centre - g.textHeight / 2;
         // pcompos thresholds: -t .5 keeps the white strokes, +t .1 the inverted ones.
-        shadows.push_back({textPicture(texts[i], g.textHeight, black, white), 2, y - 1,
+        // Our font is wider than RADIANCE's proportional one: long values are narrowed
+        // to the legend's width (less the shadow's offset) instead of being cut.
+        const int room = std::max(1, o.legendWidth - 2);
+        shadows.push_back({textPicture(texts[i], g.textHeight, black, white, room), 2, y - 1,
                            [](const Pixel& p) { return packedBright(p) < 0.1; }});
-        inks.push_back({textPicture(texts[i], g.textHeight, white, black), 0, y,
+        inks.push_back({textPicture(texts[i], g.textHeight, white, black, room), 0, y,
                         [](const Pixel& p) { return packedBright(p) > 0.5; }});
     }
     for (Layer& l : shadows) layers.push_back(std::move(l));

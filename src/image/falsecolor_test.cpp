@@ -184,6 +184,22 @@ TEST(FalseColor, LegendSitsLeftOfTheImage) {
     EXPECT_EQ(bare.height, 3);
 }
 
+TEST(FalseColor, LongLabelsAreNarrowedNotCut) {
+    // -log 2 -s 30000 -n 4 labels 9486.832: 8 glyphs of our font at the legend's text
+    // height (20) are 107 pixels, wider than the 100-pixel legend (RADIANCE's
+    // proportional font fits). The label is narrowed to fit, every glyph drawn.
+    const TextMask wide = renderText("9486.832", 20);
+    EXPECT_EQ(wide.width, 107);
+    const TextMask fit = renderText("9486.832", 20, 98);
+    EXPECT_EQ(fit.width, 98);
+    EXPECT_EQ(fit.height, 20);
+    int lastGlyphStrokes = 0;  // the final '2' occupies the last eighth
+    for (int y = 0; y < fit.height; ++y)
+        for (int x = fit.width * 7 / 8; x < fit.width; ++x) lastGlyphStrokes += fit.at(x, y);
+    EXPECT_GT(lastGlyphStrokes, 20);
+    EXPECT_EQ(renderText("300", 20, 98).width, renderText("300", 20).width);  // short: as is
+}
+
 TEST(FalseColor, BackgroundShowsBetweenContours) {
     Picture bg(256, 3);
     for (Pixel& p : bg.pixels) p = {0.5f, 0.25f, 0.125f};

@@ -105,12 +105,17 @@ constexpr int kCellHeight = 9;  // one row above and below the glyph
 
 }  // namespace
 
-TextMask renderText(std::string_view text, int height) {
+TextMask renderText(std::string_view text, int height, int maxWidth) {
     TextMask m;
     if (height <= 0 || text.empty()) return m;
-    double unit = static_cast<double>(height) / kCellHeight;  // pixels per font unit
+    const double unit = static_cast<double>(height) / kCellHeight;  // pixels per font unit
+    double unitX = unit;
     m.height = height;
     m.width = static_cast<int>(std::lround(text.size() * kCellWidth * unit));
+    if (maxWidth > 0 && m.width > maxWidth) {  // narrower glyphs rather than a cut label
+        m.width = maxWidth;
+        unitX = static_cast<double>(maxWidth) / (text.size() * kCellWidth);
+    }
     m.on.assign(static_cast<size_t>(m.width) * m.height, false);
     // Nearest-neighbour sampling of the font grid at each pixel centre keeps strokes
     // crisp (no grey edges), which the legend's drop-shadow thresholds rely on.
@@ -118,7 +123,7 @@ TextMask renderText(std::string_view text, int height) {
         int gy = static_cast<int>(std::floor((y + 0.5) / unit)) - 1;
         if (gy < 0 || gy >= 7) continue;
         for (int x = 0; x < m.width; ++x) {
-            int cx = static_cast<int>(std::floor((x + 0.5) / unit));
+            int cx = static_cast<int>(std::floor((x + 0.5) / unitX));
             size_t ci = static_cast<size_t>(cx / kCellWidth);
             int gx = cx % kCellWidth;
             if (ci >= text.size() || gx >= 5) continue;

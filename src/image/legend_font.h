@@ -19,7 +19,8 @@ struct TextMask {
 // Renders one line of text `height` pixels high (the glyph cell is 6 x 9 units: one unit
 // of space right of each glyph, one above and one below, so lines never touch). Glyphs
 // not in the font are drawn as '?'. Width is the number of characters times the cell
-// width, rounded.
-TextMask renderText(std::string_view text, int height);
+// width, rounded; with maxWidth > 0 a wider text is narrowed to maxWidth (the glyphs
+// keep their height), so that a long label still fits its legend.
+TextMask renderText(std::string_view text, int height, int maxWidth = 0);
 
 }  // namespace rp

@@ -82,18 +82,12 @@ private:
     Clock::time_point start_, last_;
 };
 
-// RADIANCE's bigdiff: some component differs by more than `md` times the other's value.
-bool bigDiff(const Pixel& a, const Pixel& b, double md) {
-    for (int i = 0; i < 3; ++i)
-        if (a[i] - b[i] > md * b[i] || b[i] - a[i] > md * a[i]) return true;
-    return false;
-}
-
 struct Sampler {
     ViewRays rays;
     std::optional<ViewRays> previous;  // -pm: the previous frame's view
     int xres, yres;
-    double jitter, threshold, motionBlur, aperture;
+    PixelRayParams params;
+    double threshold;
     bool useDepth;
     std::vector<Pixel>& pixels;
     std::vector<float>& z;
@@ -101,48 +95,11 @@ struct Sampler {
 
     size_t at(int x, int row) const { return size_t(row) * size_t(xres) + size_t(x); }
 
-    // The primary ray of pixel (x, row), or nullopt where nothing is traced.
-    std::optional<ViewRays::Ray> pixelRay(int x, int row, uint64_t index) const {
-        // RADIANCE compat (pixjitter): .5 + pj*(.5 - random) in each direction.
-        Rng rng(0, RngDomain::Pixel, index);
-        const double jx = 0.5 + jitter * (0.5 - rng.uniform());
-        const double jy = 0.5 + jitter * (0.5 - rng.uniform());
-        // Image y runs from the bottom; picture rows from the top.
-        const double hpos = (x + jx) / xres, vpos = (yres - 1 - row + jy) / yres;
-        auto ray = rays.ray(hpos, vpos);
-        if (!ray) return ray;  // outside a fisheye's circle
-        // RADIANCE compat (rpict.c pixvalue): motion blur moves origin, direction and aft
-        // distance linearly towards the previous view's ray by d in [-pm/2, pm/2).
-        const double dm = motionBlur * (0.5 - rng.uniform());
-        if (previous && motionBlur > 1e-6) {
-            if (auto last = previous->ray(hpos, vpos)) {
-                ray->origin = (1 - dm) * ray->origin + dm * last->origin;
-                ray->maxDistance = (1 - dm) * ray->maxDistance + dm * last->maxDistance;
-                const Vec3 d = (1 - dm) * ray->direction + dm * last->direction;
-                if (length(d) == 0) return std::nullopt;
-                ray->direction = normalize(d);
-            }
-        }
-        const double u1 = rng.uniform(), u2 = rng.uniform(), u3 = rng.uniform();
-        if (!rays.jitterAperture(*ray, aperture, u1, u2, u3)) return std::nullopt;
-        return ray;
-    }
-
     void trace(PixelTracer& tracer, int x, int row) {
-        const uint64_t index = uint64_t(row) * uint64_t(xres) + uint64_t(x);
-        auto ray = pixelRay(x, row, index);
         const size_t i = at(x, row);
-        if (!ray) {  // black, as RADIANCE
-            pixels[i] = Pixel{0, 0, 0};
-            z[i] = 0;
-            return;
-        }
-        double distance = 0;
-        const double maxDistance = ray->maxDistance > 0 ? ray->maxDistance : HUGE_VAL;
-        Color c = tracer(ray->origin, ray->direction, index, maxDistance, &distance);
-        traced.fetch_add(1, std::memory_order_relaxed);
-        pixels[i] = Pixel{float(c.r), float(c.g), float(c.b)};
-        z[i] = float(distance);
+        if (tracePixel(tracer, rays, previous ? &*previous : nullptr, params, x, row, xres,
+                       yres, pixels[i], z[i]))
+            traced.fetch_add(1, std::memory_order_relaxed);
     }
 
     bool differ(size_t a, size_t b) const {
@@ -278,6 +235,59 @@ void shareRows(Cluster& cluster, Picture& pic, std::vector<float>& z, size_t k0,
 
 }  // namespace
 
+bool bigDiff(const Pixel& a, const Pixel& b, double md) {
+    for (int i = 0; i < 3; ++i)
+        if (a[i] - b[i] > md * b[i] || b[i] - a[i] > md * a[i]) return true;
+    return false;
+}
+
+std::optional<ViewRays::Ray> pixelRay(const ViewRays& rays, const ViewRays* previous,
+                                      const PixelRayParams& params, int x, int row, int xres,
+                                      int yres) {
+    const uint64_t index = uint64_t(row) * uint64_t(xres) + uint64_t(x);
+    // RADIANCE compat (pixjitter): .5 + pj*(.5 - random) in each direction.
+    Rng rng(0, RngDomain::Pixel, index);
+    const double jx = 0.5 + params.jitter * (0.5 - rng.uniform());
+    const double jy = 0.5 + params.jitter * (0.5 - rng.uniform());
+    // Image y runs from the bottom; picture rows from the top.
+    const double hpos = (x + jx) / xres, vpos = (yres - 1 - row + jy) / yres;
+    auto ray = rays.ray(hpos, vpos);
+    if (!ray) return ray;  // outside a fisheye's circle
+    // RADIANCE compat (rpict.c pixvalue): motion blur moves origin, direction and aft
+    // distance linearly towards the previous view's ray by d in [-pm/2, pm/2).
+    const double dm = params.motionBlur * (0.5 - rng.uniform());
+    if (previous && params.motionBlur > 1e-6) {
+        if (auto last = previous->ray(hpos, vpos)) {
+            ray->origin = (1 - dm) * ray->origin + dm * last->origin;
+            ray->maxDistance = (1 - dm) * ray->maxDistance + dm * last->maxDistance;
+            const Vec3 d = (1 - dm) * ray->direction + dm * last->direction;
+            if (length(d) == 0) return std::nullopt;
+            ray->direction = normalize(d);
+        }
+    }
+    const double u1 = rng.uniform(), u2 = rng.uniform(), u3 = rng.uniform();
+    if (!rays.jitterAperture(*ray, params.aperture, u1, u2, u3)) return std::nullopt;
+    return ray;
+}
+
+bool tracePixel(PixelTracer& tracer, const ViewRays& rays, const ViewRays* previous,
+                const PixelRayParams& params, int x, int row, int xres, int yres, Pixel& value,
+                float& depth) {
+    auto ray = pixelRay(rays, previous, params, x, row, xres, yres);
+    if (!ray) {  // black, as RADIANCE
+        value = Pixel{0, 0, 0};
+        depth = 0;
+        return false;
+    }
+    const uint64_t index = uint64_t(row) * uint64_t(xres) + uint64_t(x);
+    double distance = 0;
+    const double maxDistance = ray->maxDistance > 0 ? ray->maxDistance : HUGE_VAL;
+    const Color c = tracer(ray->origin, ray->direction, index, maxDistance, &distance);
+    value = Pixel{float(c.r), float(c.g), float(c.b)};
+    depth = float(distance);
+    return true;
+}
+
 std::vector<std::string> viewHeaderLines(const RpictOptions& options) {
     std::vector<std::string> lines{viewHeaderLine(options.view)};
     // RADIANCE compat (rpict.c): PIXASPECT only when the pixels are not about square.
@@ -301,8 +311,8 @@ Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& fac
     std::vector<float> z(pic.pixels.size(), 0.0f);
     const int firstRow = std::clamp(rowsIn.firstRow, 0, size.yres);
     std::atomic<long> traced{0};
-    Sampler s{rays, previous, size.xres, size.yres, options.pixelJitter,
-              options.sampleThreshold, options.motionBlur, options.apertureBlur,
+    const PixelRayParams params{options.pixelJitter, options.motionBlur, options.apertureBlur};
+    Sampler s{rays, previous, size.xres, size.yres, params, options.sampleThreshold,
               depth != nullptr, pic.pixels, z, traced};
 
     Progress report(progress, options.reportInterval, size.yres, firstRow, traced);

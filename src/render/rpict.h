@@ -9,10 +9,12 @@
 #include <ctime>
 #include <functional>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "image/picture.h"
+#include "image/view.h"
 #include "render/rpict_options.h"
 #include "util/cluster.h"
 #include "util/color.h"
@@ -41,6 +43,33 @@ using ProgressCallback = std::function<void(const RenderProgress&)>;
 // "1234 rays, 45.00% after 0.0123 hours" (RADIANCE's report() without host and CPU
 // times); the tool prefixes "rpict: ".
 std::string formatProgress(long rays, double percentDone, double seconds);
+
+// How rpict aims the primary ray of a pixel: -pj jitter, -pm motion blur towards the
+// previous frame's view, -pd aperture (rpict's pixvalue; rvu traces pixels the same way).
+struct PixelRayParams {
+    double jitter = 0;      // -pj
+    double motionBlur = 0;  // -pm (used only with a previous view)
+    double aperture = 0;    // -pd
+};
+
+// The primary ray of pixel (x, row) (row 0 at the top) of an xres by yres picture of
+// `rays`' view, jittered by the pixel's own random stream so that it never depends on
+// the order pixels are traced in; `previous` (may be null): the previous frame's view
+// for -pm. nullopt where nothing is traced: outside a fisheye's circle, or a degenerate
+// blurred direction.
+std::optional<ViewRays::Ray> pixelRay(const ViewRays& rays, const ViewRays* previous,
+                                      const PixelRayParams& params, int x, int row, int xres,
+                                      int yres);
+
+// Traces pixel (x, row) as rpict does: its value and the distance to the first hit in
+// *depth; black with depth 0 where pixelRay gives no ray. Returns whether a ray was traced.
+bool tracePixel(PixelTracer& tracer, const ViewRays& rays, const ViewRays* previous,
+                const PixelRayParams& params, int x, int row, int xres, int yres, Pixel& value,
+                float& depth);
+
+// RADIANCE's bigdiff: some colour component of a and b differs by more than
+// `threshold` times the other's value (-pt; rpict and rvu sample where it is true).
+bool bigDiff(const Pixel& a, const Pixel& b, double threshold);
 
 // The largest -ps RADIANCE allows (MAXDIV); larger values are reduced with a warning.
 constexpr int kMaxSampleSpacing = 16;

@@ -111,8 +111,10 @@ bool parseOwnOption(const std::vector<std::string>& args, size_t& i, RpictComman
 
 }  // namespace
 
-RpictCommand parseRpictCommand(std::vector<std::string> args) {
+RpictCommand parseRpictCommand(std::vector<std::string> args, const RpictOptions& defaults,
+                               const ToolOptionParser& toolOption) {
     RpictCommand cmd;
+    cmd.options = defaults;
     size_t i = 0;
     while (true) {
         // RADIANCE compat (rpmain.c): @file and $EVAR are expanded at option positions.
@@ -129,6 +131,7 @@ RpictCommand parseRpictCommand(std::vector<std::string> args) {
             i += size_t(n);
             continue;
         }
+        if (toolOption && toolOption(args, i)) continue;
         if (parseOwnOption(args, i, cmd)) continue;
         throw InputError("unknown option '" + a + "'");
     }

@@ -4,6 +4,7 @@
 // picture loop itself lives in rpict.h.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,7 +51,14 @@ struct RpictCommand {
 // option after the scene files, and RADIANCE features not supported yet (-P, -PP).
 // -ro file is -r file -o file, as RADIANCE's. A missing scene is not an error here (the
 // tool decides).
-RpictCommand parseRpictCommand(std::vector<std::string> args);
+// `defaults`: the options before parsing (another program's defaults, e.g. rvu's);
+// `toolOption` (may be empty): tried before rpict's own options, for a program that
+// shares rpict's command line (rvu): consumes args[i] and its values, advancing i past
+// them, and returns true, or returns false to leave args[i] to rpict.
+using ToolOptionParser = std::function<bool(const std::vector<std::string>& args, size_t& i)>;
+RpictCommand parseRpictCommand(std::vector<std::string> args,
+                               const RpictOptions& defaults = RpictOptions{},
+                               const ToolOptionParser& toolOption = {});
 
 // The lines RADIANCE's `rpict -defaults` prints (view, picture, then the render options
 // of formatRenderDefaults), reflecting `opt`.
