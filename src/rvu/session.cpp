@@ -122,7 +122,6 @@ CommandResult Session::dispatch(const std::string& name, const std::string& args
 }
 
 CommandResult Session::changeView(const View& view) {
-    std::string why;
     try {
         ViewRays check(view);
     } catch (const InputError& e) {

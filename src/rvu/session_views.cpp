@@ -64,10 +64,11 @@ std::optional<render::RayResult> Session::pickSurface(const Cursor& c, CommandRe
         render::RayResult r =
             renderer_->trace(*context_, org, ray->direction, 0, nullptr, aft - travelled);
         if (!r.hit) break;
-        const PrimType type = r.material >= 0 ? scene.prims[size_t(r.material)].type : PrimType::Antimatter;
-        const bool invisible = r.material < 0;
-        if (!skipTransparent || (!invisible && !seeThrough(type))) return r;
-        if (!invisible && type != PrimType::Mist && !weak) weak = r;
+        const bool invisible = r.material < 0;  // void: nothing to see
+        const bool through = invisible || seeThrough(scene.prims[size_t(r.material)].type);
+        if (!skipTransparent || !through) return r;
+        if (!invisible && scene.prims[size_t(r.material)].type != PrimType::Mist && !weak)
+            weak = r;
         // Continue just past the surface (relative step: the scene may be far from 0).
         const double past = r.distance * (1 + 1e-9) + 1e-7;
         org = org + ray->direction * past;
