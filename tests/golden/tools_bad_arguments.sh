@@ -16,7 +16,7 @@ check() {  # description, command...
     fi
 }
 for t in genblinds genbox gendaylit genprism genrev gensky gensurf genworm mkpmap oconv pmapdump \
-         ra_png rpreview xform; do
+         ra_png rpreview rvu xform; do
     check "$t unknown option" "$RP_BIN/$t" -zzz
 done
 check "getinfo missing file" "$RP_BIN/getinfo" "$tmp/none.hdr"
@@ -26,4 +26,10 @@ check "mkpmap missing scene" "$RP_BIN/mkpmap" -apg "$tmp/g.pm" 1k "$tmp/none.rad
 check "pmapdump missing map" "$RP_BIN/pmapdump" "$tmp/none.pm"
 check "ra_png missing picture" "$RP_BIN/ra_png" "$tmp/none.hdr" "$tmp/out.png"
 check "xform missing file" "$RP_BIN/xform" -t 1 0 0 "$tmp/none.rad"
+check "rvu missing scene" "$RP_BIN/rvu" "$tmp/none.rad"
+check "rvu unknown device" "$RP_BIN/rvu" -o x11 "$tmp/none.rad"
+check "rvu refused rpict option" "$RP_BIN/rvu" -z depth.z "$tmp/none.rad"
+printf 'void plastic red\n0\n0\n4 1 0 0 0\n' > "$tmp/bad.rad"
+check "rvu bad scene" "$RP_BIN/rvu" "$tmp/bad.rad"
+grep -q "bad.rad:1: " "$tmp/err"
 exit $fail
