@@ -90,15 +90,27 @@ private:
     std::string png_;
 };
 
+// A loopback name, with any port: a page reached through a forwarded port (ssh -L
+// 8080:127.0.0.1:PORT) names the forwarded one. Another site's name (DNS rebinding) is
+// refused.
+bool loopbackHost(const std::string& host) {
+    std::string name = host;
+    const size_t colon = host.rfind(':');
+    if (colon != std::string::npos && host.back() != ']') {  // a port (none: port 80)
+        if (colon + 1 == host.size() ||
+            host.find_first_not_of("0123456789", colon + 1) != std::string::npos)
+            return false;
+        name = host.substr(0, colon);
+    }
+    return name == "127.0.0.1" || name == "localhost" || name == "[::1]";
+}
+
 bool WebDisplay::allowed(const httplib::Request& req) const {
     const std::string host = req.get_header_value("Host");
-    const std::string port = std::to_string(port_);
-    if (host != "127.0.0.1:" + port && host != "localhost:" + port) return false;
-    if (req.has_header("Origin")) {
-        const std::string origin = req.get_header_value("Origin");
-        if (origin != "http://127.0.0.1:" + port && origin != "http://localhost:" + port)
-            return false;
-    }
+    if (!loopbackHost(host)) return false;
+    // Only this page's own requests: same origin as the address it was loaded from.
+    if (req.has_header("Origin") && req.get_header_value("Origin") != "http://" + host)
+        return false;
     const std::string token = req.has_header("X-Rvu-Token") ? req.get_header_value("X-Rvu-Token")
                                                             : req.get_param_value("t");
     // Compared in full whatever the first difference, so timing tells nothing.
@@ -221,6 +233,12 @@ void WebDisplay::routes() {
     server_.set_payload_max_length(64 * 1024);
     // An idle keep-alive connection holds up stop() for this long (cpp-httplib 0.11).
     server_.set_keep_alive_timeout(1);
+    // cpp-httplib's default also sets SO_REUSEPORT, which would let a second rvu bind
+    // the same -o web:PORT and receive half of the first one's requests.
+    server_.set_socket_options([](socket_t sock) {
+        int yes = 1;
+        setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
+    });
 }
 
 void WebDisplay::publish(bool quit) {

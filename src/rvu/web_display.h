@@ -3,8 +3,9 @@
 // commands run on the calling thread, the HTTP requests on the server's threads.
 //
 // Who may talk to it: every request must carry the random token printed in the address
-// (query t= or header X-Rvu-Token), name this server in its Host header (no DNS
-// rebinding) and, when it has an Origin, come from this server's own page. Anything
+// (query t= or header X-Rvu-Token), name a loopback host in its Host header (no DNS
+// rebinding; any port, for forwarded ports) and, when it has an Origin, come from the
+// page of that same address. Anything
 // else is refused with 403, so that another page in the user's browser can neither read
 // the picture nor send `write` or `quit`.
 //

@@ -85,8 +85,24 @@ TEST_F(WebDisplayTest, OnlyTheTokenHolderIsServed) {
     EXPECT_EQ(status(c.Post("/command", withToken({{"Origin", "http://evil.example"}}), "quit",
                             "text/plain")),
               403);
-    EXPECT_EQ(status(c.Get("/state", withToken({{"Origin", "http://localhost:" + std::to_string(port_)}}))),
+    const std::string port = std::to_string(port_);
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Origin", "http://127.0.0.1:" + port}}))), 200);
+    // Another page on this machine (other port) may not send commands, even with the token.
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Origin", "http://127.0.0.1:1"}}))), 403);
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Origin", "http://localhost:" + port}}))), 403);
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "localhost:" + port},
+                                                {"Origin", "http://localhost:" + port}}))),
               200);
+    // Through a forwarded port (ssh -L 8080:127.0.0.1:PORT) the page names that port.
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "127.0.0.1:8080"},
+                                                {"Origin", "http://127.0.0.1:8080"}}))),
+              200);
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "127.0.0.1:8080x"}}))), 403);
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "127.0.0.1:"}}))), 403);
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "127.0.0.1"}}))), 200);  // port 80
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "[::1]"}}))), 200);
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "127.0.0.2:" + port}}))), 403);
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "localhost.evil.example:" + port}}))), 403);
     EXPECT_EQ(status(c.Get("/nothing", withToken())), 404);
 }
 

@@ -18,8 +18,8 @@ cd "$RP_SOURCE_DIR/examples/cornell"
 opts="-u- -dt .1 -dc .25 -dr 0 -dp 128 -ds 0 -st .3 -ss 1 -lr 6 -lw .01 -aa 0 -ad 64 -as 0
       -ap $tmp/g.pm 50 -ap $tmp/c.pm 50 -vf view.vf -x 80 -y 80 -ps 1"
 
-start_rvu() {
-    "$RP_BIN/rvu" $opts scene.rad 2> "$tmp/err" &
+start_rvu() {  # extra options
+    "$RP_BIN/rvu" $opts "$@" scene.rad 2> "$tmp/err" &
     pid=$!
     for _ in $(seq 300); do grep -q "rvu: open http" "$tmp/err" && break; sleep 0.1; done
     url=$(grep -o 'http://127\.0\.0\.1:[0-9]*/?t=[0-9a-f]*' "$tmp/err")
@@ -69,7 +69,12 @@ grep -a -q "^EXPOSURE=2" "$tmp/b.hdr"
 paste <("$RP_BIN/pvalue" -h -H -d -b "$tmp/a.hdr") <("$RP_BIN/pvalue" -h -H -d -b "$tmp/b.hdr") |
     awk '{ if ($1 > 0 && ($2 / $1 < 1.98 || $2 / $1 > 2.02)) bad++ } END { exit bad > 0 }'
 
-# SIGTERM ends it as quit does.
-start_rvu
+# -o web:PORT listens there (the port just freed); SIGTERM ends it as quit does.
+last=$port
+start_rvu -o "web:$last"
+[ "$port" = "$last" ]
+# A second rvu cannot take the port while the first has it.
+if "$RP_BIN/rvu" -o "web:$last" scene.rad 2> "$tmp/err2"; then exit 1; fi
+[ "$(cat "$tmp/err2")" = "rvu: cannot listen on 127.0.0.1:$last" ]
 kill -TERM "$pid"; wait "$pid"; pid=
 echo "rvu headless: ok"
