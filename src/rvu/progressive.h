@@ -84,7 +84,6 @@ private:
     int spacing_;
     double threshold_;
     std::vector<Pixel> pixels_;
-    std::vector<float> depth_;
     std::vector<uint8_t> traced_;
     long tracedCount_ = 0;
     PixelRect frame_;

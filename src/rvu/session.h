@@ -71,7 +71,6 @@ public:
     bool greyscale() const { return greyscale_; }
 
 private:
-    struct Pick;
     CommandResult dispatch(const std::string& name, const std::string& args,
                            const std::vector<Cursor>& cursor);
     // Command families (session_commands.cpp, session_views.cpp).

@@ -208,8 +208,9 @@ CommandResult Session::viewCommand(const std::string& args) {
     // A file: append this view with the comments after the name (RADIANCE's view file).
     const auto words = splitWords(s);
     std::ofstream out(words[0], std::ios::app);
-    const std::string rest = trim(s.substr(words[0].size()));
-    if (out) out << "rvu" << formatView(view_) << (rest.empty() ? "" : " " + rest) << '\n';
+    std::string rest;
+    for (size_t i = 1; i < words.size(); ++i) rest += " " + words[i];
+    if (out) out << "rvu" << formatView(view_) << rest << '\n';
     if (!out) return failure("cannot open \"" + words[0] + "\"");
     return success("");
 }

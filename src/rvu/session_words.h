@@ -4,27 +4,23 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "image/rgbe.h"
+#include "render/command_args.h"
 #include "rvu/session.h"
 #include "util/error.h"
 
 namespace rp::rvu {
 
+// Words as RADIANCE's nextword reads them: white space separates, quotes may hold it.
+using render::splitWords;
+
 inline std::string trim(const std::string& s) {
     const size_t a = s.find_first_not_of(" \t\r\n");
     if (a == std::string::npos) return "";
     return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
-}
-
-inline std::vector<std::string> splitWords(const std::string& s) {
-    std::istringstream in(s);
-    std::vector<std::string> words;
-    for (std::string w; in >> w;) words.push_back(w);
-    return words;
 }
 
 // A whole word as a finite number; InputError naming `what` otherwise. Stricter than
