@@ -10,6 +10,7 @@
 #include "image/falsecolor.h"
 #include "util/error.h"
 #include "util/header.h"
+#include "main_errors.h"
 
 int main(int argc, char** argv) {
     try {
@@ -20,11 +21,9 @@ int main(int argc, char** argv) {
         std::cout.flush();
         if (!std::cout) throw rp::InputError("error writing standard output");
         return 0;
-    } catch (const rp::InputError& e) {
-        std::cerr << "falsecolor: " << e.what() << '\n';
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "falsecolor: " << e.what() << '\n';
-        return 2;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "falsecolor: " << e.line << '\n';
+        return e.exitCode;
     }
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "util/error.h"
+#include "main_errors.h"
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv, argv + argc);
@@ -13,9 +14,10 @@ int main(int argc, char** argv) {
     std::string out;
     try {
         out = rp::gen::genblinds(args);
-    } catch (const rp::InputError& e) {
-        std::cerr << "genblinds: " << e.what() << '\n';
-        return 1;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "genblinds: " << e.line << '\n';
+        return e.exitCode;
     }
     std::cout << out;
     std::cout.flush();

@@ -5,6 +5,7 @@
 
 #include "gen/genbox.h"
 #include "util/error.h"
+#include "main_errors.h"
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv, argv + argc);
@@ -13,9 +14,10 @@ int main(int argc, char** argv) {
     std::string out;
     try {
         out = rp::gen::genbox(args);
-    } catch (const rp::InputError& e) {
-        std::cerr << "genbox: " << e.what() << '\n';
-        return 1;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "genbox: " << e.line << '\n';
+        return e.exitCode;
     }
     for (const std::string& w : warnings) std::cerr << "genbox: " << w << '\n';
     std::cout << out;

@@ -5,6 +5,7 @@
 
 #include "gen/gendaylit.h"
 #include "util/error.h"
+#include "main_errors.h"
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv, argv + argc);
@@ -13,9 +14,10 @@ int main(int argc, char** argv) {
     std::string out;
     try {
         out = rp::gen::gendaylit(args, &warnings);
-    } catch (const rp::InputError& e) {
-        std::cerr << "gendaylit: " << e.what() << '\n';
-        return 1;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "gendaylit: " << e.line << '\n';
+        return e.exitCode;
     }
     for (const std::string& w : warnings) std::cerr << "gendaylit: " << w << '\n';
     std::cout << out;

@@ -5,6 +5,7 @@
 
 #include "gen/genprism.h"
 #include "util/error.h"
+#include "main_errors.h"
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv, argv + argc);
@@ -13,9 +14,10 @@ int main(int argc, char** argv) {
     std::string out;
     try {
         out = rp::gen::genprism(args, std::cin);
-    } catch (const rp::InputError& e) {
-        std::cerr << "genprism: " << e.what() << '\n';
-        return 1;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "genprism: " << e.line << '\n';
+        return e.exitCode;
     }
     for (const std::string& w : warnings) std::cerr << "genprism: " << w << '\n';
     std::cout << out;

@@ -7,6 +7,7 @@
 #include "calc/search_path.h"
 #include "gen/genrev.h"
 #include "util/error.h"
+#include "main_errors.h"
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv, argv + argc);
@@ -15,9 +16,10 @@ int main(int argc, char** argv) {
     std::string out;
     try {
         out = rp::gen::genrev(args, rp::calc::defaultSearchPath(""), warnings);
-    } catch (const rp::InputError& e) {
-        std::cerr << "genrev: " << e.what() << '\n';
-        return 1;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "genrev: " << e.line << '\n';
+        return e.exitCode;
     }
     for (const std::string& w : warnings) std::cerr << "genrev: " << w << '\n';
     std::cout << out;

@@ -5,6 +5,7 @@
 
 #include "gen/gensky.h"
 #include "util/error.h"
+#include "main_errors.h"
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv, argv + argc);
@@ -13,9 +14,10 @@ int main(int argc, char** argv) {
     std::string out;
     try {
         out = rp::gen::gensky(args, &warnings);
-    } catch (const rp::InputError& e) {
-        std::cerr << "gensky: " << e.what() << '\n';
-        return 1;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "gensky: " << e.line << '\n';
+        return e.exitCode;
     }
     for (const std::string& w : warnings) std::cerr << "gensky: " << w << '\n';
     std::cout << out;

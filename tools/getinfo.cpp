@@ -8,6 +8,7 @@
 #include "geometry/scene_geometry.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
+#include "main_errors.h"
 
 namespace {
 // -d on our scene files: the cube RADIANCE's oconv would store, printed as its
@@ -30,9 +31,10 @@ int main(int argc, char** argv) {
         int status = rp::runGetinfo(opt, std::cin, std::cout, std::cerr);
         std::cout.flush();
         return status;
-    } catch (const std::exception& e) {
+    } catch (...) {
         std::cout.flush();
-        std::cerr << "getinfo: " << e.what() << '\n';
-        return 1;
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "getinfo: " << e.line << '\n';
+        return e.exitCode;
     }
 }

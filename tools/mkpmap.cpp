@@ -11,6 +11,7 @@
 #include "util/error.h"
 #include "util/header.h"
 #include "util/warnings.h"
+#include "main_errors.h"
 
 int main(int argc, char** argv) {
     std::ostream* diag = &std::cerr;
@@ -37,7 +38,8 @@ int main(int argc, char** argv) {
         if (std::getenv("RADPHOTON_STATS") && cluster->isRoot())  // for bench/mpi_scaling.sh
             std::cerr << "mkpmap: " << report.storingSeconds << " s storing on the root\n";
         return 0;
-    } catch (const rp::InputError& e) {
-        return rp::tools::failRun(cluster.get(), "mkpmap", e.what(), *diag);
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        return rp::tools::failRun(cluster.get(), "mkpmap", e.line, *diag, e.exitCode);
     }
 }

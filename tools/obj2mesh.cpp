@@ -17,6 +17,7 @@
 #include "util/header.h"
 #include "util/paths.h"
 #include "util/warnings.h"
+#include "main_errors.h"
 
 namespace {
 
@@ -110,10 +111,8 @@ int main(int argc, char** argv) {
             if (std::fflush(stdout) != 0) fail("write error on standard output");
         }
         if (verbose) std::fputs(rp::formatMeshStats(stats).c_str(), stderr);
-    } catch (const rp::InputError& e) {
-        fail(e.what());
-    } catch (const std::exception& e) {
-        fail(e.what());
+    } catch (...) {
+        fail(rp::tools::currentMainError().line.c_str());
     }
     return 0;
 }

@@ -12,6 +12,7 @@
 #include "util/error.h"
 #include "util/header.h"
 #include "util/warnings.h"
+#include "main_errors.h"
 
 namespace {
 [[noreturn]] void usage(const char* why) {
@@ -54,9 +55,10 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "oconv: write error on standard output\n");
             return 1;
         }
-    } catch (const rp::InputError& e) {
-        std::fprintf(stderr, "oconv: %s\n", e.what());
-        return 1;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::fprintf(stderr, "oconv: %s\n", e.line.c_str());
+        return e.exitCode;
     }
     return 0;
 }

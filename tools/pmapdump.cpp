@@ -7,6 +7,7 @@
 #include "pmap/dump.h"
 #include "util/error.h"
 #include "util/header.h"
+#include "main_errors.h"
 
 namespace {
 
@@ -32,8 +33,9 @@ int main(int argc, char** argv) {
         std::ios::sync_with_stdio(false);
         rp::pmap::runPmapdump(requests, rp::commandLine(argc, argv), std::cout);
         return 0;
-    } catch (const rp::InputError& e) {
-        std::cerr << "pmapdump: " << e.what() << '\n';
-        return 1;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "pmapdump: " << e.line << '\n';
+        return e.exitCode;
     }
 }

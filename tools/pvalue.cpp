@@ -8,6 +8,7 @@
 #include "image/pvalue.h"
 #include "util/error.h"
 #include "util/header.h"
+#include "main_errors.h"
 
 int main(int argc, char** argv) {
     try {
@@ -18,11 +19,9 @@ int main(int argc, char** argv) {
         std::cout.flush();
         if (!std::cout) throw rp::InputError("error writing standard output");
         return 0;
-    } catch (const rp::InputError& e) {
-        std::cerr << "pvalue: " << e.what() << '\n';
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "pvalue: " << e.what() << '\n';
-        return 2;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "pvalue: " << e.line << '\n';
+        return e.exitCode;
     }
 }

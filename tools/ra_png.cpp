@@ -9,6 +9,7 @@
 
 #include "image/tonemap.h"
 #include "util/error.h"
+#include "main_errors.h"
 
 namespace {
 constexpr const char* kUsage =
@@ -44,8 +45,9 @@ int main(int argc, char** argv) {
         if (nfiles != 2) throw rp::InputError(kUsage);
         rp::convertPictureToPng(files[0], files[1], opt);
         return 0;
-    } catch (const rp::InputError& e) {
-        std::cerr << "ra_png: " << e.what() << '\n';
-        return 1;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "ra_png: " << e.line << '\n';
+        return e.exitCode;
     }
 }

@@ -27,6 +27,7 @@
 #include "util/header.h"
 #include "util/paths.h"
 #include "util/warnings.h"
+#include "main_errors.h"
 
 namespace {
 
@@ -111,9 +112,8 @@ int main(int argc, char** argv) {
             return 0;
         }
         return run(o, *cluster);
-    } catch (const rp::InputError& e) {
-        return fail(e.what(), 1);
-    } catch (const std::exception& e) {
-        return fail(std::string("internal error: ") + e.what(), 2);
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        return fail(e.line, e.exitCode);
     }
 }

@@ -28,6 +28,7 @@
 #include "util/header.h"
 #include "util/paths.h"
 #include "util/warnings.h"
+#include "main_errors.h"
 
 namespace {
 
@@ -127,7 +128,8 @@ int main(int argc, char** argv) {
     try {
         cluster = rp::tools::startCluster(argc, argv);
         return run(argc, argv, diag, diagFile, *cluster);
-    } catch (const rp::InputError& e) {
-        return rp::tools::failRun(cluster.get(), "rpict", e.what(), *diag);
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        return rp::tools::failRun(cluster.get(), "rpict", e.line, *diag, e.exitCode);
     }
 }

@@ -15,6 +15,7 @@
 #include "scene/scene_load.h"
 #include "util/error.h"
 #include "util/header.h"
+#include "main_errors.h"
 
 namespace {
 
@@ -72,8 +73,9 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
     try {
         return run(argc, argv);
-    } catch (const rp::InputError& e) {
-        std::fprintf(stderr, "rpreview: %s\n", e.what());
-        return 1;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::fprintf(stderr, "rpreview: %s\n", e.line.c_str());
+        return e.exitCode;
     }
 }

@@ -22,6 +22,7 @@
 #include "util/header.h"
 #include "util/paths.h"
 #include "util/warnings.h"
+#include "main_errors.h"
 
 namespace {
 
@@ -103,8 +104,9 @@ int main(int argc, char** argv) {
             return 0;
         }
         return run(o, diag, diagFile, *cluster);
-    } catch (const rp::InputError& e) {
+    } catch (...) {
         std::cout.flush();
-        return rp::tools::failRun(cluster.get(), "rtrace", e.what(), *diag);
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        return rp::tools::failRun(cluster.get(), "rtrace", e.line, *diag, e.exitCode);
     }
 }

@@ -20,6 +20,7 @@
 #include "util/header.h"
 #include "util/paths.h"
 #include "util/warnings.h"
+#include "main_errors.h"
 
 namespace {
 
@@ -82,11 +83,9 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
     try {
         return run(argc, argv);
-    } catch (const rp::InputError& e) {
-        std::cerr << "rvu: " << e.what() << std::endl;
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "rvu: internal error: " << e.what() << std::endl;
-        return 2;
+    } catch (...) {
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "rvu: " << e.line << std::endl;
+        return e.exitCode;
     }
 }

@@ -1,21 +1,26 @@
 // xform: transform a RADIANCE scene description (see src/gen/xform_scene.h, xform(1)).
 #include <iostream>
 
+#include "gen/builtin_commands.h"
 #include "gen/xform_scene.h"
 #include "util/error.h"
 #include "util/warnings.h"
+#include "main_errors.h"
 
 int main(int argc, char** argv) {
     std::ios::sync_with_stdio(false);
     rp::setWarningSink([](const std::string& m) { std::cerr << "xform: warning: " << m << '\n'; });
     try {
         rp::XformOptions opts = rp::parseXformArgs(argc, argv, &std::cin);
+        // The generators embedded in the files run in-process, in their files' folders.
+        opts.commandHook = rp::gen::builtinCommandHook();
         std::cout << rp::xformScene(opts, std::cin);
         std::cout.flush();
         return std::cout ? 0 : 1;
-    } catch (const rp::InputError& e) {
+    } catch (...) {
         std::cout.flush();
-        std::cerr << "xform: " << e.what() << '\n';
-        return 1;
+        const rp::tools::MainError e = rp::tools::currentMainError();
+        std::cerr << "xform: " << e.line << '\n';
+        return e.exitCode;
     }
 }

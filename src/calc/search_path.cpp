@@ -30,13 +30,22 @@ static bool readable(const std::string& path) {
     return f.good();
 }
 
-std::optional<std::string> findFile(const std::string& name, std::span<const std::string> dirs) {
+std::string inDirectory(const std::string& from, const std::string& path) {
+    if (from.empty() || path.empty() || path.front() == '/') return path;
+    return from.ends_with('/') ? from + path : from + "/" + path;
+}
+
+std::optional<std::string> findFile(const std::string& name, std::span<const std::string> dirs,
+                                    const std::string& from) {
     if (name.empty()) return std::nullopt;
-    if (name.front() == '/' || name.starts_with("./") || name.starts_with("../"))
-        return readable(name) ? std::optional<std::string>(name) : std::nullopt;
+    if (name.front() == '/' || name.starts_with("./") || name.starts_with("../")) {
+        std::string path = inDirectory(from, name);
+        return readable(path) ? std::optional<std::string>(path) : std::nullopt;
+    }
     for (const std::string& dir : dirs) {
         std::string path = dir.empty() || dir == "." ? name : dir + "/" + name;
         if (dir.ends_with('/')) path = dir + name;
+        path = inDirectory(from, path);
         if (readable(path)) return path;
     }
     return std::nullopt;

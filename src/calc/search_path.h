@@ -21,6 +21,13 @@ std::vector<std::string> defaultSearchPath(const std::string& projectLibDir);
 
 // RADIANCE getpath(): names that are absolute or start with "./" or "../" are used as
 // given; others are tried in each directory in turn. Nothing if no readable file exists.
-std::optional<std::string> findFile(const std::string& name, std::span<const std::string> dirs);
+// `from`: the directory the search runs in ("" = the current one), where RADIANCE's
+// xform has changed to (relative names and directories are seen from there).
+std::optional<std::string> findFile(const std::string& name, std::span<const std::string> dirs,
+                                    const std::string& from = "");
+
+// `path` as seen from directory `from` ("" = the current one): relative paths are joined
+// to it, absolute ones kept.
+std::string inDirectory(const std::string& from, const std::string& path);
 
 }  // namespace rp::calc

@@ -22,9 +22,22 @@ namespace rp::gen {
 
 namespace {
 
-// A generator: arguments (args[0] = its name) and standard input -> scene text.
-using Generator = std::function<std::string(const std::vector<std::string>& args,
-                                            const std::string& input, const SourceLoc& loc)>;
+// A generator: arguments (args[0] = its name), standard input and where it runs -> scene
+// text.
+using Generator =
+    std::function<std::string(const std::vector<std::string>& args, const std::string& input,
+                              const SourceLoc& loc, const CommandContext& context)>;
+
+std::optional<std::string> runInContext(const std::string& command, const SourceLoc& loc,
+                                        const CommandContext& context);
+
+// RAYPATH (or ".") as seen from the directory the command runs in.
+std::vector<std::string> searchPathFrom(const CommandContext& context) {
+    std::vector<std::string> dirs = calc::defaultSearchPath("");
+    if (context.dir.empty()) return dirs;
+    for (std::string& d : dirs) d = calc::inDirectory(context.dir, d);
+    return dirs;
+}
 
 void reportWarnings(const std::string& program, const std::vector<std::string>& warnings,
                     const SourceLoc& loc) {
@@ -32,64 +45,65 @@ void reportWarnings(const std::string& program, const std::vector<std::string>& 
 }
 
 // genrev, gensurf and genworm find -f files as their tools do: along RAYPATH, else in
-// the current directory (where the shell would have run the command).
+// the directory the shell would have run the command in.
 template <class Fn>
-std::string withSearchPath(const char* program, const SourceLoc& loc, Fn&& run) {
+std::string withSearchPath(const char* program, const SourceLoc& loc,
+                           const CommandContext& context, Fn&& run) {
     std::vector<std::string> warnings;
-    std::string out = run(calc::defaultSearchPath(""), warnings);
+    std::string out = run(searchPathFrom(context), warnings);
     reportWarnings(program, warnings, loc);
     return out;
 }
 
 const Generator* findGenerator(const std::string& name) {
     static const std::vector<std::pair<std::string, Generator>> table = {
-        {"genbox", [](const auto& args, const auto&, const auto&) { return genbox(args); }},
+        {"genbox", [](const auto& args, const auto&, const auto&, const auto&) { return genbox(args); }},
         {"genblinds",
-         [](const auto& args, const auto&, const auto&) { return genblinds(args); }},
+         [](const auto& args, const auto&, const auto&, const auto&) { return genblinds(args); }},
         {"genprism",
-         [](const auto& args, const auto& input, const auto&) {
+         [](const auto& args, const auto& input, const auto&, const auto& context) {
              std::istringstream in(input);
              return genprism(args, in);
          }},
         {"gensky",
-         [](const auto& args, const auto&, const auto& loc) {
+         [](const auto& args, const auto&, const auto& loc, const auto& context) {
              std::vector<std::string> warnings;
              std::string out = gensky(args, &warnings);
              reportWarnings("gensky", warnings, loc);
              return out;
          }},
         {"gendaylit",
-         [](const auto& args, const auto&, const auto& loc) {
+         [](const auto& args, const auto&, const auto& loc, const auto& context) {
              std::vector<std::string> warnings;
              std::string out = gendaylit(args, &warnings);
              reportWarnings("gendaylit", warnings, loc);
              return out;
          }},
         {"genrev",
-         [](const auto& args, const auto&, const auto& loc) {
-             return withSearchPath("genrev", loc, [&](const auto& path, auto& warnings) {
+         [](const auto& args, const auto&, const auto& loc, const auto& context) {
+             return withSearchPath("genrev", loc, context, [&](const auto& path, auto& warnings) {
                  return genrev(args, path, warnings);
              });
          }},
         {"gensurf",
-         [](const auto& args, const auto& input, const auto& loc) {
+         [](const auto& args, const auto& input, const auto& loc, const auto& context) {
              std::istringstream in(input);
-             return withSearchPath("gensurf", loc, [&](const auto& path, auto& warnings) {
+             return withSearchPath("gensurf", loc, context, [&](const auto& path, auto& warnings) {
                  return gensurf(args, path, in, warnings);
              });
          }},
         {"genworm",
-         [](const auto& args, const auto&, const auto& loc) {
-             return withSearchPath("genworm", loc, [&](const auto& path, auto& warnings) {
+         [](const auto& args, const auto&, const auto& loc, const auto& context) {
+             return withSearchPath("genworm", loc, context, [&](const auto& path, auto& warnings) {
                  return genworm(args, path, warnings);
              });
          }},
         {"mgf2rad",
-         [](const auto& args, const auto& input, const auto& loc) {
+         [](const auto& args, const auto& input, const auto& loc, const auto& context) {
              std::vector<std::string> warnings;
              std::string out;
              try {
-                 out = mgf2rad(args, input, warnings);
+                 out = mgf2rad(args, input, warnings, context.dir);
              } catch (const InputError& e) {
                  throw InputError(e.what());  // keeps the MGF file and line in the message
              }
@@ -97,11 +111,11 @@ const Generator* findGenerator(const std::string& name) {
              return out;
          }},
         {"pkgBSDF",
-         [](const auto& args, const auto&, const auto& loc) {
+         [](const auto& args, const auto&, const auto& loc, const auto& context) {
              std::vector<std::string> warnings;
              std::string out;
              try {
-                 out = pkgBSDF(args, warnings);
+                 out = pkgBSDF(args, warnings, searchPathFrom(context), context.dir);
              } catch (const InputError& e) {
                  throw InputError(e.what());
              }
@@ -109,9 +123,13 @@ const Generator* findGenerator(const std::string& name) {
              return out;
          }},
         {"xform",
-         [](const auto& args, const auto& input, const auto&) {
+         [](const auto& args, const auto& input, const auto&, const auto& context) {
+             // Commands in the files it reads run here too, in their files' folders.
              std::istringstream in(input);
-             return xformScene(parseXformArgs(args), in);
+             XformOptions opts = parseXformArgs(args);
+             opts.commandHook = runInContext;
+             opts.context = context;
+             return xformScene(opts, in);
          }},
     };
     for (const auto& [n, g] : table)
@@ -176,7 +194,10 @@ std::optional<std::vector<std::vector<std::string>>> splitPipeline(std::string_v
     return stages;
 }
 
-std::optional<std::string> runBuiltinCommand(const std::string& command, const SourceLoc& loc) {
+namespace {
+
+std::optional<std::string> runInContext(const std::string& command, const SourceLoc& loc,
+                                        const CommandContext& context) {
     if (shellRequested()) return std::nullopt;
     auto stages = splitPipeline(command);
     if (!stages) return std::nullopt;
@@ -190,13 +211,28 @@ std::optional<std::string> runBuiltinCommand(const std::string& command, const S
     for (size_t i = 0; i < stages->size(); ++i) {
         const auto& args = (*stages)[i];
         try {
-            text = (*generators[i])(args, text, loc);
+            CommandContext here = context;
+            here.includer = loc;
+            text = (*generators[i])(args, text, loc, here);
         } catch (const InputError& e) {
+            if (!e.loc().file.empty()) throw;  // names its place already (an included file's)
             throw InputError(loc, args.front() + ": " + e.message());
         }
     }
     return text;
 }
+
+}  // namespace
+
+std::optional<std::string> runBuiltinCommand(const std::string& command, const SourceLoc& loc) {
+    // A scene file's own commands run in the current directory (oconv, rtrace); the file
+    // starts the chain of files that its commands include.
+    CommandContext context;
+    if (!loc.file.empty()) context.includeChain.push_back(includeKey(loc.file));
+    return runInContext(command, loc, context);
+}
+
+ContextCommandHook builtinCommandHook() { return runInContext; }
 
 LoadOptions builtinLoadOptions() {
     LoadOptions options;

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "gen/xform_scene.h"
 #include "scene/reader.h"
 #include "util/error.h"
 
@@ -30,6 +31,10 @@ std::optional<std::vector<std::vector<std::string>>> splitPipeline(std::string_v
 // gensurf, genworm, mgf2rad, pkgBSDF, xform), else nullopt. Generator errors are
 // InputErrors at `loc` ("genbox: ..."), generator warnings are reported at `loc`.
 std::optional<std::string> runBuiltinCommand(const std::string& command, const SourceLoc& loc);
+
+// For xform's options: runs our generators in the folder and include chain of the file
+// whose command it is (nullopt for anything else, which the shell runs there).
+ContextCommandHook builtinCommandHook();
 
 // LoadOptions with runBuiltinCommand installed: what every tool passes to loadScene.
 LoadOptions builtinLoadOptions();

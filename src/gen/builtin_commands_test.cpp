@@ -73,6 +73,65 @@ TEST(BuiltinCommands, XformOfAFileRunsInProcess) {
     EXPECT_DOUBLE_EQ(s.prims[1].rargs[2], 3);
 }
 
+// Exported scenes nest commands (issue 43): room.rad runs !xform ./objects/walls.rad,
+// whose own !xform and !genbox lines run in-process too, and as RADIANCE's xform runs
+// them, in that file's folder (./inner.rad is objects/inner.rad). PATH is emptied: a
+// command handed to /bin/sh would fail ("sh: 1: xform: not found").
+TEST(BuiltinCommands, CommandsInFilesThatXformReadsRunInProcess) {
+    unsetenv(kShellCommandsEnv);
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(testing::TempDir()) / "builtin_nested";
+    fs::create_directories(dir / "objects");
+    std::ofstream(dir / "objects" / "walls.rad")
+        << "wall polygon w 0 0 9 0 0 0 1 0 0 0 1 0\n"
+           "!xform -t 0 0 2 ./inner.rad\n"
+           "!genbox wall box 1 1 1 | xform -t 5 0 0\n";
+    std::ofstream(dir / "objects" / "inner.rad") << "wall sphere ball 0 0 4 0 0 0 .5\n";
+    const std::string room = (dir / "room.rad").string();
+    std::ofstream(room) << "void plastic wall 0 0 5 .5 .5 .5 0 0\n!xform " +
+                               (dir / "objects" / "walls.rad").string() + "\n";
+    const char* oldPath = std::getenv("PATH");
+    const std::string savedPath = oldPath ? oldPath : "";
+    setenv("PATH", "", 1);
+    Scene s;
+    try {
+        s = loadScene({room}, builtinLoadOptions());
+    } catch (...) {
+        setenv("PATH", savedPath.c_str(), 1);
+        throw;
+    }
+    setenv("PATH", savedPath.c_str(), 1);
+    std::map<PrimType, int> count;
+    for (const Primitive& p : s.prims) ++count[p.type];
+    EXPECT_EQ(count[PrimType::Polygon], 1 + 6);
+    ASSERT_EQ(count[PrimType::Sphere], 1);
+    for (const Primitive& p : s.prims)
+        if (p.type == PrimType::Sphere) EXPECT_DOUBLE_EQ(p.rargs[2], 2);  // moved by the inner -t
+}
+
+// A file that includes itself through !xform, directly or through another, stops with
+// an error at the command that closes the loop (RADIANCE recurses until it runs out).
+TEST(BuiltinCommands, SceneFileIncludingItselfIsAnError) {
+    unsetenv(kShellCommandsEnv);
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(testing::TempDir()) / "builtin_loop";
+    fs::create_directories(dir);
+    const std::string a = (dir / "a.rad").string(), b = (dir / "b.rad").string();
+    std::ofstream(a) << "void plastic m 0 0 5 .5 .5 .5 0 0\n!xform " << a << "\n";
+    std::ofstream(b) << "\n\n!xform -t 1 0 0 " << a << "\n";
+    for (const std::string& top : {a, b}) {
+        try {
+            loadScene({top}, builtinLoadOptions());
+            ADD_FAILURE() << "no error for " << top;
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.loc().file, a) << e.what();
+            EXPECT_EQ(e.loc().line, 2) << e.what();
+            EXPECT_NE(e.message().find("scene file includes itself"), std::string::npos)
+                << e.what();
+        }
+    }
+}
+
 // genblinds, genrev, gensurf and genworm run in-process with exactly the text their
 // tools print (the tools are thin mains around the same functions).
 TEST(BuiltinCommands, BlindsRevSurfWormRunInProcess) {

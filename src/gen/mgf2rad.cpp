@@ -3,6 +3,8 @@
 // formats, so that scenes converted here and by RADIANCE read the same.
 #include "gen/mgf2rad.h"
 
+#include "calc/search_path.h"
+
 #include <cmath>
 #include <cstdlib>
 
@@ -350,7 +352,7 @@ std::string mgfToRad(std::string_view mgf, const std::string& name, const Mgf2ra
 }
 
 std::string mgf2rad(const std::vector<std::string>& args, const std::string& input,
-                    std::vector<std::string>& warnings) {
+                    std::vector<std::string>& warnings, const std::string& from) {
     Mgf2radOptions opt;
     std::string prog = args.empty() ? "mgf2rad" : args[0];
     std::string header = "## " + prog;
@@ -381,7 +383,7 @@ std::string mgf2rad(const std::vector<std::string>& args, const std::string& inp
     }
     for (; i < args.size(); ++i) {
         c.out += "## " + prog + " " + args[i] + " ##############################\n";
-        c.file({}, args[i], true);
+        c.file({}, calc::inDirectory(from, args[i]), true);
         unknownLine(prog + " " + args[i]);
     }
     for (const auto& w : reader.warnings()) warnings.push_back(w);

@@ -27,9 +27,9 @@ std::string mgfToRad(std::string_view mgf, const std::string& name, const Mgf2ra
 
 // The command: mgf2rad [-g dist][-e mult] [file.mgf ..] (args[0] its name), reading
 // `input` when no file is named, with RADIANCE's "##" header and per-file lines. Files
-// are opened as named (relative to the current folder, as the shell would). -m (a
-// separate materials file) is not supported.
+// are opened as named, relative to folder `from` ("" = the current one, where the shell
+// would run it). -m (a separate materials file) is not supported.
 std::string mgf2rad(const std::vector<std::string>& args, const std::string& input,
-                    std::vector<std::string>& warnings);
+                    std::vector<std::string>& warnings, const std::string& from = "");
 
 }  // namespace rp::gen

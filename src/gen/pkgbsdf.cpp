@@ -90,7 +90,8 @@ std::shared_ptr<const bsdf::BsdfData> loadBsdf(const std::string& path) {
 
 }  // namespace
 
-std::string pkgBSDF(const std::vector<std::string>& args, std::vector<std::string>& warnings) {
+std::string pkgBSDF(const std::vector<std::string>& args, std::vector<std::string>& warnings,
+                    const std::vector<std::string>& searchPath, const std::string& from) {
     (void)warnings;
     const std::string usage = "usage: pkgBSDF [-i][-s] input.xml ..";
     bool instance = false, toStdout = false;
@@ -110,17 +111,18 @@ std::string pkgBSDF(const std::vector<std::string>& args, std::vector<std::strin
         const std::string& xml = args[i];
         if (xml.size() < 5 || strcasecmp(xml.c_str() + xml.size() - 4, ".xml") != 0)
             throw InputError(xml + ": input does not end in '.xml'");
-        auto path = calc::findFile(xml, calc::defaultSearchPath(""));
+        auto path = calc::findFile(xml, searchPath, from);
         if (!path) throw InputError(xml + ": cannot find BSDF file");
         auto b = loadBsdf(*path);
         std::string scene = pkgBsdfScene(*b, instance, xml, args[0]);
         if (instance && !b->mgf.empty())
-            writeBsdfOctree(pkgBsdfGeometry(*b, xml, args[0]), b->name + ".oct",
+            writeBsdfOctree(pkgBsdfGeometry(*b, xml, args[0]),
+                            calc::inDirectory(from, b->name + ".oct"),
                             args[0] + " -i " + xml);
         if (toStdout)
             out += scene;
         else
-            writeFileAtomically(b->name + ".rad", scene);
+            writeFileAtomically(calc::inDirectory(from, b->name + ".rad"), scene);
     }
     return out;
 }

@@ -30,9 +30,10 @@ void writeBsdfOctree(const std::string& geometry, const std::string& octPath,
                      const std::string& headerLine);
 
 // The command: pkgBSDF [-i][-s] input.xml .. (args[0] its name). Each file is found along
-// RAYPATH (else "." only) as RADIANCE's getpath finds it. With -s (one file only) the scene
-// is returned; without it, written to NAME.rad in the current folder and "" returned.
-// With -i, NAME.oct is written to the current folder too.
-std::string pkgBSDF(const std::vector<std::string>& args, std::vector<std::string>& warnings);
+// `searchPath` (RAYPATH, else "." only) as RADIANCE's getpath finds it. With -s (one file
+// only) the scene is returned; without it, written to NAME.rad in folder `from` ("" = the
+// current one) and "" returned. With -i, NAME.oct is written there too.
+std::string pkgBSDF(const std::vector<std::string>& args, std::vector<std::string>& warnings,
+                    const std::vector<std::string>& searchPath, const std::string& from = "");
 
 }  // namespace rp::gen

@@ -96,21 +96,15 @@ TEST(PkgBsdf, InstanceLinePlacesAFrozenOctreeOfTheGeometry) {
 TEST(PkgBsdf, CommandLoadsTheXmlAlongRaypath) {
     std::string dir = std::string(RP_SHARED_DIR) + "/validation/bsdf";
     if (!std::ifstream(dir + "/blinds_klems.xml")) GTEST_SKIP() << "no " << dir;
-    const char* old = std::getenv("RAYPATH");
-    std::string saved = old ? old : "";
-    setenv("RAYPATH", dir.c_str(), 1);
+    const std::vector<std::string> raypath{dir};
     std::vector<std::string> w;
-    std::string got = pkgBSDF({"pkgBSDF", "-s", "blinds_klems.xml"}, w);
+    std::string got = pkgBSDF({"pkgBSDF", "-s", "blinds_klems.xml"}, w, raypath);
     std::string want = testing::readReferenceOutput("pkgbsdf_blinds_klems.rad").text;
     size_t at = want.find("## mgf2rad /tmp/");
     want.replace(at + 11, want.find(' ', at + 11) - at - 11, "blinds_klems.xml:MGFblock");
     EXPECT_EQ(got, want);
-    TempDir tmp;
-    std::string cwd = std::filesystem::current_path().string();
-    std::filesystem::current_path(tmp.path());
-    got = pkgBSDF({"pkgBSDF", "-i", "blinds_klems.xml"}, w);
-    std::filesystem::current_path(cwd);
-    old ? setenv("RAYPATH", saved.c_str(), 1) : unsetenv("RAYPATH");
+    TempDir tmp;  // as if run in tmp (by xform in-process, in the folder of a scene file)
+    got = pkgBSDF({"pkgBSDF", "-i", "blinds_klems.xml"}, w, raypath, tmp.path().string());
     EXPECT_EQ(got, "");  // without -s: written to NAME.rad
     EXPECT_NE(readText(tmp.file("blinds_klems.rad")).find("void instance blinds_klems_g"),
               std::string::npos);
@@ -122,11 +116,12 @@ TEST(PkgBsdf, BadInput) {
     b.width = 0;
     EXPECT_THROW(pkgBsdfScene(b, false, "x.xml"), InputError);
     std::vector<std::string> w;
-    EXPECT_THROW(pkgBSDF({"pkgBSDF", "-s", "blinds.txt"}, w), InputError);
-    EXPECT_THROW(pkgBSDF({"pkgBSDF", "-s", "no_such_file_here.xml"}, w), InputError);
-    EXPECT_THROW(pkgBSDF({"pkgBSDF", "-s"}, w), InputError);
-    EXPECT_THROW(pkgBSDF({"pkgBSDF", "-s", "a.xml", "b.xml"}, w), InputError);
-    EXPECT_THROW(pkgBSDF({"pkgBSDF", "-q", "a.xml"}, w), InputError);
+    const std::vector<std::string> here{"."};
+    EXPECT_THROW(pkgBSDF({"pkgBSDF", "-s", "blinds.txt"}, w, here), InputError);
+    EXPECT_THROW(pkgBSDF({"pkgBSDF", "-s", "no_such_file_here.xml"}, w, here), InputError);
+    EXPECT_THROW(pkgBSDF({"pkgBSDF", "-s"}, w, here), InputError);
+    EXPECT_THROW(pkgBSDF({"pkgBSDF", "-s", "a.xml", "b.xml"}, w, here), InputError);
+    EXPECT_THROW(pkgBSDF({"pkgBSDF", "-q", "a.xml"}, w, here), InputError);
 }
 
 }  // namespace

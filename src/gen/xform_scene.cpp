@@ -12,14 +12,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <optional>
 #include <sstream>
 
+#include "calc/search_path.h"
 #include "gen/xform_format.h"
 #include "scene/lexer.h"
 #include "util/warnings.h"
@@ -116,9 +119,11 @@ std::string runShell(const std::string& command, const SourceLoc& loc) {
 }
 
 // Where a scene file is: as named when it starts with '.', '/' or '~', else the first
-// readable one along RAYPATH (default "."), as RADIANCE's getpath() searches.
-std::string findSceneFile(const std::string& name) {
-    if (!name.empty() && (name[0] == '.' || name[0] == '/' || name[0] == '~')) return name;
+// readable one along RAYPATH (default "."), as RADIANCE's getpath() searches; relative
+// names and directories are seen from `from` (where xform runs).
+std::string findSceneFile(const std::string& name, const std::string& from) {
+    if (!name.empty() && (name[0] == '.' || name[0] == '/' || name[0] == '~'))
+        return calc::inDirectory(from, name);
     std::string path = ".";
     if (const char* env = std::getenv("RAYPATH"); env && *env) path = env;
     size_t start = 0;
@@ -126,7 +131,8 @@ std::string findSceneFile(const std::string& name) {
         size_t end = path.find(':', start);
         if (end == std::string::npos) end = path.size();
         std::string dir = path.substr(start, end - start);
-        std::string candidate = (dir.empty() || dir == ".") ? name : dir + "/" + name;
+        std::string candidate =
+            calc::inDirectory(from, (dir.empty() || dir == ".") ? name : dir + "/" + name);
         if (::access(candidate.c_str(), R_OK) == 0) return candidate;
         start = end + 1;
     }
@@ -146,9 +152,10 @@ public:
         out_ += '\n';
     }
 
-    // One input stream. `file` names it in errors; `dir` is where its commands run;
-    // `fromCommand` fixes every SourceLoc at the command that produced the text.
-    void stream(std::string_view text, const std::string& file, const std::string& dir,
+    // One input stream. `file` names it in errors; `context` is where its commands run
+    // and the files that led to them (this one included); `fromCommand` fixes every
+    // SourceLoc at the command that produced the text.
+    void stream(std::string_view text, const std::string& file, const CommandContext& context,
                 const SourceLoc* fromCommand, int depth) {
         Scanner sc(text);
         int objects = 0;
@@ -158,7 +165,7 @@ public:
                 out_ += sc.restOfLine();
             } else if (sc.peek() == '!') {
                 SourceLoc at = loc(sc.line());
-                command(sc.commandLine(), at, dir, depth);
+                command(sc.commandLine(), at, context, depth);
                 ++objects;
             } else {
                 object(sc, loc);
@@ -172,7 +179,8 @@ public:
     }
 
 private:
-    void command(const std::string& line, const SourceLoc& loc, const std::string& dir, int depth) {
+    void command(const std::string& line, const SourceLoc& loc, const CommandContext& context,
+                 int depth) {
         if (!run_.expand) {
             // xform.c xfcomm(): pass the command on, piped through an xform that expands
             // it next time with this run's options (-c left out).
@@ -198,13 +206,14 @@ private:
                     joined += cmd[i];
             }
             joined.erase(0, joined.find_first_not_of(" \t"));
-            output = opts_.commandHook(joined, loc);
+            output = opts_.commandHook(joined, loc, context);
         }
         // RADIANCE compat: xform runs a file's commands in that file's directory.
+        const std::string& dir = context.dir;
         if (!output)
             output = runShell(dir.empty() ? cmd : "cd " + shellQuote(dir) + " && " + cmd, loc);
         try {
-            stream(*output, loc.file, dir, &loc, depth + 1);
+            stream(*output, loc.file, context, &loc, depth + 1);
         } catch (const InputError& e) {
             if (e.message().find(" (in output of !") != std::string::npos) throw;
             throw InputError(e.loc(), e.message() + " (in output of !" + shorten(cmd) + ")");
@@ -290,6 +299,12 @@ private:
 
 // ---------------------------------------------------------------------------------------
 
+std::string includeKey(const std::string& path) {
+    std::error_code ec;
+    std::filesystem::path p = std::filesystem::weakly_canonical(path, ec);
+    return ec ? path : p.string();
+}
+
 std::string xformScene(const XformOptions& opts, std::istream& in) {
     std::string out;
     std::optional<std::string> stdinText;  // read once, reused by every copy
@@ -301,12 +316,17 @@ std::string xformScene(const XformOptions& opts, std::istream& in) {
             if (!stdinText)
                 stdinText.emplace(std::istreambuf_iterator<char>(in),
                                   std::istreambuf_iterator<char>());
-            writer.stream(*stdinText, "", "", nullptr, 0);
+            writer.stream(*stdinText, "", opts.context, nullptr, 0);
             continue;
         }
         for (const std::string& name : files) {
-            std::string path = findSceneFile(name);
+            std::string path = findSceneFile(name, opts.context.dir);
             if (path.size() > 2 && path[0] == '.' && path[1] == '/') path.erase(0, 2);
+            CommandContext inner{"", opts.context.includeChain};
+            inner.includeChain.push_back(includeKey(path));
+            const auto& chain = opts.context.includeChain;
+            if (std::find(chain.begin(), chain.end(), inner.includeChain.back()) != chain.end())
+                throw InputError(opts.context.includer, "scene file includes itself (" + path + ")");
             std::ifstream f(path, std::ios::binary);
             if (!f) throw InputError(SourceLoc{path, 0}, "cannot open file");
             std::string text{std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
@@ -314,7 +334,8 @@ std::string xformScene(const XformOptions& opts, std::istream& in) {
             std::string dir = slash == std::string::npos ? ""
                               : slash == 0               ? "/"
                                                          : path.substr(0, slash);
-            writer.stream(text, path, run.expand ? dir : "", nullptr, 0);
+            inner.dir = run.expand ? dir : opts.context.dir;
+            writer.stream(text, path, inner, nullptr, 0);
         }
     }
     return out;

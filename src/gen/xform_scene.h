@@ -4,6 +4,7 @@
 // the writer of records as text is gen/xform_format.h.
 #pragma once
 
+#include <functional>
 #include <istream>
 #include <optional>
 #include <string>
@@ -39,11 +40,30 @@ struct XformRun {
     bool reverse() const { return xf.mirrors() != invert; }
 };
 
+// Where a command in a scene file runs: the directory xform has changed to (RADIANCE
+// xform.c runs a file's commands in that file's directory; "" = the current one), and
+// the scene files whose commands led to it, outermost first (canonical paths), so that a
+// file that includes itself stops with an error instead of recursing.
+struct CommandContext {
+    std::string dir;
+    std::vector<std::string> includeChain;
+    SourceLoc includer;  // the command running this xform: where errors about its files point
+};
+
+// May supply a command's output instead of /bin/sh (builtin_commands.h); nullopt: the
+// shell runs it, in context.dir.
+using ContextCommandHook = std::function<std::optional<std::string>(
+    const std::string& command, const SourceLoc& loc, const CommandContext& context)>;
+
 struct XformOptions {
     std::vector<XformRun> runs;  // in output order
-    CommandHook commandHook;     // may supply a command's output instead of /bin/sh
+    ContextCommandHook commandHook;
+    CommandContext context;      // where this xform runs and what included it
     int maxCommandDepth = 32;    // commands whose output runs commands, and so on
 };
+
+// The canonical name of scene file `path` for CommandContext::includeChain.
+std::string includeKey(const std::string& path);
 
 // Parses xform's command line (argv[0] is the program name). Bad or missing option
 // values, an unknown option before the files, a bad -a count and an unreadable -f file
@@ -51,9 +71,11 @@ struct XformOptions {
 XformOptions parseXformArgs(int argc, const char* const* argv, std::istream* argLines = nullptr);
 XformOptions parseXformArgs(const std::vector<std::string>& args, std::istream* argLines = nullptr);
 
-// Runs every run: its header line, then each of its files (searched along RAYPATH), or
-// the text of `in` when it names none (read once, reused by every copy). Returns the
-// scene text RADIANCE's xform would print. Errors are InputErrors with file and line.
+// Runs every run: its header line, then each of its files (searched along RAYPATH from
+// opts.context.dir), or the text of `in` when it names none (read once, reused by every
+// copy). Returns the scene text RADIANCE's xform would print. Errors are InputErrors with
+// file and line; a file already on opts.context.includeChain is "scene file includes
+// itself", at the command that included it.
 std::string xformScene(const XformOptions& opts, std::istream& in);
 // The same with `text` standing in for standard input.
 std::string xformText(const XformOptions& opts, std::string_view text);

@@ -256,7 +256,8 @@ TEST(Xform, IterationRepeatsFollowingTransform) {
 
 TEST(Xform, CommandsExpandedByDefaultOrPassedOnWithC) {
     XformOptions o = opts({"-n", "n", "-t", "0", "0", "1"});
-    o.commandHook = [](const std::string& cmd, const SourceLoc&) -> std::optional<std::string> {
+    o.commandHook = [](const std::string& cmd, const SourceLoc&,
+                       const CommandContext&) -> std::optional<std::string> {
         EXPECT_EQ(cmd, "gen thing");
         return std::string("m sphere g 0 0 4 0 0 0 1\n");
     };

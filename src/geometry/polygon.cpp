@@ -9,6 +9,31 @@
 
 namespace rp {
 
+namespace {
+
+// RADIANCE compat (face.c getface, VERTEPS 1e-5): each vertex's distance along the normal
+// is compared with the mean of those before it, relatively (absolutely when the first
+// is within 1e-5 of the origin's plane), so that 7e-6 off a plane 3 m from the origin is
+// planar, as RADIANCE has it. A closing vertex repeating the first is not counted.
+bool nonPlanar(const std::vector<Vec3>& loop, const Vec3& normal) {
+    size_t n = loop.size();
+    if (n > 3 && lengthSquared(loop[0] - loop[n - 1]) <= 1e-12) --n;
+    if (n <= 3) return false;
+    constexpr double kVertEps = 1e-5;
+    double sum = dot(normal, loop[0]);
+    const bool smallOffset = std::fabs(sum) <= kVertEps;
+    bool bad = false;
+    for (size_t i = 1; i < n; ++i) {
+        const double d = dot(normal, loop[i]);
+        bad = bad || (smallOffset ? std::fabs(d - sum / double(i)) > kVertEps
+                                  : std::fabs(1.0 - d * double(i) / sum) > kVertEps);
+        sum += d;
+    }
+    return bad;
+}
+
+}  // namespace
+
 bool makePolygon(const Primitive& prim, int32_t primIndex, PolygonShape& shape,
                  std::vector<Vec3>& vertices, std::vector<TriIndices>& triangles) {
     const std::vector<double>& r = prim.rargs;
@@ -35,12 +60,7 @@ bool makePolygon(const Primitive& prim, int32_t primIndex, PolygonShape& shape,
     shape.offset = 0;
     for (const Vec3& v : loop) shape.offset += dot(shape.normal, v);
     shape.offset /= double(loop.size());
-    // RADIANCE compat: face.c warns about non-planar vertices (tolerance relative to size).
-    for (const Vec3& v : loop)
-        if (std::fabs(dot(shape.normal, v) - shape.offset) > 1e-6 * size) {
-            warn(prim.loc, "polygon '" + prim.name + "': non-planar vertex");
-            break;
-        }
+    if (nonPlanar(loop, shape.normal)) warn(prim.loc, "polygon '" + prim.name + "': non-planar vertex");
     shape.origin = loop[0];
     shape.vertexMean = {};
     for (const Vec3& v : loop) shape.vertexMean += v;

@@ -25,7 +25,10 @@ SceneGeometry& SceneGeometry::operator=(SceneGeometry&&) noexcept = default;
 std::optional<Hit> SceneGeometry::closestHit(const Ray& ray, const ModifierSet* skip) const {
     AccelHit a;
     if (!accel_->intersect(ray, skip, a)) return std::nullopt;
-    return a.placement < 0 ? completeHit(ray, a) : completePlacedHit(ray, a);
+    if (a.placement >= 0) return completePlacedHit(ray, a);
+    if (a.kind == ShapeKind::Polygon)
+        coincident_.resolve(*shapes_, ray.origin, ray.dir, skip, a.index, a.triangle, a.t);
+    return completeHit(ray, a);
 }
 
 bool SceneGeometry::occluded(const Vec3& origin, const Vec3& dir, double tmax,
@@ -114,6 +117,7 @@ constexpr int kMaxInstanceDepth = 32;
 SceneGeometry::SceneGeometry(const Scene& scene)
     : shapes_(std::make_unique<ShapeSet>(buildShapes(scene))) {
     insets_ = polygonInsets<TriangleInset>(*shapes_);
+    coincident_ = CoincidentPolygons(scene, *shapes_);
     bounds_ = shapes_->bounds;
     // Objects, innermost first so that an octree's cube can include what it places.
     objects_.resize(scene.objects.size());

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/accel/embree_accel.h"
+#include "geometry/coincident.h"
 #include "geometry/ray.h"
 #include "geometry/shapes.h"
 #include "scene/primitive.h"
@@ -89,6 +90,7 @@ private:
 
     std::unique_ptr<ShapeSet> shapes_;  // heap: the accelerator points into it
     std::vector<TriangleInset> insets_;  // indexed like shapes_->triangles
+    CoincidentPolygons coincident_;      // the scene's own doubled surfaces
     std::vector<ObjectGeometry> objects_;  // indexed like Scene::objects
     std::vector<Placement> placements_;
     Bounds3 bounds_;

@@ -26,7 +26,10 @@ bool makeSource(const Primitive& prim, int32_t primIndex, DistantSource& src) {
     double half = std::fmin(a[3], 360.0) * (kPi / 180.0) * 0.5;
     src.dir = normalize(d);
     src.cosHalfAngle = std::cos(half);
-    src.solidAngle = 2 * kPi * (1 - src.cosHalfAngle);
+    // RADIANCE compat (srcsupp.c, source.h): ss2 is a float. Its rounding decides rays at
+    // the very edge: for a 180 degree glow it rounds 2 pi (1 - 6e-17) up past 2 pi, so
+    // rays exactly along the horizon are inside it (sourcesInDirection).
+    src.solidAngle = double(float(2 * kPi * (1 - src.cosHalfAngle)));
     src.prim = primIndex;
     src.modifier = prim.modifier;
     return true;
@@ -36,7 +39,11 @@ void sourcesInDirection(const std::vector<DistantSource>& sources, const Vec3& d
                         std::vector<int32_t>& out) {
     out.clear();
     for (size_t i = 0; i < sources.size(); ++i)
-        if (dot(sources[i].dir, dir) >= sources[i].cosHalfAngle) out.push_back(int32_t(i));
+        // RADIANCE's own form (source.c sourcehit), not dot >= cosHalfAngle: for a 180
+        // degree glow, cos(90 degrees) is 6e-17 and a ray along the horizon (dot exactly
+        // 0) would miss it.
+        if (2 * kPi * (1 - dot(sources[i].dir, dir)) <= sources[i].solidAngle)
+            out.push_back(int32_t(i));
 }
 
 }  // namespace rp

@@ -206,7 +206,7 @@ TEST(Emitter, SunThroughPort) {
     PortScene s(false);
     SceneGeometry geom(s.b.scene());
     EmissionOptions opt;
-    opt.ports = findPhotonPorts(s.b.scene(), geom, {parsePortSpec("window_glass")});
+    opt.ports = findPhotonPorts(s.b.scene(), geom, {PortSpec{"window_glass"}});
     EmissionPlan plan = planFor(s.b, geom, opt);
     Vec3 sun = normalize(Vec3{0.153855, -0.727432, 0.668708});
     double omega = 2 * kPi * (1 - std::cos(0.25 * kPi / 180));
@@ -232,7 +232,7 @@ TEST(Emitter, SkyThroughPortAndBidirectional) {
     PortScene s(true);
     SceneGeometry geom(s.b.scene());
     EmissionOptions opt;
-    opt.ports = findPhotonPorts(s.b.scene(), geom, {parsePortSpec("window_glass")});
+    opt.ports = findPhotonPorts(s.b.scene(), geom, {PortSpec{"window_glass"}});
     // Uniform sky (upper hemisphere) through a vertical port: L A pi/2. The floor lies
     // inside, behind the port, so nothing outside occludes.
     double exact = 4.5 * kPi / 2;
@@ -287,7 +287,7 @@ TEST(Emitter, DaylightSourcesThroughWindow) {
     Scene scene = loadScene({std::string(RP_SHARED_DIR) + "/validation/daylight/scene.rad"});
     SceneGeometry geom(scene);
     EmissionOptions opt;
-    opt.ports = findPhotonPorts(scene, geom, {parsePortSpec("window_glass")});
+    opt.ports = findPhotonPorts(scene, geom, {PortSpec{"window_glass"}});
     opt.modifierFor = [](const LightSource&) {
         return EmissionModifier{[](const EmissionQuery&) { return Color::grey(1); }, true};
     };

@@ -41,14 +41,10 @@ Vec3 flatNormal(const ShapeSet& s, EmitterShape shape, int32_t index) {
 }  // namespace
 
 int32_t findMaterial(const Scene& scene, int32_t prim) {
-    int32_t m = scene.prims[size_t(prim)].modifier;
-    // Bounded walk: the reader resolves aliases, so chains are short and acyclic.
-    for (size_t guard = 0; m != kVoid && guard < scene.prims.size(); ++guard) {
-        const Primitive& p = scene.prims[size_t(m)];
-        if (primCategory(p.type) == PrimCategory::Material) return m;
-        m = p.modifier;
-    }
-    return kVoid;
+    // Lights and ports are materials: a chain ending in a mixture has none here.
+    const int32_t m = chainMaterial(scene, scene.prims[size_t(prim)].modifier);
+    return m != kVoid && primCategory(scene.prims[size_t(m)].type) == PrimCategory::Material ? m
+                                                                                             : kVoid;
 }
 
 std::vector<LightSource> findLightSources(const Scene& scene, const SceneGeometry& geometry,
@@ -104,22 +100,6 @@ std::vector<LightSource> findLightSources(const Scene& scene, const SceneGeometr
     out.reserve(found.size());
     for (Found& f : found) out.push_back(f.src);
     return out;
-}
-
-PortSpec parsePortSpec(const std::string& arg) {
-    PortSpec spec;
-    spec.modifier = arg;
-    if (!arg.empty()) {
-        char last = arg.back();
-        if (last == '+' || last == '-' || last == '0') {
-            spec.modifier = arg.substr(0, arg.size() - 1);
-            spec.direction = last == '+'   ? PortDirection::Forward
-                             : last == '-' ? PortDirection::Backward
-                                           : PortDirection::Bidirectional;
-        }
-    }
-    if (spec.modifier.empty()) throw InputError("-apo: empty photon port modifier");
-    return spec;
 }
 
 std::vector<PhotonPort> findPhotonPorts(const Scene& scene, const SceneGeometry& geometry,

@@ -33,6 +33,12 @@ struct LightSource {
     double maxDistance = 0;
     bool distant() const { return shape == EmitterShape::Distant; }
     bool modified() const { return patternModifier != kVoid; }
+    // A distant glow (a sky or ground): RADIANCE's direct calculation skips it (source.c
+    // SSKIP) and its light reaches surfaces only through the ambient calculation, so the
+    // renderer's direct light never holds it, and photon maps must carry all of it.
+    bool ambientOnly() const {
+        return params.kind == material::LightParams::Kind::Glow && distant();
+    }
     bool spotlight() const { return params.kind == material::LightParams::Kind::Spotlight; }
 };
 
@@ -61,7 +67,7 @@ struct LightSearchOptions {
 std::vector<LightSource> findLightSources(const Scene& scene, const SceneGeometry& geometry,
                                           const LightSearchOptions& options = {});
 
-// -apo mod[+|-|0]. RADIANCE's port normals point INTO the interior (mkillum convention).
+// -apo[+|-|0] mod. RADIANCE's port normals point INTO the interior (mkillum convention).
 enum class PortDirection : uint8_t {
     Forward,        // default / '+': photons enter along the normal (into the interior)
     Backward,       // '-': photons leave against the normal
@@ -69,12 +75,9 @@ enum class PortDirection : uint8_t {
 };
 
 struct PortSpec {
-    std::string modifier;  // material name as given to -apo
+    std::string modifier;  // material name as given to -apo, matched whole
     PortDirection direction = PortDirection::Forward;
 };
-
-// Parses an -apo argument: a trailing '+', '-' or '0' selects the direction.
-PortSpec parsePortSpec(const std::string& arg);
 
 struct PhotonPort {
     int32_t prim = -1;

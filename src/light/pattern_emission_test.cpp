@@ -34,7 +34,7 @@ TEST(PatternEmission, DaylightSkyFluxMatchesTheFormula) {
     auto sources = findLightSources(scene, geom);
     EmissionOptions viaCalc, viaFormula;
     viaCalc.ports = viaFormula.ports =
-        findPhotonPorts(scene, geom, {parsePortSpec("window_glass")});
+        findPhotonPorts(scene, geom, {PortSpec{"window_glass"}});
     viaCalc.modifierFor = patternModifiers(chains);
     viaFormula.modifierFor = [](const LightSource&) {
         return EmissionModifier{[](const EmissionQuery& q) { return Color::grey(clearSky(q.rayDir)); },

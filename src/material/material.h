@@ -265,8 +265,8 @@ struct SurfacePoint {
     // SPECULAR or AMBIENT): a thick BSDF shades only these, others see its proxied
     // geometry.
     bool scatteredRay = false;
-    // In photon-map mode, an ambient ray's hit: the BSDF's specular direct light is in the
-    // photons already (RADIANCE ambRayInPmap).
+    // In photon-map mode, the hit of a ray below the first gather bounce: the BSDF's
+    // specular direct light is in the photons already (RADIANCE ambRayInPmap).
     bool specularInPhotons = false;
     double rayWeight = 1;  // RADIANCE rweight: how many jittered BSDF samples direct light gets
     double specJitter = 1; // rtrace -ss (ShadeOptions::specJitter), for BSDF direct light

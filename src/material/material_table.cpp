@@ -33,6 +33,12 @@ bool opaqueBackAbsorbs(const MaterialParams& m) {
     return false;
 }
 
+bool reorientsBackHits(const MaterialParams& m) {
+    return std::holds_alternative<NormalParams>(m) || std::holds_alternative<AnisoParams>(m) ||
+           std::holds_alternative<AshikParams>(m) || std::holds_alternative<GlassParams>(m) ||
+           std::holds_alternative<FuncParams>(m) || std::holds_alternative<WgmdParams>(m);
+}
+
 MaterialRecord makeRecord(const Scene& scene, int32_t index, bool warnUnknown) {
     MaterialRecord e;
     const Primitive& p = scene.prims[size_t(index)];
@@ -46,6 +52,7 @@ MaterialRecord makeRecord(const Scene& scene, int32_t index, bool warnUnknown) {
     }
     e.diffuseLike = takesDirect(*e.params);
     e.backAbsorbs = opaqueBackAbsorbs(*e.params);
+    e.reorientsBackHits = reorientsBackHits(*e.params);
     std::optional<std::string> alt;
     if (auto* m = std::get_if<MirrorParams>(&*e.params)) alt = m->alternate;
     if (auto* l = std::get_if<LightParams>(&*e.params)) alt = l->alternate;
@@ -68,17 +75,6 @@ int32_t lastModifier(const Scene& scene, int32_t before, const std::string& name
     for (int32_t i = before - 1; i >= 0; --i) {
         const Primitive& p = scene.prims[size_t(i)];
         if (isModifier(p.type) && p.name == name) return i;
-    }
-    return kVoid;
-}
-
-int32_t chainMaterial(const Scene& scene, int32_t modifier) {
-    int32_t m = modifier;
-    // Bounded walk: the reader resolves aliases, so chains are short and acyclic.
-    for (size_t guard = 0; m != kVoid && guard < scene.prims.size(); ++guard) {
-        PrimCategory c = primCategory(scene.prims[size_t(m)].type);
-        if (c == PrimCategory::Material || c == PrimCategory::Mixture) return m;
-        m = scene.prims[size_t(m)].modifier;
     }
     return kVoid;
 }

@@ -23,16 +23,17 @@ struct MaterialRecord {
     bool diffuseLike = false;   // material::evaluate can be non-zero (direct light applies)
     bool antimatter = false;
     bool backAbsorbs = false;   // opaque: photons meeting the back are absorbed unless -bv
+    // Shading turns the surface to face a ray that hits its back (RADIANCE flipsurface in
+    // normal.c, aniso.c, ashikhmin.c, glass.c, m_brdf.c m_brdf2), so rtrace -on reports
+    // the normal facing the ray; the others (lights, mirror, dielectric, BRTDfunc, BSDF,
+    // mist, prisms) keep it as given.
+    bool reorientsBackHits = false;
     std::vector<int32_t> clips; // antimatter: the modifiers it clips (RADIANCE lastmod)
 };
 
 // The last modifier named `name` defined before record `before` (RADIANCE lastmod);
 // kVoid for "void" or an unknown name.
 int32_t lastModifier(const Scene& scene, int32_t before, const std::string& name);
-
-// The first material or mixture on the modifier chain from `modifier`, past patterns,
-// textures and aliases (RADIANCE findmaterial); kVoid if the chain ends in void.
-int32_t chainMaterial(const Scene& scene, int32_t modifier);
 
 // The modifiers the antimatter record `index` clips: each of its names resolved with
 // lastModifier, "void" and repeats skipped; unknown names are warned about with

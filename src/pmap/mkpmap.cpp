@@ -180,11 +180,7 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
     light::EmissionOptions eo;
     eo.partitionSize = o.partitionSize;
     eo.samplesPerSr = o.pdfSamples;
-    if (!o.portSpecs.empty()) {
-        std::vector<light::PortSpec> specs;
-        for (const std::string& s : o.portSpecs) specs.push_back(light::parsePortSpec(s));
-        eo.ports = light::findPhotonPorts(scene, geometry, specs);
-    }
+    if (!o.portSpecs.empty()) eo.ports = light::findPhotonPorts(scene, geometry, o.portSpecs);
     // Pattern-modified sources (gensky's skyfunc, luminaire data) emit through their
     // pattern chain.
     material::SurfaceChains chains(scene, calc::defaultSearchPath(projectLibDir()));

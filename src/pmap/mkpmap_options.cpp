@@ -86,6 +86,18 @@ void append(std::vector<std::string>& to, const std::vector<std::string>& words)
     to.insert(to.end(), words.begin(), words.end());
 }
 
+// RADIANCE mkpmap.c: the port orientation is the option's suffix, -apo[+|-|0] mod and
+// -apO[+|-|0] file (forward when none), not part of the modifier's name.
+bool isPortOption(const std::string& opt) {
+    return (opt.rfind("-apo", 0) == 0 || opt.rfind("-apO", 0) == 0) &&
+           (opt.size() == 4 || (opt.size() == 5 && std::string("+-0").find(opt[4]) != std::string::npos));
+}
+
+light::PortDirection portDirection(const std::string& opt) {
+    if (opt.size() == 4 || opt[4] == '+') return light::PortDirection::Forward;
+    return opt[4] == '-' ? light::PortDirection::Backward : light::PortDirection::Bidirectional;
+}
+
 }  // namespace
 
 MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
@@ -151,8 +163,12 @@ MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
             if (o.maxBounce <= 0) throw InputError("max photon bounces must be > 0");
         } else if (opt == "-ld")
             o.maxDistance = positive(a.real(opt), "max photon distance must be > 0");
-        else if (opt == "-apo") o.portSpecs.push_back(a.value(opt));
-        else if (opt == "-apO") append(o.portSpecs, readWordFile(a.value(opt), "photon port"));
+        else if (isPortOption(opt)) {
+            const light::PortDirection dir = portDirection(opt);
+            std::vector<std::string> mods{a.value(opt)};
+            if (opt[3] == 'O') mods = readWordFile(mods[0], "photon port");
+            for (std::string& m : mods) o.portSpecs.push_back({std::move(m), dir});
+        }
         else if (opt == "-aps") o.sensors.push_back(a.value(opt));
         else if (opt == "-apS")
             append(o.sensors, readWordFile(a.value(opt), "antimatter sensor"));

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "light/light_sources.h"
 #include "pmap/photon.h"
 #include "util/color.h"
 #include "util/vec.h"
@@ -49,7 +50,7 @@ struct MkpmapOptions {
     std::vector<RegionOfInterest> rois;  // -api (cumulative)
     long maxBounce = 5000;        // -lr / -apm (RADIANCE's PMAP_MAXBOUNCE)
     double maxDistance = 0;       // -ld, 0 = unlimited
-    std::vector<std::string> portSpecs;    // -apo mod[+|-|0], -apO file contents
+    std::vector<light::PortSpec> portSpecs;  // -apo[+|-|0] mod, -apO[+|-|0] file contents
     std::vector<std::string> sensors;      // -aps, -apS file contents
     // Ambient include (-ai/-aI/-al) or exclude (-ae/-aE) modifiers; mutually exclusive.
     std::vector<std::string> include, exclude;

@@ -35,7 +35,7 @@ std::string parseError(std::vector<std::string> args) {
 TEST(MkpmapOptions, ParsesRadianceCommandLine) {
     MkpmapOptions o = parse({"-apg", "g.pm", "500k", "-apc", "c.pm", "1m", "-apd", "d.pm", "2.5K",
                              "-apD", "0.5", "-apM", "6", "-apr", "3", "-api", "0", "0", "0", "1", "2",
-                             "3", "-lr", "100", "-ld", "7.5", "-apo", "win+", "-aps", "sens",
+                             "3", "-lr", "100", "-ld", "7.5", "-apo+", "win", "-aps", "sens",
                              "-ae", "x", "-bv-", "-dp", "500", "-ds", ".02", "-fo+", "-n", "2",
                              "-t", "10", "a.rad", "b.rad"});
     EXPECT_EQ(o.maps[size_t(PhotonMapType::Global)]->target, 500000u);
@@ -50,7 +50,9 @@ TEST(MkpmapOptions, ParsesRadianceCommandLine) {
     EXPECT_EQ(o.rois[0].max.z, 3);
     EXPECT_EQ(o.maxBounce, 100);
     EXPECT_DOUBLE_EQ(o.maxDistance, 7.5);
-    EXPECT_EQ(o.portSpecs, std::vector<std::string>{"win+"});
+    ASSERT_EQ(o.portSpecs.size(), 1u);
+    EXPECT_EQ(o.portSpecs[0].modifier, "win");
+    EXPECT_EQ(o.portSpecs[0].direction, light::PortDirection::Forward);
     EXPECT_EQ(o.sensors, std::vector<std::string>{"sens"});
     EXPECT_EQ(o.exclude, std::vector<std::string>{"x"});
     EXPECT_FALSE(o.backVisible);
@@ -59,6 +61,31 @@ TEST(MkpmapOptions, ParsesRadianceCommandLine) {
     EXPECT_EQ(o.nproc, 2);
     EXPECT_EQ(o.reportSeconds, 10);
     EXPECT_EQ(o.sceneFiles, (std::vector<std::string>{"a.rad", "b.rad"}));
+}
+
+// RADIANCE 5.4a's syntax (mkpmap.c): the orientation is the option's suffix, and a
+// modifier name is taken whole, whatever its last character (issue 43).
+TEST(MkpmapOptions, PortOrientationIsTheOptionsSuffix) {
+    const std::string file = ::testing::TempDir() + "/mkpmap_ports.txt";
+    {
+        std::ofstream f(file);
+        f << "skylight_45_59c8c160 win-\n  sky2\n";
+    }
+    MkpmapOptions o = parse({"-apo", "win0", "-apo-", "glass+", "-apo0", "a", "-apo+", "b",
+                             "-apO-", file, "-apg", "g.pm", "1k", "x.oct"});
+    using light::PortDirection;
+    const std::vector<std::pair<std::string, PortDirection>> want{
+        {"win0", PortDirection::Forward},      {"glass+", PortDirection::Backward},
+        {"a", PortDirection::Bidirectional},   {"b", PortDirection::Forward},
+        {"skylight_45_59c8c160", PortDirection::Backward}, {"win-", PortDirection::Backward},
+        {"sky2", PortDirection::Backward}};
+    ASSERT_EQ(o.portSpecs.size(), want.size());
+    for (size_t i = 0; i < want.size(); ++i) {
+        EXPECT_EQ(o.portSpecs[i].modifier, want[i].first) << i;
+        EXPECT_EQ(o.portSpecs[i].direction, want[i].second) << i;
+    }
+    EXPECT_EQ(parseError({"-apox", "w", "-apg", "g", "1", "x"}), "unknown option '-apox'");
+    EXPECT_EQ(parseError({"-apo-+", "w", "-apg", "g", "1", "x"}), "unknown option '-apo-+'");
 }
 
 TEST(MkpmapOptions, Defaults) {

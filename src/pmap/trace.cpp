@@ -90,7 +90,7 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
             continue;
         }
         chains_.checkChain(surf.modifier);
-        info.material = material::chainMaterial(scene, surf.modifier);  // for the port test
+        info.material = chainMaterial(scene, surf.modifier);  // for the port test
     }
     for (const light::LightSource& s : plan_.sources())
         sourceMaxDistance_.push_back(s.maxDistance);
@@ -307,7 +307,19 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     const bool local = e.source >= 0 && e.port < 0;
     material::Medium medium = local ? sourceMedium_[size_t(e.source)] : settings_.medium;
     material::MistSet mists = local ? sourceMists_[size_t(e.source)] : material::MistSet{};
+    // What a photon meets first is direct light, stored in direct maps only (pmapmat.c
+    // addPhotons): the renderer's direct calculation counts it, and a global map holding
+    // it would count it again at every final-gather hit (issue 42: a ceiling point read
+    // 41.0 against 24.0). A photon from a port starts just outside it and is scattered
+    // by the port's own material (pmapsrc.c emitPhoton): past an antimatter or void port
+    // its first hit is still direct, past glass, trans or a BSDF it is indirect.
+    // Deliberately unlike RADIANCE: the first hits of a sky or ground glow are indirect,
+    // since no direct calculation holds their light (LightSource::ambientOnly). RADIANCE
+    // stores them in direct maps only and loses that light at final-gather hits (ceiling
+    // points under a sky through an antimatter port read 0.53 for 1.21 classic).
     const bool fromPort = e.port >= 0;
+    const bool firstHitIndirect =
+        e.source >= 0 && plan_.sources()[size_t(e.source)].ambientOnly();
     long scatters = 0;
     long passes = 0;
     // RADIANCE compat (pmap.h PMAP_CAUSTICRAY): a photon is caustic when its last scatter
@@ -396,8 +408,8 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
             // pmapmat.c clipPhotonScatter: a sensor stores photons entering it (front
             // side) and passes them on unscattered, like any antimatter.
             if (hit->front && (role & kSensor) && surf->storeAllowed)
-                deposit(*hit, true, flux, scatters > 0 || fromPort, causticNow(),
-                        prob, storeRng, out);
+                deposit(*hit, true, flux, scatters > 0 || firstHitIndirect, causticNow(), prob,
+                        storeRng, out);
             clip.cross(mi.clips, hit->front);
             ray = spawnRay(*hit, ray.dir);
             ++passes;
@@ -444,8 +456,8 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         sp.wgmd = nullptr;
         if (functions) sp.brtdSpecularReflection = sp.brtdSpecularTransmission = std::nullopt;
         if (s.store && surf->storeAllowed)
-            deposit(*hit, hit->front, flux, scatters > 0 || fromPort,
-                    causticNow(), prob, storeRng, out);
+            deposit(*hit, hit->front, flux, scatters > 0 || firstHitIndirect, causticNow(), prob,
+                    storeRng, out);
         if (s.kind == ScatterKind::Absorbed) return;
         if (s.kind == ScatterKind::PassThrough) {
             ray = spawnRay(*hit, ray.dir);

@@ -38,7 +38,7 @@ inline std::unique_ptr<Run> makeRun(Scene scene, TraceSettings ts,
     light::EmissionOptions eo;
     if (!ports.empty()) {
         std::vector<light::PortSpec> specs;
-        for (const auto& p : ports) specs.push_back(light::parsePortSpec(p));
+        for (const auto& p : ports) specs.push_back({p});
         eo.ports = light::findPhotonPorts(r->scene, *r->geometry, specs);
     }
     r->plan = std::make_unique<light::EmissionPlan>(

@@ -54,6 +54,7 @@ struct Ambient::Impl {
 
     Color fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) const;
     Color makeRecord(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng);
+    uint32_t corralFlags(const HemisphereEstimate& est, double reach, int columns) const;
     // Ward radius R of a new record (its reach is aa R); may cap the relative gradient.
     double recordRadius(const HemisphereEstimate& est, double brightness, double wt,
                         Vec3& gradPosition) const;
@@ -66,11 +67,12 @@ Ambient::Ambient(const AmbientOptions& options, double sceneSize, const Scene& s
     m.opt = options;
     m.sceneSize = sceneSize;
     m.minWeight = minWeight;
-    // RADIANCE compat (ambient.c setambres): records are at least size/ar apart and
-    // reach at most 64 times that (half the scene without -ar), never over half the scene.
+    // RADIANCE compat (ambient.c setambres): record radii lie between size/ar and 64
+    // times that, never over a fifth of the scene (a fifth of it without -ar).
     m.minRadius = options.resolution > 0 ? sceneSize / options.resolution : 0;
-    m.maxRadius = m.minRadius > kTiny ? 64 * m.minRadius : sceneSize / 2;
-    if (sceneSize > 0) m.maxRadius = std::min(m.maxRadius, sceneSize / 2);
+    m.maxRadius = m.minRadius > kTiny ? std::min(64 * m.minRadius, 0.2 * sceneSize)
+                                      : 0.2 * sceneSize;
+    if (m.maxRadius <= m.minRadius) m.maxRadius = 64 * m.minRadius;
     if (m.maxRadius <= 0) m.maxRadius = 1e10;
 
     // -ae/-ai: the list names modifiers; the last of the two options sets its meaning.
@@ -171,7 +173,9 @@ double Ambient::Impl::recordRadius(const HemisphereEstimate& est, double brightn
     // The reach grows as sqrt(aa) (RADIANCE 3's Ward-Heckbert reach aa R grows as aa), so
     // halving -aa doubles the records instead of quadrupling them, and in smooth light
     // (small k) records reach far. Bounds: at least aa * minarad (RADIANCE 3's smallest
-    // reach), at most maxarad, and where the first-order change over the reach would
+    // reach), at most aa * maxarad (RADIANCE's largest, ambcomp.c: the radius is at most
+    // maxarad, so that no record reaches past a fifth of the scene's -aa share: a record on
+    // a sunlit ground plane 400 m across reached 70 m into the rooms beside it), and where the first-order change over the reach would
     // exceed the value itself (|g| reach > 1) the reach shrinks to 1/|g| (if the floor
     // keeps it larger, the relative gradient `gradPosition` is capped instead). Stored as the
     // Ward radius R = reach / aa, so lookups, the grid and the -af file work unchanged.
@@ -181,12 +185,37 @@ double Ambient::Impl::recordRadius(const HemisphereEstimate& est, double brightn
     const double rh = est.sumInverseDistance > kTiny ? est.hits / est.sumInverseDistance : 0;
     const double rSplit = rh > 0 ? std::min(rh, maxRadius) : maxRadius;
     k = std::max(k, kSplitSphereCurvature / (rSplit * rSplit));
-    double reach = k > 0 ? std::sqrt(2 * tol / k) : maxRadius;
+    const double maxReach = std::max(aa * minRadius, aa * maxRadius);
+    double reach = k > 0 ? std::sqrt(2 * tol / k) : maxReach;
     const double g = length(gradPosition);
     if (g * reach > 1) reach = 1 / g;
-    reach = std::clamp(reach, aa * minRadius, std::max(aa * minRadius, maxRadius));
+    reach = std::clamp(reach, aa * minRadius, maxReach);
     if (g * reach > 1) gradPosition *= 1 / (g * reach);
     return std::max(reach / aa, 1e-12);
+}
+
+// RADIANCE compat (ambcomp.c ambcorral): the azimuth sectors in which a surface near the
+// horizon lies within the record's reach, so that lookups from there test for a leak
+// through it. Not for coarse hemispheres (RADIANCE: fewer than 8 divisions), nor under a
+// ceiling within the reach (the mean inverse distance overhead times the reach reaches 1),
+// nor for occluders nearer than the smallest reach plus a millimetre.
+uint32_t Ambient::Impl::corralFlags(const HemisphereEstimate& est, double reach,
+                                    int columns) const {
+    if (columns < 8 || est.horizonDistance.size() != size_t(columns)) return 0;
+    if (est.overheadInverseDistance * reach >= 1) return 0;
+    const double nearest = opt.accuracy * minRadius + 1e-3;
+    if (est.overheadInverseDistance >= 1 / nearest) return 0;
+    uint32_t flags = 0;
+    const double width = 2 * kPi / columns;
+    for (int k = 0; k < columns; ++k) {
+        const double d = est.horizonDistance[size_t(k)];
+        if (!(d < reach) || d <= nearest) continue;
+        // The column's span and half a column either side, as RADIANCE's +-ang_res.
+        const double lo = (k - 0.5) * width, hi = (k + 1.5) * width;
+        for (int s = int(std::floor(lo * 16 / kPi)); s <= int(std::floor(hi * 16 / kPi)); ++s)
+            flags |= 1u << ((s % 32 + 32) % 32);
+    }
+    return flags;
 }
 
 Color Ambient::Impl::makeRecord(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) {
@@ -214,6 +243,7 @@ Color Ambient::Impl::makeRecord(const AmbientPoint& at, HemisphereTracer& tracer
         rec.gradDirection = est.gradDirection / b;
     }
     rec.radius = recordRadius(est, b, wt, rec.gradPosition);
+    rec.corral = corralFlags(est, opt.accuracy * rec.radius, p.phiDivisions);
     cache->insert(rec, true);
     countValue(rec.value);
     return rec.value;
@@ -224,7 +254,7 @@ Color Ambient::indirect(const AmbientPoint& at, HemisphereTracer& tracer, Rng& r
     if (at.ambientLevel >= m.opt.bounces || m.opt.divisions <= 0 || m.isExcluded(at.modifier))
         return ambientValue();
     if (!m.cache) return m.fresh(at, tracer, rng);
-    CacheQuery q{at.point, at.normal, at.ambientLevel, at.weight};
+    CacheQuery q{at.point, at.normal, at.ambientLevel, at.weight, at.offsetOrigin, at.leaks};
     Color c;
     if (m.cache->lookup(q, &rng, c)) return c;
     // Inserting is thread-safe; the Impl is logically the shared cache.

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "render/irradiance_cache.h"
 #include "render/render_options.h"
 #include "scene/primitive.h"
 #include "util/color.h"
@@ -47,6 +48,8 @@ struct AmbientPoint {
     // the ambient colour; pi for rtrace -I's white receiver): without the cache the
     // division count and the samples' weights follow it.
     double coefficient = 0.5;
+    // Tests cached records that may have leaked through a surface (null: no test).
+    LeakTest* leaks = nullptr;
 };
 
 class Ambient {

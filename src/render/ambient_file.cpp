@@ -65,17 +65,23 @@ Header makeHeader(const std::string& options) {
     return h;
 }
 
-// Checks the header of an open ambient file; throws InputError naming `path`.
-Header checkHeader(std::istream& in, const std::string& path) {
+// Checks the header of an open ambient file; `bytes` receives its record size. Throws
+// InputError naming `path`.
+Header checkHeader(std::istream& in, const std::string& path, size_t& bytes) {
     Header h = readHeader(in, path);
     SourceLoc loc{path, 0};
     if (h.format() != kAmbientFormat)
         throw InputError(loc, fmt::format("not an ambient file (FORMAT={}, expected {})",
                                           h.format().empty() ? "none" : h.format(),
                                           kAmbientFormat));
-    if (h.value("RECORD_BYTES") != std::to_string(kAmbientRecordBytes))
-        throw InputError(loc, fmt::format("ambient records of {} bytes, expected {}",
-                                          h.value("RECORD_BYTES"), kAmbientRecordBytes));
+    const std::string size = h.value("RECORD_BYTES");
+    if (size == std::to_string(kAmbientRecordBytes))
+        bytes = kAmbientRecordBytes;
+    else if (size == std::to_string(kLegacyAmbientRecordBytes))
+        bytes = kLegacyAmbientRecordBytes;
+    else
+        throw InputError(loc, fmt::format("ambient records of {} bytes, expected {}", size,
+                                          kAmbientRecordBytes));
     if (h.value("BYTE_ORDER") != "little")
         throw InputError(loc, "ambient file byte order is not 'little'");
     return h;
@@ -88,7 +94,7 @@ std::string ambientFileOptions(const AmbientOptions& o) {
                        o.divisions, o.supersamples, o.bounces);
 }
 
-void encodeAmbientRecord(const AmbientRecord& r, unsigned char* out) {
+void encodeAmbientRecord(const AmbientRecord& r, unsigned char* out, size_t bytes) {
     unsigned char* p = out;
     for (int i = 0; i < 3; ++i) put<double>(p, r.position[i]);
     putVecF(p, r.normal);
@@ -98,10 +104,11 @@ void encodeAmbientRecord(const AmbientRecord& r, unsigned char* out) {
     putVecF(p, r.gradDirection);
     put<float>(p, float(r.weight));
     put<int32_t>(p, int32_t(r.level));
-    RP_CHECK(size_t(p - out) == kAmbientRecordBytes);
+    if (bytes == kAmbientRecordBytes) put<uint32_t>(p, r.corral);
+    RP_CHECK(size_t(p - out) == bytes);
 }
 
-AmbientRecord decodeAmbientRecord(const unsigned char* in) {
+AmbientRecord decodeAmbientRecord(const unsigned char* in, size_t bytes) {
     const unsigned char* p = in;
     AmbientRecord r;
     for (int i = 0; i < 3; ++i) r.position[i] = get<double>(p);
@@ -112,27 +119,28 @@ AmbientRecord decodeAmbientRecord(const unsigned char* in) {
     r.gradDirection = getVecF(p);
     r.weight = get<float>(p);
     r.level = get<int32_t>(p);
+    if (bytes == kAmbientRecordBytes) r.corral = get<uint32_t>(p);
     return r;
 }
 
 AmbientFileContents readAmbientFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(SourceLoc{path, 0}, "can't open ambient file");
-    Header h = checkHeader(in, path);
+    size_t bytes = 0;
+    const Header h = checkHeader(in, path, bytes);
     AmbientFileContents out;
     out.options = h.value("AMBIENT_OPTIONS");
     std::vector<unsigned char> data((std::istreambuf_iterator<char>(in)),
                                     std::istreambuf_iterator<char>());
-    if (data.size() % kAmbientRecordBytes != 0)
+    if (data.size() % bytes != 0)
         throw InputError(SourceLoc{path, 0},
                          fmt::format("truncated ambient file: {} bytes after the {} whole "
                                      "records",
-                                     data.size() % kAmbientRecordBytes,
-                                     data.size() / kAmbientRecordBytes));
-    size_t n = data.size() / kAmbientRecordBytes;
+                                     data.size() % bytes, data.size() / bytes));
+    size_t n = data.size() / bytes;
     out.records.reserve(n);
     for (size_t i = 0; i < n; ++i) {
-        AmbientRecord r = decodeAmbientRecord(data.data() + i * kAmbientRecordBytes);
+        AmbientRecord r = decodeAmbientRecord(data.data() + i * bytes, bytes);
         double nl = length(r.normal);
         bool ok = finite(r.position) && finite(r.normal) && finite(r.gradPosition) &&
                   finite(r.gradDirection) && std::isfinite(r.value.r) &&
@@ -151,22 +159,27 @@ AmbientFileContents readAmbientFile(const std::string& path) {
 void appendAmbientFile(const std::string& path, const std::string& options,
                        const std::vector<AmbientRecord>& records) {
     SourceLoc loc{path, 0};
-    std::vector<unsigned char> data(records.size() * kAmbientRecordBytes);
-    for (size_t i = 0; i < records.size(); ++i)
-        encodeAmbientRecord(records[i], data.data() + i * kAmbientRecordBytes);
-
+    auto encode = [&](size_t bytes) {
+        std::vector<unsigned char> data(records.size() * bytes);
+        for (size_t i = 0; i < records.size(); ++i)
+            encodeAmbientRecord(records[i], data.data() + i * bytes, bytes);
+        return data;
+    };
     if (std::filesystem::exists(path)) {
+        size_t bytes = 0;
         {
             std::ifstream in(path, std::ios::binary);
             if (!in) throw InputError(loc, "can't open ambient file");
-            checkHeader(in, path);
+            checkHeader(in, path, bytes);  // a legacy file keeps its record size
         }
+        const std::vector<unsigned char> data = encode(bytes);
         std::ofstream out(path, std::ios::binary | std::ios::app);
         out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
         out.flush();
         if (!out) throw InputError(loc, "error writing to ambient file");
         return;
     }
+    const std::vector<unsigned char> data = encode(kAmbientRecordBytes);
     std::string tmp = fmt::format("{}.{}.tmp", path, ::getpid());
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);

@@ -13,7 +13,10 @@
 namespace rp::render {
 
 constexpr const char* kAmbientFormat = "radphoton_ambient";
-constexpr size_t kAmbientRecordBytes = 84;
+constexpr size_t kAmbientRecordBytes = 88;
+// Files written before records kept their corral (AmbientRecord::corral) are read, and
+// appended to, in their own 84-byte records; their records are not tested for leaks.
+constexpr size_t kLegacyAmbientRecordBytes = 84;
 
 // "-aa 0.1 -ar 256 -ad 1024 -as 512 -ab 2": the options that decide what records mean,
 // as stored in the header (AMBIENT_OPTIONS=).
@@ -36,8 +39,10 @@ void appendAmbientFile(const std::string& path, const std::string& options,
                        const std::vector<AmbientRecord>& records);
 
 // The fixed binary layout, exposed for tests: position 3 x f64, normal 3 x f32, value
-// 3 x f32, radius f32, gradPosition 3 x f32, gradDirection 3 x f32, weight f32, level i32.
-void encodeAmbientRecord(const AmbientRecord& r, unsigned char* out);
-AmbientRecord decodeAmbientRecord(const unsigned char* in);
+// 3 x f32, radius f32, gradPosition 3 x f32, gradDirection 3 x f32, weight f32, level i32,
+// corral u32 (not in the legacy 84-byte records).
+void encodeAmbientRecord(const AmbientRecord& r, unsigned char* out,
+                         size_t bytes = kAmbientRecordBytes);
+AmbientRecord decodeAmbientRecord(const unsigned char* in, size_t bytes = kAmbientRecordBytes);
 
 }  // namespace rp::render

@@ -69,10 +69,47 @@ TEST(AmbientFileTest, RecordEncodingRoundTrip) {
     r.gradDirection = {0, 0.125, -1};
     r.level = 3;
     r.weight = 0.125;
+    r.corral = 0x80000005u;
     unsigned char buf[kAmbientRecordBytes];
     encodeAmbientRecord(r, buf);
     EXPECT_EQ(buf[24 + 12 + 12 + 4 + 12 + 12 + 4], 3);  // level, little endian
+    EXPECT_EQ(buf[84], 5);                               // corral, little endian
+    EXPECT_EQ(buf[87], 0x80);
     expectSame(decodeAmbientRecord(buf), r);
+    EXPECT_EQ(decodeAmbientRecord(buf).corral, r.corral);
+    // Legacy records have no corral: read as none.
+    unsigned char legacy[kLegacyAmbientRecordBytes];
+    encodeAmbientRecord(r, legacy, kLegacyAmbientRecordBytes);
+    EXPECT_EQ(decodeAmbientRecord(legacy, kLegacyAmbientRecordBytes).corral, 0u);
+    expectSame(decodeAmbientRecord(legacy, kLegacyAmbientRecordBytes), r);
+}
+
+// A file written before records kept their corral (84-byte records) is read, and
+// appended to in its own record size, so that runs sharing it keep working.
+TEST(AmbientFileTest, LegacyRecordSizeIsReadAndKept) {
+    TempDir dir;
+    const std::string file = dir.file("old.amb");
+    AmbientRecord r;
+    r.position = {1, 2, 3};
+    r.normal = {0, 0, 1};
+    r.value = {0.5, 0.5, 0.5};
+    r.radius = 1;
+    {
+        std::ofstream out(file, std::ios::binary);
+        out << "#?RADIANCE\nAMBIENT_OPTIONS=-aa 0.1\nRECORD_BYTES=84\nBYTE_ORDER=little\n"
+               "FORMAT=radphoton_ambient\n\n";
+        unsigned char buf[kLegacyAmbientRecordBytes];
+        encodeAmbientRecord(r, buf, kLegacyAmbientRecordBytes);
+        out.write(reinterpret_cast<const char*>(buf), sizeof buf);
+    }
+    const auto before = std::filesystem::file_size(file);
+    r.corral = 7;
+    appendAmbientFile(file, "-aa 0.1", {r});
+    EXPECT_EQ(std::filesystem::file_size(file), before + kLegacyAmbientRecordBytes);
+    AmbientFileContents f = readAmbientFile(file);
+    ASSERT_EQ(f.records.size(), 2u);
+    EXPECT_EQ(f.records[1].position, r.position);
+    EXPECT_EQ(f.records[1].corral, 0u);
 }
 
 TEST(AmbientFileTest, SaveThenLoadGivesSameRecords) {

@@ -19,6 +19,26 @@ struct Division {
 
 double meanBrightness(const Division& d) { return d.n > 0 ? d.sumB / d.n : 0; }
 
+// HemisphereEstimate::horizonDistance and overheadInverseDistance from the divisions.
+void occluders(const std::vector<Division>& div, int M, int N, HemisphereEstimate& est) {
+    est.horizonDistance.assign(size_t(N), 1e10);
+    double overhead = 0;
+    int overheadCount = 0;
+    for (int j = 0; j < M; ++j) {
+        const bool horizon = double(j + 1) / M > 0.8, above = double(j + 1) / M <= 0.25;
+        if (!horizon && !above) continue;
+        for (int k = 0; k < N; ++k) {
+            const double d = div[size_t(j) * N + k].minDistance;
+            if (horizon) est.horizonDistance[size_t(k)] = std::min(est.horizonDistance[size_t(k)], d);
+            if (above) {
+                overhead += d < 1e10 ? 1 / d : 0;
+                ++overheadCount;
+            }
+        }
+    }
+    est.overheadInverseDistance = overheadCount > 0 ? overhead / overheadCount : 0;
+}
+
 }  // namespace
 
 double HemisphereEstimate::maxCurvature() const {
@@ -155,6 +175,7 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
     for (const Division& d : div) est.value += d.sum / d.n;
     est.value = est.value / double(div.size());
     if (!params.gradients) return est;
+    occluders(div, M, N, est);
     for (const Division& d : div)
         for (int i = 0; i < 3; ++i) est.hessian[i] += d.hessian[i] / d.n;
     for (double& h : est.hessian) h /= double(div.size());

@@ -47,6 +47,12 @@ struct HemisphereEstimate {
     double hessian[3] = {0, 0, 0};
     // Largest |eigenvalue| of `hessian`: the strongest curvature of the value.
     double maxCurvature() const;
+    // What the leak test of a record needs (ambient.cpp corralFlags): per phi column (the
+    // first centred at phi = pi/N from tangentFrame's u), the nearest surface seen near the
+    // horizon (rows with sin^2 theta above 0.8; 1e10 where none was), and the mean of
+    // 1/distance over the divisions overhead (sin theta <= 1/2; 0 where rays escaped).
+    std::vector<double> horizonDistance;
+    double overheadInverseDistance = 0;
 };
 
 // Traces the hemisphere above unit `normal` from `origin`. Allocates its division table

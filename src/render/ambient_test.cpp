@@ -220,6 +220,24 @@ TEST(AmbientTest, CacheReuseDistanceAndNormal) {
     EXPECT_EQ(deep.recordCount(), 2);
 }
 
+// No record reaches past aa * maxarad, RADIANCE's largest radius (a fifth of the scene,
+// ambient.c setambres), however smooth its light: issue 43, where records on a sunlit
+// ground plane 400 m across reached 70 m into the rooms beside it. Scene 1000, -ar 0:
+// maxarad 200, so with -aa 0.1 a record is reused 15 m away and not 25 m away.
+TEST(AmbientTest, ReachIsAtMostAccuracyTimesRadiancesLargestRadius) {
+    Scene scene;
+    AmbientOptions o = options(1, 0.1);
+    o.resolution = 0;
+    Ambient amb(o, 1000, scene);
+    FunctionTracer tracer(constantRadiance(Color::grey(1), 1e10));  // open sky everywhere
+    Rng rng(8, RngDomain::Test, 0);
+    amb.indirect(pointAt({0, 0, 0}, {0, 0, 1}), tracer, rng);
+    amb.indirect(pointAt({15, 0, 0}, {0, 0, 1}), tracer, rng);
+    EXPECT_EQ(amb.recordCount(), 1);
+    amb.indirect(pointAt({40, 0, 0}, {0, 0, 1}), tracer, rng);
+    EXPECT_EQ(amb.recordCount(), 2);
+}
+
 TEST(AmbientTest, SampleRayLevelAndWeight) {
     Scene scene;
     FunctionTracer tracer(constantRadiance(Color::grey(1)));

@@ -17,7 +17,7 @@ AntimatterTable::AntimatterTable(const Scene& scene, bool warnUnknown) {
     if (lists_.empty()) return;
     for (size_t i = 0; i < prims.size(); ++i) {
         if (!isModifier(prims[i].type)) continue;
-        int32_t m = material::chainMaterial(scene, int32_t(i));
+        int32_t m = chainMaterial(scene, int32_t(i));
         if (m != kVoid) of_[i] = listOf[size_t(m)];
     }
 }

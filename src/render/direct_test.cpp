@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -242,6 +243,70 @@ TEST(DirectDistant, OmegaTimesCosine) {
     EXPECT_EQ(direct.sourceCount(), 1u);  // the sky glow is left to the ambient calculation
     EXPECT_TRUE(direct.isDistantSource(0));
     EXPECT_FALSE(direct.isDistantSource(1));
+}
+
+// The penumbra of a straight edge under a distant disk (issue 42): a black half-plane
+// x < 0 at z = 1 under a zenith sun (or a light sphere) of angular radius a. A sample is
+// a direction uniform over the part of the disk -dj allows (a disk of radius dj a about
+// the centre), so the lit fraction at (x0, 0, 0) is the part of that disk beyond the edge:
+// F(s) = 1/2 + (s sqrt(1 - s^2) + asin s) / pi, s = x0 / (dj a) (small angles: tan and
+// sin of 0.27 degrees differ from the angle by 1e-5). With -ds 0.001 the disk has 8 x 8
+// cells, each sampled within dj of its own extent: with -dj 1 the whole disk again.
+// Estimated over N independent calls; the tolerance is 4 sigma of the binomial (one
+// sample per call with the default -ds; for 64 cells, which are stratified, the binomial
+// bounds it from above). Before the fix the concentric map folded the left and lower
+// half of the disk onto the right and upper one: 0.75 at the edge.
+TEST(DirectDistant, PenumbraOfAStraightEdgeIsAUniformDisk) {
+    // The same disk as a distant source and as a light sphere 100 m up (RADIANCE samples
+    // both through the concentric map of a jittered cell).
+    const double alpha = 0.5 * 0.533 * kPi / 180;
+    const std::string edge = "void plastic black 0 0 5 0 0 0 0 0\n"
+                             "black polygon edge 0 0 12 -10 -10 1 0 -10 1 0 10 1 -10 10 1\n";
+    const std::string sphere = "void light bulb 0 0 3 1000 1000 1000\nbulb sphere ball 0 0 4 0 0 100 " +
+                               std::to_string(100 * std::sin(alpha)) + "\n";
+    const std::string sun = "void light sun 0 0 3 1000 1000 1000\nsun source s 0 0 4 0 0 1 0.533\n";
+    auto exact = [](double s) {
+        s = std::clamp(s, -1.0, 1.0);
+        return 0.5 + (s * std::sqrt(1 - s * s) + std::asin(s)) / kPi;
+    };
+    struct Case {
+        double ds, dj;
+        int calls, samplesPerCall;
+    };
+    for (const std::string& source : {sun, sphere}) {
+        Fixture f(source + edge);
+        for (const Case c : {Case{0.2, 0.1, 4000, 1}, Case{0.2, 0.5, 4000, 1},
+                             Case{0.2, 1, 4000, 1}, Case{0.001, 1, 400, 64}}) {
+            DirectOptions opt;
+            opt.sampling = c.ds;
+            opt.jitter = c.dj;
+            DirectLighting direct(f.scene, f.geo, opt);
+            TestOracle oracle(f.scene, f.geo);
+            // The unshadowed value, from a point far from the edge.
+            DirectPoint open;
+            open.point = {5, 0, 0};
+            open.normal = open.geomNormal = {0, 0, 1};
+            Rng rng0(1, RngDomain::Test, 7);
+            const double full = direct.compute(open, cosine(open.normal), oracle, rng0).r;
+            ASSERT_GT(full, 0);
+            for (double s : {-0.9, -0.5, -0.2, 0.0, 0.3, 0.7}) {
+                DirectPoint at;
+                at.point = {s * c.dj * alpha, 0, 0};
+                at.normal = at.geomNormal = {0, 0, 1};
+                double sum = 0;
+                for (int i = 0; i < c.calls; ++i) {
+                    Rng rng(uint64_t(i), RngDomain::Test, 7);
+                    sum += direct.compute(at, cosine(at.normal), oracle, rng).r / full;
+                }
+                const double want = exact(s);
+                const double sigma =
+                    std::sqrt(std::fmax(want * (1 - want), 0.01) / (c.calls * c.samplesPerCall));
+                EXPECT_NEAR(sum / c.calls, want, 4 * sigma)
+                    << (source == sun ? "sun" : "sphere") << " -ds " << c.ds << " -dj " << c.dj
+                    << " s " << s;
+            }
+        }
+    }
 }
 
 TEST(DirectShadow, OccluderGlassAndBackSide) {

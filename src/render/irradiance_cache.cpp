@@ -23,6 +23,8 @@
 #include <cmath>
 #include <deque>
 
+#include "render/ambient_hemisphere.h"
+
 namespace rp::render {
 
 namespace {
@@ -50,6 +52,33 @@ uint64_t cellKey(int level, int64_t x, int64_t y, int64_t z) {
 int64_t cellIndex(double t) {
     constexpr double kLimit = 4.0e18;  // far beyond any sane scene; keeps the cast defined
     return int64_t(std::floor(std::clamp(t, -kLimit, kLimit)));
+}
+
+// RADIANCE compat (ambient.c plugaleak): a record whose corral flags the query's
+// direction is tested with a ray from the query toward the record's normal line, aimed
+// 20 degrees above the query's tangent plane (high enough to miss the small geometry
+// near the record); an occluder on it plugs the leak.
+bool leaks(const AmbientRecord& r, const CacheQuery& q) {
+    Vec3 u, v;
+    tangentFrame(r.normal, u, v);
+    const Vec3 toQuery = q.point - r.position;
+    double angle = std::atan2(dot(toQuery, v), dot(toQuery, u));
+    if (angle < 0) angle += 2 * kPi;
+    const int sector = std::min(31, int(angle * (16 / kPi)));
+    if (!(r.corral >> sector & 1u)) return false;
+    constexpr double kCos70Squared = 0.1169778;
+    const Vec3 vdif = r.position - q.point;
+    const double normdot = dot(r.normal, q.normal), ndotd = dot(vdif, q.normal);
+    const double nadotd = dot(vdif, r.normal);
+    const double a = normdot * normdot - kCos70Squared;
+    const double b = 2 * (normdot * ndotd - nadotd * kCos70Squared);
+    const double c = ndotd * ndotd - dot(vdif, vdif) * kCos70Squared;
+    const double disc = b * b - 4 * a * c;
+    if (a == 0 || !(disc > 0)) return true;  // RADIANCE: "should rarely happen"
+    const double root = std::sqrt(disc);
+    const double t = std::max((-b - root) / (2 * a), (-b + root) / (2 * a));
+    if (t <= 1e-6) return false;  // the behind test's business
+    return q.leaks->blocked(q.origin, r.position + r.normal * t);
 }
 
 }  // namespace
@@ -169,6 +198,7 @@ bool IrradianceCache::lookup(const CacheQuery& q, Rng* jitter, Color& out) const
         double e = std::sqrt(e1sq) + std::sqrt(e2sq);
         double limit = jitter ? accuracy_ * (0.9 + 0.2 * jitter->uniform()) : accuracy_;
         if (e > limit) return;
+        if (r.corral && q.leaks && leaks(r, q)) return;
         double w = e <= 1e-3 ? 1e3 : 1 / e;  // Ward's weight 1/e, capped as RADIANCE
         sum += extrapolate(r, q.point, q.normal, useGradients_) * w;
         weightSum += w;

@@ -29,6 +29,21 @@ struct AmbientRecord {
     Color value;          // mean radiance of the hemisphere (irradiance / pi)
     Vec3 gradPosition;    // translational gradient of brightness(value), relative (1/length)
     Vec3 gradDirection;   // rotational gradient, relative: factor 1 + g . (N_i x N)
+    // RADIANCE's corral (ambcomp.c ambcorral): bit s set where a surface near the horizon
+    // lies within the record's reach in azimuth sector s (32 sectors of pi/16 about the
+    // normal, from tangentFrame's u axis). A query in such a sector may be behind that
+    // surface: the lookup tests (CacheQuery::leaks).
+    uint32_t corral = 0;
+};
+
+// Whether an opaque surface lies between a query and a record that might have leaked
+// through it (RADIANCE ambient.c plugaleak). Implemented by the renderer per query.
+class LeakTest {
+public:
+    virtual ~LeakTest() = default;
+    // Any surface that stops light (not void, transparent, a thick BSDF's proxy or
+    // clipped) on the segment from `from` (off the query's surface) to `to`.
+    virtual bool blocked(const Vec3& from, const Vec3& to) = 0;
 };
 
 // The query of one lookup.
@@ -37,6 +52,8 @@ struct CacheQuery {
     Vec3 normal;
     int level = 0;
     double weight = 1;   // the ray's weight (scales the normal error, as RADIANCE)
+    Vec3 origin;         // point moved off its surface, where leak tests start
+    LeakTest* leaks = nullptr;  // null: records are not tested for leaks
 };
 
 class IrradianceCache {
@@ -51,8 +68,9 @@ public:
     // Weighted extrapolation of every record that covers the query within -aa
     // (RADIANCE sumambient): Ward's error e = |P-Pi|/Ri + sqrt((1 - N.Ni) weight), accepted
     // when e < aa times a jitter in [0.9, 1.1) drawn from `jitter` (null: no jitter);
-    // records in front of the point, computed at a deeper level or for a lighter ray are
-    // skipped. Returns false when no record passes (the caller computes a new one).
+    // records in front of the point, computed at a deeper level or for a lighter ray, or
+    // seen past an occluder in their corral (q.leaks) are skipped. Returns false when no
+    // record passes (the caller computes a new one).
     bool lookup(const CacheQuery& q, Rng* jitter, Color& out) const;
 
     // Adds a record; safe concurrently with lookups and other inserts. `isNew` records

@@ -83,6 +83,54 @@ TEST(IrradianceCacheTest, RejectsRecordsInFrontAndOfDeeperLevels) {
     EXPECT_DOUBLE_EQ(c.r, 3);
 }
 
+// RADIANCE's corral (ambient.c plugaleak): a record whose corral flags the query's
+// direction is used only if no surface stops the test ray; other directions are not
+// tested. tangentFrame((0, 0, 1)) has u = +x, so sector 0 covers azimuths 0-11.25 degrees.
+class FakeLeakTest : public LeakTest {
+public:
+    bool blocked(const Vec3& from, const Vec3& to) override {
+        ++calls;
+        lastFrom = from;
+        lastTo = to;
+        return wall;
+    }
+    bool wall = true;
+    int calls = 0;
+    Vec3 lastFrom, lastTo;
+};
+
+TEST(IrradianceCacheTest, CorralledRecordsAreTestedForLeaks) {
+    IrradianceCache cache(0.2, 0.01, 10);
+    AmbientRecord r = record({0, 0, 0}, {0, 0, 1}, 5, 2);  // reach 0.4
+    r.corral = 1u;
+    cache.insert(r);
+    FakeLeakTest leaks;
+    CacheQuery q;
+    q.normal = {0, 0, 1};
+    q.leaks = &leaks;
+    const double a = 5 * kPi / 180;
+    q.point = {0.3 * std::cos(a), 0.3 * std::sin(a), 0};
+    q.origin = q.point + Vec3{0, 0, 1e-6};
+    Color c;
+    EXPECT_FALSE(cache.lookup(q, nullptr, c)) << "behind a wall in a flagged direction";
+    EXPECT_EQ(leaks.calls, 1);
+    EXPECT_EQ(leaks.lastFrom, q.origin);
+    // The target lies on the record's normal line, 20 degrees above the query's plane.
+    EXPECT_NEAR(leaks.lastTo.x, 0, 1e-12);
+    EXPECT_NEAR(leaks.lastTo.z, 0.3 * std::tan(20 * kPi / 180), 1e-7);  // RADIANCE: cos^2 70 to 7 digits
+    leaks.wall = false;
+    ASSERT_TRUE(cache.lookup(q, nullptr, c));
+    EXPECT_DOUBLE_EQ(c.r, 5);
+    leaks.wall = true;
+    q.point = {0, 0.3, 0};  // azimuth 90 degrees: sector 8, not flagged
+    q.origin = q.point;
+    EXPECT_TRUE(cache.lookup(q, nullptr, c));
+    EXPECT_EQ(leaks.calls, 2);
+    q.leaks = nullptr;  // no test asked for: used
+    q.point = {0.3 * std::cos(a), 0.3 * std::sin(a), 0};
+    EXPECT_TRUE(cache.lookup(q, nullptr, c));
+}
+
 TEST(IrradianceCacheTest, ExtrapolationUsesBothGradients) {
     AmbientRecord r = record({0, 0, 0}, {0, 0, 1}, 2, 1);
     r.gradPosition = {0.5, 0, 0};

@@ -27,6 +27,9 @@ struct RayResult {
     Color coefficient{1, 1, 1};  // W: the ray's colour coefficient (1 for input rays)
     double weight = 1;        // w: the ray's weight (1 for input rays)
     bool hit = false;         // false: the ray left the scene
+    // It left the scene through a distant source (RADIANCE sourcehit sets ro to it): s m M
+    // name the source, n and N are -d, p is the origin (hit stays false).
+    bool distantSource = false;
     double distance = 1e10;   // L: distance to the first intersection (RADIANCE FHUGE if none)
     double effectiveLength = 1e10;  // l: effective distance (through mirrors: apparent)
     Vec3 point;               // p: first intersection

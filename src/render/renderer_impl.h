@@ -181,7 +181,9 @@ private:
     MediaState mediaOf(const RayState& s) const {
         return s.media ? *s.media : MediaState{impl.globalMedium, {}, {}};
     }
-    Color escaped(const Ray& ray, const RayState& state);
+    // `record` (may be null): filled with the source the ray leaves through, unless it
+    // already holds a surface.
+    Color escaped(const Ray& ray, const RayState& state, RayResult* record);
     // Direct light at `hit`; `behindOnly`: only sources behind the surface (the far point
     // of a thick BSDF, whose reflected light is taken at the hit itself).
     Color directAt(const Hit& hit, const material::MaterialParams& params,

@@ -125,9 +125,10 @@ bool RayWriter::traced(const RayResult& r) const {
     // out by an include list, kept by an exclude list. The list holds modifier names
     // (RADIANCE collects every modifier of that name), so names are compared.
     bool listed = false;
-    if (r.hit && r.modifier >= 0 && scene_ && size_t(r.modifier) < scene_->prims.size())
+    const bool named = r.hit || r.distantSource;
+    if (named && r.modifier >= 0 && scene_ && size_t(r.modifier) < scene_->prims.size())
         listed = traceModifiers_.count(scene_->prims[size_t(r.modifier)].name) > 0;
-    if (!r.hit) return traceMode_ == TraceFilter::Mode::kExclude;
+    if (!named) return traceMode_ == TraceFilter::Mode::kExclude;
     return listed == (traceMode_ == TraceFilter::Mode::kInclude);
 }
 
@@ -168,6 +169,7 @@ void RayWriter::name(std::string& out, int32_t index, bool hit) const {
 
 void RayWriter::record(std::string& out, const std::string& letters, const RayResult& r) const {
     const bool hit = r.hit;
+    const bool named = hit || r.distantSource;  // RADIANCE's ro != NULL
     auto vec = [&](const Vec3& v, bool valid) {
         for (int k = 0; k < 3; ++k) real(out, valid ? v[k] : 0.0);
     };
@@ -183,13 +185,13 @@ void RayWriter::record(std::string& out, const std::string& letters, const RayRe
         case 'L': real(out, r.distance); break;
         case 'c': real(out, hit ? r.u : 0.0); real(out, hit ? r.v : 0.0); break;
         // RADIANCE compat (rtrace.c oputp, oputn, oputN): the ray origin for the point of
-        // a ray that hit nothing, zero normals.
+        // a ray that hit nothing, zero normals; a distant source's fields are its own.
         case 'p': vec(hit ? r.point : r.origin, true); break;
-        case 'n': vec(r.normal, hit); break;
-        case 'N': vec(r.unperturbedNormal, hit); break;
-        case 's': name(out, r.prim, hit && r.prim >= 0); break;
-        case 'm': name(out, r.modifier, hit); break;
-        case 'M': name(out, r.material, hit); break;
+        case 'n': vec(r.normal, named); break;
+        case 'N': vec(r.unperturbedNormal, named); break;
+        case 's': name(out, r.prim, named && r.prim >= 0); break;
+        case 'm': name(out, r.modifier, named); break;
+        case 'M': name(out, r.material, named); break;
         case 'r': color(out, r.mirrored); break;
         case 'x': color(out, r.unmirrored); break;
         case 'R': real(out, r.mirroredLength); break;

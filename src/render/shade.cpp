@@ -25,7 +25,8 @@ bool passesIrradiance(const material::MaterialParams& m) {
 constexpr double kNoHit = 1e10;
 
 // What rtrace reports of the first surface a ray meets (-o p n N s m M ...); `normal` is
-// the perturbed one as RADIANCE reports it (ron + pert, unflipped).
+// the perturbed one as RADIANCE reports it (ron + pert, after the material turned the
+// surface toward the ray, MaterialRecord::reorientsBackHits).
 void recordFirst(RayResult* f, const Hit& hit, const Vec3& normal, int32_t material) {
     if (!f || f->hit) return;
     f->hit = true;
@@ -60,7 +61,7 @@ material::PatternPoint patternPoint(const Hit& hit, const Vec3& dir) {
 material::Redirection evalRedirect(const Scene& scene, const material::MaterialCalc& calc,
                                    material::MaterialCalcEvaluator& ev, const Hit& hit,
                                    const Vec3& dir, int projection, const Vec3& toSource) {
-    int32_t mat = material::chainMaterial(scene, hit.modifier);
+    int32_t mat = chainMaterial(scene, hit.modifier);
     if (mat == kVoid || !calc.uses(mat)) return {};
     const PrimType t = scene.prims[size_t(mat)].type;
     if (t != PrimType::Prism1 && t != PrimType::Prism2) return {};
@@ -135,7 +136,7 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
         if (!hit) {
             // A ray with a length limit (rtrace -ld) that ends short of every surface is
             // clipped: RADIANCE gives it no value, not the sources or sky behind.
-            Color c = r.tmax < HUGE_VAL ? Color{} : escaped(r, cur);
+            Color c = r.tmax < HUGE_VAL ? Color{} : escaped(r, cur, record);
             if (mediumOf(cur).active()) total += coef * participate(r, HUGE_VAL, cur, transmit);
             total += coef * transmit * c;
             break;
@@ -234,11 +235,18 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     sp.normal = n;
     sp.flat = isPlanar(impl.scene.prims[size_t(hit.prim)].type);
     sp.scatteredRay = state.indirect;
-    sp.specularInPhotons = impl.photons.active() && state.ambientLevel > 0;
+    // RADIANCE compat (pmapmat.h ambRayInPmap): specular direct light is in the photons
+    // only below the first gather bounce (rlvl > 1); at a final-gather hit itself the
+    // light a BSDF window or a glossy surface sends straight to the gathering point is
+    // not (issue 43: sensors beside a Klems window read half of RADIANCE's).
+    sp.specularInPhotons = impl.photons.active() && state.ambientLevel > 0 &&
+                           (impl.ambientOptions.bounces < 0 || state.depth > 1);
     sp.rayWeight = state.weight;
     sp.specJitter = impl.shadeOptions.specJitter;
 
-    auto fillFirst = [&](RayResult* f) { recordFirst(f, hit, hit.front ? n : -n, layer.material); };
+    auto fillFirst = [&](RayResult* f) {
+        recordFirst(f, hit, hit.front || e.reorientsBackHits ? n : -n, layer.material);
+    };
 
     if (e.isLight) {
         const auto& light = std::get<material::LightParams>(params);
@@ -273,8 +281,9 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
             passThrough = true;
             return {};
         }
-        fillFirst(first);
-        // -i: the first surface is white Lambertian; the value is its irradiance.
+        // -i: the first surface is white Lambertian (RADIANCE's plastic Lamb, which faces
+        // the ray); the value is its irradiance.
+        recordFirst(first, hit, n, layer.material);
         return irradianceAt(hit, n, state);
     }
 
@@ -449,9 +458,54 @@ Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams
         *this, rng);
 }
 
+namespace {
+
+// RADIANCE compat (ambient.c plugaleak): a cached record plugged by the first surface on
+// the test segment that stops light: one with a material that is neither transparent
+// (initotypes.c T_TRANSP) nor a thick BSDF's proxy, and not hidden by the query ray's
+// antimatter.
+class QueryLeakTest final : public LeakTest {
+public:
+    QueryLeakTest(const Scene& scene, const SceneGeometry& geometry, const ClipSet& clip)
+        : scene_(scene), geometry_(geometry), clip_(clip) {}
+    bool blocked(const Vec3& from, const Vec3& to) override {
+        Vec3 d = to - from;
+        const double length = rp::length(d);
+        if (!(length > 0)) return false;
+        d = d / length;
+        Ray r{from, d, length};
+        for (int pass = 0; pass < 64; ++pass) {
+            const std::optional<Hit> hit = geometry_.closestHit(r);
+            if (!hit) return false;
+            if (stopsLight(hit->modifier)) return true;
+            const double left = r.tmax - hit->t;
+            r = spawnRay(*hit, d, left);
+            if (!(left > 0)) return false;
+        }
+        return false;
+    }
+
+private:
+    bool stopsLight(int32_t modifier) const {
+        if (clip_.contains(modifier)) return false;
+        const int32_t m = chainMaterial(scene_, modifier);
+        if (m == kVoid) return false;
+        const Primitive& p = scene_.prims[size_t(m)];
+        const bool bsdfProxy = p.type == PrimType::BSDF && !p.sargs.empty() && p.sargs[0] != "0";
+        return !isTransparentMaterial(p.type) && !bsdfProxy;
+    }
+    const Scene& scene_;
+    const SceneGeometry& geometry_;
+    const ClipSet& clip_;
+};
+
+}  // namespace
+
 Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t modifier,
                                    const RayState& state, const Color& coef) {
+    QueryLeakTest leaks(impl.scene, impl.geometry, state.clip);
     AmbientPoint ap;
+    ap.leaks = &leaks;
     ap.point = hit.point;
     ap.normal = normal;
     double side = dot(normal, hit.normal) >= 0 ? hit.offset : -hit.offset;
@@ -508,13 +562,18 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal,
     at.scatterLoss = impl.photons.hasGlobal();
     shadowBlockedByTransparent_ = shadowInPhotonMap(state);
     shadowBase_ = shadowClip_ = state.clip;
-    Color e = impl.direct.compute(
-        at,
-        [&](const Vec3& toLight, double) {
-            double c = dot(normal, toLight);
-            return c > 0 ? Color{c, c, c} : Color{};
-        },
-        *this, rng);
+    // Direct photons replace the direct calculation here too (manual 5.4; RADIANCE's
+    // direct() multiplies the receiver's coefficient at its normal, pi for this white
+    // Lambertian one, by the direct photons' irradiance / pi).
+    Color e = impl.photons.hasDirect()
+                  ? impl.photons.directDensity(*photonLookups, hit.point, normal) * kPi
+                  : impl.direct.compute(
+                        at,
+                        [&](const Vec3& toLight, double) {
+                            double c = dot(normal, toLight);
+                            return c > 0 ? Color{c, c, c} : Color{};
+                        },
+                        *this, rng);
     RayState st;
     st.ambientLevel = state.ambientLevel;
     st.weight = state.weight;

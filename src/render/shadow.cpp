@@ -256,7 +256,7 @@ Color Renderer::Context::distantRadiance(int32_t source, const Vec3& dir) {
     return sourceRadiance(src.modifier, at, dir, glow, light);
 }
 
-Color Renderer::Context::escaped(const Ray& ray, const RayState& state) {
+Color Renderer::Context::escaped(const Ray& ray, const RayState& state, RayResult* record) {
     std::vector<int32_t> matches = impl.geometry.sourcesInDirection(ray.dir);
     if (matches.empty()) return {};
     // RADIANCE compat (source.c): a ray leaving the scene takes the first non-glow
@@ -283,10 +283,22 @@ Color Renderer::Context::escaped(const Ray& ray, const RayState& state) {
         }
     }
     if (chosen < 0) return {};
+    const DistantSource& chosenSource = impl.geometry.sources()[size_t(chosen)];
+    if (record && !record->hit && !record->distantSource) {
+        // RADIANCE compat (source.c sourcehit, rtrace.c oputn/oputp): ro is the source,
+        // ron = -rdir, rop stays the origin; -0 becomes +0 in n as RADIANCE adds pert.
+        record->distantSource = true;
+        record->prim = chosenSource.prim;
+        record->modifier = chosenSource.modifier;
+        record->material = chainMaterial(impl.scene, chosenSource.modifier);
+        record->unperturbedNormal = -ray.dir;
+        record->normal = Vec3{} + record->unperturbedNormal;
+        record->point = ray.origin;
+    }
     bool directSource = impl.direct.isDistantSource(chosen);
     if (directSource && state.indirect) return {};  // counted by the direct calculation
     if (directSource && !impl.options.direct.visibility) return {};
-    const int32_t modifier = impl.geometry.sources()[size_t(chosen)].modifier;
+    const int32_t modifier = chosenSource.modifier;
     if (state.contrib && state.contrib->tracks(modifier))
         state.contrib->add(modifier, ray.origin + ray.dir * kNoHit, ray.dir, state.contribCoef,
                            chosenValue);

@@ -313,8 +313,8 @@ SourceList buildSourceList(const Scene& scene, const SceneGeometry& geometry,
     light::LightSearchOptions search;
     search.illumEmits = true;
     for (const light::LightSource& ls : light::findLightSources(scene, geometry, search)) {
+        if (ls.ambientOnly()) continue;  // sky or ground glow: SSKIP
         const bool glow = ls.params.kind == material::LightParams::Kind::Glow;
-        if (glow && ls.distant()) continue;  // sky or ground glow: SSKIP
         DirectSource src;
         src.light = ls;
         if (glow) src.proximity = ls.params.glowMaxRadius;

@@ -30,17 +30,25 @@ double cellCoord(int i, int n, double jitter, Rng& rng) {
 }
 
 // Shirley & Chiu (1997) concentric map of the unit square onto the unit disk: equal
-// areas stay equal, so cells of the square become equal-area cells of the disk.
+// areas stay equal, so cells of the square become equal-area cells of the disk. rho >= 0:
+// the left and lower wedges (x or y negative) turn by pi, so that they cover their own
+// half of the disk and not the right and upper one a second time.
 void concentric(double a, double b, double& rho, double& phi) {
     double x = 2 * a - 1, y = 2 * b - 1;
     if (x == 0 && y == 0) {
         rho = phi = 0;
-    } else if (std::fabs(x) > std::fabs(y)) {
+        return;
+    }
+    if (std::fabs(x) > std::fabs(y)) {
         rho = x;
         phi = (kPi / 4) * (y / x);
     } else {
         rho = y;
         phi = kPi / 2 - (kPi / 4) * (x / y);
+    }
+    if (rho < 0) {
+        rho = -rho;
+        phi += kPi;
     }
 }
 

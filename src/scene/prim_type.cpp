@@ -87,6 +87,30 @@ std::string_view primTypeName(PrimType t) { return kTypes[static_cast<size_t>(t)
 
 PrimCategory primCategory(PrimType t) { return kTypes[static_cast<size_t>(t)].category; }
 
+int32_t chainMaterial(const Scene& scene, int32_t modifier) {
+    int32_t m = modifier;
+    // Bounded walk: the reader resolves aliases, so chains are short and acyclic.
+    for (size_t guard = 0; m != kVoid && guard < scene.prims.size(); ++guard) {
+        PrimCategory c = primCategory(scene.prims[size_t(m)].type);
+        if (c == PrimCategory::Material || c == PrimCategory::Mixture) return m;
+        m = scene.prims[size_t(m)].modifier;
+    }
+    return kVoid;
+}
+
+bool isTransparentMaterial(PrimType t) {
+    switch (t) {
+    case PrimType::Trans:
+    case PrimType::Trans2:
+    case PrimType::Dielectric:
+    case PrimType::Interface:
+    case PrimType::Mist:
+    case PrimType::Glass:
+    case PrimType::ABSDF: return true;
+    default: return false;
+    }
+}
+
 bool primTypeFromName(std::string_view name, PrimType& out) {
     for (const auto& info : kTypes) {
         if (info.name == name) {

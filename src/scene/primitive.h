@@ -91,4 +91,13 @@ struct Scene {
     }
 };
 
+// RADIANCE findmaterial (initotypes.c): the first material on the modifier chain that
+// starts at `modifier`, past patterns, textures and aliases, or the mixture that ends it;
+// kVoid if the chain ends in void. The one walk every module uses.
+int32_t chainMaterial(const Scene& scene, int32_t modifier);
+
+// RADIANCE's transparent materials (initotypes.c T_TRANSP): trans, trans2, dielectric,
+// interface, mist, glass and aBSDF. Between coincident surfaces an opaque one wins.
+bool isTransparentMaterial(PrimType t);
+
 }  // namespace rp
