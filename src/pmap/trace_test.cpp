@@ -24,6 +24,15 @@ std::vector<Photon> mapOf(const DistributionResult& r, PhotonMapType t) {
     return r.photons[size_t(t)].toVector();
 }
 
+// Every deposit of photons 0..n-1 (seed 1), whatever the maps' storage probabilities.
+PhotonBins traceKeepingAll(const testing::Run& run, uint64_t n) {
+    std::array<double, kNumPhotonMapTypes> keepAll;
+    keepAll.fill(1.0);
+    PhotonBins bins;
+    for (uint64_t i = 0; i < n; ++i) run.tracer->trace(1, i, keepAll, bins);
+    return bins;
+}
+
 double sumRed(const std::vector<Photon>& ps) {
     double s = 0;
     for (const Photon& p : ps) s += p.fluxRgb()[0];
@@ -192,10 +201,7 @@ void antimatter portmat 1 void 0 0
 portmat polygon port 0 0 12  0 0 4  0 4 4  4 4 4  4 0 4
 )";
     auto run = makeRun(sceneFromText(text), mapsFor(true, true, true), {"portmat"});
-    std::array<double, kNumPhotonMapTypes> keepAll;
-    keepAll.fill(1.0);
-    PhotonBins bins;
-    for (uint64_t i = 0; i < 2000; ++i) run->tracer->trace(1, i, keepAll, bins);
+    const PhotonBins bins = traceKeepingAll(*run, 2000);
     EXPECT_TRUE(bins.maps[size_t(PhotonMapType::Global)].empty());
     EXPECT_TRUE(bins.maps[size_t(PhotonMapType::Caustic)].empty());
     EXPECT_GT(bins.maps[size_t(PhotonMapType::Direct)].size(), 1900u);  // a few miss the port
@@ -229,10 +235,7 @@ void antimatter portmat 1 void 0 0
 portmat polygon port 0 0 12  0 0 4  0 4 4  4 4 4  4 0 4
 )";
     auto run = makeRun(sceneFromText(text), mapsFor(true, false, true), {"portmat"});
-    std::array<double, kNumPhotonMapTypes> keepAll;
-    keepAll.fill(1.0);
-    PhotonBins bins;
-    for (uint64_t i = 0; i < 2000; ++i) run->tracer->trace(1, i, keepAll, bins);
+    const PhotonBins bins = traceKeepingAll(*run, 2000);
     EXPECT_TRUE(bins.maps[size_t(PhotonMapType::Direct)].empty());
     EXPECT_GT(bins.maps[size_t(PhotonMapType::Global)].size(), 1900u);
 
@@ -255,10 +258,7 @@ void glass portmat 0 0 3 1 1 1
 portmat polygon port 0 0 12  0 0 4  0 4 4  4 4 4  4 0 4
 )";
     auto run = makeRun(sceneFromText(text), mapsFor(true, true, true), {"portmat"});
-    std::array<double, kNumPhotonMapTypes> keepAll;
-    keepAll.fill(1.0);
-    PhotonBins bins;
-    for (uint64_t i = 0; i < 2000; ++i) run->tracer->trace(1, i, keepAll, bins);
+    const PhotonBins bins = traceKeepingAll(*run, 2000);
     EXPECT_TRUE(bins.maps[size_t(PhotonMapType::Direct)].empty());
     EXPECT_GT(bins.maps[size_t(PhotonMapType::Global)].size(), 1500u);  // some reflect off the pane
     EXPECT_EQ(bins.maps[size_t(PhotonMapType::Caustic)].size(),

@@ -67,12 +67,12 @@ Ambient::Ambient(const AmbientOptions& options, double sceneSize, const Scene& s
     m.opt = options;
     m.sceneSize = sceneSize;
     m.minWeight = minWeight;
-    // RADIANCE compat (ambient.c setambres): record radii lie between size/ar and 64
-    // times that, never over a fifth of the scene (a fifth of it without -ar).
+    // RADIANCE compat (ambient.c setambres): records are at least size/ar apart and
+    // reach at most 64 times that (half the scene without -ar), never over half the scene
+    // (RADIANCE: a fifth; the curvature bounds our records' reach long before).
     m.minRadius = options.resolution > 0 ? sceneSize / options.resolution : 0;
-    m.maxRadius = m.minRadius > kTiny ? std::min(64 * m.minRadius, 0.2 * sceneSize)
-                                      : 0.2 * sceneSize;
-    if (m.maxRadius <= m.minRadius) m.maxRadius = 64 * m.minRadius;
+    m.maxRadius = m.minRadius > kTiny ? 64 * m.minRadius : sceneSize / 2;
+    if (sceneSize > 0) m.maxRadius = std::min(m.maxRadius, sceneSize / 2);
     if (m.maxRadius <= 0) m.maxRadius = 1e10;
 
     // -ae/-ai: the list names modifiers; the last of the two options sets its meaning.
@@ -173,19 +173,24 @@ double Ambient::Impl::recordRadius(const HemisphereEstimate& est, double brightn
     // The reach grows as sqrt(aa) (RADIANCE 3's Ward-Heckbert reach aa R grows as aa), so
     // halving -aa doubles the records instead of quadrupling them, and in smooth light
     // (small k) records reach far. Bounds: at least aa * minarad (RADIANCE 3's smallest
-    // reach), at most aa * maxarad (RADIANCE's largest, ambcomp.c: the radius is at most
-    // maxarad, so that no record reaches past a fifth of the scene's -aa share: a record on
-    // a sunlit ground plane 400 m across reached 70 m into the rooms beside it), and where the first-order change over the reach would
-    // exceed the value itself (|g| reach > 1) the reach shrinks to 1/|g| (if the floor
-    // keeps it larger, the relative gradient `gradPosition` is capped instead). Stored as the
-    // Ward radius R = reach / aa, so lookups, the grid and the -af file work unchanged.
+    // reach), at most maxarad, and at most aa * maxarad (RADIANCE's own bound, ambcomp.c)
+    // for a record whose samples mostly escaped: they tell nothing of the surfaces around
+    // it, and R_h knows only the few that were hit (issue 43: records on an open ground
+    // plane 400 m across reached 70 m, into the room beside them, where the walls had no
+    // sample; LBNL's tutorial room read 60 % high; capping every record so made the
+    // Cornell box 4x slower for nothing). Where the first-order change over the reach
+    // would exceed the value itself (|g| reach > 1) the reach shrinks to 1/|g| (if the
+    // floor keeps it larger, the relative gradient `gradPosition` is capped instead).
+    // Stored as the Ward radius R = reach / aa, so lookups, the grid and the -af file
+    // work unchanged.
     const double aa = opt.accuracy;
     const double tol = kCurvatureShare * aa / std::sqrt(wt);
     double k = brightness > kTiny ? est.maxCurvature() / brightness : 0;
     const double rh = est.sumInverseDistance > kTiny ? est.hits / est.sumInverseDistance : 0;
     const double rSplit = rh > 0 ? std::min(rh, maxRadius) : maxRadius;
     k = std::max(k, kSplitSphereCurvature / (rSplit * rSplit));
-    const double maxReach = std::max(aa * minRadius, aa * maxRadius);
+    const bool mostlyEscaped = 2 * est.hits < est.samples;
+    const double maxReach = std::max(aa * minRadius, (mostlyEscaped ? aa : 1.0) * maxRadius);
     double reach = k > 0 ? std::sqrt(2 * tol / k) : maxReach;
     const double g = length(gradPosition);
     if (g * reach > 1) reach = 1 / g;

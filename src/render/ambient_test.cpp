@@ -220,22 +220,29 @@ TEST(AmbientTest, CacheReuseDistanceAndNormal) {
     EXPECT_EQ(deep.recordCount(), 2);
 }
 
-// No record reaches past aa * maxarad, RADIANCE's largest radius (a fifth of the scene,
-// ambient.c setambres), however smooth its light: issue 43, where records on a sunlit
-// ground plane 400 m across reached 70 m into the rooms beside it. Scene 1000, -ar 0:
-// maxarad 200, so with -aa 0.1 a record is reused 15 m away and not 25 m away.
-TEST(AmbientTest, ReachIsAtMostAccuracyTimesRadiancesLargestRadius) {
+// A record whose samples mostly escaped (open sky) reaches no farther than aa * maxarad,
+// RADIANCE's largest reach, however smooth its light: issue 43, where records on an
+// open ground plane 400 m across reached 70 m into the room beside it. Scene 1000,
+// -ar 0: maxarad 500, so with -aa 0.1 such a record is reused 40 m away, not 60 m away;
+// one that saw surfaces all around (here 300 m away) reaches farther.
+TEST(AmbientTest, RecordsThatSawMostlySkyReachAtMostAccuracyTimesMaxRadius) {
     Scene scene;
     AmbientOptions o = options(1, 0.1);
     o.resolution = 0;
     Ambient amb(o, 1000, scene);
-    FunctionTracer tracer(constantRadiance(Color::grey(1), 1e10));  // open sky everywhere
+    FunctionTracer sky(constantRadiance(Color::grey(1), 1e10));
     Rng rng(8, RngDomain::Test, 0);
-    amb.indirect(pointAt({0, 0, 0}, {0, 0, 1}), tracer, rng);
-    amb.indirect(pointAt({15, 0, 0}, {0, 0, 1}), tracer, rng);
+    amb.indirect(pointAt({0, 0, 0}, {0, 0, 1}), sky, rng);
+    amb.indirect(pointAt({40, 0, 0}, {0, 0, 1}), sky, rng);
     EXPECT_EQ(amb.recordCount(), 1);
-    amb.indirect(pointAt({40, 0, 0}, {0, 0, 1}), tracer, rng);
+    amb.indirect(pointAt({100, 0, 0}, {0, 0, 1}), sky, rng);  // 60 m from the second
     EXPECT_EQ(amb.recordCount(), 2);
+
+    Ambient enclosed(o, 1000, scene);
+    FunctionTracer far(constantRadiance(Color::grey(1), 300));
+    enclosed.indirect(pointAt({0, 0, 0}, {0, 0, 1}), far, rng);
+    enclosed.indirect(pointAt({60, 0, 0}, {0, 0, 1}), far, rng);
+    EXPECT_EQ(enclosed.recordCount(), 1);
 }
 
 TEST(AmbientTest, SampleRayLevelAndWeight) {
