@@ -125,7 +125,13 @@ bool parseRenderOption(const std::vector<std::string>& args, size_t& i, RenderOp
     else if (o == "-ab") a.bounces = v.integer();
     else if (o == "-aa") { a.accuracy = v.real(); v.require(a.accuracy >= 0, "must be >= 0"); }
     else if (o == "-ar") { a.resolution = v.integer(); v.require(a.resolution >= 0, "must be >= 0"); }
-    else if (o == "-ad") { a.divisions = v.integer(); v.require(a.divisions >= 0, "must be >= 0"); }
+    else if (o == "-ad") {
+        // Each hemisphere holds its divisions in memory (about 90 bytes each): beyond 1e8
+        // the request is an error here, not an allocation that fails (issue 43).
+        a.divisions = v.integer();
+        v.require(a.divisions >= 0 && a.divisions <= kMaxAmbientDivisions,
+                  "must be in [0, " + std::to_string(kMaxAmbientDivisions) + "]");
+    }
     else if (o == "-as") { a.supersamples = v.integer(); v.require(a.supersamples >= 0, "must be >= 0"); }
     else if (o == "-af") a.file = v.word();
     else if (o == "-ai") modifierList(a, true, {v.word()});

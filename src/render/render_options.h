@@ -34,6 +34,9 @@ struct LimitOptions {
     double minWeight = 2e-3;  // -lw: rays of smaller weight are not traced (roulette if lr<0)
 };
 
+// The largest -ad: one hemisphere's divisions live in memory together.
+constexpr int kMaxAmbientDivisions = 100'000'000;
+
 struct AmbientOptions {
     Color value;               // -av: ambient value for rays past the last bounce
     int valueWeight = 0;       // -aw: weight of -av in the running average (0 = fixed)

@@ -176,6 +176,7 @@ TEST(RenderOptions, Errors) {
     EXPECT_EQ(errorOf({"-ab", "1.5"}), "bad value '1.5' for option '-ab'");
     EXPECT_EQ(errorOf({"-av", "1", "2"}), "missing value for option '-av'");
     EXPECT_NE(errorOf({"-ad", "-1"}), "");
+    EXPECT_EQ(errorOf({"-ad", "2000000000"}), "option '-ad': must be in [0, 100000000]");
     EXPECT_NE(errorOf({"-n", "0"}), "");
     EXPECT_NE(errorOf({"-dc", "2"}), "");
     // Not common options: left for the tool (which reports them as unknown).

@@ -33,7 +33,9 @@ printf 'void plastic red\n0\n0\n4 1 0 0 0\n' > "$tmp/bad.rad"
 check "rvu bad scene" "$RP_BIN/rvu" "$tmp/bad.rad"
 grep -q "bad.rad:1: " "$tmp/err"
 # An option asking for more memory than there is (issue 43: `rtrace -ab 1 -ad 2000000000`
-# aborted with std::bad_alloc, exit 134): one line, exit 1, nothing on stdout.
+# aborted with std::bad_alloc, exit 134): one line naming the option, exit 1, nothing on
+# stdout. (Whatever else runs out of memory is one line too: every main catches
+# std::bad_alloc; ASan's allocator aborts instead, so that is not tested here.)
 printf 'void plastic grey 0 0 5 .5 .5 .5 0 0\ngrey polygon floor 0 0 12 0 0 0 1 0 0 1 1 0 0 1 0\n' \
     > "$tmp/floor.rad"
 "$RP_BIN/oconv" "$tmp/floor.rad" > "$tmp/floor.oct"
@@ -41,7 +43,7 @@ rc=0
 echo "0.5 0.5 0 0 0 1" | "$RP_BIN/rtrace" -h -I -ab 1 -ad 2000000000 "$tmp/floor.oct" \
     > "$tmp/out" 2> "$tmp/err" || rc=$?
 if [ "$rc" -ne 1 ] || [ -s "$tmp/out" ] || [ "$(wc -l < "$tmp/err")" -ne 1 ] ||
-   ! grep -q "^rtrace: out of memory" "$tmp/err"; then
+   ! grep -q "^rtrace: option '-ad'" "$tmp/err"; then
     echo "FAIL rtrace -ad 2000000000: rc=$rc, stderr: $(cat "$tmp/err")"
     fail=1
 fi
