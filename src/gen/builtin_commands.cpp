@@ -47,8 +47,8 @@ void reportWarnings(const std::string& program, const std::vector<std::string>& 
 // genrev, gensurf and genworm find -f files as their tools do: along RAYPATH, else in
 // the directory the shell would have run the command in.
 template <class Fn>
-std::string withSearchPath(const char* program, const SourceLoc& loc,
-                           const CommandContext& context, Fn&& run) {
+std::string withSearchPath(const char* program, const SourceLoc& loc, const CommandContext& context,
+                           Fn&& run) {
     std::vector<std::string> warnings;
     std::string out = run(searchPathFrom(context), warnings);
     reportWarnings(program, warnings, loc);
@@ -57,23 +57,24 @@ std::string withSearchPath(const char* program, const SourceLoc& loc,
 
 const Generator* findGenerator(const std::string& name) {
     static const std::vector<std::pair<std::string, Generator>> table = {
-        {"genbox", [](const auto& args, const auto&, const auto&, const auto&) { return genbox(args); }},
+        {"genbox",
+         [](const auto& args, const auto&, const auto&, const auto&) { return genbox(args); }},
         {"genblinds",
          [](const auto& args, const auto&, const auto&, const auto&) { return genblinds(args); }},
         {"genprism",
-         [](const auto& args, const auto& input, const auto&, const auto& context) {
+         [](const auto& args, const auto& input, const auto&, const auto&) {
              std::istringstream in(input);
              return genprism(args, in);
          }},
         {"gensky",
-         [](const auto& args, const auto&, const auto& loc, const auto& context) {
+         [](const auto& args, const auto&, const auto& loc, const auto&) {
              std::vector<std::string> warnings;
              std::string out = gensky(args, &warnings);
              reportWarnings("gensky", warnings, loc);
              return out;
          }},
         {"gendaylit",
-         [](const auto& args, const auto&, const auto& loc, const auto& context) {
+         [](const auto& args, const auto&, const auto& loc, const auto&) {
              std::vector<std::string> warnings;
              std::string out = gendaylit(args, &warnings);
              reportWarnings("gendaylit", warnings, loc);

@@ -82,10 +82,9 @@ TEST(BuiltinCommands, CommandsInFilesThatXformReadsRunInProcess) {
     namespace fs = std::filesystem;
     const fs::path dir = fs::path(testing::TempDir()) / "builtin_nested";
     fs::create_directories(dir / "objects");
-    std::ofstream(dir / "objects" / "walls.rad")
-        << "wall polygon w 0 0 9 0 0 0 1 0 0 0 1 0\n"
-           "!xform -t 0 0 2 ./inner.rad\n"
-           "!genbox wall box 1 1 1 | xform -t 5 0 0\n";
+    std::ofstream(dir / "objects" / "walls.rad") << "wall polygon w 0 0 9 0 0 0 1 0 0 0 1 0\n"
+                                                    "!xform -t 0 0 2 ./inner.rad\n"
+                                                    "!genbox wall box 1 1 1 | xform -t 5 0 0\n";
     std::ofstream(dir / "objects" / "inner.rad") << "wall sphere ball 0 0 4 0 0 0 .5\n";
     const std::string room = (dir / "room.rad").string();
     std::ofstream(room) << "void plastic wall 0 0 5 .5 .5 .5 0 0\n!xform " +

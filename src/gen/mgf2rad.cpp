@@ -3,11 +3,10 @@
 // formats, so that scenes converted here and by RADIANCE read the same.
 #include "gen/mgf2rad.h"
 
-#include "calc/search_path.h"
-
 #include <cmath>
 #include <cstdlib>
 
+#include "calc/search_path.h"
 #include "gen/gen_text.h"
 #include "gen/mgf_reader.h"
 #include "util/error.h"

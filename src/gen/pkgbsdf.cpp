@@ -117,8 +117,7 @@ std::string pkgBSDF(const std::vector<std::string>& args, std::vector<std::strin
         std::string scene = pkgBsdfScene(*b, instance, xml, args[0]);
         if (instance && !b->mgf.empty())
             writeBsdfOctree(pkgBsdfGeometry(*b, xml, args[0]),
-                            calc::inDirectory(from, b->name + ".oct"),
-                            args[0] + " -i " + xml);
+                            calc::inDirectory(from, b->name + ".oct"), args[0] + " -i " + xml);
         if (toStdout)
             out += scene;
         else

@@ -322,11 +322,13 @@ std::string xformScene(const XformOptions& opts, std::istream& in) {
         for (const std::string& name : files) {
             std::string path = findSceneFile(name, opts.context.dir);
             if (path.size() > 2 && path[0] == '.' && path[1] == '/') path.erase(0, 2);
-            CommandContext inner{"", opts.context.includeChain};
+            CommandContext inner;
+            inner.includeChain = opts.context.includeChain;
             inner.includeChain.push_back(includeKey(path));
             const auto& chain = opts.context.includeChain;
             if (std::find(chain.begin(), chain.end(), inner.includeChain.back()) != chain.end())
-                throw InputError(opts.context.includer, "scene file includes itself (" + path + ")");
+                throw InputError(opts.context.includer,
+                                 "scene file includes itself (" + path + ")");
             std::ifstream f(path, std::ios::binary);
             if (!f) throw InputError(SourceLoc{path, 0}, "cannot open file");
             std::string text{std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};

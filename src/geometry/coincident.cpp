@@ -30,11 +30,11 @@ PlaneKey planeKey(const PolygonShape& p) {
 
 struct Extent {
     Bounds3 box;
-    uint32_t firstTriangle = 0, lastTriangle = 0;  // [first, last)
+    TriangleRange triangles;
 };
 
-bool withinPlane(const ShapeSet& shapes, const Extent& e, const PolygonShape& plane) {
-    for (uint32_t t = e.firstTriangle; t < e.lastTriangle; ++t)
+bool withinPlane(const ShapeSet& shapes, TriangleRange r, const PolygonShape& plane) {
+    for (uint32_t t = r.first; t < r.last; ++t)
         for (uint32_t v : shapes.triangles[t])
             if (std::fabs(dot(plane.normal, shapes.vertices[v]) - plane.offset) > kFtiny)
                 return false;
@@ -54,9 +54,9 @@ bool overlapInPlane(const Bounds3& a, const Bounds3& b, int axis) {
 
 // Whether p (in the polygon's plane, within rounding) lies in one of its triangles; the
 // triangle is returned. Edges count as inside, with a relative tolerance.
-bool insideTriangles(const ShapeSet& shapes, const Extent& e, const Vec3& n, const Vec3& p,
+bool insideTriangles(const ShapeSet& shapes, TriangleRange r, const Vec3& n, const Vec3& p,
                      uint32_t& triangle) {
-    for (uint32_t t = e.firstTriangle; t < e.lastTriangle; ++t) {
+    for (uint32_t t = r.first; t < r.last; ++t) {
         const TriIndices& tri = shapes.triangles[t];
         const Vec3& a = shapes.vertices[tri[0]];
         const Vec3& b = shapes.vertices[tri[1]];
@@ -88,8 +88,8 @@ CoincidentPolygons::CoincidentPolygons(const Scene& scene, const ShapeSet& shape
     std::vector<Extent> extents(n);
     for (uint32_t t = 0; t < shapes.triangles.size(); ++t) {
         Extent& e = extents[shapes.trianglePolygon[t]];
-        if (e.firstTriangle == e.lastTriangle) e.firstTriangle = t;
-        e.lastTriangle = t + 1;
+        if (e.triangles.first == e.triangles.last) e.triangles.first = t;
+        e.triangles.last = t + 1;
         for (uint32_t v : shapes.triangles[t]) e.box.extend(shapes.vertices[v]);
     }
     std::vector<PlaneKey> keys(n);
@@ -124,8 +124,8 @@ CoincidentPolygons::CoincidentPolygons(const Scene& scene, const ShapeSet& shape
                     if (extents[b].box.min[sweep] > extents[a].box.max[sweep] - kFtiny) break;
                     if (std::fabs(dot(keys[a].normal, keys[b].normal)) < 1 - 1e-9) continue;
                     if (!overlapInPlane(extents[a].box, extents[b].box, axis)) continue;
-                    if (!withinPlane(shapes, extents[b], shapes.polygons[a]) ||
-                        !withinPlane(shapes, extents[a], shapes.polygons[b]))
+                    if (!withinPlane(shapes, extents[b].triangles, shapes.polygons[a]) ||
+                        !withinPlane(shapes, extents[a].triangles, shapes.polygons[b]))
                         continue;
                     pairs.emplace_back(a, b);
                     pairs.emplace_back(b, a);
@@ -145,10 +145,10 @@ CoincidentPolygons::CoincidentPolygons(const Scene& scene, const ShapeSet& shape
         partners_.push_back(pairs[i].second);
         end_[p] = uint32_t(partners_.size());
     }
-    firstTriangle_.resize(n);
+    triangles_.resize(n);
     materialClass_.resize(n);
     for (uint32_t i = 0; i < n; ++i) {
-        firstTriangle_[i] = extents[i].firstTriangle;
+        triangles_[i] = extents[i].triangles;
         materialClass_[i] = materialClass(scene, shapes.polygons[i].modifier);
     }
 }
@@ -176,14 +176,8 @@ void CoincidentPolygons::resolve(const ShapeSet& shapes, const Vec3& o, const Ve
         if (dn == 0) continue;
         const double tq = (p.offset - dot(p.normal, o)) / dn;
         if (!(tq > 0) || std::fabs(tq - hitT) > kFtiny || !beats(q, polygon)) continue;
-        Extent e;
-        e.firstTriangle = firstTriangle_[q];
-        e.lastTriangle = e.firstTriangle;
-        while (e.lastTriangle < shapes.triangles.size() &&
-               shapes.trianglePolygon[e.lastTriangle] == q)
-            ++e.lastTriangle;
         uint32_t tri;
-        if (!insideTriangles(shapes, e, p.normal, o + d * tq, tri)) continue;
+        if (!insideTriangles(shapes, triangles_[q], p.normal, o + d * tq, tri)) continue;
         polygon = q;
         triangle = tri;
         t = tq;

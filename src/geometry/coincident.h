@@ -17,6 +17,10 @@
 
 namespace rp {
 
+struct TriangleRange {
+    uint32_t first = 0, last = 0;  // [first, last) in ShapeSet::triangles
+};
+
 class CoincidentPolygons {
 public:
     CoincidentPolygons() = default;
@@ -39,7 +43,7 @@ private:
     // Per polygon: first and one-past-last index into partners_ (equal: none).
     std::vector<uint32_t> begin_, end_;
     std::vector<uint32_t> partners_;
-    std::vector<uint32_t> firstTriangle_;  // per polygon, its triangles are contiguous
+    std::vector<TriangleRange> triangles_;  // per polygon: they are contiguous
     // RADIANCE's order between coincident surfaces, larger wins: 2 opaque material (or
     // mixture, antimatter), 1 transparent material, 0 none.
     std::vector<uint8_t> materialClass_;

@@ -60,7 +60,8 @@ TEST(Coincident, RadiancesChoiceFromBothSides) {
     for (int i = 0; i < 400; ++i) {
         const double x = 0.01 + 3.98 * ((i * 37) % 400) / 400.0, y = 0.01 + 3.98 * i / 400.0;
         ASSERT_EQ(surfaceHit(s, g, {x, y, 0}, {0, 0, 1}), "ceilB") << x << " " << y;
-        ASSERT_EQ(surfaceHit(s, g, {x - 0.3, y + 0.15, 6}, {0.1, -0.05, -1}), "ceilB") << x << " " << y;
+        ASSERT_EQ(surfaceHit(s, g, {x - 0.3, y + 0.15, 6}, {0.1, -0.05, -1}), "ceilB")
+            << x << " " << y;
     }
 }
 

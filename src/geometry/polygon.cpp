@@ -60,7 +60,8 @@ bool makePolygon(const Primitive& prim, int32_t primIndex, PolygonShape& shape,
     shape.offset = 0;
     for (const Vec3& v : loop) shape.offset += dot(shape.normal, v);
     shape.offset /= double(loop.size());
-    if (nonPlanar(loop, shape.normal)) warn(prim.loc, "polygon '" + prim.name + "': non-planar vertex");
+    if (nonPlanar(loop, shape.normal))
+        warn(prim.loc, "polygon '" + prim.name + "': non-planar vertex");
     shape.origin = loop[0];
     shape.vertexMean = {};
     for (const Vec3& v : loop) shape.vertexMean += v;

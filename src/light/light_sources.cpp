@@ -43,8 +43,9 @@ Vec3 flatNormal(const ShapeSet& s, EmitterShape shape, int32_t index) {
 int32_t findMaterial(const Scene& scene, int32_t prim) {
     // Lights and ports are materials: a chain ending in a mixture has none here.
     const int32_t m = chainMaterial(scene, scene.prims[size_t(prim)].modifier);
-    return m != kVoid && primCategory(scene.prims[size_t(m)].type) == PrimCategory::Material ? m
-                                                                                             : kVoid;
+    return m != kVoid && primCategory(scene.prims[size_t(m)].type) == PrimCategory::Material
+               ? m
+               : kVoid;
 }
 
 std::vector<LightSource> findLightSources(const Scene& scene, const SceneGeometry& geometry,

@@ -33,8 +33,7 @@ TEST(PatternEmission, DaylightSkyFluxMatchesTheFormula) {
     material::SurfaceChains chains(scene, {std::string(RP_SOURCE_DIR) + "/lib"});
     auto sources = findLightSources(scene, geom);
     EmissionOptions viaCalc, viaFormula;
-    viaCalc.ports = viaFormula.ports =
-        findPhotonPorts(scene, geom, {PortSpec{"window_glass"}});
+    viaCalc.ports = viaFormula.ports = findPhotonPorts(scene, geom, {PortSpec{"window_glass"}});
     viaCalc.modifierFor = patternModifiers(chains);
     viaFormula.modifierFor = [](const LightSource&) {
         return EmissionModifier{[](const EmissionQuery& q) { return Color::grey(clearSky(q.rayDir)); },

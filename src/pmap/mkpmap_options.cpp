@@ -90,7 +90,8 @@ void append(std::vector<std::string>& to, const std::vector<std::string>& words)
 // -apO[+|-|0] file (forward when none), not part of the modifier's name.
 bool isPortOption(const std::string& opt) {
     return (opt.rfind("-apo", 0) == 0 || opt.rfind("-apO", 0) == 0) &&
-           (opt.size() == 4 || (opt.size() == 5 && std::string("+-0").find(opt[4]) != std::string::npos));
+           (opt.size() == 4 ||
+            (opt.size() == 5 && std::string("+-0").find(opt[4]) != std::string::npos));
 }
 
 light::PortDirection portDirection(const std::string& opt) {
@@ -168,8 +169,8 @@ MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
             std::vector<std::string> mods{a.value(opt)};
             if (opt[3] == 'O') mods = readWordFile(mods[0], "photon port");
             for (std::string& m : mods) o.portSpecs.push_back({std::move(m), dir});
-        }
-        else if (opt == "-aps") o.sensors.push_back(a.value(opt));
+        } else if (opt == "-aps")
+            o.sensors.push_back(a.value(opt));
         else if (opt == "-apS")
             append(o.sensors, readWordFile(a.value(opt), "antimatter sensor"));
         else if (opt == "-ai") o.include.push_back(a.value(opt));

@@ -318,8 +318,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     // stores them in direct maps only and loses that light at final-gather hits (ceiling
     // points under a sky through an antimatter port read 0.53 for 1.21 classic).
     const bool fromPort = e.port >= 0;
-    const bool firstHitIndirect =
-        e.source >= 0 && plan_.sources()[size_t(e.source)].ambientOnly();
+    const bool firstHitIndirect = e.source >= 0 && plan_.sources()[size_t(e.source)].ambientOnly();
     long scatters = 0;
     long passes = 0;
     // RADIANCE compat (pmap.h PMAP_CAUSTICRAY): a photon is caustic when its last scatter

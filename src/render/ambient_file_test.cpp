@@ -73,7 +73,7 @@ TEST(AmbientFileTest, RecordEncodingRoundTrip) {
     unsigned char buf[kAmbientRecordBytes];
     encodeAmbientRecord(r, buf);
     EXPECT_EQ(buf[24 + 12 + 12 + 4 + 12 + 12 + 4], 3);  // level, little endian
-    EXPECT_EQ(buf[84], 5);                               // corral, little endian
+    EXPECT_EQ(buf[84], 5);                              // corral, little endian
     EXPECT_EQ(buf[87], 0x80);
     expectSame(decodeAmbientRecord(buf), r);
     EXPECT_EQ(decodeAmbientRecord(buf).corral, r.corral);

@@ -29,7 +29,8 @@ void occluders(const std::vector<Division>& div, int M, int N, HemisphereEstimat
         if (!horizon && !above) continue;
         for (int k = 0; k < N; ++k) {
             const double d = div[size_t(j) * N + k].minDistance;
-            if (horizon) est.horizonDistance[size_t(k)] = std::min(est.horizonDistance[size_t(k)], d);
+            if (horizon)
+                est.horizonDistance[size_t(k)] = std::min(est.horizonDistance[size_t(k)], d);
             if (above) {
                 overhead += d < 1e10 ? 1 / d : 0;
                 ++overheadCount;

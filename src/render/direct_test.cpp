@@ -4,7 +4,6 @@
 // renderer: light materials emit their radiance, glass transmits 0.9, mirrors reflect
 // 0.9, prisms turn light by a fixed angle (TurningFilm), anything else is opaque.
 #include "render/direct.h"
-#include "render/source_sampling.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +12,7 @@
 #include <string>
 
 #include "light/light_sources.h"
+#include "render/source_sampling.h"
 #include "scene/reader.h"
 
 namespace rp::render {
@@ -260,10 +260,12 @@ TEST(DirectDistant, PenumbraOfAStraightEdgeIsAUniformDisk) {
     // The same disk as a distant source and as a light sphere 100 m up (RADIANCE samples
     // both through the concentric map of a jittered cell).
     const double alpha = 0.5 * 0.533 * kPi / 180;
-    const std::string edge = "void plastic black 0 0 5 0 0 0 0 0\n"
-                             "black polygon edge 0 0 12 -10 -10 1 0 -10 1 0 10 1 -10 10 1\n";
-    const std::string sphere = "void light bulb 0 0 3 1000 1000 1000\nbulb sphere ball 0 0 4 0 0 100 " +
-                               std::to_string(100 * std::sin(alpha)) + "\n";
+    const std::string edge =
+        "void plastic black 0 0 5 0 0 0 0 0\n"
+        "black polygon edge 0 0 12 -10 -10 1 0 -10 1 0 10 1 -10 10 1\n";
+    const std::string sphere =
+        "void light bulb 0 0 3 1000 1000 1000\nbulb sphere ball 0 0 4 0 0 100 " +
+        std::to_string(100 * std::sin(alpha)) + "\n";
     const std::string sun = "void light sun 0 0 3 1000 1000 1000\nsun source s 0 0 4 0 0 1 0.533\n";
     auto exact = [](double s) {
         s = std::clamp(s, -1.0, 1.0);

@@ -117,7 +117,8 @@ TEST(IrradianceCacheTest, CorralledRecordsAreTestedForLeaks) {
     EXPECT_EQ(leaks.lastFrom, q.origin);
     // The target lies on the record's normal line, 20 degrees above the query's plane.
     EXPECT_NEAR(leaks.lastTo.x, 0, 1e-12);
-    EXPECT_NEAR(leaks.lastTo.z, 0.3 * std::tan(20 * kPi / 180), 1e-7);  // RADIANCE: cos^2 70 to 7 digits
+    EXPECT_NEAR(leaks.lastTo.z, 0.3 * std::tan(20 * kPi / 180),
+                1e-7);  // RADIANCE: cos^2 70 to 7 digits
     leaks.wall = false;
     ASSERT_TRUE(cache.lookup(q, nullptr, c));
     EXPECT_DOUBLE_EQ(c.r, 5);
