@@ -10,6 +10,7 @@
 #include "util/error.h"
 #include "util/rng.h"
 #include "util/temp_dir_for_tests.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::bsdf {
 namespace {
@@ -59,6 +60,7 @@ std::vector<double> rawMatrix(const std::string& direction) {
 }
 
 TEST(Klems, LoadsGeometryAndFourSets) {
+    RP_REQUIRE_SHARED("validation/bsdf");
     const auto sd = loadBsdfFile(kKlems);
     EXPECT_EQ(sd->name, "blinds_klems");
     EXPECT_NEAR(sd->width, 3, 1e-12);
@@ -73,6 +75,7 @@ TEST(Klems, LoadsGeometryAndFourSets) {
 // the front-incident side is the +Z patch turned by 180 degrees) through to the back:
 // "Transmission Back" in WINDOW's terms.
 TEST(Klems, ValuesAndHemisphericalMatchTheFile) {
+    RP_REQUIRE_SHARED("validation/bsdf");
     const auto sd = loadBsdfFile(kKlems);
     const std::vector<double> raw = rawMatrix("Transmission Back");
     ASSERT_EQ(raw.size(), 145u * 145u);
@@ -120,6 +123,7 @@ int patchOf(const Vec3& v) {
 // points inside every patch (so the patch boundaries of the lookup are checked too),
 // equals the file's hemispherical reflectance plus transmittance.
 TEST(Klems, IntegralOverPatchesMatchesTheFile) {
+    RP_REQUIRE_SHARED("validation/bsdf");
     const auto sd = loadBsdfFile(kKlems);
     const std::vector<double> rRaw = rawMatrix("Reflection Back"), tRaw = rawMatrix("Transmission Back");
     Rng rng(11, RngDomain::Test, 0);
@@ -144,6 +148,7 @@ TEST(Klems, IntegralOverPatchesMatchesTheFile) {
 // Sampling: the outgoing patches drawn for an incident patch follow the tabulated
 // value * projected solid angle (chi-square, 1 % significance).
 TEST(Klems, SamplingFollowsTheTable) {
+    RP_REQUIRE_SHARED("validation/bsdf");
     const auto sd = loadBsdfFile(kKlems);
     const std::vector<double> raw = rawMatrix("Transmission Back");
     const Distribution& d = *sd->tf->components.front();

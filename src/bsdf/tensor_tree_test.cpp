@@ -16,6 +16,7 @@
 
 #include "bsdf/colour.h"
 #include "bsdf/xml_detail.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::bsdf {
 namespace {
@@ -228,11 +229,12 @@ void checkLookups(const std::string& path, int nd, const SetCase& c) {
 }
 
 TEST(TensorTree, LookupsMatchTreeText4D) {
+    checkLookups(kTree4, 4, {"Reflection Back", &BsdfData::rf, true, true, .05 * kPi});
+    checkLookups(kTree4, 4, {"Transmission Front", &BsdfData::tb, false, true, .2 * kPi});
+    RP_REQUIRE_SHARED("validation/bsdf");
     checkLookups(kBlinds, 4, {"Transmission Back", &BsdfData::tf, true, false, 0});
     checkLookups(kBlinds, 4, {"Reflection Back", &BsdfData::rf, true, true, 0});
     checkLookups(kBlinds, 4, {"Reflection Front", &BsdfData::rb, false, false, 0});
-    checkLookups(kTree4, 4, {"Reflection Back", &BsdfData::rf, true, true, .05 * kPi});
-    checkLookups(kTree4, 4, {"Transmission Front", &BsdfData::tb, false, true, .2 * kPi});
 }
 
 TEST(TensorTree, LookupsMatchTreeText3D) {
@@ -317,6 +319,7 @@ void checkAgainstRadiance(const std::string& path, const std::vector<RadianceRow
 }
 
 TEST(TensorTree, MatchesRadianceBlinds) {
+    RP_REQUIRE_SHARED("validation/bsdf");
     const BsdfData sd = loadFile(kBlinds);
     EXPECT_TRUE(sd.rLambFront.isBlack() && sd.rLambBack.isBlack());
     EXPECT_TRUE(sd.tLambFront.isBlack() && sd.tLambBack.isBlack());
@@ -455,6 +458,7 @@ void checkSampling(const Distribution& d, const Incident& c, bool iso) {
 }
 
 TEST(TensorTree, SamplingFollowsTable4D) {
+    RP_REQUIRE_SHARED("validation/bsdf");
     const BsdfData sd = loadFile(kBlinds);
     for (const Vec3& in : {polar(0, 0, true), polar(35, 70, true), polar(62, 200, true)}) {
         checkSampling(dist(sd.tf), {in, false}, false);  // as stored
@@ -497,6 +501,7 @@ double integrate(const Distribution& d, const Vec3& in, bool outUp, double lamb)
 }
 
 TEST(TensorTree, EnergyMatchesHemispherical) {
+    RP_REQUIRE_SHARED("validation/bsdf");
     const BsdfData sd = loadFile(kBlinds);
     for (const Vec3& in : {polar(0, 0, true), polar(40, 120, true), polar(70, 300, true)}) {
         for (const auto& [d, i, up] :
@@ -604,6 +609,7 @@ TEST(TensorTree, AcceptsCommasAndSingleLeaf) {
 // ---------------------------------------------------------------------------------
 // Many threads filling and reading the tables at once get what one thread gets.
 TEST(TensorTree, ConcurrentUseMatchesSequential) {
+    RP_REQUIRE_SHARED("validation/bsdf");
     const BsdfData seq = loadFile(kBlinds), par = loadFile(kBlinds);
     constexpr int kThreads = 6, kPer = 4000;
     const auto run = [](const BsdfData& sd, int t, std::vector<double>& res) {

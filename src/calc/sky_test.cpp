@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "calc/calc_test_util.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::calc {
 namespace {
@@ -49,6 +50,7 @@ double groundBlend(double dz, double sky, double ground) {
 }
 
 TEST(CalcSky, SkybrightMatchesCieClearSky) {
+    RP_REQUIRE_SHARED("validation/daylight");
     std::vector<double> a = daylightSkyArgs();
     ASSERT_EQ(a.size(), 7u);
     ASSERT_EQ(a[0], 1);  // CIE clear

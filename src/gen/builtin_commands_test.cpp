@@ -18,6 +18,7 @@
 #include "gen/gensurf.h"
 #include "gen/genworm.h"
 #include "scene/reader.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::gen {
 
@@ -104,8 +105,11 @@ TEST(BuiltinCommands, CommandsInFilesThatXformReadsRunInProcess) {
     for (const Primitive& p : s.prims) ++count[p.type];
     EXPECT_EQ(count[PrimType::Polygon], 1 + 6);
     ASSERT_EQ(count[PrimType::Sphere], 1);
-    for (const Primitive& p : s.prims)
-        if (p.type == PrimType::Sphere) EXPECT_DOUBLE_EQ(p.rargs[2], 2);  // moved by the inner -t
+    for (const Primitive& p : s.prims) {
+        if (p.type == PrimType::Sphere) {
+            EXPECT_DOUBLE_EQ(p.rargs[2], 2);  // moved by the inner -t
+        }
+    }
 }
 
 // A file that includes itself through !xform, directly or through another, stops with
@@ -204,6 +208,7 @@ TEST(BuiltinCommands, OtherProgramsAndTheEnvironmentSwitchGoToTheShell) {
 // Every scene of ../shared/validation loads as the tools load it (generators such as
 // !genblinds | xform in-process, no PATH needed), without a warning.
 TEST(Validation, EverySharedSceneLoads) {
+    RP_REQUIRE_SHARED("validation");
     setWarningSink([](const std::string& m) { ADD_FAILURE() << "warning: " << m; });
     std::filesystem::path root = std::filesystem::path(RP_SHARED_DIR) / "validation";
     int scenes = 0;

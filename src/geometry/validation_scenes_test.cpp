@@ -6,6 +6,7 @@
 
 #include "geometry/scene_geometry.h"
 #include "scene/scene_load.h"
+#include "util/shared_for_tests.h"
 
 namespace rp {
 
@@ -18,6 +19,7 @@ std::string validationScene(const std::string& name) {
 class ValidationScene : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ValidationScene, LoadsAndBuilds) {
+    RP_REQUIRE_SHARED("validation");
     Scene scene = loadScene({validationScene(GetParam())});
     SceneGeometry geometry(scene);
     EXPECT_FALSE(geometry.bounds().empty());
@@ -29,6 +31,7 @@ INSTANTIATE_TEST_SUITE_P(All, ValidationScene,
                                            "contrib"));
 
 TEST(ValidationScene, CornellFloorAndGlassBall) {
+    RP_REQUIRE_SHARED("validation/cornell");
     Scene scene = loadScene({validationScene("cornell")});
     SceneGeometry g(scene);
     // Straight down from the box centre: the floor (z = 0), seen from its front.
@@ -52,6 +55,7 @@ TEST(ValidationScene, CornellFloorAndGlassBall) {
 }
 
 TEST(ValidationScene, DaylightHasDistantSources) {
+    RP_REQUIRE_SHARED("validation/daylight");
     Scene scene = loadScene({validationScene("daylight")});
     SceneGeometry g(scene);
     EXPECT_EQ(g.sources().size(), 3u);  // sun, sky, ground glows (gensky output)

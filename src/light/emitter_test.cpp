@@ -8,6 +8,7 @@
 
 #include "light/light_test_util.h"
 #include "scene/scene_load.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::light {
 namespace {
@@ -273,6 +274,7 @@ TEST(Emitter, DistantSourceFromSceneCube) {
 }
 
 TEST(Emitter, CornellLampFlux) {
+    RP_REQUIRE_SHARED("validation/cornell");
     Scene scene = loadScene({std::string(RP_SHARED_DIR) + "/validation/cornell/scene.rad"});
     SceneGeometry geom(scene);
     EmissionPlan plan(geom, findLightSources(scene, geom));
@@ -284,6 +286,7 @@ TEST(Emitter, CornellLampFlux) {
 }
 
 TEST(Emitter, DaylightSourcesThroughWindow) {
+    RP_REQUIRE_SHARED("validation/daylight");
     Scene scene = loadScene({std::string(RP_SHARED_DIR) + "/validation/daylight/scene.rad"});
     SceneGeometry geom(scene);
     EmissionOptions opt;

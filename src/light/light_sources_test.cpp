@@ -6,6 +6,7 @@
 
 #include "light/light_test_util.h"
 #include "scene/scene_load.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::light {
 namespace {
@@ -95,6 +96,7 @@ std::string validationScene(const std::string& name) {
 }
 
 TEST(LightSources, DaylightSceneSunSkyGroundAndPort) {
+    RP_REQUIRE_SHARED("validation/daylight");
     Scene scene = loadScene({validationScene("daylight")});
     SceneGeometry geom(scene);
     auto src = findLightSources(scene, geom);

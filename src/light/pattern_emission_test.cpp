@@ -11,6 +11,7 @@
 #include "scene/reader.h"
 #include "scene/scene_load.h"
 #include "util/temp_dir_for_tests.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::light {
 
@@ -28,6 +29,7 @@ double clearSky(const Vec3& d) {
 }  // namespace
 
 TEST(PatternEmission, DaylightSkyFluxMatchesTheFormula) {
+    RP_REQUIRE_SHARED("validation/daylight");
     Scene scene = loadScene({std::string(RP_SHARED_DIR) + "/validation/daylight/scene.rad"});
     SceneGeometry geom(scene);
     material::SurfaceChains chains(scene, {std::string(RP_SOURCE_DIR) + "/lib"});

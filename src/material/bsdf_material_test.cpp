@@ -8,6 +8,7 @@
 #include "bsdf/bsdf.h"
 #include "material/test_util.h"
 #include "util/temp_dir_for_tests.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::material {
 namespace {
@@ -30,6 +31,7 @@ SurfacePoint hitAt(const bsdf::BsdfData& sd, const Vec3& dir, double thickness =
 // The mean flux factor of scattered photons equals the data's reflectance plus
 // transmittance for that incidence (Lambertian and non-diffuse parts), from either side.
 TEST(BsdfMaterial, PhotonsCarryTheDataAlbedo) {
+    RP_REQUIRE_SHARED("validation/bsdf");
     const auto sd = bsdf::loadBsdfFile(kKlems);
     const MaterialParams m = BsdfParams{};
     for (double th : {0.0, 35.0, 70.0})
@@ -49,6 +51,7 @@ TEST(BsdfMaterial, PhotonsCarryTheDataAlbedo) {
 }
 
 TEST(BsdfMaterial, ShadowRaysStopAtAThinBsdfAndPassAThickOne) {
+    RP_REQUIRE_SHARED("validation/bsdf");
     const auto sd = bsdf::loadBsdfFile(kKlems);
     const BsdfParams m;
     Color c;
@@ -60,6 +63,7 @@ TEST(BsdfMaterial, ShadowRaysStopAtAThinBsdfAndPassAThickOne) {
 // A thick proxy hides itself from unscattered rays and from its hidden side; scattered
 // rays on its side see it, with transmitted light gathered past the geometry.
 TEST(BsdfMaterial, ThickProxyShowsOnlyToScatteredRaysOnItsSide) {
+    RP_REQUIRE_SHARED("validation/bsdf");
     const auto sd = bsdf::loadBsdfFile(kKlems);
     const MaterialParams m = BsdfParams{};
     Rng rng(1, RngDomain::Test, 0);

@@ -11,6 +11,7 @@
 #include "scene/reader.h"
 #include "scene/scene_load.h"
 #include "util/temp_dir_for_tests.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::material {
 
@@ -430,6 +431,7 @@ TEST_F(SurfaceChain, DirectionalOnlyWithoutPositionVariables) {
 
 // gensky's skyfunc (skybright.cal) at the zenith against the CIE clear sky written out.
 TEST(SurfaceChainSky, DaylightSkyAtZenithMatchesCieClearSky) {
+    RP_REQUIRE_SHARED("validation/daylight");
     Scene s = loadScene({std::string(RP_SHARED_DIR) + "/validation/daylight/scene.rad"});
     SurfaceChains chains(s, {std::string(RP_SOURCE_DIR) + "/lib"});
     int32_t glow = indexOf(s, "sky_glow");

@@ -16,6 +16,7 @@
 #include "pmap/photon_map.h"
 #include "pmap/pmap_test_util.h"
 #include "util/temp_dir_for_tests.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::pmap {
 namespace {
@@ -79,6 +80,7 @@ PerSource split(const PhotonMap& m) {
 }
 
 TEST_F(ContribRun, EqualPhotonCountsAndFluxProportionalToSources) {
+    RP_REQUIRE_SHARED("validation/contrib");
     const std::string sc = scene(true);
     run({"-apC", path("c.pm"), "60k", "-apr", "2", sc});
     run({"-apg", path("g.pm"), "60k", "-apr", "2", sc});
@@ -115,6 +117,7 @@ TEST_F(ContribRun, EqualPhotonCountsAndFluxProportionalToSources) {
 }
 
 TEST_F(ContribRun, ColouredLampsDeterministicAndOthersIgnored) {
+    RP_REQUIRE_SHARED("validation/contrib");
     const std::string sc = scene(false);
     std::ostringstream diag;
     run({"-apC", path("c1.pm"), "30k", "-apg", path("ignored.pm"), "10k", "-apr", "7", sc});

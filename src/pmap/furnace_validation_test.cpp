@@ -17,6 +17,7 @@
 #include "pmap/photon_map.h"
 #include "scene/scene_load.h"
 #include "util/temp_dir_for_tests.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::pmap {
 namespace {
@@ -72,6 +73,7 @@ void expectFurnace(const std::string& scene, const Vec3& centre, const std::stri
 }
 
 TEST(FurnaceValidation, GlobalMapGivesTheAnalyticIndirectIrradiance) {
+    RP_REQUIRE_SHARED("validation/furnace");
     TempDir dir("rp_furnace");
     expectFurnace(std::string(RP_SHARED_DIR) + "/validation/furnace/scene.rad", Vec3{},
                   dir.file("g.pm"), "furnace");
@@ -82,6 +84,7 @@ TEST(FurnaceValidation, GlobalMapGivesTheAnalyticIndirectIrradiance) {
 // the instanced surface exactly as on the plain one: the same stored flux and the same
 // analytic irradiance (scale and translation carried through emission, hits, normals).
 TEST(FurnaceValidation, InstancedSphereGivesTheSameIrradiance) {
+    RP_REQUIRE_SHARED("validation/furnace");
     TempDir dir("rp_furnace_inst");
     {
         std::ofstream w(dir.file("wall.rad"));

@@ -15,6 +15,7 @@
 #include "pmap/precomp.h"
 #include "util/rng.h"
 #include "util/temp_dir_for_tests.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::pmap {
 namespace {
@@ -91,6 +92,7 @@ TEST(Precomp, StoresTheDensityEstimateOverTheFullMap) {
 }
 
 TEST(Precomp, FurnaceMapEndToEnd) {
+    RP_REQUIRE_SHARED("validation/furnace");
     TempDir dir("rp_precomp");
     const std::string scene = std::string(RP_SHARED_DIR) + "/validation/furnace/scene.rad";
     auto run = [&](std::vector<std::string> args) {

@@ -8,6 +8,7 @@
 
 #include "pmap/trace_test_util.h"
 #include "util/thread_cluster_for_tests.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::pmap {
 namespace {
@@ -46,6 +47,7 @@ double sumRed(const std::vector<Photon>& ps) {
 // light sphere (absorbed, not stored): 0.99750 Phi = 9.8449 W. 40k photons: the relative
 // standard error of the sum is ~1/sqrt(20k emitted) * 1.2 ~ 0.9 %; tolerance 3 %.
 TEST(TraceFurnace, StoredGlobalFluxMatchesAnalytic) {
+    RP_REQUIRE_SHARED("validation/furnace");
     auto run = makeRun(sceneFromFile(std::string(RP_SHARED_DIR) + "/validation/furnace/scene.rad"),
                        mapsFor(true, false, false));
     EXPECT_NEAR(run->plan->totalFlux().r, 9.8696, 0.01);
@@ -58,6 +60,7 @@ TEST(TraceFurnace, StoredGlobalFluxMatchesAnalytic) {
 
 // A direct map holds first hits only: the whole emitted flux lands on the wall once.
 TEST(TraceFurnace, DirectMapHoldsEmittedFlux) {
+    RP_REQUIRE_SHARED("validation/furnace");
     auto run = makeRun(sceneFromFile(std::string(RP_SHARED_DIR) + "/validation/furnace/scene.rad"),
                        mapsFor(false, false, true));
     DistributionResult r = distribute(*run, 0, 0, 20000);

@@ -15,6 +15,7 @@
 #include "scene/reader.h"
 #include "scene/scene_load.h"
 #include "util/paths.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::render {
 namespace {
@@ -54,6 +55,7 @@ double meanIrradiance(const Scene& scene, const RenderOptions& opt,
 }
 
 TEST(Renderer, FurnaceDirectIrradianceIsAnalytic) {
+    RP_REQUIRE_SHARED("validation");
     Scene scene = loadScene({validation("furnace/scene.rad")});
     auto sensors = readPoints(validation("furnace/points.txt"));
     ASSERT_EQ(sensors.size(), 20u);
@@ -66,6 +68,7 @@ TEST(Renderer, FurnaceDirectIrradianceIsAnalytic) {
 }
 
 TEST(Renderer, AmbientValueAddsPiTimesAv) {
+    RP_REQUIRE_SHARED("validation");
     Scene scene = loadScene({validation("furnace/scene.rad")});
     auto sensors = readPoints(validation("furnace/points.txt"));
     sensors.resize(4);
@@ -76,6 +79,7 @@ TEST(Renderer, AmbientValueAddsPiTimesAv) {
 }
 
 TEST(Renderer, FurnaceInterreflectionMatchesGeometricSeries) {
+    RP_REQUIRE_SHARED("validation");
     // Indirect after b bounces: E_d(R) (rho + ... + rho^b); light settings for CI, the
     // full -ab 10 run is in scripts/validate.
     Scene scene = loadScene({validation("furnace/scene.rad")});
@@ -94,6 +98,7 @@ TEST(Renderer, FurnaceInterreflectionMatchesGeometricSeries) {
 }
 
 TEST(Renderer, SunThroughGlassMatchesRadianceDirect) {
+    RP_REQUIRE_SHARED("validation");
     // daylight README: classic -ab 0 gives 231.31 W/m^2 in the sun patch, 0 elsewhere
     // (the sky glow is left to the ambient calculation).
     Scene scene = loadScene({validation("daylight/scene.rad")});

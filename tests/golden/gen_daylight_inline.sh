@@ -4,6 +4,8 @@
 # (same seed), as the pasted scene: our gensky writes what RADIANCE's wrote, and scene
 # files run it in-process.
 set -euo pipefail
+. "$(dirname "$0")/lib/shared.sh"
+require_shared validation/daylight
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 src="$RP_SHARED_DIR/validation/daylight/scene.rad"
 { sed -n '1,5p' "$src"; echo '!gensky 3 21 12 -a 47 -o -8 -m -15 +s'; sed -n '25,$p' "$src"; } \

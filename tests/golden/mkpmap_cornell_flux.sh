@@ -5,6 +5,8 @@
 # 3.84e-05]). Stored flux does not depend on the photon count, so small maps do; 5 %
 # allows for 3-digit AvgFlux, ~1 % noise at these counts and RADIANCE's own noise.
 set -euo pipefail
+. "$(dirname "$0")/lib/shared.sh"
+require_shared validation/cornell
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 "$RP_BIN/mkpmap" -apg "$tmp/g.pm" 50k -apc "$tmp/c.pm" 100k -apr 3 -n 2 \
     "$RP_SHARED_DIR/validation/cornell/scene.rad" > "$tmp/log" 2>&1

@@ -4,6 +4,8 @@
 # AvgFlux within 3 % of RADIANCE 5.4's 1.84e-02 (../shared/validation/daylight/README.md),
 # i.e. the same total flux reaches the room through the port.
 set -euo pipefail
+. "$(dirname "$0")/lib/shared.sh"
+require_shared validation/daylight
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 "$RP_BIN/mkpmap" -apg "$tmp/g.pm" 200k -apo window_glass -aps sensor_plane -apr 1 -n 2 \
     "$RP_SHARED_DIR/validation/daylight/scene.rad" > "$tmp/log" 2>&1

@@ -3,6 +3,8 @@
 # (magic line, command line, FORMAT=radphoton_scene, blank line), -i adds to a scene file,
 # and bad input gives exit status 1 with one "oconv: file:line: message" line.
 set -u
+. "$(dirname "$0")/lib/shared.sh"
+require_shared validation
 OCONV="${RP_BIN:?RP_BIN not set}/oconv"
 SHARED="${RP_SHARED_DIR:?RP_SHARED_DIR not set}"
 SRC="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}"

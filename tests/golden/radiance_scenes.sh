@@ -4,6 +4,8 @@
 # 1 % of the view's mean, plus 3 standard deviations of RADIANCE's own runs where it
 # samples at random, the README's rule, applied by its `compare` script).
 set -u
+. "$(dirname "$0")/lib/shared.sh"
+require_shared radiance-tests
 BIN="${RP_BIN:?RP_BIN not set}"
 TESTS="${RP_SHARED_DIR:?RP_SHARED_DIR not set}/radiance-tests"
 fail=0

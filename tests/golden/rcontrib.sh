@@ -36,6 +36,8 @@
 #    loses no photon (the bins add up to the one-bin total); a map without primary rays
 #    drops binned photons with RADIANCE's warning.
 set -u
+. "$(dirname "$0")/lib/shared.sh"
+require_shared validation/contrib
 BIN="${RP_BIN:?RP_BIN not set}"
 DATA="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/tests/data/contrib"
 VAL="${RP_SHARED_DIR:?RP_SHARED_DIR not set}/validation/contrib"

@@ -9,6 +9,8 @@
 #  - the tensor-tree BSDF: view rays and photon map within 5 % (its classic -ab 2 varies
 #    by +-5 % between runs, RADIANCE's too: sunlight through the tree's finest cells).
 set -u
+. "$(dirname "$0")/lib/shared.sh"
+require_shared validation/bsdf
 BIN="${RP_BIN:?RP_BIN not set}"
 VAL="${RP_SHARED_DIR:?RP_SHARED_DIR not set}/validation/bsdf"
 tmp=$(mktemp -d)

@@ -9,6 +9,8 @@
 # bandwidth of 500 smears the focus into the 2-5 mm band, which bias compensation avoids;
 # rpict -t prints the bias compensation statistics (manual 5.3).
 set -u
+. "$(dirname "$0")/lib/shared.sh"
+require_shared validation/caustic
 BIN="${RP_BIN:?RP_BIN not set}"
 VAL="${RP_SHARED_DIR:?RP_SHARED_DIR not set}/validation/caustic"
 tmp=$(mktemp -d)

@@ -6,6 +6,8 @@
 # 0.9984 of it; RADIANCE's photon normal test is randomised, ~0.5 % between runs).
 # Without the lookup at the samples the mean reads 1.797, 5.1 % low.
 set -u
+. "$(dirname "$0")/lib/shared.sh"
+require_shared validation
 BIN="${RP_BIN:?RP_BIN not set}"
 SRC="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}"
 SHARED="${RP_SHARED_DIR:?RP_SHARED_DIR not set}"

@@ -5,6 +5,8 @@
 # model with ashik2; tests/data/instance/README.md). Each view must match RADIANCE 5.4's answer by the
 # README rule; a missing instance file must stop oconv or rtrace with one line.
 set -u
+. "$(dirname "$0")/lib/shared.sh"
+require_shared radiance-tests
 BIN="${RP_BIN:?RP_BIN not set}"
 SRC="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}"
 TESTS="${RP_SHARED_DIR:?RP_SHARED_DIR not set}/radiance-tests"

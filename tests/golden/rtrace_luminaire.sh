@@ -9,6 +9,8 @@
 # Reference (RADIANCE 5.4, same scene and points, $rad the RADIANCE install):
 #   RAYPATH=.:$rad/lib rtrace -h -I -ab 0 -ds 0.05 -dj 0 -dt 0 -dc 1 fixture.oct < points
 set -u
+. "$(dirname "$0")/lib/shared.sh"
+require_shared radiance-tests
 BIN="${RP_BIN:?RP_BIN not set}"
 SRC="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}"
 LIB="${RP_SHARED_DIR:?RP_SHARED_DIR not set}/radiance-tests"
