@@ -3,16 +3,32 @@
 //   falsecolor [-i input.hdr] [-p picture|-ip picture] [-s scale|a] [-n ndivs] [-l label]
 //              [-m mult] [-d decimals] [-log decades] [-pal palette] [-r expr -g expr
 //              -b expr] [-cl|-cb|-cp] [-e] [-lw width] [-lh height] [-palettes] > out.hdr
+#include "image/falsecolor.h"
+
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include "image/falsecolor.h"
+#include "info_options.h"
+#include "main_errors.h"
 #include "util/error.h"
 #include "util/header.h"
-#include "main_errors.h"
+
+// -defaults (tools/info_options.h).
+constexpr const char* kDefaults =
+    "-i  -\t\t\t\t# input picture (standard input)\n"
+    "-s  1000\t\t\t# top of the scale (-s a: from the picture)\n"
+    "-n  8\t\t\t\t# legend divisions\n"
+    "-l  cd/m2\t\t\t# legend label\n"
+    "-m  179\t\t\t\t# multiplier (luminous efficacy)\n"
+    "-d  3\t\t\t\t# decimals in legend numbers\n"
+    "-log 0\t\t\t\t# decades (0: linear scale)\n"
+    "-pal def\t\t\t# palette\n"
+    "-lw 100\t\t\t\t# legend width\n"
+    "-lh 200\t\t\t\t# legend height\n";
 
 int main(int argc, char** argv) {
+    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     try {
         std::vector<std::string> args(argv + 1, argv + argc);
         rp::FalseColorOptions opt = rp::parseFalseColorArgs(args);

@@ -5,10 +5,16 @@
 #include <string>
 #include <vector>
 
-#include "util/error.h"
+#include "info_options.h"
 #include "main_errors.h"
+#include "util/error.h"
+
+// -defaults (tools/info_options.h).
+constexpr const char* kDefaults =
+    "genblinds mat name depth width height nslats angle [-r|+r rcurv]\n";
 
 int main(int argc, char** argv) {
+    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     std::vector<std::string> args(argv, argv + argc);
     args[0] = "genblinds";  // RADIANCE prints argv[0]; a fixed name keeps output path-independent
     std::string out;

@@ -1,13 +1,21 @@
 // gendaylit: a RADIANCE Perez all-weather sky description (see src/gen/gendaylit.h).
+#include "gen/gendaylit.h"
+
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include "gen/gendaylit.h"
-#include "util/error.h"
+#include "info_options.h"
 #include "main_errors.h"
+#include "util/error.h"
+
+// -defaults (tools/info_options.h).
+constexpr const char* kDefaults =
+    "gendaylit month day hour [-y year] [-a lat] [-o lon] [-m mer] [-s|-w|-i] [-g grefl] [-O "
+    "0|1|2] [-P|-W|-L|-G|-E] ...\n";
 
 int main(int argc, char** argv) {
+    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     std::vector<std::string> args(argv, argv + argc);
     args[0] = "gendaylit";  // RADIANCE prints argv[0]; a fixed name keeps output path-independent
     std::vector<std::string> warnings;

@@ -1,15 +1,21 @@
 // genrev: a RADIANCE genrev(1) description (see src/gen/genrev.h). -f files are found along
 // RAYPATH (default ".").
+#include "gen/genrev.h"
+
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "calc/search_path.h"
-#include "gen/genrev.h"
-#include "util/error.h"
+#include "info_options.h"
 #include "main_errors.h"
+#include "util/error.h"
+
+// -defaults (tools/info_options.h).
+constexpr const char* kDefaults = "genrev mat name 'z(t)' 'r(t)' nseg [-e expr][-f file][-s]\n";
 
 int main(int argc, char** argv) {
+    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     std::vector<std::string> args(argv, argv + argc);
     args[0] = "genrev";  // RADIANCE prints argv[0]; a fixed name keeps output path-independent
     std::vector<std::string> warnings;

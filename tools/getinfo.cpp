@@ -6,9 +6,10 @@
 
 #include "gen/builtin_commands.h"
 #include "geometry/scene_geometry.h"
+#include "info_options.h"
+#include "main_errors.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
-#include "main_errors.h"
 
 namespace {
 // -d on our scene files: the cube RADIANCE's oconv would store, printed as its
@@ -23,7 +24,12 @@ std::string sceneCube(const std::string& path) {
 }
 }  // namespace
 
+// -defaults (tools/info_options.h).
+constexpr const char* kDefaults =
+    "getinfo [-d|+d] [-a line ..] [file ..]	# headers of pictures, octrees, photon maps\n";
+
 int main(int argc, char** argv) {
+    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     std::ios::sync_with_stdio(false);
     try {
         rp::GetinfoOptions opt = rp::parseGetinfoArgs(argc, argv);

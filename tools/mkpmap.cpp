@@ -1,17 +1,19 @@
 // mkpmap: generate RADIANCE photon maps (see src/pmap/mkpmap.h). Under mpirun (the build
 // in tools/mpi/) every rank traces its share and the first writes the maps.
+#include "pmap/mkpmap.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 
 #include "cluster_main.h"
 #include "gen/builtin_commands.h"
-#include "pmap/mkpmap.h"
+#include "main_errors.h"
 #include "pmap/mkpmap_options.h"
 #include "util/error.h"
 #include "util/header.h"
+#include "util/version.h"
 #include "util/warnings.h"
-#include "main_errors.h"
 
 int main(int argc, char** argv) {
     std::ostream* diag = &std::cerr;
@@ -20,6 +22,12 @@ int main(int argc, char** argv) {
     try {
         cluster = rp::tools::startCluster(argc, argv);
         rp::pmap::MkpmapOptions opt = rp::pmap::parseMkpmapArgs(argc, argv);
+        if (opt.printVersion || opt.printDefaults) {
+            if (cluster->isRoot())
+                std::cout << (opt.printVersion ? rp::versionLine() + "\n"
+                                               : rp::pmap::formatMkpmapDefaults(opt));
+            return rp::tools::endRun(*cluster, 0);
+        }
         if (!opt.diagnosticsFile.empty() && cluster->isRoot()) {
             // RADIANCE mkpmap -e: diagnostics appended to the file.
             diagFile.open(opt.diagnosticsFile, std::ios::app);

@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "calc/search_path.h"
+#include "info_options.h"
+#include "main_errors.h"
 #include "scene/mesh_write.h"
 #include "scene/obj_file.h"
 #include "scene/reader.h"
@@ -17,7 +19,6 @@
 #include "util/header.h"
 #include "util/paths.h"
 #include "util/warnings.h"
-#include "main_errors.h"
 
 namespace {
 
@@ -34,7 +35,16 @@ std::string readAll(std::istream& in) {
 
 }  // namespace
 
+// -defaults (tools/info_options.h).
+constexpr const char* kDefaults =
+    "-n  9\t\t\t\t# triangles per octree leaf\n"
+    "-r  16384\t\t\t# octree resolution limit\n"
+    "-a  file\t\t\t# material file\n"
+    "-l  file\t\t\t# library material file (RAYPATH)\n"
+    "-w-\t\t\t\t# warnings on\n";
+
 int main(int argc, char** argv) {
+    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     std::vector<const char*> args(argv, argv + argc);
     args[0] = "obj2mesh";  // a fixed name keeps the header independent of the install path
     bool quiet = false, verbose = false;

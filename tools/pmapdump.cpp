@@ -4,10 +4,11 @@
 
 #include <iostream>
 
+#include "info_options.h"
+#include "main_errors.h"
 #include "pmap/dump.h"
 #include "util/error.h"
 #include "util/header.h"
-#include "main_errors.h"
 
 namespace {
 
@@ -20,7 +21,16 @@ void usage(const char* prog) {
 
 }  // namespace
 
+// -defaults (tools/info_options.h).
+constexpr const char* kDefaults =
+    "-a-\t\t\t\t# RADIANCE scene output (-a+: ASCII point list)\n"
+    "-P-\t\t\t\t# binary PLY output off\n"
+    "-n  10000\t\t\t# photons dumped per map\n"
+    "-r  1.0\t\t\t\t# sphere radius scale\n"
+    "-f-\t\t\t\t# colour by map type (-f+: by photon flux)\n";
+
 int main(int argc, char** argv) {
+    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     if (argc < 2) {
         usage(argv[0]);
         return 1;

@@ -1,16 +1,28 @@
 // pvalue: RADIANCE's picture <-> pixel values converter (see src/image/pvalue.h).
 //   pvalue [-h][-H][-o][-b][-d|-da|-df|-dd|+d..][-e exposure] [picture] > values
 //   pvalue -r [-h][-H][-b][-d..][-e exposure][-y N +x M] [values] > picture.hdr
+#include "image/pvalue.h"
+
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include "image/pvalue.h"
+#include "info_options.h"
+#include "main_errors.h"
 #include "util/error.h"
 #include "util/header.h"
-#include "main_errors.h"
+
+// -defaults (tools/info_options.h).
+constexpr const char* kDefaults =
+    "-h+\t\t\t\t# header\n"
+    "-H+\t\t\t\t# resolution string\n"
+    "-o-\t\t\t\t# values after exposure\n"
+    "-b-\t\t\t\t# three values per pixel (-b+: brightness)\n"
+    "+da\t\t\t\t# ASCII values with pixel coordinates\n"
+    "-e  1\t\t\t\t# exposure\n";
 
 int main(int argc, char** argv) {
+    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     try {
         std::vector<std::string> args(argv + 1, argv + argc);
         rp::PvalueOptions opt = rp::parsePvalueArgs(args);

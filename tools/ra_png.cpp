@@ -8,15 +8,22 @@
 #include <string>
 
 #include "image/tonemap.h"
-#include "util/error.h"
+#include "info_options.h"
 #include "main_errors.h"
+#include "util/error.h"
 
 namespace {
 constexpr const char* kUsage =
     "usage: ra_png [-e exposure|+/-stops] [-g gamma] input.hdr|- output.png";
 }  // namespace
 
+// -defaults (tools/info_options.h).
+constexpr const char* kDefaults =
+    "-e  auto\t\t\t# exposure: log-average brightness to mid grey\n"
+    "-g  sRGB\t\t\t# gamma: the sRGB transfer curve\n";
+
 int main(int argc, char** argv) {
+    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     rp::DisplayOptions opt;
     std::string files[2];
     int nfiles = 0;

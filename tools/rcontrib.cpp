@@ -3,6 +3,8 @@
 // Options in src/render/rcontrib_options.h, the tally in rcontrib.h, outputs in
 // rcontrib_output.h, the loop in rcontrib_run.h. Under mpirun (the build in tools/mpi/)
 // the first rank reads the rays and writes the outputs, every rank traces.
+#include "render/rcontrib.h"
+
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -13,10 +15,10 @@
 #include "cluster_main.h"
 #include "gen/builtin_commands.h"
 #include "geometry/scene_geometry.h"
+#include "main_errors.h"
 #include "material/mist_probe.h"
 #include "render/command_args.h"
 #include "render/photon_lighting.h"
-#include "render/rcontrib.h"
 #include "render/rcontrib_options.h"
 #include "render/rcontrib_output.h"
 #include "render/rcontrib_run.h"
@@ -26,8 +28,8 @@
 #include "util/error.h"
 #include "util/header.h"
 #include "util/paths.h"
+#include "util/version.h"
 #include "util/warnings.h"
-#include "main_errors.h"
 
 namespace {
 
@@ -107,6 +109,10 @@ int main(int argc, char** argv) {
     try {
         cluster = rp::tools::startCluster(argc, argv);
         RcontribOptions o = parseRcontribArgs(argVector(argc, argv), &evalBinCount);
+        if (o.printVersion) {
+            if (cluster->isRoot()) std::cout << rp::versionLine() << '\n';
+            return 0;
+        }
         if (o.printDefaults) {
             if (cluster->isRoot()) std::cout << formatRcontribDefaults(o);
             return 0;

@@ -3,6 +3,8 @@
 //   rpict [options] [@file] [$EVAR] scene.oct|scene.rad ...
 // Under mpirun (the build in tools/mpi/) every rank traces its share of the scanlines and
 // the first writes the picture.
+#include "render/rpict.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -16,10 +18,10 @@
 #include "gen/builtin_commands.h"
 #include "geometry/scene_geometry.h"
 #include "image/view.h"
+#include "main_errors.h"
 #include "render/command_args.h"
-#include "render/renderer.h"
 #include "render/photon_lighting.h"
-#include "render/rpict.h"
+#include "render/renderer.h"
 #include "render/rpict_options.h"
 #include "render/rpict_run.h"
 #include "render/rpict_tracer.h"
@@ -27,8 +29,8 @@
 #include "util/error.h"
 #include "util/header.h"
 #include "util/paths.h"
+#include "util/version.h"
 #include "util/warnings.h"
-#include "main_errors.h"
 
 namespace {
 
@@ -41,7 +43,7 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile,
     RpictCommand cmd = parseRpictCommand(args);
     const RpictOptions& o = cmd.options;
     if (cmd.printVersion) {
-        if (cluster.isRoot()) std::cout << kSoftwareName << '\n';
+        if (cluster.isRoot()) std::cout << rp::versionLine() << '\n';
         return 0;
     }
     if (cmd.printDefaults) {

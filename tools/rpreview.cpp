@@ -9,13 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "geometry/scene_geometry.h"
-#include "render/preview.h"
 #include "gen/builtin_commands.h"
+#include "geometry/scene_geometry.h"
+#include "info_options.h"
+#include "main_errors.h"
+#include "render/preview.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
 #include "util/header.h"
-#include "main_errors.h"
 
 namespace {
 
@@ -70,7 +71,14 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
+// -defaults (tools/info_options.h).
+constexpr const char* kDefaults =
+    "-x  512\t\t\t\t# x resolution\n"
+    "-y  512\t\t\t\t# y resolution\n"
+    "-o  -\t\t\t\t# output picture (standard output)\n";
+
 int main(int argc, char** argv) {
+    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     try {
         return run(argc, argv);
     } catch (...) {

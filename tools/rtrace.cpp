@@ -2,8 +2,8 @@
 // src/render/rtrace_options.h, input/output in rtrace_io.h, the loop in rtrace_run.h.
 // Under mpirun (the build in tools/mpi/) the first rank reads and writes, every rank traces.
 #include <cstdio>
-#include <fstream>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <vector>
@@ -12,6 +12,7 @@
 #include "cluster_main.h"
 #include "gen/builtin_commands.h"
 #include "geometry/scene_geometry.h"
+#include "main_errors.h"
 #include "render/renderer.h"
 #include "render/rtrace_io.h"
 #include "render/rtrace_options.h"
@@ -21,8 +22,8 @@
 #include "util/error.h"
 #include "util/header.h"
 #include "util/paths.h"
+#include "util/version.h"
 #include "util/warnings.h"
-#include "main_errors.h"
 
 namespace {
 
@@ -99,6 +100,10 @@ int main(int argc, char** argv) {
     try {
         cluster = rp::tools::startCluster(argc, argv);
         rp::render::RtraceOptions o = rp::render::parseRtraceArgs(argc, argv);
+        if (o.printVersion) {
+            if (cluster->isRoot()) std::cout << rp::versionLine() << '\n';
+            return 0;
+        }
         if (o.printDefaults) {
             if (cluster->isRoot()) std::cout << rp::render::formatRtraceDefaults(o);
             return 0;

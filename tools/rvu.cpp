@@ -10,6 +10,7 @@
 #include "calc/search_path.h"
 #include "gen/builtin_commands.h"
 #include "geometry/scene_geometry.h"
+#include "main_errors.h"
 #include "render/command_args.h"
 #include "render/rpict.h"
 #include "rvu/rvu_options.h"
@@ -19,8 +20,8 @@
 #include "util/error.h"
 #include "util/header.h"
 #include "util/paths.h"
+#include "util/version.h"
 #include "util/warnings.h"
-#include "main_errors.h"
 
 namespace {
 
@@ -33,7 +34,7 @@ int run(int argc, char** argv) {
     args.erase(args.begin());
     rp::rvu::RvuCommand cmd = rp::rvu::parseRvuCommand(args);
     if (cmd.printVersion) {
-        std::cout << rp::render::kSoftwareName << '\n';
+        std::cout << rp::versionLine() << '\n';
         return 0;
     }
     if (cmd.printDefaults) {

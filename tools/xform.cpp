@@ -3,11 +3,18 @@
 
 #include "gen/builtin_commands.h"
 #include "gen/xform_scene.h"
+#include "info_options.h"
+#include "main_errors.h"
 #include "util/error.h"
 #include "util/warnings.h"
-#include "main_errors.h"
+
+// -defaults (tools/info_options.h).
+constexpr const char* kDefaults =
+    "xform [-c|-e][-I][-m mat][-n name][-s scale][-t x y z][-rx|-ry|-rz deg][-mx|-my|-mz][-i N "
+    "...][-a N ...] file ..\n";
 
 int main(int argc, char** argv) {
+    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     std::ios::sync_with_stdio(false);
     rp::setWarningSink([](const std::string& m) { std::cerr << "xform: warning: " << m << '\n'; });
     try {

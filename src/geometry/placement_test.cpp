@@ -302,7 +302,8 @@ TEST(Placement, MissingAndWrongFiles) {
               dir.file("scene.rad") + ":1: instance 'i': cannot find octree file 'nowhere.oct'");
     EXPECT_NE(err("void instance i 1 plain.rad 0 0\n").find("instance 'i': " + dir.file("plain.rad") + ": not an octree"),
               std::string::npos);
-    write(dir.file("self.oct"), "a placeholder, so that oconv finds the name");
+    // An empty octree first: oconv reads the cube of the octree an instance places.
+    writeOctree(dir.file("self.oct"), "", "self");
     writeOctree(dir.file("self.oct"), "void instance me 1 self.oct 0 0\n", "self");
     EXPECT_NE(err("void instance i 1 self.oct 0 0\n").find("places itself"), std::string::npos);
     EXPECT_NE(err("void light l 0 0 3 1 1 1\nl instance i 1 self.oct 0 0\n")

@@ -1,5 +1,5 @@
 // End-to-end check of the forward pass against the integrating sphere of
-// ../shared/validation/furnace: mkpmap's global map, read back, gives the analytic
+// tests/data/furnace: mkpmap's global map, read back, gives the analytic
 // indirect irradiance E_i = E_d(R) rho/(1-rho) = 0.785398 W/m2 at the 20 sensors through
 // RADIANCE's density estimate (what `rtrace -ab -1` shows minus direct). This exercises
 // emission (spherical light), transport (bubble, roulette), the global storage rule (no
@@ -17,7 +17,6 @@
 #include "pmap/photon_map.h"
 #include "scene/scene_load.h"
 #include "util/temp_dir_for_tests.h"
-#include "util/shared_for_tests.h"
 
 namespace rp::pmap {
 namespace {
@@ -27,7 +26,7 @@ struct Sensor {
 };
 
 std::vector<Sensor> furnaceSensors() {
-    std::ifstream in(std::string(RP_SHARED_DIR) + "/validation/furnace/points.txt");
+    std::ifstream in(std::string(RP_SOURCE_DIR) + "/tests/data/furnace/points.txt");
     std::vector<Sensor> s;
     Sensor x;
     while (in >> x.pos.x >> x.pos.y >> x.pos.z >> x.dir.x >> x.dir.y >> x.dir.z) s.push_back(x);
@@ -35,7 +34,7 @@ std::vector<Sensor> furnaceSensors() {
 }
 
 // mkpmap's global map of the sphere `scene` (centred at `centre`), checked against the
-// analytic answer at the 20 sensors of ../shared/validation/furnace moved to `centre`.
+// analytic answer at the 20 sensors of tests/data/furnace moved to `centre`.
 void expectFurnace(const std::string& scene, const Vec3& centre, const std::string& map,
                    const char* label) {
     std::vector<std::string> args = {"mkpmap", "-apg", map, "200k", "-apr", "11", "-n", "2", scene};
@@ -73,9 +72,8 @@ void expectFurnace(const std::string& scene, const Vec3& centre, const std::stri
 }
 
 TEST(FurnaceValidation, GlobalMapGivesTheAnalyticIndirectIrradiance) {
-    RP_REQUIRE_SHARED("validation/furnace");
     TempDir dir("rp_furnace");
-    expectFurnace(std::string(RP_SHARED_DIR) + "/validation/furnace/scene.rad", Vec3{},
+    expectFurnace(std::string(RP_SOURCE_DIR) + "/tests/data/furnace/scene.rad", Vec3{},
                   dir.file("g.pm"), "furnace");
 }
 
@@ -84,7 +82,6 @@ TEST(FurnaceValidation, GlobalMapGivesTheAnalyticIndirectIrradiance) {
 // the instanced surface exactly as on the plain one: the same stored flux and the same
 // analytic irradiance (scale and translation carried through emission, hits, normals).
 TEST(FurnaceValidation, InstancedSphereGivesTheSameIrradiance) {
-    RP_REQUIRE_SHARED("validation/furnace");
     TempDir dir("rp_furnace_inst");
     {
         std::ofstream w(dir.file("wall.rad"));

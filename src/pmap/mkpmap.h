@@ -30,8 +30,8 @@ struct MkpmapReport {
 // -app maps are distributed as global maps, then precomputed (precomp.h); -apC uses its
 // own per-source distribution (contrib.h) and ignores other maps with a warning.
 // Throws InputError (one line, no program prefix) for: an existing output file without
-// -fo (checked before anything is traced), two maps written to one file, map types not
-// supported yet (-apv), scene errors, no light sources, bad ports/sensors,
+// -fo (checked before anything is traced), two maps written to one file, a volume map
+// (-apv) without a medium, scene errors, no light sources, bad ports/sensors,
 // and distribution failure (manual 4.2). Progress (-t) and the summary go to `diag`.
 // `load` carries the scene reader's command hook (tools pass the built-in generators).
 // `cluster`: the ranks of an MPI run (null: this process alone). Every rank calls this

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -127,6 +128,10 @@ MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
         std::string opt = a.peek();
         if (opt.size() < 2 || opt[0] != '-') break;  // scene files from here on
         a.next();
+        if (opt == "-defaults" || opt == "-help" || opt == "-version") {
+            (opt == "-version" ? o.printVersion : o.printDefaults) = true;
+            return o;
+        }
         if (opt == "-apg") mapOpt(opt, PhotonMapType::Global, false);
         else if (opt == "-apc") mapOpt(opt, PhotonMapType::Caustic, false);
         else if (opt == "-apv") mapOpt(opt, PhotonMapType::Volume, false);
@@ -209,6 +214,86 @@ MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
     if (!any) throw InputError("no photon maps specified");
     if (o.sceneFiles.empty()) throw InputError("missing octree argument");
     return o;
+}
+
+}  // namespace rp::pmap
+
+namespace rp::pmap {
+
+namespace {
+
+// One -defaults line: the option and its value, padded to RADIANCE's comment column.
+void defaultsLine(std::string& out, const std::string& option, const char* what) {
+    out += option;
+    for (size_t width = option.size(); width < 40; width += 8 - width % 8) out += '\t';
+    out += "# ";
+    out += what;
+    out += '\n';
+}
+
+std::string fixed(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+std::string mapLine(const MkpmapOptions& o, PhotonMapType t, const char* opt) {
+    const auto& m = o.maps[size_t(t)];
+    if (!m)
+        return std::string(opt) + " file nPhotons" + (t == PhotonMapType::PreComp ? " bwidth" : "");
+    std::string s = std::string(opt) + " " + m->file + " " + std::to_string(m->target);
+    if (t == PhotonMapType::PreComp) s += " " + std::to_string(m->bandwidth);
+    return s;
+}
+
+}  // namespace
+
+std::string formatMkpmapDefaults(const MkpmapOptions& o) {
+    std::string out;
+    const auto sign = [](bool b) { return b ? std::string("+") : std::string("-"); };
+    const auto colour = [&](const Color& c, int digits) {
+        return fixed(c[0], digits) + " " + fixed(c[1], digits) + " " + fixed(c[2], digits);
+    };
+    defaultsLine(out, "-ae  mod", "exclude modifier");
+    defaultsLine(out, "-aE  file", "exclude modifiers from file");
+    defaultsLine(out, "-ai  mod", "include modifier");
+    defaultsLine(out, "-aI  file", "include modifiers from file");
+    defaultsLine(out, "-aC  " + std::to_string(o.memoryPhotons), "photons held in memory");
+    defaultsLine(out, "-api xmin ymin zmin xmax ymax zmax", "rectangular region of interest");
+    defaultsLine(out, mapLine(o, PhotonMapType::Global, "-apg"), "global photon map");
+    defaultsLine(out, mapLine(o, PhotonMapType::Caustic, "-apc"), "caustic photon map");
+    defaultsLine(out, mapLine(o, PhotonMapType::Direct, "-apd"), "direct photon map");
+    defaultsLine(out, mapLine(o, PhotonMapType::PreComp, "-app"), "precomputed global photon map");
+    defaultsLine(out, mapLine(o, PhotonMapType::Volume, "-apv"), "volume photon map");
+    defaultsLine(out, mapLine(o, PhotonMapType::Contrib, "-apC"), "contribution photon map");
+    defaultsLine(out, "-apD " + fixed(o.preDistrib, 6), "predistribution factor");
+    defaultsLine(out, "-apM " + std::to_string(o.maxPrepass), "max predistrib passes");
+    defaultsLine(out, "-apm " + std::to_string(o.maxBounce), "limit photon bounces");
+    defaultsLine(out, "-apo+ mod", "photon port modifier");
+    defaultsLine(out, "-apO+ file", "photon ports from file");
+    defaultsLine(out, "-apP " + fixed(o.precompFraction, 6), "precomputation factor");
+    defaultsLine(out, "-apr " + std::to_string(o.seed), "random seed");
+    defaultsLine(out, "-aps mod", "antimatter sensor modifier");
+    defaultsLine(out, "-apS file", "antimatter sensors from file");
+    defaultsLine(out, "-bv" + sign(o.backVisible),
+                 o.backVisible ? "back face visibility on" : "back face visibility off");
+    defaultsLine(out, "-dp  " + fixed(o.pdfSamples, 1), "PDF samples / sr");
+    defaultsLine(out, "-ds  " + fixed(o.partitionSize, 6), "source partition size ratio");
+    defaultsLine(out,
+                 "-e   " + (o.diagnosticsFile.empty() ? std::string("(null)") : o.diagnosticsFile),
+                 "diagnostics output file");
+    defaultsLine(out, "-fo" + sign(o.overwrite), o.overwrite ? "overwrite" : "do not overwrite");
+    defaultsLine(out, "-ld " + fixed(o.maxDistance, 1), "limit photon distance");
+    defaultsLine(out, "-lr " + std::to_string(o.maxBounce), "limit photon bounces");
+    defaultsLine(out, "-ma  " + colour(o.mediumAlbedo, 2), "scattering albedo");
+    char ext[96];
+    std::snprintf(ext, sizeof ext, "-me  %.2e %.2e %.2e", o.mediumExtinction[0],
+                  o.mediumExtinction[1], o.mediumExtinction[2]);
+    defaultsLine(out, ext, "extinction coefficient");
+    defaultsLine(out, "-mg  " + fixed(o.mediumEccentricity, 2), "scattering eccentricity");
+    defaultsLine(out, "-n   " + std::to_string(o.nproc), "number of parallel processes");
+    defaultsLine(out, "-t   " + std::to_string(o.reportSeconds), "time between reports");
+    return out;
 }
 
 }  // namespace rp::pmap

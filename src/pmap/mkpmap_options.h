@@ -72,6 +72,9 @@ struct MkpmapOptions {
     // (-apC) maps are always built in memory.
     uint64_t memoryPhotons = defaultMemoryPhotons();
     std::vector<std::string> sceneFiles;  // the octree / scene file(s), last
+    // -defaults (-help) or -version: print and exit; parsing stops there and nothing
+    // else is checked (RADIANCE mkpmap prints its defaults even without a map).
+    bool printDefaults = false, printVersion = false;
 
     bool wants(PhotonMapType t) const { return maps[size_t(t)].has_value(); }
 };
@@ -81,6 +84,10 @@ struct MkpmapOptions {
 // value, no photon map requested, -ai with -ae, no scene file. File lists for -apO,
 // -apS, -aI/-al and -aE are read here (whitespace separated words).
 MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv);
+
+// The -defaults listing, one option a line with the values in `o`, in RADIANCE mkpmap's
+// layout ("-apD 0.250000\t\t\t\t# predistribution factor").
+std::string formatMkpmapDefaults(const MkpmapOptions& o);
 
 // "500k" -> 500000, "1m" -> 1000000, "2.5M" -> 2500000, "1g" -> 1e9 (RADIANCE
 // parseMultiplier); nullopt for anything else or a value that is not a positive count.

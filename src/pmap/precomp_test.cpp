@@ -1,6 +1,8 @@
 // Precomputed global photon maps (precomp.h, mkpmap -app/-apP): the stratified subset,
 // stored values equal to the density estimate over the full global map, independence
 // of the thread count, and the furnace end to end (file type, count, irradiance).
+#include "pmap/precomp.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,10 +14,8 @@
 #include "pmap/mkpmap.h"
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon_map.h"
-#include "pmap/precomp.h"
 #include "util/rng.h"
 #include "util/temp_dir_for_tests.h"
-#include "util/shared_for_tests.h"
 
 namespace rp::pmap {
 namespace {
@@ -92,9 +92,8 @@ TEST(Precomp, StoresTheDensityEstimateOverTheFullMap) {
 }
 
 TEST(Precomp, FurnaceMapEndToEnd) {
-    RP_REQUIRE_SHARED("validation/furnace");
     TempDir dir("rp_precomp");
-    const std::string scene = std::string(RP_SHARED_DIR) + "/validation/furnace/scene.rad";
+    const std::string scene = std::string(RP_SOURCE_DIR) + "/tests/data/furnace/scene.rad";
     auto run = [&](std::vector<std::string> args) {
         args.insert(args.begin(), "mkpmap");
         args.push_back(scene);

@@ -8,7 +8,6 @@
 
 #include "pmap/trace_test_util.h"
 #include "util/thread_cluster_for_tests.h"
-#include "util/shared_for_tests.h"
 
 namespace rp::pmap {
 namespace {
@@ -40,15 +39,14 @@ double sumRed(const std::vector<Photon>& ps) {
     return s;
 }
 
-// Furnace (../shared/validation/furnace/README.md): grey bubble rho = 0.5 around a light
+// Furnace (tests/data/furnace/scene.rad): grey bubble rho = 0.5 around a light
 // sphere, Phi = 9.8696 W per channel. Global photons are stored from the second hit on,
 // so the stored incident flux is Phi * sum_{k>=1} rho^k (1-a)^(k-1) = Phi rho / (1 - rho(1-a))
 // where a = (r/R)^2 = 0.0025 is the share of diffusely reflected photons that hit the
 // light sphere (absorbed, not stored): 0.99750 Phi = 9.8449 W. 40k photons: the relative
 // standard error of the sum is ~1/sqrt(20k emitted) * 1.2 ~ 0.9 %; tolerance 3 %.
 TEST(TraceFurnace, StoredGlobalFluxMatchesAnalytic) {
-    RP_REQUIRE_SHARED("validation/furnace");
-    auto run = makeRun(sceneFromFile(std::string(RP_SHARED_DIR) + "/validation/furnace/scene.rad"),
+    auto run = makeRun(sceneFromFile(std::string(RP_SOURCE_DIR) + "/tests/data/furnace/scene.rad"),
                        mapsFor(true, false, false));
     EXPECT_NEAR(run->plan->totalFlux().r, 9.8696, 0.01);
     DistributionResult r = distribute(*run, 40000, 0, 0);
@@ -60,8 +58,7 @@ TEST(TraceFurnace, StoredGlobalFluxMatchesAnalytic) {
 
 // A direct map holds first hits only: the whole emitted flux lands on the wall once.
 TEST(TraceFurnace, DirectMapHoldsEmittedFlux) {
-    RP_REQUIRE_SHARED("validation/furnace");
-    auto run = makeRun(sceneFromFile(std::string(RP_SHARED_DIR) + "/validation/furnace/scene.rad"),
+    auto run = makeRun(sceneFromFile(std::string(RP_SOURCE_DIR) + "/tests/data/furnace/scene.rad"),
                        mapsFor(false, false, true));
     DistributionResult r = distribute(*run, 0, 0, 20000);
     EXPECT_NEAR(sumRed(mapOf(r, PhotonMapType::Direct)), 9.8696, 0.02 * 9.8696);

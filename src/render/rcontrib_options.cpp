@@ -132,8 +132,8 @@ RcontribOptions parseRcontribArgs(std::vector<std::string> args, BinCountEval ev
         expandArgAt(args, i);
         if (i >= args.size() || args[i].size() < 2 || args[i][0] != '-') break;
         const std::string opt = args[i];
-        if (opt == "-defaults" || opt == "-help") {
-            o.printDefaults = true;
+        if (opt == "-defaults" || opt == "-help" || opt == "-version") {
+            (opt == "-version" ? o.printVersion : o.printDefaults) = true;
             break;
         }
         // rcontrib's own first: -e, -f, -o, -t, -x, -y mean other things to rtrace.
@@ -168,7 +168,7 @@ RcontribOptions parseRcontribArgs(std::vector<std::string> args, BinCountEval ev
     o.render.ambient.supersamples = 0;
     o.render.contributions = true;
     if (o.accumulate <= 0) o.xres = o.yres = 0;
-    if (o.printDefaults) {
+    if (o.printDefaults || o.printVersion) {
         o.args = std::move(args);
         return o;
     }

@@ -43,6 +43,7 @@ struct RcontribOptions {
     bool limitDistance = false;  // -ld
     int reportSeconds = 0;       // -t
     bool printDefaults = false;  // -defaults / -help
+    bool printVersion = false;   // -version
     std::string sceneFile;
     std::vector<std::string> args;  // after @file/$EVAR expansion, argv[0] first
     size_t optionCount = 0;         // args[0..optionCount) are program and options

@@ -14,6 +14,7 @@
 // them, can be filled in parallel with results that never depend on the thread count.
 #include "render/rpict.h"
 
+#include <fmt/format.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -26,11 +27,10 @@
 #include <optional>
 #include <ostream>
 
-#include <fmt/format.h>
-
 #include "image/view.h"
 #include "util/error.h"
 #include "util/rng.h"
+#include "util/version.h"
 #include "util/warnings.h"
 
 namespace rp::render {
@@ -387,7 +387,7 @@ Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& fac
 
 void addRpictHeader(Picture& picture, const std::string& commandLine, std::time_t now) {
     auto& lines = picture.header.lines;
-    lines.insert(lines.begin(), {commandLine, std::string("SOFTWARE= ") + kSoftwareName});
+    lines.insert(lines.begin(), {commandLine, "SOFTWARE= " + softwareName()});
     // RADIANCE compat (header.c fputnow): local capture time, then the same in GMT.
     std::tm local{}, gmt{};
     localtime_r(&now, &local);

@@ -119,7 +119,4 @@ std::vector<std::string> viewHeaderLines(const RpictOptions& options);
 // and "GMT=" of `now` after them. writePicture then adds FORMAT=.
 void addRpictHeader(Picture& picture, const std::string& commandLine, std::time_t now);
 
-// What the SOFTWARE= line names.
-constexpr const char* kSoftwareName = "radphoton 0.1";
-
 }  // namespace rp::render

@@ -15,6 +15,7 @@
 #include "image/picture.h"
 #include "util/error.h"
 #include "util/temp_dir_for_tests.h"
+#include "util/version.h"
 
 namespace rp::render {
 namespace {
@@ -254,7 +255,7 @@ TEST(RpictRender, HeaderAndRoundTrip) {
     const auto& lines = back.header.lines;
     ASSERT_GE(lines.size(), 5u);
     EXPECT_EQ(lines[0], "rpict -x 40 -y 40 scene.rad");
-    EXPECT_EQ(lines[1], std::string("SOFTWARE= ") + kSoftwareName);
+    EXPECT_EQ(lines[1], "SOFTWARE= " + softwareName());
     EXPECT_EQ(lines[2], viewHeaderLine(o.view));
     EXPECT_EQ(lines[2].rfind("VIEW= -vtv -vp 2.75 0.05 2.75", 0), 0u);
     EXPECT_EQ(lines[3].rfind("CAPDATE= ", 0), 0u);

@@ -118,8 +118,8 @@ RtraceOptions parseRtraceArgs(std::vector<std::string> args) {
         expandArgAt(args, i);
         if (i >= args.size() || args[i].size() < 2 || args[i][0] != '-') break;
         const std::string opt = args[i];
-        if (opt == "-defaults" || opt == "-help") {
-            o.printDefaults = true;
+        if (opt == "-defaults" || opt == "-help" || opt == "-version") {
+            (opt == "-version" ? o.printVersion : o.printDefaults) = true;
             o.args = std::move(args);
             o.optionCount = i;
             return o;

@@ -30,8 +30,9 @@ struct RtraceOptions {
     int yres = 0;                 // -y
     bool immediateIrradiance = false;  // -I
     TraceFilter trace;            // -ti -te -tI -tE
-    bool limitDistance = false;   // -ld (parsed; not supported by the renderer yet)
+    bool limitDistance = false;   // -ld: a ray's distance limit from its input direction's length
     bool printDefaults = false;   // -defaults / -help: print and exit, no scene needed
+    bool printVersion = false;    // -version: print the version line and exit
     std::string sceneFile;        // the octree / scene file (last argument)
     std::vector<std::string> args;  // after @file/$EVAR expansion, argv[0] first
     size_t optionCount = 0;       // args[0..optionCount) are program and options (header)

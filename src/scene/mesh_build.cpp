@@ -12,45 +12,24 @@
 #include <tuple>
 #include <utility>
 
+#include "scene/radiance_geom.h"
 #include "util/error.h"
 #include "util/warnings.h"
 
 namespace rp::meshbuild {
 namespace {
 
-using Vec = std::array<double, 3>;
+using radgeom::cross;
+using radgeom::dot;
+using radgeom::kHuge;
+using radgeom::kTiny;
+using radgeom::sub;
+using radgeom::Vec;
 using UV = std::array<double, 2>;
 
-constexpr double kTiny = 1e-6;         // RADIANCE FTINY (double build)
 constexpr double kCosTol = 0.999995;   // tmesh.h COSTOL: normals this close are "flat"
-constexpr double kHuge = 1e10;         // FHUGE
 constexpr size_t kMaxSet = 511;        // object.h MAXSET
 constexpr int kHasN = 2, kHasUV = 4, kHasV = 1;
-
-Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec cross(const Vec& a, const Vec& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-// RADIANCE's normalize(): near-unit vectors get a first-order correction instead of
-// a square root; returns the old length (0 leaves v alone).
-double normalizeLikeRadiance(Vec& v) {
-    double d = dot(v, v);
-    if (d == 0.0) return 0.0;
-    double len;
-    if (d <= 1.0 + kTiny && d >= 1.0 - kTiny) {
-        len = 0.5 + 0.5 * d;
-        d = 2.0 - len;
-    } else {
-        len = std::sqrt(d);
-        d = 1.0 / len;
-    }
-    v[0] *= d;
-    v[1] *= d;
-    v[2] *= d;
-    return len;
-}
 
 // A triangle once accepted: its face plane (as face.c computes it) and mesh data.
 struct Tri {
@@ -70,7 +49,7 @@ enum class Flatness { Flat, Bent, ReversedFlat, ReversedBent, Degenerate };
 Flatness classify(const Vec& v1, const Vec& v2, const Vec& v3, const Vec& n1, const Vec& n2,
                   const Vec& n3) {
     Vec vn = cross(sub(v2, v1), sub(v3, v2));
-    if (normalizeLikeRadiance(vn) == 0.0) return Flatness::Degenerate;
+    if (radgeom::normalize(vn) == 0.0) return Flatness::Degenerate;
     double d1 = dot(vn, n1), d2 = dot(vn, n2), d3 = dot(vn, n3);
     if (d1 < 0 && d2 < 0 && d3 < 0) {
         if (d1 > -kCosTol || d2 > -kCosTol || d3 > -kCosTol) return Flatness::ReversedBent;
@@ -107,7 +86,7 @@ bool accept(const MeshTriangleInput& in, Tri& t) {
     if (in.hasUV) flags |= kHasUV;
     t.v = {v1, v2, v3};
     t.norm = cross(sub(v2, v1), sub(v3, v1));
-    if (normalizeLikeRadiance(t.norm) == 0.0) {
+    if (radgeom::normalize(t.norm) == 0.0) {
         warn(in.loc, "zero-area triangle");
         return false;
     }
@@ -124,121 +103,11 @@ bool accept(const MeshTriangleInput& in, Tri& t) {
     return true;
 }
 
-// plocate.h position codes: two bits per axis, "below" and "above".
-constexpr int kBelow = 025, kAbove = 052;
-constexpr int axisBits(int i) { return 3 << (i << 1); }
-
-int locate(const Vec& p, const Vec& lo, const Vec& hi) {
-    int loc = 0;
-    for (int i = 0; i < 3; ++i) {
-        if (p[i] < lo[i] - kTiny)
-            loc |= axisBits(i) & kBelow;
-        else if (p[i] > hi[i] + kTiny)
-            loc |= axisBits(i) & kAbove;
-    }
-    return loc;
-}
-
-// Cohen-Sutherland: does any part of segment a-b lie in the box?
-bool clipSegment(Vec a, Vec b, const Vec& lo, const Vec& hi) {
-    Vec* e1 = &a;
-    Vec* e2 = &b;
-    int loc1 = locate(a, lo, hi), loc2 = locate(b, lo, hi);
-    int limit = 6;
-    bool inside;
-    while (!((inside = !(loc1 | loc2)) || (loc1 & loc2))) {
-        if (limit-- <= 0) return false;
-        if (!loc1) {
-            std::swap(e1, e2);
-            std::swap(loc1, loc2);
-        }
-        for (int i = 0; i < 3; ++i) {
-            double d;
-            if (loc1 & axisBits(i) & kBelow) {
-                d = (lo[i] - (*e1)[i]) / ((*e2)[i] - (*e1)[i]);
-                (*e1)[i] = lo[i];
-            } else if (loc1 & axisBits(i) & kAbove) {
-                d = (hi[i] - (*e1)[i]) / ((*e2)[i] - (*e1)[i]);
-                (*e1)[i] = hi[i];
-            } else {
-                continue;
-            }
-            for (int j = 0; j < 3; ++j)
-                if (j != i) (*e1)[j] += ((*e2)[j] - (*e1)[j]) * d;
-            break;
-        }
-        loc1 = locate(*e1, lo, hi);
-    }
-    return inside;
-}
-
-bool relEq(double a, double b) { return std::fabs(a - b) <= kTiny * 0.5 * (std::fabs(a) + std::fabs(b)); }
-
-// face.c inface(): crossing count in the plane of the two non-dominant axes.
-bool insideFace(const Vec& p, const Tri& f) {
-    int xi = f.ax + 1;
-    if (xi >= 3) xi -= 3;
-    int yi = xi + 1;
-    if (yi >= 3) yi -= 3;
-    double x = p[xi], y = p[yi];
-    int ncross = 0;
-    const Vec* p0 = &f.v[2];
-    for (int k = 0; k < 3; ++k) {
-        const Vec* p1 = &f.v[k];
-        const Vec& a = *p0;
-        const Vec& b = *p1;
-        if ((a[yi] > y) ^ (b[yi] > y)) {
-            int tst = (a[xi] > x) + (b[xi] > x);
-            if (tst == 2) {
-                ncross++;
-            } else if (tst) {
-                double prodA = (a[yi] - y) * (b[xi] - x);
-                double prodB = (a[xi] - x) * (b[yi] - y);
-                if (relEq(prodA, prodB)) return true;
-                ncross += (b[yi] > a[yi]) ^ (prodA > prodB);
-            } else if (relEq(a[xi], x) && relEq(b[xi], x)) {
-                return true;
-            }
-        } else if (relEq(a[yi], y) && relEq(b[yi], y) && ((a[xi] > x) ^ (b[xi] > x))) {
-            return true;
-        }
-        p0 = p1;
-    }
-    return ncross & 1;
-}
-
 // o_face.c: does the triangle meet the cube (grown by FTINY)?
 bool faceHitsCube(const Tri& f, const Vec& org, double size) {
-    Vec lo, hi;
-    for (int j = 0; j < 3; ++j) {
-        lo[j] = org[j] - kTiny;
-        hi[j] = lo[j] + size + 2.0 * kTiny;
-    }
-    int vloc = kAbove | kBelow;
-    for (const Vec& v : f.v) {
-        int j = locate(v, lo, hi);
-        if (!j) return true;
-        vloc &= j;
-    }
-    if (vloc) return false;
-    for (int i = 0; i < 3; ++i)
-        if (clipSegment(f.v[i], f.v[(i + 1) % 3], lo, hi)) return true;
-    Vec v1, v2;
-    for (int j = 0; j < 3; ++j) {
-        if (f.norm[j] > 0.0) {
-            v1[j] = lo[j];
-            v2[j] = hi[j];
-        } else {
-            v1[j] = hi[j];
-            v2[j] = lo[j];
-        }
-    }
-    double d1 = dot(v1, f.norm) - f.offset;
-    if (d1 > kTiny) return false;
-    double d2 = dot(v2, f.norm) - f.offset;
-    if (d2 < -kTiny) return false;
-    for (int j = 0; j < 3; ++j) v1[j] = (v1[j] * d2 - v2[j] * d1) / (d2 - d1);
-    return insideFace(v1, f);
+    const double va[9] = {f.v[0][0], f.v[0][1], f.v[0][2], f.v[1][0], f.v[1][1],
+                          f.v[1][2], f.v[2][0], f.v[2][1], f.v[2][2]};
+    return radgeom::faceMeetsCube(va, 3, f.norm, f.offset, f.ax, org, size);
 }
 
 class Builder {

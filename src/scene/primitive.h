@@ -59,6 +59,13 @@ struct Primitive {
     // to (-1: the scene itself), and for instance and mesh primitives the object placed.
     int32_t object = -1;
     int32_t placed = -1;
+    // RADIANCE keeps an alias as an object of its own, which its binary scene records
+    // (oconv -f) store as such; we keep a copy of the aliased record instead. For a
+    // copy made from an alias: the aliased record's index, and whether RADIANCE names
+    // it in a string argument (the alias has a modifier of its own) rather than making
+    // it the alias's modifier ("inherit", or the same modifier as the aliased record).
+    int32_t aliasOf = -1;
+    bool aliasNamed = false;
 };
 
 struct MeshData;

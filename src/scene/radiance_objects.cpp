@@ -103,6 +103,8 @@ Scene decodeRadianceObjects(std::string_view bytes, size_t& pos, int objsize,
             Primitive copy = scene.prims[target];
             copy.name = p.name;
             copy.loc = p.loc;
+            copy.aliasOf = target;
+            copy.aliasNamed = p.sargs.size() == 1;
             if (p.sargs.size() == 1) {
                 copy.modifier = p.modifier;
                 copy.modifierName = p.modifierName;

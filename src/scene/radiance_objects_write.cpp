@@ -31,6 +31,21 @@ int typeIndex(const Primitive& p) {
                                 "' has no code in RADIANCE's binary scene format");
 }
 
+constexpr int kAliasType = 11;  // "alias" in kTypeNames
+
+// An alias as readobj.c getobject() leaves it: its modifier is the aliased object, or
+// (when it has a modifier of its own) that modifier and the aliased name as its one
+// string argument.
+void putAlias(std::string& out, const Scene& scene, const Primitive& p, int objsize) {
+    using namespace portable;
+    putInt(out, kAliasType, 1);
+    putInt(out, p.aliasNamed ? p.modifier : p.aliasOf, objsize);
+    putStr(out, p.name);
+    putInt(out, p.aliasNamed ? 1 : 0, 2);
+    if (p.aliasNamed) putStr(out, scene.prims[static_cast<size_t>(p.aliasOf)].name);
+    putInt(out, 0, 2);
+}
+
 }  // namespace
 
 void encodeRadianceObjects(const Scene& scene, int objsize, std::string& out) {
@@ -43,6 +58,10 @@ void encodeRadianceObjects(const Scene& scene, int objsize, std::string& out) {
         // standard build (and its readers) leave out.
         if (!p.iargs.empty())
             throw InputError(p.loc, "integer arguments cannot be stored in a binary scene");
+        if (p.aliasOf >= 0) {
+            putAlias(out, scene, p, objsize);
+            continue;
+        }
         putInt(out, typeIndex(p), 1);
         putInt(out, p.modifier, objsize);
         putStr(out, p.name);

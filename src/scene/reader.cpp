@@ -17,6 +17,7 @@
 
 #include "scene/arg_rules.h"
 #include "scene/lexer.h"
+#include "scene/modifier_table.h"
 #include "util/warnings.h"
 
 namespace rp {
@@ -86,9 +87,9 @@ void SceneReader::append(const Scene& other) {
     auto offset = static_cast<int32_t>(scene_.prims.size());
     for (Primitive p : other.prims) {
         if (p.modifier != kVoid) p.modifier += offset;
-        auto index = static_cast<int32_t>(scene_.prims.size());
-        (isModifier(p.type) ? modifiers_ : surfaces_)[p.name] = index;
+        if (p.aliasOf >= 0) p.aliasOf += offset;
         scene_.prims.push_back(std::move(p));
+        index(static_cast<int32_t>(scene_.prims.size() - 1));
     }
     scene_.inputs.insert(scene_.inputs.end(), other.inputs.begin(), other.inputs.end());
 }
@@ -160,10 +161,23 @@ int32_t SceneReader::resolveModifier(const std::string& name, const SourceLoc& l
 }
 
 void SceneReader::add(Primitive p) {
-    if (!checkArgs(p)) return;  // degenerate, warned
-    auto index = static_cast<int32_t>(scene_.prims.size());
-    (isModifier(p.type) ? modifiers_ : surfaces_)[p.name] = index;
+    if (!checkArgs(p) && !options_.radianceNumbering) return;  // degenerate, warned
     scene_.prims.push_back(std::move(p));
+    index(static_cast<int32_t>(scene_.prims.size() - 1));
+}
+
+void SceneReader::index(int32_t i) {
+    const Primitive& p = scene_.prims[size_t(i)];
+    if (!isModifier(p.type)) {
+        surfaces_[p.name] = i;
+        return;
+    }
+    auto [it, added] = modifiers_.try_emplace(p.name, i);
+    if (added) return;
+    // RADIANCE's insertobject(): an equal redefinition leaves the name where it was.
+    if (options_.radianceNumbering && radianceEqualObjects(scene_.prims, modifiers_, i, it->second))
+        return;
+    it->second = i;
 }
 
 void SceneReader::parsePrimitive(SceneLexer& lex, const Context& ctx) {
@@ -200,11 +214,15 @@ void SceneReader::parsePrimitive(SceneLexer& lex, const Context& ctx) {
             throw InputError(loc, what + ": undefined reference '" + ref + "'");
         }
         Primitive copy = scene_.prims[it->second];
+        const int32_t targetModifier = copy.modifier;
         copy.name = p.name;
         copy.loc = loc;
+        copy.aliasOf = it->second;
+        copy.aliasNamed = false;
         if (modName != kInherit) {
             copy.modifier = resolveModifier(modName, loc);
             copy.modifierName = modName;
+            copy.aliasNamed = copy.modifier != targetModifier;
         }
         add(std::move(copy));
         return;

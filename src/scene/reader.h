@@ -23,6 +23,11 @@ using CommandHook =
 struct LoadOptions {
     CommandHook commandHook;  // default: none, every command goes to /bin/sh -c
     int maxCommandDepth = 32; // commands whose output runs commands, and so on
+    // Number objects and resolve modifier names exactly as RADIANCE does, as oconv must
+    // for its octree: records the renderers skip (a polygon without area) are kept, and
+    // a modifier redefined equal to the one its name stands for keeps the earlier one
+    // (modifier_table.h).
+    bool radianceNumbering = false;
 };
 
 // Accumulates primitives from any number of inputs, in order, into one Scene.
@@ -53,6 +58,7 @@ private:
     void runCommand(const std::string& command, const SourceLoc& loc, int depth);
     int32_t resolveModifier(const std::string& name, const SourceLoc& loc) const;
     void add(Primitive p);
+    void index(int32_t i);  // enters record i in the name tables
 
     LoadOptions options_;
     Scene scene_;

@@ -1,6 +1,8 @@
-// The frozen scene file that our oconv writes (header FORMAT=radphoton_scene, then a
-// versioned binary payload of all records), and the little we read of RADIANCE's own
-// octrees (FORMAT=Radiance_octree): the scene file names a non-frozen octree lists.
+// Our own frozen scene file (header FORMAT=radphoton_scene, then a versioned binary
+// payload of all records), which oconv wrote before it wrote RADIANCE's octrees; it is
+// still read (and written by pkgBSDF). And what loading needs of RADIANCE's octrees
+// (FORMAT=Radiance_octree, which our oconv now writes: octree_file.h): the scene file
+// names a non-frozen octree lists, a frozen octree's objects, the cube.
 // Deciding which kind a file is, and loading it, is loadScene() in scene_load.h.
 #pragma once
 

@@ -172,14 +172,22 @@ TEST(SceneFile, LoadsRadianceOctreeScenes) {
     EXPECT_THROW(loadScene({pic}), InputError);
 }
 
-TEST(SceneFile, OconvAddsToExistingSceneFile) {
+TEST(SceneFile, OconvAddsToExistingOctree) {
     TempDir dir;
     std::string a = dir.file("a.rad", "void plastic m 0 0 5 1 1 1 0 0\n");
     std::string b = dir.file("b.rad", "m sphere s 0 0 4 0 0 0 1\n");
-    std::string first = oconvOutput({{a}, "", "oconv a.rad", {}});
+    OconvRequest r;
+    r.files = {a};
+    r.commandLine = "oconv a.rad";
+    std::string first = oconvOutput(r);
     std::string oct = dir.file("a.oct", first);
-    std::string second = oconvOutput({{b}, oct, "oconv -i a.oct b.rad", {}});
-    EXPECT_EQ(second.rfind("#?RADIANCE\noconv a.rad\noconv -i a.oct b.rad\nFORMAT=radphoton_scene\n\n", 0), 0u);
+    r.files = {b};
+    r.addTo = oct;
+    r.commandLine = "oconv -i a.oct b.rad";
+    std::string second = oconvOutput(r);
+    EXPECT_EQ(second.rfind(
+                  "#?RADIANCE\noconv a.rad\noconv -i a.oct b.rad\nFORMAT=Radiance_octree\n\n", 0),
+              0u);
     Scene s = loadScene({dir.file("b.oct", second)});
     ASSERT_EQ(s.prims.size(), 2u);
     EXPECT_EQ(s.prims[1].modifier, 0);  // b.rad used a.rad's modifier

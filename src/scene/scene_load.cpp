@@ -85,10 +85,6 @@ Scene loadScene(const std::vector<std::string>& paths, const LoadOptions& option
     return scene;
 }
 
-namespace {
-
-// Where an instance's octree or a mesh primitive's mesh file is, as RADIANCE's getpath
-// finds it; an InputError at the primitive if nowhere.
 std::string findPlacedFile(const Primitive& p, const std::vector<std::string>& dirs) {
     const std::string what = p.type == PrimType::Mesh ? "mesh" : "octree";
     const std::string header = std::string(primTypeName(p.type)) + " '" + p.name + "': ";
@@ -97,6 +93,8 @@ std::string findPlacedFile(const Primitive& p, const std::vector<std::string>& d
     if (!found) throw InputError(p.loc, header + "cannot find " + what + " file '" + p.sargs[0] + "'");
     return *found;
 }
+
+namespace {
 
 bool isLightType(PrimType t) {
     return t == PrimType::Light || t == PrimType::Illum || t == PrimType::Glow ||
@@ -163,6 +161,7 @@ private:
         object.firstPrim = int32_t(scene_.prims.size());
         for (Primitive q : contents.prims) {
             if (q.modifier != kVoid) q.modifier += object.firstPrim;
+            if (q.aliasOf >= 0) q.aliasOf += object.firstPrim;
             q.object = index;
             scene_.prims.push_back(std::move(q));
         }
@@ -205,26 +204,6 @@ void attachObjects(Scene& scene, const std::vector<std::string>& searchPath,
                    const LoadOptions& options) {
     ObjectLoader loader(scene, searchPath, options);
     loader.placeAll(0, scene.ownCount());
-}
-
-std::string oconvOutput(const OconvRequest& request, const LoadOptions& options) {
-    SceneReader reader(options);
-    std::vector<std::string> lines;
-    if (!request.addTo.empty()) {
-        lines = loadOne(reader, request.addTo);
-        // The old FORMAT line is replaced by ours at the end.
-        std::erase_if(lines, [](const std::string& l) { return l.rfind("FORMAT=", 0) == 0; });
-    }
-    for (const auto& f : request.files) loadOne(reader, f);
-    // RADIANCE's oconv reads what instances and meshes place (for their bounds): a file
-    // it cannot find stops it here, not only the renderer later.
-    const std::vector<std::string> dirs = request.searchPath.empty()
-                                              ? calc::defaultSearchPath(projectLibDir())
-                                              : request.searchPath;
-    for (const Primitive& p : reader.scene().prims)
-        if (p.type == PrimType::Instance || p.type == PrimType::Mesh) findPlacedFile(p, dirs);
-    lines.push_back(request.commandLine);
-    return sceneFileBytes(reader.scene(), lines);
 }
 
 }  // namespace rp

@@ -3,6 +3,8 @@
 // apart by header, not by extension. Also the work behind the oconv tool.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,18 +29,30 @@ Scene loadScene(const std::vector<std::string>& paths, const LoadOptions& option
 void attachObjects(Scene& scene, const std::vector<std::string>& searchPath,
                    const LoadOptions& options = {});
 
+// Where an instance's octree or a mesh primitive's mesh file is, as RADIANCE's getpath
+// finds it on `dirs`; an InputError at the primitive if nowhere.
+std::string findPlacedFile(const Primitive& p, const std::vector<std::string>& dirs);
+
 struct OconvRequest {
     std::vector<std::string> files;  // scene descriptions, "-" or "!command"
-    std::string addTo;               // -i: existing scene file or octree to add to
+    std::string addTo;               // -i: existing RADIANCE octree to add to
     std::string commandLine;         // goes into the header, as RADIANCE's printargs
     // Where instance octrees and meshes are looked for (RADIANCE's getpath); empty: RAYPATH
     // or "." and the project's library.
     std::vector<std::string> searchPath;
+    bool frozen = false;  // -f: the objects go into the octree, not the file names
+    int objlim = 6;       // -n: objects in a leaf before it splits
+    int maxres = 16384;   // -r: the smallest leaf is the cube's side / maxres
+    // -b xmin ymin zmin size: the cube (grown by RADIANCE's margin) instead of the bounds.
+    std::optional<std::array<double, 4>> bounds;
 };
 
-// What oconv writes: the header (an -i input's header lines first, as RADIANCE's oconv
-// copies them) and the frozen scene. As RADIANCE's oconv, it stops at an instance or mesh
-// whose file cannot be found (InputError at the primitive).
+// What RADIANCE's oconv writes (oconv_output.cpp): a RADIANCE octree, header first (an -i
+// input's header lines, then the command line, then FORMAT=Radiance_octree). Not frozen,
+// it names the scene files, which readers read again; frozen (-f, standard input among
+// the files, or -i on a frozen octree) it holds the objects. An -i input must be a
+// RADIANCE octree (a scene file of an older oconv is an InputError). Stops at an instance
+// or mesh whose file cannot be found or read (InputError at the primitive).
 std::string oconvOutput(const OconvRequest& request, const LoadOptions& options = {});
 
 }  // namespace rp

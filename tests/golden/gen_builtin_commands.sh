@@ -43,5 +43,5 @@ for f in inline pasted; do
   "$RP_BIN/ra_png" -e 1 $f.hdr $f.png
 done
 cmp inline.png pasted.png
-grep -q "^FORMAT=radphoton_scene" inline.oct
+grep -q "^FORMAT=Radiance_octree" inline.oct
 echo "builtin generators: ok"

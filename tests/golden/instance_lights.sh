@@ -26,8 +26,11 @@ echo "$got" | grep -q '^0.000000e+00	0.000000e+00	0.000000e+00' || { echo "FAIL:
 err=$("$BIN/mkpmap" -apg x.pm 1k s.oct 2>&1); rc=$?
 echo "mkpmap: $err"
 [ $rc -ne 0 ] && echo "$err" | grep -q "no light sources" && [ ! -e x.pm ] || { echo "FAIL: mkpmap"; fail=1; }
+# A mesh places a compiled mesh (oconv reads its cube, as RADIANCE's does).
+cp "${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/tests/data/obj2mesh/cube.rtm" bulb.rtm
 for t in instance mesh; do
-    printf "void light bright 0 0 3 10 10 10\nbright $t m 1 bulb.oct 0 0\n" > l$t.rad
+    f=bulb.oct; [ $t = mesh ] && f=bulb.rtm
+    printf "void light bright 0 0 3 10 10 10\nbright $t m 1 $f 0 0\n" > l$t.rad
     "$BIN/oconv" l$t.rad > l$t.oct
     err=$("$BIN/rtrace" -h l$t.oct < /dev/null 2>&1); rc=$?
     echo "$err"

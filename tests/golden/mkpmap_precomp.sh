@@ -5,10 +5,10 @@
 # "N precomputed" progress line, and -apC ignoring other maps with a warning.
 set -u
 BIN="${RP_BIN:?RP_BIN not set}"
-SHARED="${RP_SHARED_DIR:-${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/../shared}"
-FURNACE="$SHARED/validation/furnace/scene.rad"
-CONTRIB="$SHARED/validation/contrib/scene.rad"
-[ -f "$FURNACE" ] && [ -f "$CONTRIB" ] || { echo "SKIP: no shared/validation scenes"; exit 0; }
+. "$(dirname "$0")/lib/shared.sh"
+require_shared validation/contrib/scene.rad
+FURNACE="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/tests/data/furnace/scene.rad"
+CONTRIB="$RP_SHARED_DIR/validation/contrib/scene.rad"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1

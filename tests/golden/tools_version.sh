@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Every tool answers -version with one line that starts as RADIANCE 5.4's (scripts such
+# as honeybee-radiance read the second word as the version, the third as a date), then
+# names radphoton and the commit; and -defaults on every tool prints something and
+# exits 0. mkpmap's -defaults lists its real defaults in RADIANCE's layout.
+set -euo pipefail
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fail=0
+tools=$(cd "$RP_BIN" && ls falsecolor gen* getinfo mkpmap obj2mesh oconv pmapdump pvalue \
+        ra_png rcontrib rpict rpreview rtrace rvu xform 2> /dev/null)
+[ "$(echo "$tools" | wc -w)" -ge 22 ] || { echo "FAIL: tools missing from $RP_BIN"; exit 1; }
+for t in $tools; do
+    rc=0; "$RP_BIN/$t" -version > "$tmp/out" 2> "$tmp/err" < /dev/null || rc=$?
+    if [ "$rc" -ne 0 ] || [ "$(wc -l < "$tmp/out")" -ne 1 ] || [ -s "$tmp/err" ] ||
+       ! grep -Eq '^RADIANCE 5\.4a ([0-9]{4}-[0-9]{2}-[0-9]{2}|unknown) radphoton [0-9.]+ \(.+\)$' "$tmp/out"; then
+        echo "FAIL $t -version: rc=$rc, out: $(cat "$tmp/out"), err: $(cat "$tmp/err")"; fail=1
+    fi
+    rc=0; "$RP_BIN/$t" -defaults > "$tmp/out" 2> "$tmp/err" < /dev/null || rc=$?
+    if [ "$rc" -ne 0 ] || [ ! -s "$tmp/out" ]; then
+        echo "FAIL $t -defaults: rc=$rc, err: $(cat "$tmp/err")"; fail=1
+    fi
+done
+"$RP_BIN/mkpmap" -defaults > "$tmp/mk"
+for line in '^-apD 0\.250000' '^-apM 4' '^-apm 5000' '^-bv\+' '^-dp  1000\.0' '^-ds  0\.010000' \
+            '^-fo-' '^-n   1' '^-apr 0'; do
+    grep -Eq "$line" "$tmp/mk" || { echo "FAIL mkpmap -defaults lacks $line"; fail=1; }
+done
+# Values given before -defaults are the ones listed, as RADIANCE's rtrace -defaults does.
+"$RP_BIN/mkpmap" -apD 0.5 -n 3 -defaults > "$tmp/mk"
+grep -q '^-apD 0\.500000' "$tmp/mk" && grep -q '^-n   3' "$tmp/mk" ||
+    { echo "FAIL mkpmap -defaults ignores earlier options"; fail=1; }
+exit $fail
