@@ -490,3 +490,43 @@ WgmdInputs wgmdHitInputs(const MaterialCalc& calc, MaterialCalcEvaluator& ev,
 }
 
 }  // namespace rp::material
+
+namespace rp::material {
+
+void prepareHit(const MaterialCalc& calc, MaterialCalcEvaluator& ev, int32_t material,
+                const MaterialParams& params, const PatternPoint& at, SurfacePoint& sp,
+                const std::function<Color(const Vec3&)>* directional) {
+    if (!calc.uses(material)) return;
+    ev.setHit(material, at, sp.normal, sp.pattern);
+    if (std::holds_alternative<AnisoParams>(params) ||
+        std::holds_alternative<AshikParams>(params)) {
+        sp.uDir = ev.anisoU();
+    } else if (std::holds_alternative<BrtdParams>(params)) {
+        Color refl, trans;
+        ev.brtdSpecular(refl, trans);
+        sp.brtdSpecularReflection = refl;
+        sp.brtdSpecularTransmission = trans;
+        sp.directional = directional;
+    } else if (std::holds_alternative<FuncParams>(params)) {
+        sp.directional = directional;
+    } else if (std::holds_alternative<BsdfParams>(params)) {
+        ev.setBsdfInputs(sp);
+    }
+}
+
+bool photonScatterReadsFunctions(PrimType type) {
+    switch (type) {
+        case PrimType::Plastic2:
+        case PrimType::Metal2:
+        case PrimType::Trans2:
+        case PrimType::Ashik2:
+        case PrimType::BRTDfunc:
+        case PrimType::BSDF:
+        case PrimType::ABSDF:
+            return true;
+        default:
+            return false;
+    }
+}
+
+}  // namespace rp::material

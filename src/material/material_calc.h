@@ -168,4 +168,20 @@ WgmdInputs wgmdHitInputs(const MaterialCalc& calc, MaterialCalcEvaluator& ev,
                          SurfaceChainEvaluator& chains, int32_t material, const WgmdParams& m,
                          const PatternPoint& at, const SurfacePoint& sp, Rng& rng);
 
+// What a material reads from its functions at a hit, evaluated into sp: the u
+// orientation of plastic2/metal2/trans2/ashik2, BRTDfunc's specular colours, a BSDF's
+// data, thickness and up vector; and, for BRTDfunc and the *func/*data types, the
+// directional part through `directional` (a callback reading `ev` as set here; null when
+// only photons are scattered, which do not use it). The one preparation backward shading
+// and photon scattering share, so both see the same orientation. Nothing for a material
+// without functions (calc.uses(material) false).
+void prepareHit(const MaterialCalc& calc, MaterialCalcEvaluator& ev, int32_t material,
+                const MaterialParams& params, const PatternPoint& at, SurfacePoint& sp,
+                const std::function<Color(const Vec3&)>* directional);
+
+// True for the types whose photon scattering reads what prepareHit evaluates (the
+// anisotropic types, BRTDfunc, BSDF and aBSDF); the *func/*data types scatter photons
+// by their plain parameters.
+bool photonScatterReadsFunctions(PrimType type);
+
 }  // namespace rp::material

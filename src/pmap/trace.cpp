@@ -58,14 +58,11 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
     bool sensorFound = false;
     for (size_t i = 0; i < prims.size(); ++i) {
         const Primitive& p = prims[i];
-        // Only BRTDfunc's and the BSDFs' scattering read their functions.
-        const bool readsFunctions = p.type == PrimType::BRTDfunc || p.type == PrimType::BSDF ||
-                                    p.type == PrimType::ABSDF;
-        if (isModifier(p.type) && readsFunctions) {
+        if (isModifier(p.type) && material::photonScatterReadsFunctions(p.type)) {
             if (materialCalc_ && materialCalc_->uses(int32_t(i)))
                 roles_[i] |= kFunctions;
             else  // a BSDF's data comes through MaterialCalc: callers must pass it
-                RP_CHECK(p.type == PrimType::BRTDfunc);
+                RP_CHECK(p.type != PrimType::BSDF && p.type != PrimType::ABSDF);
         }
         if (!isModifier(p.type) || !sensors.count(p.name)) continue;
         if (p.type != PrimType::Antimatter)
@@ -152,21 +149,13 @@ int32_t PhotonTracer::resolveChain(int32_t modifier, const Hit& hit, const Vec3&
     return l.material;
 }
 
-void PhotonTracer::setFunctionValues(int32_t material, const Hit& hit, const Vec3& dir,
+void PhotonTracer::setFunctionValues(int32_t material, const material::MaterialParams& params,
+                                     const Hit& hit, const Vec3& dir,
                                      std::optional<material::MaterialCalcEvaluator>& eval,
                                      material::SurfacePoint& sp) const {
     if (!eval) eval.emplace(*materialCalc_);
-    const auto at = material::PatternPoint::atHit(dir, hit);
-    eval->setHit(material, at, sp.normal, sp.pattern);
-    const PrimType t = scene_.prims[size_t(material)].type;
-    if (t == PrimType::BSDF || t == PrimType::ABSDF) {
-        eval->setBsdfInputs(sp);
-        return;
-    }
-    Color refl, trans;
-    eval->brtdSpecular(refl, trans);
-    sp.brtdSpecularReflection = refl;
-    sp.brtdSpecularTransmission = trans;
+    material::prepareHit(*materialCalc_, *eval, material, params,
+                         material::PatternPoint::atHit(dir, hit), sp, nullptr);
 }
 
 bool PhotonTracer::inRegions(const Vec3& p) const {
@@ -331,10 +320,9 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     bool firstSegment = true;
     double travelled = 0;
     material::ClipSet clip;
-    // Set per hit below (setSurfaceHit, pattern, normal); its other fields keep their
-    // defaults, since scattering only reads it. One per thread: default-constructing
-    // its ~220 bytes per photon was a memset call on every path.
-    static thread_local material::SurfacePoint sp;
+    // One per path, set at each hit (setSurfaceHit, pattern, normal, and prepareHit for
+    // what a material's functions give); its other fields keep their defaults.
+    material::SurfacePoint sp;
     std::optional<material::MaterialCalcEvaluator> calcEval;  // made at the first use
     std::optional<material::SurfaceChainEvaluator> chainEval;  // idem
     auto causticNow = [&] {
@@ -440,7 +428,7 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
             sp.normal = hit->front ? n : -n;
         }
         const bool functions = role & kFunctions;
-        if (functions) setFunctionValues(matIndex, *hit, ray.dir, calcEval, sp);
+        if (functions) setFunctionValues(matIndex, *mi.params, *hit, ray.dir, calcEval, sp);
         material::WgmdInputs wgmd;  // WGMDfunc: its expressions and component modifiers
         const auto* wgmdParams = std::get_if<material::WgmdParams>(&*mi.params);
         if (wgmdParams && materialCalc_) {

@@ -128,8 +128,8 @@ private:
                          Rng& storeRng, const std::array<double, kNumPhotonMapTypes>& prob,
                          PhotonBins& out) const;
 
-    void setFunctionValues(int32_t material, const Hit& hit, const Vec3& dir,
-                           std::optional<material::MaterialCalcEvaluator>& eval,
+    void setFunctionValues(int32_t material, const material::MaterialParams& params, const Hit& hit,
+                           const Vec3& dir, std::optional<material::MaterialCalcEvaluator>& eval,
                            material::SurfacePoint& sp) const;
 
     const Scene& scene_;

@@ -82,22 +82,8 @@ Renderer::Context::Context(const Renderer& r, const Impl& i)
 void Renderer::Context::applyMaterialCalc(int32_t material, const Hit& hit, const Vec3& dir,
                                           material::SurfacePoint& sp) {
     if (!impl.materialCalc.uses(material)) return;
-    materialCalc.setHit(material, patternPoint(hit, dir), sp.normal, sp.pattern);
-    const material::MaterialParams& p = *impl.material(material).params;
-    if (std::holds_alternative<material::AnisoParams>(p) ||
-        std::holds_alternative<material::AshikParams>(p)) {
-        sp.uDir = materialCalc.anisoU();
-    } else if (std::holds_alternative<material::BrtdParams>(p)) {
-        Color refl, trans;
-        materialCalc.brtdSpecular(refl, trans);
-        sp.brtdSpecularReflection = refl;
-        sp.brtdSpecularTransmission = trans;
-        sp.directional = &directional;
-    } else if (std::holds_alternative<material::FuncParams>(p)) {
-        sp.directional = &directional;
-    } else if (std::holds_alternative<material::BsdfParams>(p)) {
-        materialCalc.setBsdfInputs(sp);
-    }
+    material::prepareHit(impl.materialCalc, materialCalc, material, *impl.material(material).params,
+                         patternPoint(hit, dir), sp, &directional);
 }
 
 material::ChainResult Renderer::Context::resolve(int32_t modifier, const Hit& hit,
