@@ -28,7 +28,7 @@ using radgeom::Vec;
 using UV = std::array<double, 2>;
 
 constexpr double kCosTol = 0.999995;   // tmesh.h COSTOL: normals this close are "flat"
-constexpr size_t kMaxSet = 511;        // object.h MAXSET
+using octree::kMaxSet;
 constexpr int kHasN = 2, kHasUV = 4, kHasV = 1;
 
 // A triangle once accepted: its face plane (as face.c computes it) and mesh data.

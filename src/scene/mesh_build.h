@@ -8,23 +8,18 @@
 #include <vector>
 
 #include "scene/mesh_write.h"
+#include "scene/octree_nodes.h"
 #include "util/dir_code.h"
 
 namespace rp::meshbuild {
 
-// An octree node as RADIANCE codes it: kEmpty, a tree (index >= 0 into Octree::trees),
-// or a leaf set (value <= -2, set index -value-2 into Octree::sets).
-using Node = int32_t;
-constexpr Node kEmpty = -1;
-inline bool isTree(Node n) { return n >= 0; }
-inline bool isLeaf(Node n) { return n < kEmpty; }
-inline size_t setIndex(Node n) { return static_cast<size_t>(-n - 2); }
-
-struct Octree {
-    Node root = kEmpty;
-    std::vector<std::array<Node, 8>> trees;
-    std::vector<std::vector<int32_t>> sets;  // ascending IDs
-};
+// The triangle octree: RADIANCE's node coding (leaf sets hold triangle IDs).
+using octree::isLeaf;
+using octree::isTree;
+using octree::kEmpty;
+using octree::Node;
+using octree::setIndex;
+using Octree = octree::OctreeNodes;
 
 // One patch of up to 256 vertices (mesh.h MESHPATCH), with its triangles.
 struct Patch {

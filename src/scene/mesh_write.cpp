@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "scene/mesh_build.h"
+#include "scene/octree_nodes.h"
 #include "util/file_write.h"
 #include "util/portable_io.h"
 #include "scene/radiance_objects.h"
@@ -22,21 +23,6 @@ using meshbuild::Patch;
 
 constexpr int kObjSize = 4;                  // sizeof(OBJECT) in RADIANCE's standard build
 constexpr int kMeshMagic = 1 * 8 + 311;      // mesh.h MESHMAGIC (MAXOBJSIZ 8)
-constexpr int kTreeEmpty = 0, kTreeFull = 1, kTreeNode = 2;  // octree.h OT_*
-
-void putTree(std::string& out, const meshbuild::Octree& t, Node n) {
-    if (meshbuild::isTree(n)) {
-        out.push_back(static_cast<char>(kTreeNode));
-        for (int i = 0; i < 8; ++i) putTree(out, t, t.trees[n][i]);
-    } else if (meshbuild::isLeaf(n)) {
-        out.push_back(static_cast<char>(kTreeFull));
-        const auto& set = t.sets[meshbuild::setIndex(n)];
-        putInt(out, static_cast<int64_t>(set.size()), kObjSize);
-        for (int32_t id : set) putInt(out, id, kObjSize);
-    } else {
-        out.push_back(static_cast<char>(kTreeEmpty));
-    }
-}
 
 void putPatch(std::string& out, const Patch& p) {
     putInt(out, 1 | (p.hasNorm ? 2 : 0) | (p.hasUV ? 4 : 0), 1);
@@ -152,7 +138,7 @@ std::string encodeMeshFile(const MeshSource& source, const MeshWriteOptions& opt
         putFlt(out, m.uvLimits[0][i]);
         putFlt(out, m.uvLimits[1][i]);
     }
-    putTree(out, m.tree, m.tree.root);
+    octree::putOctreeNodes(out, m.tree, kObjSize);
     Scene used;
     used.prims.assign(source.materials.prims.begin(),
                       source.materials.prims.begin() + m.nmats);

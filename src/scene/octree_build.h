@@ -9,26 +9,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "scene/octree_nodes.h"
 #include "scene/octree_shapes.h"
 
 namespace rp::octree {
 
-// A node as RADIANCE codes it: kEmpty, a tree (index >= 0 into Octree::trees) or a leaf
-// (value <= -2: set -value-2 in Octree::sets).
-using Node = int32_t;
-constexpr Node kEmpty = -1;
-inline bool isTree(Node n) { return n >= 0; }
-inline bool isLeaf(Node n) { return n < kEmpty; }
-inline size_t setIndex(Node n) { return static_cast<size_t>(-n - 2); }
-inline Node leafNode(size_t set) { return -static_cast<Node>(set) - 2; }
-
-constexpr size_t kMaxSet = 511;  // object.h MAXSET: the most objects a leaf holds
-
-struct Octree {
+struct Octree : OctreeNodes {
     Cube cube;
-    Node root = kEmpty;
-    std::vector<std::array<Node, 8>> trees;
-    std::vector<std::vector<int32_t>> sets;  // object numbers, ascending
 };
 
 struct BuildOptions {

@@ -14,35 +14,12 @@ using namespace octree;
 
 constexpr int kObjSize = 4;             // sizeof(OBJECT) in RADIANCE's standard build
 constexpr int kOctMagic = 4 * 8 + 251;  // octree.h OCTMAGIC (MAXOBJSIZ 8)
-constexpr int kTreeEmpty = 0, kTreeFull = 1, kTreeNode = 2;  // octree.h OT_*
 constexpr size_t kMaxDepth = 64;  // deeper than double precision allows: damage
 
 std::string g12(double x) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.12g", x);
     return buf;
-}
-
-// writeoct.c puttree(), pre-order, with an explicit stack: each entry is a node still to
-// write.
-void putTree(std::string& out, const Octree& t) {
-    std::vector<Node> stack{t.root};
-    while (!stack.empty()) {
-        const Node n = stack.back();
-        stack.pop_back();
-        if (isTree(n)) {
-            out.push_back(char(kTreeNode));
-            const auto& kids = t.trees[size_t(n)];
-            for (size_t i = 8; i-- > 0;) stack.push_back(kids[i]);
-        } else if (isLeaf(n)) {
-            out.push_back(char(kTreeFull));
-            const auto& set = t.sets[setIndex(n)];
-            portable::putInt(out, int64_t(set.size()), kObjSize);
-            for (int32_t o : set) portable::putInt(out, o, kObjSize);
-        } else {
-            out.push_back(char(kTreeEmpty));
-        }
-    }
 }
 
 // readoct.c gettree(): the pre-order nodes into `t`, sets checked against the count.
@@ -92,7 +69,7 @@ std::string encodeRadianceOctree(const Octree& tree, int64_t objectCount,
         for (const std::string& f : files) putStr(out, f);
     putStr(out, "");
     putInt(out, objectCount, kObjSize);
-    putTree(out, tree);
+    putOctreeNodes(out, tree, kObjSize);
     if (objects) encodeRadianceObjects(*objects, kObjSize, out);
     return out;
 }
