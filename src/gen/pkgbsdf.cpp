@@ -7,7 +7,7 @@
 #include "gen/gen_text.h"
 #include "gen/mgf2rad.h"
 #include "scene/reader.h"
-#include "scene/scene_file.h"
+#include "scene/scene_load.h"
 #include "util/error.h"
 #include "util/file_write.h"
 
@@ -73,7 +73,13 @@ std::string pkgBsdfScene(const bsdf::BsdfData& b, bool instance, const std::stri
 
 void writeBsdfOctree(const std::string& geometry, const std::string& octPath,
                      const std::string& headerLine) {
-    saveSceneFile(octPath, parseScene(geometry, octPath), {headerLine});
+    // RADIANCE's pkgBSDF pipes the geometry into `oconv -f -`: a frozen RADIANCE octree.
+    OconvRequest request;
+    request.files = {"-"};
+    request.standardInput = geometry;
+    request.frozen = true;
+    request.commandLine = headerLine;
+    writeFileAtomically(octPath, oconvOutput(request));
 }
 
 namespace {
@@ -117,7 +123,7 @@ std::string pkgBSDF(const std::vector<std::string>& args, std::vector<std::strin
         std::string scene = pkgBsdfScene(*b, instance, xml, args[0]);
         if (instance && !b->mgf.empty())
             writeBsdfOctree(pkgBsdfGeometry(*b, xml, args[0]),
-                            calc::inDirectory(from, b->name + ".oct"), args[0] + " -i " + xml);
+                            calc::inDirectory(from, b->name + ".oct"), "oconv -f -");
         if (toStdout)
             out += scene;
         else

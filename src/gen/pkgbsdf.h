@@ -24,8 +24,8 @@ std::string pkgBsdfScene(const bsdf::BsdfData& bsdf, bool instance, const std::s
 std::string pkgBsdfGeometry(const bsdf::BsdfData& bsdf, const std::string& xmlArg,
                             const std::string& program = "pkgBSDF");
 
-// Freezes `geometry` (scene text) into our scene file at `octPath`, written atomically
-// (what RADIANCE's "mgf2rad ... | oconv -f - > NAME.oct" makes).
+// Freezes `geometry` (scene text) into a RADIANCE octree at `octPath`, written atomically
+// (what RADIANCE's "mgf2rad ... | oconv -f - > NAME.oct" makes), `headerLine` its command.
 void writeBsdfOctree(const std::string& geometry, const std::string& octPath,
                      const std::string& headerLine);
 

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "gen/test_reference.h"
@@ -84,6 +85,10 @@ TEST(PkgBsdf, InstanceLinePlacesAFrozenOctreeOfTheGeometry) {
     TempDir dir;
     std::string geometry = pkgBsdfGeometry(b, "blinds_klems.xml");
     writeBsdfOctree(geometry, dir.file("blinds_klems.oct"), "pkgBSDF -i blinds_klems.xml");
+    // A frozen RADIANCE octree, which RADIANCE's tools read as well as ours.
+    std::ifstream oct(dir.file("blinds_klems.oct"), std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(oct), std::istreambuf_iterator<char>()};
+    EXPECT_NE(bytes.find("\nFORMAT=Radiance_octree\n"), std::string::npos);
     Scene frozen = loadScene({dir.file("blinds_klems.oct")});
     size_t polygons = 0;
     for (const Primitive& p : frozen.prims) polygons += p.type == PrimType::Polygon;

@@ -140,6 +140,10 @@ private:
 
     // A scene description: text, standard input or a command, never an octree.
     void readInput(const std::string& f) {
+        if (f == "-" && request_.standardInput) {
+            reader_.readText(*request_.standardInput, "");  // "" names standard input
+            return;
+        }
         if (f == "-" || f[0] == '!') {
             reader_.readFile(f);
             return;

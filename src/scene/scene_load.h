@@ -45,6 +45,9 @@ struct OconvRequest {
     int maxres = 16384;   // -r: the smallest leaf is the cube's side / maxres
     // -b xmin ymin zmin size: the cube (grown by RADIANCE's margin) instead of the bounds.
     std::optional<std::array<double, 4>> bounds;
+    // What "-" among the files reads instead of standard input (pkgBSDF's geometry, which
+    // RADIANCE's pkgBSDF pipes into `oconv -f -`).
+    std::optional<std::string> standardInput;
 };
 
 // What RADIANCE's oconv writes (oconv_output.cpp): a RADIANCE octree, header first (an -i
