@@ -14,6 +14,7 @@
 
 #include "gen/test_reference.h"
 #include "util/error.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::gen {
 namespace {
@@ -124,8 +125,8 @@ TEST(Genbox, InwardMirrorsTheBox) {
 // The Cornell scene pastes "genbox mirror_mat mbox 1.5 1.5 3.0 | xform -t -0.75 -0.75 0
 // -rz 20 -t 1.5 3.6 0"; apply that transform by hand and compare every vertex.
 TEST(Genbox, MatchesCornellValidationScene) {
+    RP_REQUIRE_SHARED("validation/cornell/scene.rad");
     std::ifstream f(std::string(RP_SHARED_DIR) + "/validation/cornell/scene.rad");
-    if (!f) GTEST_SKIP() << "shared validation scenes not available";
     std::map<std::string, std::vector<Vec3>> ref;
     std::string line;
     while (std::getline(f, line)) {

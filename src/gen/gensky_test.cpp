@@ -12,6 +12,7 @@
 #include "gen/cie_sky.h"
 #include "gen/sun_position.h"
 #include "util/error.h"
+#include "util/shared_for_tests.h"
 
 namespace rp::gen {
 namespace {
@@ -79,8 +80,8 @@ TEST(SunPosition, MichalskyAlmanacKnownValues) {
 // The daylight validation scene pastes RADIANCE 5.4's "gensky 3 21 12 -a 47 -o -8 -m -15
 // +s"; our output must equal those lines exactly.
 TEST(Gensky, ReproducesDaylightValidationScene) {
+    RP_REQUIRE_SHARED("validation/daylight/scene.rad");
     std::ifstream f(std::string(RP_SHARED_DIR) + "/validation/daylight/scene.rad");
-    if (!f) GTEST_SKIP() << "shared validation scenes not available";
     std::string line, expected;
     bool in = false;
     int afterSkyfunc = -1;

@@ -16,6 +16,7 @@
 #include "gen/test_reference.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
+#include "util/shared_for_tests.h"
 #include "util/temp_dir_for_tests.h"
 
 namespace rp::gen {
@@ -100,7 +101,7 @@ TEST(PkgBsdf, InstanceLinePlacesAFrozenOctreeOfTheGeometry) {
 // module, gives RADIANCE's scene (the reference above) and, with -i, NAME.oct.
 TEST(PkgBsdf, CommandLoadsTheXmlAlongRaypath) {
     std::string dir = std::string(RP_SHARED_DIR) + "/validation/bsdf";
-    if (!std::ifstream(dir + "/blinds_klems.xml")) GTEST_SKIP() << "no " << dir;
+    RP_REQUIRE_SHARED("validation/bsdf/blinds_klems.xml");
     const std::vector<std::string> raypath{dir};
     std::vector<std::string> w;
     std::string got = pkgBSDF({"pkgBSDF", "-s", "blinds_klems.xml"}, w, raypath);

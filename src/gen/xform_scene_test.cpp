@@ -11,6 +11,7 @@
 
 #include "gen/xform_format.h"
 #include "scene/reader.h"
+#include "util/shared_for_tests.h"
 
 namespace rp {
 namespace {
@@ -358,8 +359,8 @@ TEST(Xform, CornellMirrorBox) {
         "       1.0517456419      2.63871542692                  0\n";
     EXPECT_EQ(compact.substr(0, expected.size()), expected);
 
+    RP_REQUIRE_SHARED("validation/cornell/scene.rad");
     std::ifstream ref(std::string(RP_SHARED_DIR) + "/validation/cornell/scene.rad");
-    if (!ref) GTEST_SKIP() << "no shared cornell scene";
     std::string refText, refBox;
     for (std::string line; std::getline(ref, line);) refText += line + "\n";
     size_t at = refText.find("mirror_mat polygon mbox.1540");

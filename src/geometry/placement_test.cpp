@@ -2,18 +2,18 @@
 // surfaces written out transformed; RADIANCE's modifier rules (o_instance.c, o_mesh.c);
 // nested instances; precision far from the origin and at millimetre scale; mesh vertex
 // normals and (u, v).
-#include "geometry/scene_geometry.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "geometry/scene_geometry.h"
 #include "scene/mesh_data.h"
 #include "scene/reader.h"
 #include "scene/scene_load.h"
 #include "util/rng.h"
+#include "util/shared_for_tests.h"
 #include "util/temp_dir_for_tests.h"
 
 namespace rp {
@@ -323,7 +323,7 @@ namespace {
 // vase.rad) in ../shared/radiance-tests/renders.
 TEST(Placement, SceneCubeAsRadianceOconv) {
     const std::string dir = std::string(RP_SHARED_DIR) + "/radiance-tests/renders";
-    if (!std::filesystem::exists(dir + "/porsche.octf")) GTEST_SKIP() << "no " << dir;
+    RP_REQUIRE_SHARED("radiance-tests/renders/porsche.octf");
     struct Case {
         const char* file;
         double cube[4];

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "scene/test_bytes.h"
+#include "util/shared_for_tests.h"
 
 namespace rp {
 namespace {
@@ -39,7 +40,7 @@ void expectVertex(const MeshData& m, size_t tri, int k, const RefVertex& ref) {
 // 1643 (patch 3's first single joiner, ID 3<<10|0x200) and 43209 (the last, patch 97's
 // third double joiner, ID 97<<10|0x302). `getinfo -d woman.rtm` printed the cube.
 TEST(MeshFile, ReadsWomanLikeRadiance) {
-    if (!std::filesystem::exists(kRenders)) GTEST_SKIP() << kRenders << " missing";
+    RP_REQUIRE_SHARED("radiance-tests/renders");
     MeshData m = readMeshFile(kRenders + "woman.rtm");
     EXPECT_EQ(m.path, kRenders + "woman.rtm");
     EXPECT_EQ(m.vertexCount(), 25075u);
@@ -86,7 +87,7 @@ TEST(MeshFile, ReadsWomanLikeRadiance) {
 // Same program on vase.rtm (obj2mesh vase.obj, no materials: every triangle void).
 // Triangles 422 and 470 are patch 0's first single and double joiners (IDs 0x200, 0x300).
 TEST(MeshFile, ReadsVaseLikeRadiance) {
-    if (!std::filesystem::exists(kRenders)) GTEST_SKIP() << kRenders << " missing";
+    RP_REQUIRE_SHARED("radiance-tests/renders");
     MeshData m = readMeshFile(kRenders + "vase.rtm");
     EXPECT_EQ(m.vertexCount(), 1617u);
     EXPECT_EQ(m.triangleCount(), 3072u);  // 444 single and 14 double joiners among them

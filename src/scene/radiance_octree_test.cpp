@@ -11,6 +11,7 @@
 #include "scene/scene_file.h"
 #include "scene/scene_load.h"
 #include "scene/test_bytes.h"
+#include "util/shared_for_tests.h"
 
 namespace rp {
 namespace {
@@ -25,7 +26,7 @@ const std::string kRenders = std::string(RP_SHARED_DIR) + "/radiance-tests/rende
 // cube, and for some objects ofun[otype].funame, oname, omod, the string arguments and
 // the real arguments with %.17g.
 TEST(RadianceOctree, LoadsPorscheLikeRadiance) {
-    if (!fs::exists(kRenders)) GTEST_SKIP() << kRenders << " missing";
+    RP_REQUIRE_SHARED("radiance-tests/renders");
     const std::string path = kRenders + "porsche.octf";
     Scene s = loadScene({path});
     ASSERT_EQ(s.prims.size(), 20445u);
@@ -76,7 +77,7 @@ TEST(RadianceOctree, LoadsPorscheLikeRadiance) {
 
 // getinfo -d porsche.octf / woman.rtm (RADIANCE 5.4) printed these cubes.
 TEST(RadianceOctree, CubeAsGetinfoPrintsIt) {
-    if (!fs::exists(kRenders)) GTEST_SKIP() << kRenders << " missing";
+    RP_REQUIRE_SHARED("radiance-tests/renders");
     auto binary = [](const std::string& file) {
         std::ifstream in(kRenders + file, std::ios::binary);
         std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
