@@ -160,9 +160,7 @@ void BM_Lookup1M(benchmark::State& state) {
     state.counters["found"] = double(found) / double(state.iterations());
     state.counters["short"] = double(lookup.shortLookups());
 }
-BENCHMARK(BM_Lookup1M)
-    ->ArgsProduct({{50, 500}, {0, 1}, {0, 1}})
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Lookup1M)->ArgsProduct({{50, 500}, {0, 1}, {0, 1}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Lookup1M)
     ->ArgsProduct({{50, 500}, {0}, {0, 1}})
     ->Unit(benchmark::kMicrosecond)

@@ -5,8 +5,8 @@
 // 0.15..0.45 m) on a jittered grid: 1,024,006 triangles, like furniture-heavy interiors.
 // "cornell": ../shared/validation/cornell/scene.rad (26 triangles, 1 sphere), rays from
 // random points inside the box.
-// "soup" scene (a stress case): 100,000 small random 12-sided polygons (radius 0.05..0.15 m, random position
-// and orientation) in a 20 m box; half are regular (convex: fanned into 10 triangles),
+// "soup" scene (a stress case): 100,000 small random 12-sided polygons (radius 0.05..0.15 m, random
+// position and orientation) in a 20 m box; half are regular (convex: fanned into 10 triangles),
 // half are 6-pointed stars (concave: ear-clipped into 10 triangles): 1,000,000 triangles.
 // (A 50 m box of 0.25..0.75 m polygons gave the same rays/s within noise.)
 // Rays: incoherent, origins uniform in the box, directions uniform on the sphere, fixed
@@ -76,7 +76,8 @@ Scene makeRoomScene() {
             auto at = [&](int iu, int iv) {
                 double ph = 2 * kPi * iu / kNu, th = kPi * iv / kNv;
                 return c + Vec3{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph),
-                                std::cos(th)} * r;
+                                std::cos(th)} *
+                               r;
             };
             for (int iv = 0; iv < kNv; ++iv)
                 for (int iu = 0; iu < kNu; ++iu)
@@ -134,9 +135,9 @@ Fixture makeFixture(const Scene& s, const Vec3& lo, const Vec3& hi) {
 // range(1): 0 = room scene, 1 = soup scene, 2 = ../shared/validation/cornell.
 Fixture& fixture(int which) {
     if (which == 2) {
-        static Fixture cornell = makeFixture(
-            loadScene({RP_SHARED_DIR "/validation/cornell/scene.rad"}), {0.01, 0.01, 0.01},
-            {5.49, 5.49, 5.49});
+        static Fixture cornell =
+            makeFixture(loadScene({RP_SHARED_DIR "/validation/cornell/scene.rad"}),
+                        {0.01, 0.01, 0.01}, {5.49, 5.49, 5.49});
         return cornell;
     }
     if (which == 0) {
@@ -174,8 +175,8 @@ void BM_ClosestHit(benchmark::State& state) {
     }
     long hits = 0;
     for (double x : t) hits += x >= 0;
-    state.counters["rays/s"] = benchmark::Counter(double(kBatch) * state.iterations(),
-                                                  benchmark::Counter::kIsRate);
+    state.counters["rays/s"] =
+        benchmark::Counter(double(kBatch) * state.iterations(), benchmark::Counter::kIsRate);
     state.counters["hit_fraction"] = double(hits) / kBatch;
     state.counters["threads_used"] = parallel ? tbb::info::default_concurrency() : 1;
 }
@@ -185,7 +186,9 @@ void BM_Occluded(benchmark::State& state) {
     bool parallel = state.range(0) != 0;
     std::vector<char> occ(kBatch);
     for (auto _ : state) {
-        auto one = [&](int i) { occ[i] = f.geometry->occluded(f.rays[i].origin, f.rays[i].dir, 10); };
+        auto one = [&](int i) {
+            occ[i] = f.geometry->occluded(f.rays[i].origin, f.rays[i].dir, 10);
+        };
         if (parallel)
             tbb::parallel_for(0, kBatch, one);
         else
@@ -194,8 +197,8 @@ void BM_Occluded(benchmark::State& state) {
     }
     long n = 0;
     for (char c : occ) n += c;
-    state.counters["rays/s"] = benchmark::Counter(double(kBatch) * state.iterations(),
-                                                  benchmark::Counter::kIsRate);
+    state.counters["rays/s"] =
+        benchmark::Counter(double(kBatch) * state.iterations(), benchmark::Counter::kIsRate);
     state.counters["occluded_fraction"] = double(n) / kBatch;
     state.counters["threads_used"] = parallel ? tbb::info::default_concurrency() : 1;
 }
@@ -204,9 +207,15 @@ void BM_Occluded(benchmark::State& state) {
 
 BENCHMARK(BM_Build)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
 // Args: {threads_all, scene} with scene 0 = room, 1 = soup, 2 = cornell.
-BENCHMARK(BM_ClosestHit)->ArgNames({"threads_all", "scene"})->ArgsProduct({{0, 1}, {0, 1, 2}})
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Occluded)->ArgNames({"threads_all", "scene"})->ArgsProduct({{0, 1}, {0, 1, 2}})
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ClosestHit)
+    ->ArgNames({"threads_all", "scene"})
+    ->ArgsProduct({{0, 1}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Occluded)
+    ->ArgNames({"threads_all", "scene"})
+    ->ArgsProduct({{0, 1}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 BENCHMARK_MAIN();

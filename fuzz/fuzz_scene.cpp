@@ -10,7 +10,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     rp::LoadOptions opt;
-    opt.commandHook = [](const std::string&, const rp::SourceLoc& loc) -> std::optional<std::string> {
+    opt.commandHook = [](const std::string&,
+                         const rp::SourceLoc& loc) -> std::optional<std::string> {
         throw rp::InputError(loc, "commands are off while fuzzing");
     };
     try {

@@ -32,14 +32,14 @@ int main(int argc, char** argv) {
             // RADIANCE mkpmap -e: diagnostics appended to the file.
             diagFile.open(opt.diagnosticsFile, std::ios::app);
             if (!diagFile) {
-                std::cerr << "mkpmap: cannot open diagnostics file " << opt.diagnosticsFile
-                          << '\n';
+                std::cerr << "mkpmap: cannot open diagnostics file " << opt.diagnosticsFile << '\n';
                 return rp::tools::endRun(*cluster, 2);
             }
             diag = &diagFile;
             *diag << "*** " << rp::commandLine(argc, argv) << '\n';
         }
-        rp::setWarningSink([diag](const std::string& m) { *diag << "mkpmap: warning: " << m << '\n'; });
+        rp::setWarningSink(
+            [diag](const std::string& m) { *diag << "mkpmap: warning: " << m << '\n'; });
         rp::tools::quietUnlessRoot(*cluster);
         const rp::pmap::MkpmapReport report = rp::pmap::runMkpmap(
             opt, rp::commandLine(argc, argv), *diag, rp::gen::builtinLoadOptions(), cluster.get());

@@ -38,8 +38,9 @@ int main(int argc, char** argv) {
     try {
         const auto requests = rp::pmap::parseDumpArgs(argc, argv);
         if (requests.front().options.ply && ::isatty(STDOUT_FILENO))
-            throw rp::InputError("refusing to write a binary PLY file to a terminal; "
-                                 "redirect standard output");
+            throw rp::InputError(
+                "refusing to write a binary PLY file to a terminal; "
+                "redirect standard output");
         std::ios::sync_with_stdio(false);
         rp::pmap::runPmapdump(requests, rp::commandLine(argc, argv), std::cout);
         return 0;

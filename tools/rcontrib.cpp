@@ -69,7 +69,8 @@ int run(RcontribOptions o, rp::Cluster& cluster) {
         if (bandwidth <= 0) bandwidth = kDefaultBandwidth;
         // RADIANCE compat (pmcontrib2.c initPmapContrib).
         if (size_t(bandwidth) < o.modifiers.size())
-            rp::warn("photon density estimate bandwidth too low, contributions may be underestimated");
+            rp::warn(
+                "photon density estimate bandwidth too low, contributions may be underestimated");
     }
     ContribTargets targets(scene, o.modifiers, o.definitions, o.contributions, sources);
     // Only the root writes (and with -r reads) the outputs.
@@ -90,8 +91,10 @@ int run(RcontribOptions o, rp::Cluster& cluster) {
     s.cluster = &cluster;
     // RADIANCE compat (rcontrib.c rcinit): -r continues binary records, or with -c 0
     // adds to the totals the outputs hold.
-    if (output && o.recover && o.accumulate <= 0) s.totals = output->reload();
-    else if (output && o.recover) s.skipRecords = output->recover();
+    if (output && o.recover && o.accumulate <= 0)
+        s.totals = output->reload();
+    else if (output && o.recover)
+        s.skipRecords = output->recover();
     runRcontrib(s, std::cin, output ? &*output : nullptr, tracer.contributions(targets));
     if (cluster.isRoot()) targets.badBins().report();
     return 0;

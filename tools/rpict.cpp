@@ -36,8 +36,7 @@ namespace {
 
 using namespace rp::render;
 
-int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile,
-        rp::Cluster& cluster) {
+int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp::Cluster& cluster) {
     std::vector<std::string> args = argVector(argc, argv);
     args.erase(args.begin());
     RpictCommand cmd = parseRpictCommand(args);
@@ -103,15 +102,16 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile,
     io.commandLine = commandLine;
     io.frameStarted = [&](int frame, const rp::View& view) {
         // RADIANCE compat (rpict.c): with -t, each frame is announced with its view.
-        if (o.reportInterval > 0) *diag << "FRAME " << frame << ":" << rp::formatView(view) << std::endl;
+        if (o.reportInterval > 0)
+            *diag << "FRAME " << frame << ":" << rp::formatView(view) << std::endl;
     };
     // The -af file is written by one process only: with other ranks, the root's records.
     auto keepAmbient = [&] {
         if (cluster.isRoot()) renderer.flushAmbientFile();
     };
     try {
-        runRpict(o, rendererPixelTracers(renderer), cluster.isRoot() ? progress : ProgressCallback{},
-                 io);
+        runRpict(o, rendererPixelTracers(renderer),
+                 cluster.isRoot() ? progress : ProgressCallback{}, io);
     } catch (...) {
         keepAmbient();  // keep the records computed so far, as RADIANCE
         throw;

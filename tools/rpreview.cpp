@@ -37,23 +37,29 @@ int run(int argc, char** argv) {
         if (int n = rp::parseViewOption(opt.view, argc - i, argv + i)) {
             i += n - 1;
         } else if ((a == "-x" || a == "-y" || a == "-o") && i + 1 < argc) {
-            if (a == "-x") opt.xres = positiveInt(argv[++i], "-x");
-            else if (a == "-y") opt.yres = positiveInt(argv[++i], "-y");
-            else out = argv[++i];
+            if (a == "-x")
+                opt.xres = positiveInt(argv[++i], "-x");
+            else if (a == "-y")
+                opt.yres = positiveInt(argv[++i], "-y");
+            else
+                out = argv[++i];
         } else if (a.size() > 1 && a[0] == '-') {
             throw rp::InputError("unknown option '" + a + "'");
         } else {
             files.push_back(a);
         }
     }
-    if (files.empty()) throw rp::InputError("usage: rpreview [view options] [-x res] [-y res] [-o out.hdr] scene ...");
+    if (files.empty())
+        throw rp::InputError(
+            "usage: rpreview [view options] [-x res] [-y res] [-o out.hdr] scene ...");
     rp::Scene scene = rp::loadScene(files, rp::gen::builtinLoadOptions());
     rp::SceneGeometry geometry(scene);
     std::map<std::string, int> counts;
     for (const auto& p : scene.prims) counts[std::string(rp::primTypeName(p.type))]++;
     std::fprintf(stderr, "rpreview: %zu primitives (", scene.prims.size());
     bool first = true;
-    for (auto& [t, n] : counts) std::fprintf(stderr, "%s%d %s", first ? "" : ", ", n, t.c_str()), first = false;
+    for (auto& [t, n] : counts)
+        std::fprintf(stderr, "%s%d %s", first ? "" : ", ", n, t.c_str()), first = false;
     std::fprintf(stderr, "), %zu triangles, %zu distant sources\n", geometry.triangleCount(),
                  geometry.sources().size());
     rp::PreviewStats stats;

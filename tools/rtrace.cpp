@@ -29,7 +29,8 @@ namespace {
 
 std::string headerCommandLine(const rp::render::RtraceOptions& o) {
     std::vector<const char*> argv;
-    for (size_t k = 0; k < o.optionCount && k < o.args.size(); ++k) argv.push_back(o.args[k].c_str());
+    for (size_t k = 0; k < o.optionCount && k < o.args.size(); ++k)
+        argv.push_back(o.args[k].c_str());
     return rp::commandLine(int(argv.size()), argv.data());
 }
 
@@ -84,9 +85,10 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
         throw;
     }
     keepAmbient();
-    if (std::getenv("RADPHOTON_STATS") && cluster.isRoot())  // run statistics for tuning and benchmarks
-        std::cerr << "rtrace: " << renderer.raysTraced() << " rays, "
-                  << renderer.ambientRecords() << " ambient records\n";
+    if (std::getenv("RADPHOTON_STATS") &&
+        cluster.isRoot())  // run statistics for tuning and benchmarks
+        std::cerr << "rtrace: " << renderer.raysTraced() << " rays, " << renderer.ambientRecords()
+                  << " ambient records\n";
     return 0;
 }
 

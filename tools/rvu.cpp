@@ -61,7 +61,8 @@ int run(int argc, char** argv) {
     setup.searchPath = rp::calc::defaultSearchPath(rp::projectLibDir());
     setup.options = cmd.options;
     setup.commandLine = "rvu";
-    for (const auto& f : cmd.sceneFiles) setup.sceneName += (setup.sceneName.empty() ? "" : " ") + f;
+    for (const auto& f : cmd.sceneFiles)
+        setup.sceneName += (setup.sceneName.empty() ? "" : " ") + f;
     rp::rvu::Session session(setup);
 
     rp::rvu::WebDisplayOptions display;

@@ -3,16 +3,17 @@
 // one BSDF value per (incident patch, outgoing patch). The four scattering sets differ only
 // in how a patch index maps to a direction (which hemisphere, and the incident side's
 // azimuth turned by 180 degrees, so that index 0 of both is the straight-through pair).
+#include <strings.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
-#include <strings.h>
 
-#include "bsdf/multi_sample.h"
 #include "bsdf/colour.h"
+#include "bsdf/multi_sample.h"
 #include "bsdf/xml_detail.h"
 
 namespace rp::bsdf::detail {
@@ -38,10 +39,19 @@ std::vector<AngleBasis> standardBases() {
         return b;
     };
     return {
-        make("LBNL/Klems Full", {{0, 1}, {5, 8}, {15, 16}, {25, 20}, {35, 24}, {45, 24},
-                                 {55, 24}, {65, 16}, {75, 12}, {90, 0}}),
-        make("LBNL/Klems Half", {{0, 1}, {6.5, 8}, {19.5, 12}, {32.5, 16}, {46.5, 20},
-                                 {61.5, 12}, {76.5, 4}, {90, 0}}),
+        make("LBNL/Klems Full", {{0, 1},
+                                 {5, 8},
+                                 {15, 16},
+                                 {25, 20},
+                                 {35, 24},
+                                 {45, 24},
+                                 {55, 24},
+                                 {65, 16},
+                                 {75, 12},
+                                 {90, 0}}),
+        make(
+            "LBNL/Klems Half",
+            {{0, 1}, {6.5, 8}, {19.5, 12}, {32.5, 16}, {46.5, 20}, {61.5, 12}, {76.5, 4}, {90, 0}}),
         make("LBNL/Klems Quarter", {{0, 1}, {9, 8}, {27, 12}, {46, 12}, {66, 8}, {90, 0}}),
     };
 }
@@ -84,8 +94,9 @@ double patchOmega(const AngleBasis& b, int ndx) {
     if (ndx < 0 || ndx >= b.nangles) return -1;
     std::size_t li = 0;
     while (ndx >= b.lat[li].nphis) ndx -= b.lat[li++].nphis;
-    return kPi * (sq(std::cos(kDeg * b.lat[li].thetaMin)) -
-                  sq(std::cos(kDeg * b.lat[li + 1].thetaMin))) / b.lat[li].nphis;
+    return kPi *
+           (sq(std::cos(kDeg * b.lat[li].thetaMin)) - sq(std::cos(kDeg * b.lat[li + 1].thetaMin))) /
+           b.lat[li].nphis;
 }
 
 // How a side's index maps to a local direction: the +Z patch vector with x, y and z
@@ -233,8 +244,8 @@ void loadBasis(const pugi::xml_node& wab, const XmlContext& ctx, std::vector<Ang
     for (pugi::xml_node blk : wab.children("AngleBasisBlock")) {
         pugi::xml_node bounds = blk.child("ThetaBounds");
         const double upper = std::atof(bounds.child_value("UpperTheta"));
-        if (b.lat.size() > 1 &&
-            std::abs(std::atof(bounds.child_value("LowerTheta")) - b.lat.back().thetaMin) > 1e-6 * upper)
+        if (b.lat.size() > 1 && std::abs(std::atof(bounds.child_value("LowerTheta")) -
+                                         b.lat.back().thetaMin) > 1e-6 * upper)
             ctx.fail(blk, "theta values disagree in angle basis '" + name + "'");
         const int nphis = std::atoi(blk.child_value("nPhis"));
         if (nphis <= 0 || (nphis == 1 && b.lat.back().thetaMin > 1e-6))
@@ -272,7 +283,8 @@ void readValues(const pugi::xml_node& sdNode, const XmlContext& ctx, bool rows, 
         char* end = nullptr;
         const double v = std::strtod(p, &end);
         if (end == p) {
-            const std::string what = *p ? "bad number in ScatteringData" : "too few values in ScatteringData";
+            const std::string what =
+                *p ? "bad number in ScatteringData" : "too few values in ScatteringData";
             throw InputError(SourceLoc{ctx.path(), lineAt(p)},
                              what + " (" + std::to_string(k) + " of " + std::to_string(n) + ")");
         }
@@ -369,7 +381,10 @@ void loadKlems(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData& sd)
     std::vector<float> xz[4][2];
     for (pugi::xml_node wld : layer.children("WavelengthData")) {
         const pugi::xml_node wl = wld.child("Wavelength");
-        const int channel = textIs(wl, "Visible") ? 0 : textIs(wl, "CIE-X") ? 1 : textIs(wl, "CIE-Z") ? 2 : -1;
+        const int channel = textIs(wl, "Visible") ? 0
+                            : textIs(wl, "CIE-X") ? 1
+                            : textIs(wl, "CIE-Z") ? 2
+                                                  : -1;
         if (channel < 0) continue;
         for (pugi::xml_node wdb : wld.children("WavelengthDataBlock")) {
             const SetChoice ch = chooseSet(wdb, ctx, sd);
@@ -404,8 +419,10 @@ void loadKlems(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData& sd)
         m.buildCdfs();
     }
     // One transmission direction serves both (bsdf_m.c).
-    if (sd.tb && !sd.tf) sd.tLambFront = sd.tLambBack;
-    else if (sd.tf && !sd.tb) sd.tLambBack = sd.tLambFront;
+    if (sd.tb && !sd.tf)
+        sd.tLambFront = sd.tLambBack;
+    else if (sd.tf && !sd.tb)
+        sd.tLambBack = sd.tLambFront;
 }
 
 }  // namespace rp::bsdf::detail

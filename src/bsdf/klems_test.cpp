@@ -9,8 +9,8 @@
 #include "bsdf/multi_sample.h"
 #include "util/error.h"
 #include "util/rng.h"
-#include "util/temp_dir_for_tests.h"
 #include "util/shared_for_tests.h"
+#include "util/temp_dir_for_tests.h"
 
 namespace rp::bsdf {
 namespace {
@@ -125,7 +125,8 @@ int patchOf(const Vec3& v) {
 TEST(Klems, IntegralOverPatchesMatchesTheFile) {
     RP_REQUIRE_SHARED("validation/bsdf");
     const auto sd = loadBsdfFile(kKlems);
-    const std::vector<double> rRaw = rawMatrix("Reflection Back"), tRaw = rawMatrix("Transmission Back");
+    const std::vector<double> rRaw = rawMatrix("Reflection Back"),
+                              tRaw = rawMatrix("Transmission Back");
     Rng rng(11, RngDomain::Test, 0);
     for (int i : {0, 30, 90}) {
         const Vec3 c = patchCentre(i);
@@ -159,7 +160,8 @@ TEST(Klems, SamplingFollowsTheTable) {
         std::vector<double> p(145);
         double total = 0;
         const double lamb = sd->tLambFront.g / kPi;
-        for (int o = 0; o < 145; ++o) total += p[o] = (raw[o * 145 + i] - lamb) * bandOmega(bandOf(o));
+        for (int o = 0; o < 145; ++o)
+            total += p[o] = (raw[o * 145 + i] - lamb) * bandOmega(bandOf(o));
         const int n = 200000;
         std::vector<int> count(145);
         for (int k = 0; k < n; ++k) {
@@ -186,9 +188,7 @@ TEST(Klems, SamplingFollowsTheTable) {
     }
 }
 
-void writeFile(const std::string& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
+void writeFile(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 // CIE-X and CIE-Z matrices beside the visible one colour the data: a constant ratio
 // X : Y : Z = 1.2 : 1 : 0.5 gives that colour everywhere, in RADIANCE RGB (Y = its
@@ -199,21 +199,25 @@ TEST(Klems, CieXAndZColourTheData) {
         std::string vals;
         for (int k = 0; k < 41 * 41; ++k)
             vals += std::to_string(scale * (0.05 + 0.001 * ((k * 37) % 101))) + " ";
-        return std::string("<WavelengthData><Wavelength>") + wl + "</Wavelength><WavelengthDataBlock>"
+        return std::string("<WavelengthData><Wavelength>") + wl +
+               "</Wavelength><WavelengthDataBlock>"
                "<WavelengthDataDirection>Reflection Back</WavelengthDataDirection>"
                "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>"
-               "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>" + vals +
-               "</ScatteringData></WavelengthDataBlock></WavelengthData>";
+               "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>" +
+               vals + "</ScatteringData></WavelengthDataBlock></WavelengthData>";
     };
     const std::string p = dir.file("c.xml");
-    writeFile(p, "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType><Optical><Layer>"
-                 "<DataDefinition><IncidentDataStructure>Columns</IncidentDataStructure></DataDefinition>" +
-                     block("Visible", 1) + block("CIE-X", 1.2) + block("CIE-Z", .5) +
-                     "</Layer></Optical></WindowElement>\n");
+    writeFile(
+        p,
+        "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType><Optical><Layer>"
+        "<DataDefinition><IncidentDataStructure>Columns</IncidentDataStructure></DataDefinition>" +
+            block("Visible", 1) + block("CIE-X", 1.2) + block("CIE-Z", .5) +
+            "</Layer></Optical></WindowElement>\n");
     const auto sd = loadBsdfFile(p);
     // RADIANCE RGB of XYZ (1.2, 1, 0.5), from its primaries (0.640 0.330, 0.290 0.600,
     // 0.150 0.060) and equal-energy white: the XYZ -> RGB matrix applied by hand.
-    const double m[9] = {2.5653, -1.1668, -0.3985, -1.0220, 1.9782, 0.0438, 0.0747, -0.2519, 1.1772};
+    const double m[9] = {2.5653, -1.1668, -0.3985, -1.0220, 1.9782,
+                         0.0438, 0.0747,  -0.2519, 1.1772};
     const Color unit{m[0] * 1.2 + m[1] + m[2] * .5, m[3] * 1.2 + m[4] + m[5] * .5,
                      m[6] * 1.2 + m[7] + m[8] * .5};
     EXPECT_NEAR(unit.brightness(), 1, 2e-3);
@@ -238,13 +242,17 @@ TEST(Klems, OneTransmissionIsReciprocal) {
     std::string vals;
     for (int k = 0; k < 41 * 41; ++k) vals += std::to_string(0.05 + 0.001 * ((k * 37) % 101)) + " ";
     const std::string p = dir.file("t.xml");
-    writeFile(p, "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType><Optical><Layer>"
-                 "<DataDefinition><IncidentDataStructure>Columns</IncidentDataStructure></DataDefinition>"
-                 "<WavelengthData><Wavelength>Visible</Wavelength><WavelengthDataBlock>"
-                 "<WavelengthDataDirection>Transmission Back</WavelengthDataDirection>"
-                 "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>"
-                 "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>" + vals +
-                 "</ScatteringData></WavelengthDataBlock></WavelengthData></Layer></Optical></WindowElement>\n");
+    writeFile(
+        p,
+        "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType><Optical><Layer>"
+        "<DataDefinition><IncidentDataStructure>Columns</IncidentDataStructure></DataDefinition>"
+        "<WavelengthData><Wavelength>Visible</Wavelength><WavelengthDataBlock>"
+        "<WavelengthDataDirection>Transmission Back</WavelengthDataDirection>"
+        "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>"
+        "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>" +
+            vals +
+            "</ScatteringData></WavelengthDataBlock></WavelengthData></Layer></Optical></"
+            "WindowElement>\n");
     const auto sd = loadBsdfFile(p);
     ASSERT_TRUE(sd->tf && !sd->tb);
     Rng rng(4, RngDomain::Test, 0);
@@ -289,21 +297,24 @@ TEST(Klems, BadFilesGiveOneLineErrors) {
                      "<ScatteringData>1 2 3</ScatteringData>\n"
                      "</WavelengthDataBlock></WavelengthData></Layer></Optical></WindowElement>\n");
     EXPECT_NE(errorOf(p).find("b.xml:13: unknown ColumnAngleBasis 'LBNL/Klems Eighth'"),
-              std::string::npos) << errorOf(p);
+              std::string::npos)
+        << errorOf(p);
     writeFile(p, std::string(kHead) +
                      "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>\n"
                      "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis>\n"
                      "<ScatteringData>\n1 2 3\n4 5\n</ScatteringData>\n"
                      "</WavelengthDataBlock></WavelengthData></Layer></Optical></WindowElement>\n");
     EXPECT_NE(errorOf(p).find("b.xml:18: too few values in ScatteringData (5 of 1681)"),
-              std::string::npos) << errorOf(p);
+              std::string::npos)
+        << errorOf(p);
     writeFile(p, std::string(kHead) +
                      "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>\n"
                      "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis>\n"
                      "<ScatteringData>\n1 2 x 3\n</ScatteringData>\n"
                      "</WavelengthDataBlock></WavelengthData></Layer></Optical></WindowElement>\n");
     EXPECT_NE(errorOf(p).find("b.xml:16: bad number in ScatteringData (2 of 1681)"),
-              std::string::npos) << errorOf(p);
+              std::string::npos)
+        << errorOf(p);
     // Beyond float (found by fuzz_bsdf_xml: an infinite value made the sampling sums NaN).
     writeFile(p, std::string(kHead) +
                      "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>\n"
@@ -311,19 +322,22 @@ TEST(Klems, BadFilesGiveOneLineErrors) {
                      "<ScatteringData>\n1 2 1e50 3\n</ScatteringData>\n"
                      "</WavelengthDataBlock></WavelengthData></Layer></Optical></WindowElement>\n");
     EXPECT_NE(errorOf(p).find("b.xml:16: value out of range in ScatteringData (2 of 1681)"),
-              std::string::npos) << errorOf(p);
+              std::string::npos)
+        << errorOf(p);
     // A tensor tree likewise.
-    writeFile(p, "<?xml version=\"1.0\"?>\n<WindowElement><Optical><Layer><DataDefinition>"
-                 "<IncidentDataStructure>TensorTree3</IncidentDataStructure></DataDefinition>\n"
-                 "<WavelengthData><Wavelength>Visible</Wavelength><WavelengthDataBlock>"
-                 "<WavelengthDataDirection>Transmission Back</WavelengthDataDirection>"
-                 "<AngleBasis>LBNL/Shirley-Chiu</AngleBasis><ScatteringData>\n"
-                 "{ 1 2 3 4\n 888888888888888888888888888888888888888888888.5 6 7 8 }\n"
-                 "</ScatteringData></WavelengthDataBlock></WavelengthData></Layer></Optical>"
-                 "</WindowElement>\n");
+    writeFile(p,
+              "<?xml version=\"1.0\"?>\n<WindowElement><Optical><Layer><DataDefinition>"
+              "<IncidentDataStructure>TensorTree3</IncidentDataStructure></DataDefinition>\n"
+              "<WavelengthData><Wavelength>Visible</Wavelength><WavelengthDataBlock>"
+              "<WavelengthDataDirection>Transmission Back</WavelengthDataDirection>"
+              "<AngleBasis>LBNL/Shirley-Chiu</AngleBasis><ScatteringData>\n"
+              "{ 1 2 3 4\n 888888888888888888888888888888888888888888888.5 6 7 8 }\n"
+              "</ScatteringData></WavelengthDataBlock></WavelengthData></Layer></Optical>"
+              "</WindowElement>\n");
     EXPECT_NE(errorOf(p).find("b.xml:5: value '888888888888888888888888888888888888888888888.5' "
                               "out of range in tensor tree"),
-              std::string::npos) << errorOf(p);
+              std::string::npos)
+        << errorOf(p);
 }
 
 }  // namespace
@@ -334,10 +348,14 @@ namespace {
 // multiSample2 against RADIANCE's hilbert_i2c(2, 31, x * 2^62, c), c / 2^31 printed by a
 // throwaway program linked with RADIANCE's src/common/hilbert.c (not in this repository).
 TEST(MultiSample, FollowsRadiancesHilbertCurve) {
-    const double ref[][3] = {{0.0123, 0.103979163, 0.034775954}, {0.1, 0.166666668, 0.499999996},
-                             {0.25, 0.5, 0.0},                    {0.37, 0.758064516, 0.151515149},
-                             {0.5, 0.5, 0.5},                     {0.61, 0.850731708, 0.723414637},
-                             {0.77, 0.303030297, 0.983870968},    {0.999, 0.037639372, 0.997236140}};
+    const double ref[][3] = {{0.0123, 0.103979163, 0.034775954},
+                             {0.1, 0.166666668, 0.499999996},
+                             {0.25, 0.5, 0.0},
+                             {0.37, 0.758064516, 0.151515149},
+                             {0.5, 0.5, 0.5},
+                             {0.61, 0.850731708, 0.723414637},
+                             {0.77, 0.303030297, 0.983870968},
+                             {0.999, 0.037639372, 0.997236140}};
     for (const auto& r : ref) {
         double t[2];
         multiSample2(r[0], t);

@@ -6,6 +6,8 @@
 // of out rotated so that -in lies along +X. Values are per-steradian BSDFs, constant on
 // each leaf (no interpolation). Sampling tables are built per incident cell on first
 // use and published lock-free.
+#include "bsdf/tensor_tree.h"
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -18,7 +20,6 @@
 #include <optional>
 
 #include "bsdf/colour.h"
-#include "bsdf/tensor_tree.h"
 
 namespace rp::bsdf::detail {
 namespace {
@@ -428,9 +429,9 @@ void loadTensorTree(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData
     for (pugi::xml_node wd : layer.children("WavelengthData")) {
         const pugi::xml_node wl = wd.child("Wavelength");
         std::optional<Tree> SetData::*channel = textIs(wl, "Visible") ? &SetData::tree
-                                                : textIs(wl, "CIE-u")  ? &SetData::u
-                                                : textIs(wl, "CIE-v")  ? &SetData::v
-                                                                       : nullptr;
+                                                : textIs(wl, "CIE-u") ? &SetData::u
+                                                : textIs(wl, "CIE-v") ? &SetData::v
+                                                                      : nullptr;
         if (!channel) continue;
         for (pugi::xml_node block : wd.children("WavelengthDataBlock")) {
             const int which = setIndex(block.child("WavelengthDataDirection"));

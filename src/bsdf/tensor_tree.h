@@ -21,7 +21,6 @@ constexpr double kBelowOne = 1 - 0x1p-53;  // largest double below 1
 // RADIANCE's sidef: which way the tree scatters (the sampled direction's side follows).
 enum class Side : uint8_t { ReflFront, ReflBack, XmitFront, XmitBack };
 
-
 // Shirley-Chiu: unit disk -> unit square, and back (RADIANCE's disk2square.c mapping).
 void diskToSquare(double dx, double dy, double sq[2]);
 void squareToDisk(double u, double v, double& dx, double& dy);
@@ -67,7 +66,6 @@ struct Tree {
     float minimum(uint32_t n) const;
     float liveMinimum() const;
 };
-
 
 // Calls f(ix, idx) for every cell ix of a leaf grid (log2 resolution k) with
 // lo[i] <= ix[i] < hi[i] in each of the ndim dimensions; idx is its place in the grid's

@@ -93,7 +93,6 @@ void hilbertPoint(uint32_t d, uint32_t& x, uint32_t& y) {
     y = static_cast<uint32_t>(b);
 }
 
-
 float Tree::lookup(const double pos[4], double& width) const {
     double p[4];
     for (int i = 0; i < ndim; ++i) p[i] = std::clamp(pos[i], 0.0, kBelowOne);
@@ -191,7 +190,6 @@ float Tree::liveMinimum() const {
     const size_t half = size_t(1) << (3 * root.log2GR - 1);
     return *std::min_element(values.begin() + root.index, values.begin() + root.index + half);
 }
-
 
 namespace {
 
@@ -317,7 +315,6 @@ float TreeParser::parseNumber() {
         fail(begin, "value '" + word + "' out of range in tensor tree");
     return v > 0 ? static_cast<float>(v) : 0.0f;
 }
-
 
 }  // namespace
 

@@ -646,7 +646,8 @@ TEST(TensorTree, CieUvTreesColourTheData) {
         return std::string("<WavelengthData><Wavelength>") + wl +
                "</Wavelength><WavelengthDataBlock><WavelengthDataDirection>Reflection Back"
                "</WavelengthDataDirection><AngleBasis>LBNL/Shirley-Chiu</AngleBasis>"
-               "<ScatteringData>{ " + value + " }</ScatteringData></WavelengthDataBlock></WavelengthData>\n";
+               "<ScatteringData>{ " +
+               value + " }</ScatteringData></WavelengthDataBlock></WavelengthData>\n";
     };
     text.insert(text.find("</Layer>"), uv("CIE-u", "0.15") + uv("CIE-v", "0.50"));
     const BsdfData grey = loadFile(kTree4), colour = loadText(text, "colour.xml");

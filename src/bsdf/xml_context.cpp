@@ -1,7 +1,8 @@
 // XmlContext: line numbers for nodes of a parsed XML file (pugixml keeps byte offsets).
+#include <strings.h>
+
 #include <algorithm>
 #include <cctype>
-#include <strings.h>
 
 #include "bsdf/xml_detail.h"
 

@@ -1,8 +1,9 @@
 // loadBsdfFile: reads an LBNL WindowElement file (bsdf.c SDloadFile, SDloadGeometry) and
 // hands its first optical layer to the Klems or tensor-tree reader.
+#include <strings.h>
+
 #include <fstream>
 #include <sstream>
-#include <strings.h>
 
 #include "bsdf/xml_detail.h"
 

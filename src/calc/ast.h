@@ -23,9 +23,9 @@ struct Expr {
 
 // One statement `name = expr;`, `name : expr;` or `name(p1, p2) = expr;`.
 struct Definition {
-    std::string name;            // fully qualified with the context it was defined in
-    std::string context;         // context in effect ("" or "`a`b"), for resolving refs
-    bool constant = false;       // ':' rather than '='
+    std::string name;       // fully qualified with the context it was defined in
+    std::string context;    // context in effect ("" or "`a`b"), for resolving refs
+    bool constant = false;  // ':' rather than '='
     bool isFunction = false;
     std::vector<std::string> params;
     std::vector<bool> paramCalled;  // params used as functions (`v1(2)` in dot(v1,v2))

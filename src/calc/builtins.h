@@ -19,12 +19,11 @@ inline int roundedIndex(double v) {
     return static_cast<int>(r);
 }
 
-
 struct Builtin {
     std::string_view name;
     int minArgs;
     int maxArgs;
-    double (*f1)(double) = nullptr;                 // one-argument math function, or
+    double (*f1)(double) = nullptr;                     // one-argument math function, or
     double (*fn)(const double* args, int n) = nullptr;  // general form
 };
 

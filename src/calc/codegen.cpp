@@ -19,8 +19,10 @@ int CodeGen::emitBlock(const Node* body, int varSlot) {
         ensured_.assign(img_.nvars, 0);
         ensuredList_.clear();
         int v = gen(body, -1);
-        if (varSlot >= 0) emit(Code::RetVar, 0, v, varSlot);
-        else emit(Code::Ret, 0, v);
+        if (varSlot >= 0)
+            emit(Code::RetVar, 0, v, varSlot);
+        else
+            emit(Code::Ret, 0, v);
         b.frameSize = std::max(b.frameSize, maxTop_);
     }
     b.maxArg = maxArg_;
@@ -150,14 +152,15 @@ int CodeGen::var(const Node* n, int dst) {
 }
 
 int CodeGen::gen(const Node* n, int dst) {
-    auto isMul = [](const Node* k) {
-        return k && (k->op() == Op::Mul || k->op() == Op::MulC);
-    };
+    auto isMul = [](const Node* k) { return k && (k->op() == Op::Mul || k->op() == Op::MulC); };
     const int mark = top_;
     switch (n->op()) {
-        case Op::Const: return place(constant(n->num), dst);
-        case Op::Ray: return place(img_.rayOperand(n->index), dst);
-        case Op::Var: return var(n, dst);
+        case Op::Const:
+            return place(constant(n->num), dst);
+        case Op::Ray:
+            return place(img_.rayOperand(n->index), dst);
+        case Op::Var:
+            return var(n, dst);
         case Op::ModArg: {
             if (argGlobals_ && n->index >= 1 && n->index <= kArgGlobals) {
                 maxArg_ = std::max(maxArg_, n->index);
@@ -177,8 +180,7 @@ int CodeGen::gen(const Node* n, int dst) {
             int a = gen(n->a, -1);
             top_ = mark;
             int d = target(dst);
-            emit(n->op() == Op::ModArgDyn ? Code::LdArgDyn : Code::LdParamDyn, d, a, 0, 0,
-                 n->info);
+            emit(n->op() == Op::ModArgDyn ? Code::LdArgDyn : Code::LdParamDyn, d, a, 0, 0, n->info);
             return d;
         }
         case Op::Neg: {
@@ -210,10 +212,14 @@ int CodeGen::gen(const Node* n, int dst) {
             emit(Code::Sub, d, constant(n->num), a);
             return d;
         }
-        case Op::Sub: return binary(Code::Sub, n->a, n->b, dst);
-        case Op::Mul: return binary(Code::Mul, n->a, n->b, dst);
-        case Op::Div: return binary(Code::Div, n->a, n->b, dst);
-        case Op::Pow: return binary(Code::Pow, n->a, n->b, dst);
+        case Op::Sub:
+            return binary(Code::Sub, n->a, n->b, dst);
+        case Op::Mul:
+            return binary(Code::Mul, n->a, n->b, dst);
+        case Op::Div:
+            return binary(Code::Div, n->a, n->b, dst);
+        case Op::Pow:
+            return binary(Code::Pow, n->a, n->b, dst);
         case Op::PowInt: {
             int a = gen(n->a, -1);
             top_ = mark;
@@ -239,8 +245,9 @@ int CodeGen::gen(const Node* n, int dst) {
             const Node* k = n->a;
             if (k->op() == Op::Sub || k->op() == Op::SubC || k->op() == Op::CSub) {
                 int x = k->op() == Op::CSub ? constant(k->num) : gen(k->a, -1);
-                int y = k->op() == Op::Sub ? gen(k->b, -1)
-                        : k->op() == Op::SubC ? constant(k->num) : gen(k->a, -1);
+                int y = k->op() == Op::Sub    ? gen(k->b, -1)
+                        : k->op() == Op::SubC ? constant(k->num)
+                                              : gen(k->a, -1);
                 top_ = mark;
                 jnp = emit(Code::JNPSub, 0, x, y);
             } else {

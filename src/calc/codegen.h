@@ -40,9 +40,9 @@ private:
     CodeImage& img_;
     std::map<std::uint64_t, int> constIndex_;
     int top_ = 0, maxTop_ = 0;
-    bool argGlobals_ = false;  // generating the version that reads arguments from globals
-    int maxArg_ = 0;           // highest argument it read so far
-    std::vector<char> ensured_;    // per variable: NeedVar already done on this path
+    bool argGlobals_ = false;    // generating the version that reads arguments from globals
+    int maxArg_ = 0;             // highest argument it read so far
+    std::vector<char> ensured_;  // per variable: NeedVar already done on this path
     std::vector<int> ensuredList_;
     // Variable bodies are expanded where first needed (guarded by their cache stamp)
     // unless they are part of a cycle or the block grew too large.

@@ -97,8 +97,7 @@ private:
         for (bool changed = true; changed;) {
             changed = false;
             for (std::size_t i = 0; i < funcDefs_.size(); ++i)
-                changed |= markPassedParams(*funcDefs_[i]->body, *funcDefs_[i],
-                                            *p_->functions_[i]);
+                changed |= markPassedParams(*funcDefs_[i]->body, *funcDefs_[i], *p_->functions_[i]);
         }
     }
     bool markPassedParams(const Expr& e, const Definition& d, FunctionInfo& f) {
@@ -263,7 +262,8 @@ private:
     const Node* compile(const Expr& e, Scope& s) {
         using K = Expr::Kind;
         switch (e.kind) {
-            case K::Number: return constant(e.number);
+            case K::Number:
+                return constant(e.number);
             case K::Neg: {
                 const Node* a = compile(*e.kids[0], s);
                 if (isConst(a)) return constant(-a->num);
@@ -271,10 +271,14 @@ private:
                 n->a = a;
                 return n;
             }
-            case K::Add: return binary(evAdd, compile(*e.kids[0], s), compile(*e.kids[1], s));
-            case K::Sub: return binary(evSub, compile(*e.kids[0], s), compile(*e.kids[1], s));
-            case K::Mul: return binary(evMul, compile(*e.kids[0], s), compile(*e.kids[1], s));
-            case K::Div: return binary(evDiv, compile(*e.kids[0], s), compile(*e.kids[1], s));
+            case K::Add:
+                return binary(evAdd, compile(*e.kids[0], s), compile(*e.kids[1], s));
+            case K::Sub:
+                return binary(evSub, compile(*e.kids[0], s), compile(*e.kids[1], s));
+            case K::Mul:
+                return binary(evMul, compile(*e.kids[0], s), compile(*e.kids[1], s));
+            case K::Div:
+                return binary(evDiv, compile(*e.kids[0], s), compile(*e.kids[1], s));
             case K::Pow: {
                 const Node* a = compile(*e.kids[0], s);
                 const Node* b = compile(*e.kids[1], s);
@@ -287,8 +291,10 @@ private:
                 }
                 return binary(evPow, a, b);
             }
-            case K::Name: return compileName(e, s);
-            case K::Call: return compileCall(e, s);
+            case K::Name:
+                return compileName(e, s);
+            case K::Call:
+                return compileCall(e, s);
         }
         return error(s, e.line, "internal: unknown expression");
     }
@@ -302,7 +308,8 @@ private:
         }
         Ref r = resolve(e.name, *s.context);
         switch (r.kind) {
-            case RefKind::Var: return varRef(r.index, s);
+            case RefKind::Var:
+                return varRef(r.index, s);
             case RefKind::Ray: {
                 s.pure = false;
                 Node* n = newNode(evRay);
@@ -482,7 +489,8 @@ private:
             case RefKind::Ray:
                 s.pure = false;
                 return error(s, e.line, "'" + e.name + "' is a variable, not a function");
-            case RefKind::None: break;
+            case RefKind::None:
+                break;
         }
         s.pure = false;
         return error(s, e.line, "undefined function '" + e.name + "'");

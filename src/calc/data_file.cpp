@@ -80,8 +80,10 @@ AxisWeights weights(const DataFile::Axis& a, double coord) {
         int lo = 0, hi = a.count - 2;
         while (lo < hi) {
             int mid = (lo + hi + 1) / 2;
-            if (up ? coord >= p[mid] : coord <= p[mid]) lo = mid;
-            else hi = mid - 1;
+            if (up ? coord >= p[mid] : coord <= p[mid])
+                lo = mid;
+            else
+                hi = mid - 1;
         }
         r.i = lo;
         x = lo + (coord - p[lo]) / (p[lo + 1] - p[lo]);
@@ -167,7 +169,10 @@ double DataFile::value(std::span<const double> point) const {
         for (int k = 0; k < n; ++k) {
             bool hi = (corner >> k) & 1;
             if (axes_[k].count == 1) {
-                if (hi) { weight = 0; break; }
+                if (hi) {
+                    weight = 0;
+                    break;
+                }
                 continue;
             }
             weight *= hi ? w[k].w1 : w[k].w0;

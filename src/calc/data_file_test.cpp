@@ -46,8 +46,10 @@ TEST(CalcDataFile, OneDimensionRegular) {
 TEST(CalcDataFile, CommentsWhereverANumberMayStand) {
     // As glass_illR.dat and rect_fixture.dat write them: a header comment, comments
     // after axis lines, between values and glued to a number.
-    auto d = DataFile::parse("# from RADIANCE test/renders\n1 # one axis\n0 10 3#regular\n"
-                             "1 # first\n3#second\n# a line\n7\n# trailing", "m.dat");
+    auto d = DataFile::parse(
+        "# from RADIANCE test/renders\n1 # one axis\n0 10 3#regular\n"
+        "1 # first\n3#second\n# a line\n7\n# trailing",
+        "m.dat");
     EXPECT_EQ(d.dimensions(), 1);
     EXPECT_DOUBLE_EQ(d.value(std::vector<double>{5}), 3);
     EXPECT_DOUBLE_EQ(d.value(std::vector<double>{10}), 7);
@@ -82,23 +84,26 @@ TEST(CalcDataFile, TwoAndThreeDimensions) {
 TEST(CalcDataFile, MalformedFiles) {
     EXPECT_EQ(errorOf("x"), "bad.dat:1: expected number of dimensions, found 'x'");
     EXPECT_EQ(errorOf("0"), "bad.dat:1: number of dimensions must be a positive integer");
-    EXPECT_EQ(errorOf("1\n0 1 2.5\n1 2 3"), "bad.dat:2: axis point count must be a positive integer");
-    EXPECT_EQ(errorOf("1\n0 1 3\n1\n2\n"), "bad.dat:4: unexpected end of file: expected data value");
-    EXPECT_EQ(errorOf("1\n0 1 2\n1 2\n3\n"), "bad.dat:4: more data than the axes declare (2 values)");
+    EXPECT_EQ(errorOf("1\n0 1 2.5\n1 2 3"),
+              "bad.dat:2: axis point count must be a positive integer");
+    EXPECT_EQ(errorOf("1\n0 1 3\n1\n2\n"),
+              "bad.dat:4: unexpected end of file: expected data value");
+    EXPECT_EQ(errorOf("1\n0 1 2\n1 2\n3\n"),
+              "bad.dat:4: more data than the axes declare (2 values)");
     EXPECT_EQ(errorOf("1\n0 0 3 0 2 1\n1 2 3"), "bad.dat:2: axis 1 coordinates are not monotonic");
     EXPECT_EQ(errorOf("1\n0 1 2\n1 zz"), "bad.dat:3: expected data value, found 'zz'");
     EXPECT_EQ(errorOf("9\n"), "bad.dat:1: too many dimensions (9, at most 8)");
-    EXPECT_EQ(errorOf("# c\n1 # d\n0 1 2\n1 #2\n"), "bad.dat:4: unexpected end of file: expected data value");
-    EXPECT_EQ(errorOf("1\n0 1 2\n1 2 # end\n#\n3"), "bad.dat:5: more data than the axes declare (2 values)");
+    EXPECT_EQ(errorOf("# c\n1 # d\n0 1 2\n1 #2\n"),
+              "bad.dat:4: unexpected end of file: expected data value");
+    EXPECT_EQ(errorOf("1\n0 1 2\n1 2 # end\n#\n3"),
+              "bad.dat:5: more data than the axes declare (2 values)");
     // Declaring 2^31 values in a few bytes fails at the end of the text, without
     // reserving 16 GB first (the fuzzer's out-of-memory finding).
     EXPECT_EQ(errorOf("2\n0 1 46341\n0 1 46340\n1 2\n"),
               "bad.dat:4: unexpected end of file: expected data value");
 }
 
-TEST(CalcDataFile, MissingFile) {
-    EXPECT_THROW(DataFile::load("/nonexistent/x.dat"), InputError);
-}
+TEST(CalcDataFile, MissingFile) { EXPECT_THROW(DataFile::load("/nonexistent/x.dat"), InputError); }
 
 }  // namespace
 }  // namespace rp::calc

@@ -32,8 +32,10 @@ std::string evalError(const std::string& defs, const std::string& expr) {
 }
 
 TEST(CalcErrors, SyntaxErrorsNameFileAndLine) {
-    EXPECT_EQ(loadError("a = 1;\nb = (2 + 3;\n"), "bad.cal:2: syntax error: ')' expected, found ';'");
-    EXPECT_EQ(loadError("a = 1;\n\nb = 2 $ 3;"), "bad.cal:3: syntax error: unexpected character '$'");
+    EXPECT_EQ(loadError("a = 1;\nb = (2 + 3;\n"),
+              "bad.cal:2: syntax error: ')' expected, found ';'");
+    EXPECT_EQ(loadError("a = 1;\n\nb = 2 $ 3;"),
+              "bad.cal:3: syntax error: unexpected character '$'");
     EXPECT_EQ(loadError("a 1;"), "bad.cal:1: syntax error: '=' or ':' expected after 'a'");
     EXPECT_EQ(loadError("a = 1\nb = 2;"), "bad.cal:2: syntax error: ';' expected, found name 'b'");
     EXPECT_EQ(loadError("a = --2;"), "bad.cal:1: syntax error: unexpected '-'");
@@ -66,10 +68,13 @@ TEST(CalcErrors, UndefinedNamesReportTheReference) {
 
 TEST(CalcErrors, WrongKindsAndCounts) {
     EXPECT_EQ(evalError("a = 2; b = a(3);", "b"), "defs.cal:1: 'a' is a variable, not a function");
-    EXPECT_EQ(evalError("b = sqrt + 1;", "b"), "defs.cal:1: 'sqrt' is a function; it needs arguments");
-    EXPECT_EQ(evalError("b = atan2(1);", "b"), "defs.cal:1: function 'atan2' takes 2 argument(s), got 1");
+    EXPECT_EQ(evalError("b = sqrt + 1;", "b"),
+              "defs.cal:1: 'sqrt' is a function; it needs arguments");
+    EXPECT_EQ(evalError("b = atan2(1);", "b"),
+              "defs.cal:1: function 'atan2' takes 2 argument(s), got 1");
     EXPECT_EQ(evalError("b = if(1, 2);", "b"), "defs.cal:1: if() takes 3 arguments");
-    EXPECT_EQ(evalError("f(a, b) = a + b;\ng = f(1);", "g"), "defs.cal:1: missing argument 2 to function");
+    EXPECT_EQ(evalError("f(a, b) = a + b;\ng = f(1);", "g"),
+              "defs.cal:1: missing argument 2 to function");
     EXPECT_EQ(evalError("i = Dx + 5;\nb = select(i, 1, 2);", "b"),
               "defs.cal:2: select index 5 out of range 1..2");
     EXPECT_EQ(evalError("b = apply(1);\napply(f) = f(2);", "b"),
@@ -82,14 +87,17 @@ TEST(CalcErrors, ModifierArgumentsMustExist) {
     ray.args = args;
     EXPECT_EQ(testing::evalWith("", "A2 + AC", true, &ray), 4);
     EXPECT_EQ(errorOf([&] { testing::evalWith("", "A3", true, &ray); }),
-              std::string(RP_SOURCE_DIR) + "/lib/rayinit.cal:21: missing real argument 3 (modifier has 2)");
+              std::string(RP_SOURCE_DIR) +
+                  "/lib/rayinit.cal:21: missing real argument 3 (modifier has 2)");
     // Indices beyond int's range saturate instead of overflowing the conversion
     // (undefined behaviour before; found by fuzz_cal): constant and computed.
-    EXPECT_NE(errorOf([&] { testing::evalWith("", "arg(7.7e88)", true, &ray); })
-                  .find("missing real argument 2147483647"),
+    EXPECT_NE(errorOf([&] {
+                  testing::evalWith("", "arg(7.7e88)", true, &ray);
+              }).find("missing real argument 2147483647"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] { testing::evalWith("", "arg(Dx * 1e30 + 1e30)", true, &ray); })
-                  .find("missing real argument 2147483647"),
+    EXPECT_NE(errorOf([&] {
+                  testing::evalWith("", "arg(Dx * 1e30 + 1e30)", true, &ray);
+              }).find("missing real argument 2147483647"),
               std::string::npos);
     EXPECT_NE(evalError("b = select(1e30, 1, 2);", "b").find("out of range"), std::string::npos);
 }

@@ -31,8 +31,7 @@ bool isNameStart(char c) {
     return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == kContextMark;
 }
 bool isNameChar(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' ||
-           c == kContextMark;
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == kContextMark;
 }
 
 class Parser {
@@ -197,10 +196,14 @@ private:
     }
     static std::string describe(const Token& t) {
         switch (t.kind) {
-            case Tok::End: return "end of input";
-            case Tok::Number: return "number '" + t.text + "'";
-            case Tok::Name: return "name '" + t.text + "'";
-            case Tok::Punct: return std::string("'") + t.punct + "'";
+            case Tok::End:
+                return "end of input";
+            case Tok::Number:
+                return "number '" + t.text + "'";
+            case Tok::Name:
+                return "name '" + t.text + "'";
+            case Tok::Punct:
+                return std::string("'") + t.punct + "'";
         }
         return "?";
     }
@@ -216,9 +219,12 @@ private:
             do {  // comments nest: { a { b } c }
                 if (pos_ >= text_.size()) fail(open, "'}' expected to close comment");
                 char c = text_[pos_++];
-                if (c == '{') ++nest;
-                else if (c == '}') --nest;
-                else if (c == '\n') ++line_;
+                if (c == '{')
+                    ++nest;
+                else if (c == '}')
+                    --nest;
+                else if (c == '\n')
+                    ++line_;
             } while (nest > 0);
         }
     }
@@ -235,8 +241,7 @@ private:
                 ++pos_;
             if (pos_ < text_.size() && text_[pos_] == '.') {
                 ++pos_;
-                while (pos_ < text_.size() &&
-                       std::isdigit(static_cast<unsigned char>(text_[pos_])))
+                while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_])))
                     ++pos_;
             }
             if (pos_ < text_.size() && (text_[pos_] == 'e' || text_[pos_] == 'E')) {

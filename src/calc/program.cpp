@@ -23,9 +23,9 @@ void Builder::loadFile(const std::string& name) {
     if (!path) {
         std::string dirs;
         for (const auto& d : searchPath_) dirs += (dirs.empty() ? "" : ":") + d;
-        throw InputError(SourceLoc{name, 0},
-                         "cannot find function file (searched " +
-                             (dirs.empty() ? std::string("nothing") : dirs) + ")");
+        throw InputError(SourceLoc{name, 0}, "cannot find function file (searched " +
+                                                 (dirs.empty() ? std::string("nothing") : dirs) +
+                                                 ")");
     }
     std::ifstream in(*path, std::ios::binary);
     std::stringstream ss;
@@ -68,7 +68,8 @@ std::optional<Function> Program::function(std::string_view name, std::string_vie
     }
     auto bs = builtins();
     for (std::size_t i = 0; i < bs.size(); ++i)
-        if (bs[i].name == name) return Function{builtinFunctionId(static_cast<int>(i)), bs[i].minArgs};
+        if (bs[i].name == name)
+            return Function{builtinFunctionId(static_cast<int>(i)), bs[i].minArgs};
     return std::nullopt;
 }
 
@@ -94,24 +95,26 @@ bool Program::nodeReadsOnly(const Node* root, std::span<const std::string_view> 
         todo.pop_back();
         if (!n) return false;
         switch (n->op()) {
-        case Op::Ray:
-            if (!ok.count(static_cast<std::size_t>(n->index))) return false;
-            break;
-        case Op::Var: {
-            const auto* v = static_cast<const VarInfo*>(n->ptr);
-            if (!v || !v->body) return false;
-            if (seen.insert(v).second) todo.push_back(v->body);
-            break;
-        }
-        case Op::CallUser: {
-            const auto* f = static_cast<const FunctionInfo*>(n->ptr);
-            if (!f || !f->body) return false;
-            if (seen.insert(f).second) todo.push_back(f->body);
-            break;
-        }
-        case Op::CallParamFn:
-        case Op::Error: return false;
-        default: break;
+            case Op::Ray:
+                if (!ok.count(static_cast<std::size_t>(n->index))) return false;
+                break;
+            case Op::Var: {
+                const auto* v = static_cast<const VarInfo*>(n->ptr);
+                if (!v || !v->body) return false;
+                if (seen.insert(v).second) todo.push_back(v->body);
+                break;
+            }
+            case Op::CallUser: {
+                const auto* f = static_cast<const FunctionInfo*>(n->ptr);
+                if (!f || !f->body) return false;
+                if (seen.insert(f).second) todo.push_back(f->body);
+                break;
+            }
+            case Op::CallParamFn:
+            case Op::Error:
+                return false;
+            default:
+                break;
         }
         for (const Node* k : {n->a, n->b, n->c})
             if (k) todo.push_back(k);

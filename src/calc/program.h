@@ -90,9 +90,7 @@ public:
     // Looks `name` up as code in `context` would see it (names.h search rules).
     std::optional<Entry> variable(std::string_view name, std::string_view context = "") const;
     std::optional<Function> function(std::string_view name, std::string_view context = "") const;
-    Entry expression(int id) const {
-        return Entry{expressions_.at(id), expressionBlocks_.at(id)};
-    }
+    Entry expression(int id) const { return Entry{expressions_.at(id), expressionBlocks_.at(id)}; }
 
     // Whether expression `id` (with everything it calls and reads, transitively) reads no
     // ray variables but those named in `allowed`. False where that cannot be known (a

@@ -33,10 +33,10 @@ RayContext distinctRay(std::span<const double> args) {
 }
 
 TEST(CalcRayVars, EachVariableReachesAFunction) {
-    const char* names[] = {"Dx", "Dy", "Dz", "Nx", "Ny", "Nz", "Px", "Py", "Pz", "Lu",
-                           "Lv", "T",  "Ts", "Rdot", "S", "Tx", "Ty", "Tz", "Ix", "Iy",
-                           "Iz", "Jx", "Jy", "Jz", "Kx", "Ky", "Kz", "NxP", "NyP", "NzP",
-                           "RdotP", "CrP", "CgP", "CbP", "DxA", "DyA", "DzA"};
+    const char* names[] = {"Dx",    "Dy",  "Dz",  "Nx",   "Ny",  "Nz",  "Px", "Py",  "Pz",  "Lu",
+                           "Lv",    "T",   "Ts",  "Rdot", "S",   "Tx",  "Ty", "Tz",  "Ix",  "Iy",
+                           "Iz",    "Jx",  "Jy",  "Jz",   "Kx",  "Ky",  "Kz", "NxP", "NyP", "NzP",
+                           "RdotP", "CrP", "CgP", "CbP",  "DxA", "DyA", "DzA"};
     ASSERT_EQ(rayVariables().size(), std::size(names));
     double args[] = {101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111};
     RayContext ray = distinctRay(args);

@@ -112,10 +112,12 @@ TEST(CalcSky, SkybrightOtherSkyTypes) {
         } else if (type == 3) {
             sky = lz;
         } else {  // CIE intermediate as gensky parameterises it
-            double eta = std::acos(dz), zt = std::acos(0.8), g = std::acos(dot(d, Vec3{0, -0.6, 0.8}));
-            sky = lz * ((1.35 * std::sin(5.631 - 3.59 * eta) + 3.12) * std::sin(4.396 - 2.6 * zt) +
-                        6.37 - eta) / 2.326 *
-                  std::exp(g * -0.563 * ((2.629 - eta) * (1.562 - zt) + 0.812)) / 0.9;
+            double eta = std::acos(dz), zt = std::acos(0.8),
+                   g = std::acos(dot(d, Vec3{0, -0.6, 0.8}));
+            sky = lz *
+                  ((1.35 * std::sin(5.631 - 3.59 * eta) + 3.12) * std::sin(4.396 - 2.6 * zt) +
+                   6.37 - eta) /
+                  2.326 * std::exp(g * -0.563 * ((2.629 - eta) * (1.562 - zt) + 0.812)) / 0.9;
         }
         EXPECT_NEAR(ev.eval(skybr), groundBlend(dz, sky, ground), 1e-12) << "type " << type;
     }

@@ -22,8 +22,8 @@ static_assert(offsetof(RayContext, DA) + sizeof(Vec3) == kRayDoubles * sizeof(do
 }
 
 [[noreturn]] void tooDeep(const SourceLoc* loc, const char* kind, const std::string& name) {
-    std::string msg = std::string("recursion too deep in ") + kind + " '" + name +
-                      "' (missing base case?)";
+    std::string msg =
+        std::string("recursion too deep in ") + kind + " '" + name + "' (missing base case?)";
     if (loc) throw InputError(*loc, msg);
     throw InputError(msg);
 }
@@ -121,21 +121,21 @@ double Machine::run(int blockId, const double* args, int nargs) {
 #define V(i) r[i]
 // Runs `block` in the same registers after saving the caller's first `live` ones (and
 // the arguments among them); LOC, KIND and NAME describe the block in errors.
-#define ENTER(block, live, loc, kind, name, dst)                                      \
-    do {                                                                              \
-        if (depth >= frameLimit) [[unlikely]] {                                       \
+#define ENTER(block, live, loc, kind, name, dst)                                           \
+    do {                                                                                   \
+        if (depth >= frameLimit) [[unlikely]] {                                            \
             if (depth > static_cast<std::size_t>(kMaxCallDepth)) tooDeep(loc, kind, name); \
-            frames_.resize(2 * depth);                                                \
-            frames = frames_.data();                                                  \
-            frameLimit = std::min(frames_.size(), std::size_t(kMaxCallDepth) + 1);    \
-        }                                                                             \
-        const std::size_t n_ = (live);                                                \
-        if (savedTop + n_ > savedCap) [[unlikely]]                                    \
-            tooDeep(loc, kind, name);                                                 \
-        std::copy(r, r + n_, saved + savedTop);                                       \
-        frames[depth++] = Frame{pc, savedTop, n_, prm, nprm, dst};                    \
-        savedTop += n_;                                                               \
-        pc = code + blocks[block].entry(argc);                                        \
+            frames_.resize(2 * depth);                                                     \
+            frames = frames_.data();                                                       \
+            frameLimit = std::min(frames_.size(), std::size_t(kMaxCallDepth) + 1);         \
+        }                                                                                  \
+        const std::size_t n_ = (live);                                                     \
+        if (savedTop + n_ > savedCap) [[unlikely]]                                         \
+            tooDeep(loc, kind, name);                                                      \
+        std::copy(r, r + n_, saved + savedTop);                                            \
+        frames[depth++] = Frame{pc, savedTop, n_, prm, nprm, dst};                         \
+        savedTop += n_;                                                                    \
+        pc = code + blocks[block].entry(argc);                                             \
     } while (0)
     const Instr* in;
 #if defined(__GNUC__)
@@ -143,7 +143,12 @@ double Machine::run(int blockId, const double* args, int nargs) {
     // the branch predictor sees one indirect jump per kind of instruction.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpedantic"
-    static const void* const kHandlers[] = {&&op_Mov, &&op_Neg, &&op_Add, &&op_Sub, &&op_Mul, &&op_MulAdd, &&op_Div, &&op_Pow, &&op_PowI, &&op_Math1, &&op_BuiltinN, &&op_Jmp, &&op_JNP, &&op_JNPSub, &&op_Sel, &&op_JCached, &&op_StVar, &&op_NeedVar, &&op_LdArg, &&op_LdArgDyn, &&op_LdParam, &&op_LdParamDyn, &&op_Call, &&op_CallId, &&op_Ret, &&op_RetVar, &&op_Error};
+    static const void* const kHandlers[] = {
+        &&op_Mov,   &&op_Neg,      &&op_Add,     &&op_Sub,        &&op_Mul,      &&op_MulAdd,
+        &&op_Div,   &&op_Pow,      &&op_PowI,    &&op_Math1,      &&op_BuiltinN, &&op_Jmp,
+        &&op_JNP,   &&op_JNPSub,   &&op_Sel,     &&op_JCached,    &&op_StVar,    &&op_NeedVar,
+        &&op_LdArg, &&op_LdArgDyn, &&op_LdParam, &&op_LdParamDyn, &&op_Call,     &&op_CallId,
+        &&op_Ret,   &&op_RetVar,   &&op_Error};
 #define CASE(name) op_##name : case Code::name
 #define NEXT                                       \
     do {                                           \
@@ -157,17 +162,22 @@ double Machine::run(int blockId, const double* args, int nargs) {
     for (;;) {
         in = pc++;
         switch (in->op) {
-            CASE(Mov): r[in->d] = V(in->a); NEXT;
-            CASE(Neg): r[in->d] = -V(in->a); NEXT;
-            CASE(Add): r[in->d] = V(in->a) + V(in->b); NEXT;
-            CASE(Sub): r[in->d] = V(in->a) - V(in->b); NEXT;
-            CASE(Mul): r[in->d] = V(in->a) * V(in->b); NEXT;
-            CASE(MulAdd): {
+            CASE(Mov) : r[in->d] = V(in->a);
+            NEXT;
+            CASE(Neg) : r[in->d] = -V(in->a);
+            NEXT;
+            CASE(Add) : r[in->d] = V(in->a) + V(in->b);
+            NEXT;
+            CASE(Sub) : r[in->d] = V(in->a) - V(in->b);
+            NEXT;
+            CASE(Mul) : r[in->d] = V(in->a) * V(in->b);
+            NEXT;
+            CASE(MulAdd) : {
                 double m = V(in->a) * V(in->b);
                 r[in->d] = m + V(in->c);
                 NEXT;
             }
-            CASE(Div): {
+            CASE(Div) : {
                 double x = V(in->a), y = V(in->b);
                 if (y == 0) [[unlikely]] {
                     ++mathErrors;
@@ -177,58 +187,59 @@ double Machine::run(int blockId, const double* args, int nargs) {
                 }
                 NEXT;
             }
-            CASE(Pow): r[in->d] = finiteOrZero(std::pow(V(in->a), V(in->b)), mathErrors); NEXT;
-            CASE(PowI): r[in->d] = powerInt(V(in->a), in->b, mathErrors); NEXT;
-            CASE(Math1):
-                r[in->d] = finiteOrZero(static_cast<const Builtin*>(in->p)->f1(V(in->a)), mathErrors);
-                NEXT;
-            CASE(BuiltinN):
-                r[in->d] = finiteOrZero(static_cast<const Builtin*>(in->p)->fn(r + in->a, in->c),
-                                       mathErrors);
-                NEXT;
-            CASE(Jmp): pc = code + in->c; NEXT;
-            CASE(JNP):
-                if (!(V(in->a) > 0)) pc = code + in->c;
-                NEXT;
-            CASE(JNPSub):
-                if (!(V(in->a) - V(in->b) > 0)) pc = code + in->c;
-                NEXT;
-            CASE(Sel): {
+            CASE(Pow) : r[in->d] = finiteOrZero(std::pow(V(in->a), V(in->b)), mathErrors);
+            NEXT;
+            CASE(PowI) : r[in->d] = powerInt(V(in->a), in->b, mathErrors);
+            NEXT;
+            CASE(Math1)
+                : r[in->d] =
+                      finiteOrZero(static_cast<const Builtin*>(in->p)->f1(V(in->a)), mathErrors);
+            NEXT;
+            CASE(BuiltinN)
+                : r[in->d] = finiteOrZero(static_cast<const Builtin*>(in->p)->fn(r + in->a, in->c),
+                                          mathErrors);
+            NEXT;
+            CASE(Jmp) : pc = code + in->c;
+            NEXT;
+            CASE(JNP) : if (!(V(in->a) > 0)) pc = code + in->c;
+            NEXT;
+            CASE(JNPSub) : if (!(V(in->a) - V(in->b) > 0)) pc = code + in->c;
+            NEXT;
+            CASE(Sel) : {
                 int k = indexOf(V(in->a));
                 if (k == 0) {
                     r[in->d] = in->b;
                     pc = code + in->c;
                 } else if (k < 0 || k > in->b) {
-                            runtimeError(in->p, "select index " + std::to_string(k) +
-                                           " out of range 1.." + std::to_string(in->b));
+                    runtimeError(in->p, "select index " + std::to_string(k) + " out of range 1.." +
+                                            std::to_string(in->b));
                 } else {
                     pc = code + pc[k - 1].c;
                 }
                 NEXT;
             }
-            CASE(JCached):
-                if (stamps[in->b] == clock) pc = code + in->c;
-                NEXT;
-            CASE(StVar):
-                r[CodeImage::varOperand(in->b)] = V(in->a);
-                stamps[in->b] = clock;
-                NEXT;
-            CASE(NeedVar):
-                if (stamps[in->b] != clock) {
-                    const auto* v = static_cast<const VarInfo*>(in->p);
-                    ENTER(img.varBlock[in->b], in->a, &v->loc, "variable", v->name, -1);
-                }
-                NEXT;
-            CASE(LdArg):
-                if (in->b >= 1 && static_cast<std::size_t>(in->b) <= argc) [[likely]]
-                    r[in->d] = argv[in->b - 1];
-                else
-                    r[in->d] = modArg(in->b, in->p, *ray_);
-                NEXT;
-            CASE(LdArgDyn): r[in->d] = modArg(indexOf(V(in->a)), in->p, *ray_); NEXT;
-            CASE(LdParam): r[in->d] = param(in->b, in->p, prm, nprm); NEXT;
-            CASE(LdParamDyn): r[in->d] = param(indexOf(V(in->a)), in->p, prm, nprm); NEXT;
-            CASE(Call): {
+            CASE(JCached) : if (stamps[in->b] == clock) pc = code + in->c;
+            NEXT;
+            CASE(StVar) : r[CodeImage::varOperand(in->b)] = V(in->a);
+            stamps[in->b] = clock;
+            NEXT;
+            CASE(NeedVar) : if (stamps[in->b] != clock) {
+                const auto* v = static_cast<const VarInfo*>(in->p);
+                ENTER(img.varBlock[in->b], in->a, &v->loc, "variable", v->name, -1);
+            }
+            NEXT;
+            CASE(LdArg)
+                : if (in->b >= 1 && static_cast<std::size_t>(in->b) <= argc) [[likely]] r[in->d] =
+                      argv[in->b - 1];
+            else r[in->d] = modArg(in->b, in->p, *ray_);
+            NEXT;
+            CASE(LdArgDyn) : r[in->d] = modArg(indexOf(V(in->a)), in->p, *ray_);
+            NEXT;
+            CASE(LdParam) : r[in->d] = param(in->b, in->p, prm, nprm);
+            NEXT;
+            CASE(LdParamDyn) : r[in->d] = param(indexOf(V(in->a)), in->p, prm, nprm);
+            NEXT;
+            CASE(Call) : {
                 const FunctionInfo& f = *img.functions[in->b];
                 ENTER(img.funcBlock[in->b], in->a + in->c,
                       &static_cast<const NodeInfo*>(in->p)->loc, "function", f.name, in->d);
@@ -236,7 +247,7 @@ double Machine::run(int blockId, const double* args, int nargs) {
                 nprm = in->c;
                 NEXT;
             }
-            CASE(CallId): {
+            CASE(CallId) : {
                 double id = param(in->b, in->p, prm, nprm);
                 const double* base = r + in->a;
                 if (id >= 0) {
@@ -250,14 +261,13 @@ double Machine::run(int blockId, const double* args, int nargs) {
                 } else {
                     const Builtin& b = builtins()[static_cast<int>(-id) - 1];
                     if (in->c < b.minArgs || in->c > b.maxArgs)
-                        runtimeError(in->p, "wrong number of arguments to '" +
-                                               std::string(b.name) + "'");
+                        runtimeError(in->p,
+                                     "wrong number of arguments to '" + std::string(b.name) + "'");
                     r[in->d] = finiteOrZero(b.f1 ? b.f1(base[0]) : b.fn(base, in->c), mathErrors);
                 }
                 NEXT;
             }
-            CASE(RetVar):
-            CASE(Ret): {
+            CASE(RetVar) : CASE(Ret) : {
                 double v = V(in->a);
                 if (in->op == Code::RetVar) {
                     r[CodeImage::varOperand(in->b)] = v;
@@ -273,8 +283,9 @@ double Machine::run(int blockId, const double* args, int nargs) {
                 if (f.dst >= 0) r[f.dst] = v;
                 NEXT;
             }
-            CASE(Error): runtimeError(in->p, static_cast<const NodeInfo*>(in->p)->text);
-            default: __builtin_unreachable();
+            CASE(Error) : runtimeError(in->p, static_cast<const NodeInfo*>(in->p)->text);
+            default:
+                __builtin_unreachable();
         }
     }
 #if defined(__GNUC__)

@@ -21,33 +21,35 @@
 namespace rp::calc {
 
 enum class Code : std::uint8_t {
-    Mov,        // d = a
-    Neg,        // d = -a
-    Add, Sub, Mul,
-    MulAdd,     // d = a*b + c (two roundings, as written)
-    Div,        // d = a / b, 0 and counted when b == 0
-    Pow,        // d = a ^ b
-    PowI,       // d = a ^ b, b an integer immediate
-    Math1,      // d = f(a), p = Builtin
-    BuiltinN,   // d = f(args at register a, c of them), p = Builtin
-    Jmp,        // goto c
-    JNP,        // if !(a > 0) goto c
-    JNPSub,     // if !(a - b > 0) goto c
-    Sel,        // select: index a, b cases; k = 0 gives b and goes to c; else runs the
-                // k-th of the b Jmp instructions that follow. p = NodeInfo
-    JCached,    // if variable b is cached for this ray goto c (its code follows inline)
-    StVar,      // cache a as variable b
-    NeedVar,    // if variable b is not cached for this ray, run its block with a window
-                // starting at register a. p = VarInfo
-    LdArg,      // d = modifier argument b (b < 1: their number). p = NodeInfo
-    LdArgDyn,   // d = modifier argument round(a)
-    LdParam,    // d = function argument b (b < 1: their number). p = NodeInfo
-    LdParamDyn, // d = function argument round(a)
-    Call,       // d = function b (arguments in c registers from a). p = NodeInfo
-    CallId,     // d = function whose id is argument b (arguments as Call). p = NodeInfo
-    Ret,        // return a
-    RetVar,     // cache a as variable b, return it
-    Error,      // throw p = NodeInfo (text is the message)
+    Mov,  // d = a
+    Neg,  // d = -a
+    Add,
+    Sub,
+    Mul,
+    MulAdd,      // d = a*b + c (two roundings, as written)
+    Div,         // d = a / b, 0 and counted when b == 0
+    Pow,         // d = a ^ b
+    PowI,        // d = a ^ b, b an integer immediate
+    Math1,       // d = f(a), p = Builtin
+    BuiltinN,    // d = f(args at register a, c of them), p = Builtin
+    Jmp,         // goto c
+    JNP,         // if !(a > 0) goto c
+    JNPSub,      // if !(a - b > 0) goto c
+    Sel,         // select: index a, b cases; k = 0 gives b and goes to c; else runs the
+                 // k-th of the b Jmp instructions that follow. p = NodeInfo
+    JCached,     // if variable b is cached for this ray goto c (its code follows inline)
+    StVar,       // cache a as variable b
+    NeedVar,     // if variable b is not cached for this ray, run its block with a window
+                 // starting at register a. p = VarInfo
+    LdArg,       // d = modifier argument b (b < 1: their number). p = NodeInfo
+    LdArgDyn,    // d = modifier argument round(a)
+    LdParam,     // d = function argument b (b < 1: their number). p = NodeInfo
+    LdParamDyn,  // d = function argument round(a)
+    Call,        // d = function b (arguments in c registers from a). p = NodeInfo
+    CallId,      // d = function whose id is argument b (arguments as Call). p = NodeInfo
+    Ret,         // return a
+    RetVar,      // cache a as variable b, return it
+    Error,       // throw p = NodeInfo (text is the message)
 };
 
 struct Instr {
@@ -96,9 +98,7 @@ struct CodeImage {
     int argOperand(int n) const {  // n = 1 .. kArgGlobals, ascending in memory
         return -nvars - kRayDoubles - kArgGlobals - 1 + n;
     }
-    int constOperand(int index) const {
-        return -nvars - kRayDoubles - kArgGlobals - 1 - index;
-    }
+    int constOperand(int index) const { return -nvars - kRayDoubles - kArgGlobals - 1 - index; }
 };
 
 // Calls nested deeper than this are reported as runaway recursion.

@@ -11,14 +11,14 @@
 #include <sstream>
 
 #include "calc/search_path.h"
-#include "scene/scene_load.h"
-#include "util/warnings.h"
 #include "gen/genblinds.h"
 #include "gen/genrev.h"
 #include "gen/gensurf.h"
 #include "gen/genworm.h"
 #include "scene/reader.h"
+#include "scene/scene_load.h"
 #include "util/shared_for_tests.h"
+#include "util/warnings.h"
 
 namespace rp::gen {
 
@@ -231,7 +231,6 @@ TEST(Validation, EverySharedSceneLoads) {
 
 }  // namespace rp::gen
 
-
 namespace rp::gen {
 
 // mgf2rad runs in-process (here on genBSDF's blinds MGF, through xform); its MGF errors
@@ -239,7 +238,8 @@ namespace rp::gen {
 TEST(BuiltinCommands, Mgf2radAndPkgBsdfRunInProcess) {
     unsetenv(kShellCommandsEnv);
     std::string mgf = std::string(RP_SOURCE_DIR) + "/tests/data/mgf/genbsdf_blinds.mgf";
-    Scene s = parseScene("!mgf2rad " + mgf + " | xform -t 0 0 1\n", "win.rad", builtinLoadOptions());
+    Scene s =
+        parseScene("!mgf2rad " + mgf + " | xform -t 0 0 1\n", "win.rad", builtinLoadOptions());
     size_t polygons = 0;
     for (const Primitive& p : s.prims) polygons += p.type == PrimType::Polygon;
     EXPECT_EQ(polygons, 45u);

@@ -82,8 +82,8 @@ std::string GenFunctions::mathWarning() const {
     long n = mathErrors();
     if (n == 0) return {};
     return "warning: " + std::to_string(n) +
-           (n == 1 ? " division by zero or invalid math call" :
-                     " divisions by zero or invalid math calls") +
+           (n == 1 ? " division by zero or invalid math call"
+                   : " divisions by zero or invalid math calls") +
            " evaluated as 0";
 }
 
@@ -94,8 +94,8 @@ std::vector<std::string> takeCalcOptions(const std::vector<std::string>& words,
         const std::string& w = words[i];
         if (w == "-e" || w == "-f") {
             if (i + 1 >= words.size()) throw InputError("option " + w + " needs a value");
-            sources.push_back({w == "-e" ? CalcSource::Kind::Expression : CalcSource::Kind::File,
-                               words[++i]});
+            sources.push_back(
+                {w == "-e" ? CalcSource::Kind::Expression : CalcSource::Kind::File, words[++i]});
         } else {
             rest.push_back(w);
         }

@@ -23,7 +23,6 @@ struct GenSurface {
     double radius = 0;
 };
 
-
 // printf into a std::string (C locale formatting, as RADIANCE's printf).
 std::string cformat(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 

@@ -14,8 +14,7 @@ namespace rp::gen {
 namespace {
 
 // RADIANCE genbox's letters for corner codes 0..63 in polygon names.
-constexpr const char* kLetters =
-    "0123456789._ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
+constexpr const char* kLetters = "0123456789._ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
 
 // RADIANCE's normalize() (fvect.c): near unit length it scales by a first-order
 // approximation of 1/|v| instead of a division; matching it keeps the corner vertices
@@ -192,10 +191,9 @@ struct BoxBuilder {
                 {034, 036, 066, 064}, {037, 057, 056, 036}, {052, 062, 066, 056},
                 {052, 053, 033, 032}, {057, 067, 063, 053}, {061, 031, 033, 063},
                 {065, 067, 037, 035}, {055, 051, 061, 065}, {034, 054, 055, 035}};
-            static constexpr int kCorners[8][3] = {{030, 050, 060}, {051, 031, 061},
-                                                   {032, 062, 052}, {064, 054, 034},
-                                                   {036, 056, 066}, {065, 035, 055},
-                                                   {053, 063, 033}, {037, 067, 057}};
+            static constexpr int kCorners[8][3] = {
+                {030, 050, 060}, {051, 031, 061}, {032, 062, 052}, {064, 054, 034},
+                {036, 056, 066}, {065, 035, 055}, {053, 063, 033}, {037, 067, 057}};
             for (const auto& q : kBevels) polygon({q[0], q[1], q[2], q[3]});
             for (const auto& t : kCorners) polygon({t[0], t[1], t[2]});
         } else if (segments == 0) {
@@ -238,8 +236,7 @@ GenboxOptions parseGenboxArgs(const std::vector<std::string>& args) {
             opt.segments = parseInt(optionValue(args, i), "segment count");
             if (opt.segments < 1) throw InputError("-n needs at least 1 segment");
         } else if (a == "-s" || a == "-o") {
-            throw InputError("option " + a + " (" +
-                             (a == "-s" ? "smoothed facets" : "OBJ output") +
+            throw InputError("option " + a + " (" + (a == "-s" ? "smoothed facets" : "OBJ output") +
                              ") is not supported yet");
         } else {
             throw InputError("unknown option '" + a + "'");
@@ -248,8 +245,8 @@ GenboxOptions parseGenboxArgs(const std::vector<std::string>& args) {
     double smallest = std::min({opt.size.x, opt.size.y, opt.size.z});
     if (opt.edges != BoxEdges::Square && 2 * opt.edgeSize >= smallest)
         throw InputError(cformat("%s %g must be less than half the smallest size (%g)",
-                                 opt.edges == BoxEdges::Round ? "radius" : "bevel",
-                                 opt.edgeSize, smallest));
+                                 opt.edges == BoxEdges::Round ? "radius" : "bevel", opt.edgeSize,
+                                 smallest));
     return opt;
 }
 
@@ -268,8 +265,7 @@ std::vector<GenSurface> genboxSurfaces(const GenboxOptions& opt) {
     return std::move(b.out);
 }
 
-std::string formatGenboxSurface(const std::string& material, const GenSurface& s,
-                                bool meshLayout) {
+std::string formatGenboxSurface(const std::string& material, const GenSurface& s, bool meshLayout) {
     std::string out;
     switch (s.kind) {
         case GenSurface::Kind::Polygon:

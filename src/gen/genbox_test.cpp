@@ -144,7 +144,8 @@ TEST(Genbox, MatchesCornellValidationScene) {
         }
     }
     ASSERT_EQ(ref.size(), 6u);
-    auto faces = genboxSurfaces(parseGenboxArgs({"genbox", "mirror_mat", "mbox", "1.5", "1.5", "3.0"}));
+    auto faces =
+        genboxSurfaces(parseGenboxArgs({"genbox", "mirror_mat", "mbox", "1.5", "1.5", "3.0"}));
     double c = std::cos(20 * kPi / 180), s = std::sin(20 * kPi / 180);
     for (const GenSurface& face : faces) {
         ASSERT_TRUE(ref.count(face.name)) << face.name;
@@ -215,19 +216,19 @@ TEST(Genbox, TessellatedRoundingLiesOnTheRoundedSurface) {
                 EXPECT_NEAR(length(p - inner), r, 1e-12) << faces[i].name;
             }
         // The exact rounded volume: inner box + slabs + quarter cylinders + sphere.
-        double exact = 1 * 2 * 3 + 2 * r * (1 * 2 + 2 * 3 + 1 * 3) +
-                       kPi * r * r * (1 + 2 + 3) + 4.0 / 3.0 * kPi * r * r * r;
+        double exact = 1 * 2 * 3 + 2 * r * (1 * 2 + 2 * 3 + 1 * 3) + kPi * r * r * (1 + 2 + 3) +
+                       4.0 / 3.0 * kPi * r * r * r;
         EXPECT_LT(volume(faces), exact);
         EXPECT_GT(volume(faces), 0.97 * exact);
     }
     GenboxOptions in = parseGenboxArgs({"genbox", "m", "b", "2", "3", "4", "-r", "0.5", "-i"});
     EXPECT_EQ(genboxRoundingSegments(in), 32);
     expectClosedConvex(genboxSurfaces(in), true);
-    EXPECT_EQ(genboxRoundingSegments(parseGenboxArgs({"genbox", "m", "b", "2", "3", "4", "-r",
-                                                      "0.5", "-n", "5"})),
+    EXPECT_EQ(genboxRoundingSegments(
+                  parseGenboxArgs({"genbox", "m", "b", "2", "3", "4", "-r", "0.5", "-n", "5"})),
               8);
-    EXPECT_EQ(genboxRoundingSegments(parseGenboxArgs({"genbox", "m", "b", "2", "3", "4", "-b",
-                                                      "0.5", "-n", "5"})),
+    EXPECT_EQ(genboxRoundingSegments(
+                  parseGenboxArgs({"genbox", "m", "b", "2", "3", "4", "-b", "0.5", "-n", "5"})),
               0);
 }
 

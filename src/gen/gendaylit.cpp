@@ -172,14 +172,16 @@ struct Computation {
                 double global = opt.value1;
                 if (alt <= 0) {
                     if (global > 50)
-                        warn("Warning: global irradiance higher than 50 W/m^2 while the sun "
-                             "altitude is lower than zero");
+                        warn(
+                            "Warning: global irradiance higher than 50 W/m^2 while the sun "
+                            "altitude is lower than zero");
                     sky.directIrradiance = sky.diffuseIrradiance = 0;
                 } else {
                     double s0 = kSolarConstantW * eccentricity(dayNumber) * std::sin(alt);
                     if (global > s0) {
-                        warn("Warning: global irradiance is higher than the time-dependent "
-                             "solar constant s0");
+                        warn(
+                            "Warning: global irradiance is higher than the time-dependent "
+                            "solar constant s0");
                         global = s0 * 0.999;
                     }
                     double kt = global / s0;  // Erbs, Klein & Duffie 1982 diffuse fraction
@@ -190,10 +192,10 @@ struct Computation {
                                           : 0.165;
                     sky.diffuseIrradiance = global * fraction;
                     sky.directIrradiance = global - sky.diffuseIrradiance;
-                    sky.comments.push_back(cformat("# erbs_s0, erbs_kt, irr_dir_h, irr_diff: "
-                                                   "%.3f %.3f %.3f %.3f",
-                                                   s0, kt, sky.directIrradiance,
-                                                   sky.diffuseIrradiance));
+                    sky.comments.push_back(
+                        cformat("# erbs_s0, erbs_kt, irr_dir_h, irr_diff: "
+                                "%.3f %.3f %.3f %.3f",
+                                s0, kt, sky.directIrradiance, sky.diffuseIrradiance));
                     sky.comments.push_back(
                         "# WARNING: the -E option is only recommended for a rough estimation!");
                     sky.directIrradiance /= std::sin(alt);
@@ -223,7 +225,8 @@ struct Computation {
         }
         // Ground: the zenith value times gensky's normalisation for the CIE sky type
         // nearest the Perez clearness, plus the sun, times the reflectance.
-        sky.zenithBrightness = perezRelativeLuminance(sky.coeffs, 0.0, Z) * sky.diffuseNormalisation;
+        sky.zenithBrightness =
+            perezRelativeLuminance(sky.coeffs, 0.0, Z) * sky.diffuseNormalisation;
         double norm = 0.777778;
         if (sky.epsilon >= 6)
             norm = skyNormalisationFit(alt, false) / clearSkyF2(alt) / kPi;
@@ -251,9 +254,10 @@ double sunsetHour(const Site& site, int month, int day, bool rise) {
 
 GendaylitOptions parseGendaylitArgs(const std::vector<std::string>& args) {
     if (args.size() < 4)
-        throw InputError("usage: gendaylit month day hour [-y year] [options] "
-                         "{-W dirnorm diffhor | -G dirhor diffhor | -L dirillum diffillum | "
-                         "-P epsilon delta | -E global} | gendaylit -ang altitude azimuth ...");
+        throw InputError(
+            "usage: gendaylit month day hour [-y year] [options] "
+            "{-W dirnorm diffhor | -G dirhor diffhor | -L dirillum diffillum | "
+            "-P epsilon delta | -E global} | gendaylit -ang altitude azimuth ...");
     GendaylitOptions opt;
     if (args[1] == "-ang") {
         opt.fromAngles = true;
@@ -277,9 +281,19 @@ GendaylitOptions parseGendaylitArgs(const std::vector<std::string>& args) {
     };
     for (size_t i = 4; i < args.size(); ++i) {
         const std::string& a = args[i];
-        if (a == "-s" || a == "+s") { opt.sun = a[0] == '+'; continue; }
-        if (a == "-c" || a == "+c") { opt.sun = false; opt.cloudy = true; continue; }
-        if (a == "-w") { opt.quiet = true; continue; }
+        if (a == "-s" || a == "+s") {
+            opt.sun = a[0] == '+';
+            continue;
+        }
+        if (a == "-c" || a == "+c") {
+            opt.sun = false;
+            opt.cloudy = true;
+            continue;
+        }
+        if (a == "-w") {
+            opt.quiet = true;
+            continue;
+        }
         if (a == "-y") {
             opt.year = parseInt(optionValue(args, i), "year");
             if (opt.year < 1950 || opt.year > 2050)
@@ -316,8 +330,7 @@ GendaylitOptions parseGendaylitArgs(const std::vector<std::string>& args) {
             throw InputError("unknown option '" + a + "'");
         }
     }
-    if (!opt.haveInput)
-        throw InputError("no sky measurements: give -W, -G, -L, -P or -E");
+    if (!opt.haveInput) throw InputError("no sky measurements: give -W, -G, -L, -P or -E");
     return opt;
 }
 
@@ -341,9 +354,10 @@ GendaylitSky computeGendaylit(const GendaylitOptions& opt) {
             if (p.solarTime < sunsetHour(opt.site, opt.month, opt.day, true) ||
                 p.solarTime > sunsetHour(opt.site, opt.month, opt.day, false)) {
                 sky.sunDir = sunDirection(sky.altitude, sky.azimuth);
-                c.errorSky(cformat("Warning: sun altitude below zero at time step %i %i %.2f, "
-                                   "printing error sky",
-                                   opt.month, opt.day, opt.hour));
+                c.errorSky(
+                    cformat("Warning: sun altitude below zero at time step %i %i %.2f, "
+                            "printing error sky",
+                            opt.month, opt.day, opt.hour));
             }
         }
         if (!opt.cloudy && sky.altitude > 87 * kDegree) {
@@ -379,8 +393,8 @@ std::string formatGendaylit(const GendaylitSky& sky, const std::vector<std::stri
             out += cformat("\nvoid light solar\n0\n0\n3 %.3e %.3e %.3e\n", s, s, s);
         else
             out += "\nvoid light solar\n0\n0\n3 0.0 0.0 0.0\n";
-        out += cformat("\nsolar source sun\n0\n0\n4 %f %f %f %f\n", d.x, d.y, d.z,
-                       2 * kHalfSunAngle);
+        out +=
+            cformat("\nsolar source sun\n0\n0\n4 %f %f %f %f\n", d.x, d.y, d.z, 2 * kHalfSunAngle);
     }
     const auto& c = sky.coeffs;
     out += "\nvoid brightfunc skyfunc\n2 skybright perezlum.cal\n0\n";

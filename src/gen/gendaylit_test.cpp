@@ -134,10 +134,12 @@ TEST(Gendaylit, ErrorSkies) {
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("sun altitude below zero"), std::string::npos);
     // Daytime but no light at all, and a direct beam brighter than the sun.
-    EXPECT_TRUE(computeGendaylit(parseGendaylitArgs({"gendaylit", "-ang", "40", "0", "-W", "0", "0"}))
-                    .errorSky);
-    EXPECT_TRUE(computeGendaylit(parseGendaylitArgs({"gendaylit", "-ang", "40", "0", "-W", "1400", "50"}))
-                    .errorSky);
+    EXPECT_TRUE(
+        computeGendaylit(parseGendaylitArgs({"gendaylit", "-ang", "40", "0", "-W", "0", "0"}))
+            .errorSky);
+    EXPECT_TRUE(
+        computeGendaylit(parseGendaylitArgs({"gendaylit", "-ang", "40", "0", "-W", "1400", "50"}))
+            .errorSky);
     // -w silences warnings.
     warnings.clear();
     gendaylit({"gendaylit", "1", "1", "2", "-W", "0", "0", "-w"}, &warnings);
@@ -146,13 +148,16 @@ TEST(Gendaylit, ErrorSkies) {
 
 TEST(Gendaylit, InputVariantsAgree) {
     // -G direct horizontal = -W direct normal * sin(alt).
-    GendaylitSky w = computeGendaylit(parseGendaylitArgs({"gendaylit", "-ang", "30", "0", "-W", "500", "100"}));
-    GendaylitSky g = computeGendaylit(parseGendaylitArgs({"gendaylit", "-ang", "30", "0", "-G", "250", "100"}));
+    GendaylitSky w =
+        computeGendaylit(parseGendaylitArgs({"gendaylit", "-ang", "30", "0", "-W", "500", "100"}));
+    GendaylitSky g =
+        computeGendaylit(parseGendaylitArgs({"gendaylit", "-ang", "30", "0", "-G", "250", "100"}));
     EXPECT_NEAR(g.epsilon, w.epsilon, 1e-9);
     EXPECT_NEAR(g.diffuseNormalisation, w.diffuseNormalisation, 1e-9);
     // -P with W's epsilon and delta gives W's irradiances back.
-    GendaylitSky p = computeGendaylit(parseGendaylitArgs(
-        {"gendaylit", "-ang", "30", "0", "-P", std::to_string(w.epsilon), std::to_string(w.delta)}));
+    GendaylitSky p =
+        computeGendaylit(parseGendaylitArgs({"gendaylit", "-ang", "30", "0", "-P",
+                                             std::to_string(w.epsilon), std::to_string(w.delta)}));
     EXPECT_NEAR(p.diffuseIrradiance, 100, 0.01);
     EXPECT_NEAR(p.directIrradiance, 500, 0.1);
     // -L with W's illuminances iterates back to (nearly) W's irradiances.
@@ -173,14 +178,17 @@ TEST(Gendaylit, BadInput) {
         }
         return std::string("no error");
     };
-    EXPECT_EQ(message(A{"gendaylit", "13", "1", "12", "-W", "1", "1"}), "bad month 13: expected 1..12");
+    EXPECT_EQ(message(A{"gendaylit", "13", "1", "12", "-W", "1", "1"}),
+              "bad month 13: expected 1..12");
     EXPECT_EQ(message(A{"gendaylit", "4", "31", "12", "-W", "1", "1"}),
               "bad day 31: month 4 has days 1..30");
     EXPECT_EQ(message(A{"gendaylit", "4", "3", "24", "-W", "1", "1"}),
               "bad hour '24': expected 0 <= hour < 24");
-    EXPECT_EQ(message(A{"gendaylit", "4", "3", "12"}), "no sky measurements: give -W, -G, -L, -P or -E");
+    EXPECT_EQ(message(A{"gendaylit", "4", "3", "12"}),
+              "no sky measurements: give -W, -G, -L, -P or -E");
     EXPECT_EQ(message(A{"gendaylit", "4", "3", "12", "-W", "1"}), "option -W needs two values");
-    EXPECT_EQ(message(A{"gendaylit", "4", "3", "12", "-W", "1", "1", "-O", "3"}).substr(0, 6), "-O mus");
+    EXPECT_EQ(message(A{"gendaylit", "4", "3", "12", "-W", "1", "1", "-O", "3"}).substr(0, 6),
+              "-O mus");
     EXPECT_EQ(message(A{"gendaylit", "4", "3", "12", "-W", "1", "1", "-k"}), "unknown option '-k'");
 }
 

@@ -17,8 +17,8 @@ struct GenprismOptions {
     std::string material;
     std::string name;
     std::vector<std::array<double, 2>> vertices;  // (x, y) in the z = 0 plane
-    Vec3 extrude{0, 0, 1};  // -l lx ly lz
-    bool ends = true;       // -e toggles
+    Vec3 extrude{0, 0, 1};                        // -l lx ly lz
+    bool ends = true;                             // -e toggles
     bool complete = false;  // -c toggles: the polygon is already closed, no last side
     double radius = 0;      // -r: corner rounding radius
 };

@@ -40,7 +40,8 @@ TEST(Genprism, NamesOrderAndGeometry) {
 TEST(Genprism, OrientationFollowsVertexOrder) {
     for (bool clockwise : {false, true}) {
         std::vector<std::string> args = {"genprism", "m", "p", "4"};
-        std::vector<std::pair<const char*, const char*>> v = {{"0", "0"}, {"2", "0"}, {"2", "1"}, {"0", "1"}};
+        std::vector<std::pair<const char*, const char*>> v = {
+            {"0", "0"}, {"2", "0"}, {"2", "1"}, {"0", "1"}};
         if (clockwise) std::swap(v[1], v[3]);
         for (auto [x, y] : v) {
             args.push_back(x);
@@ -80,7 +81,8 @@ TEST(Genprism, OpenAndEndlessVariants) {
 TEST(Genprism, RoundedCorners) {
     // Clockwise square (outward normals): every corner is convex, so each end gets a
     // sphere and a cylinder per vertex and each side its edge cylinder.
-    auto s = prism({"genprism", "m", "p", "4", "0", "0", "0", "2", "2", "2", "2", "0", "-r", "0.25"});
+    auto s =
+        prism({"genprism", "m", "p", "4", "0", "0", "0", "2", "2", "2", "2", "0", "-r", "0.25"});
     ASSERT_EQ(s.size(), 1u + 8u + 1u + 8u + 8u);
     EXPECT_EQ(s[0].name, "p.b");
     EXPECT_EQ(s[1].name, "p.bc1");
@@ -91,8 +93,9 @@ TEST(Genprism, RoundedCorners) {
     EXPECT_NEAR(s[0].points[0].y, 0.25, 1e-12);
     EXPECT_NEAR(s[1].points[0].z, 0.25, 1e-12);
     std::string text = formatGenprismSurface("m", s[1]);
-    EXPECT_EQ(text, "\nm sphere p.bc1\n0\n0\n4               0.25               0.25"
-                    "               0.25               0.25\n");
+    EXPECT_EQ(text,
+              "\nm sphere p.bc1\n0\n0\n4               0.25               0.25"
+              "               0.25               0.25\n");
     EXPECT_EQ(s[9].name, "p.t");
     EXPECT_EQ(s[18].name, "p.1");
     EXPECT_EQ(s[19].name, "p.e1");
@@ -123,8 +126,9 @@ TEST(Genprism, BadInput) {
               "not enough vertices (need at least 3)");
     EXPECT_EQ(message(A{"genprism", "m", "p", "3", "0", "0", "1", "0", "0"}).substr(0, 20),
               "expected 3 vertices ");
-    EXPECT_EQ(message(A{"genprism", "m", "p", "3", "0", "0", "1", "0", "0", "1", "-l", "0", "0", "0"}),
-              "zero extrusion vector");
+    EXPECT_EQ(
+        message(A{"genprism", "m", "p", "3", "0", "0", "1", "0", "0", "1", "-l", "0", "0", "0"}),
+        "zero extrusion vector");
     EXPECT_EQ(message(A{"genprism", "m", "p", "3", "0", "0", "1", "0", "0", "1", "-r", "2"}),
               "rounding greater than height");
     EXPECT_EQ(message(A{"genprism", "m", "p", "3", "0", "0", "1", "0", "0", "1", "-x"}),
@@ -132,9 +136,10 @@ TEST(Genprism, BadInput) {
     EXPECT_EQ(message(A{"genprism", "m", "p", "/nonexistent/verts"}),
               "/nonexistent/verts: cannot open vertex file");
     std::istringstream none;
-    EXPECT_THROW(genprismSurfaces(parseGenprismArgs(
-                     A{"genprism", "m", "p", "3", "0", "0", "0", "0", "1", "1", "-r", "0.1"}, none)),
-                 InputError);  // degenerate side
+    EXPECT_THROW(
+        genprismSurfaces(parseGenprismArgs(
+            A{"genprism", "m", "p", "3", "0", "0", "0", "0", "1", "1", "-r", "0.1"}, none)),
+        InputError);  // degenerate side
 }
 
 }  // namespace

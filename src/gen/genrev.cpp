@@ -43,8 +43,8 @@ GenrevOptions parseGenrevArgs(const std::vector<std::string>& args) {
     opt.segments = parseInt(args[5], "nseg");
     if (opt.segments <= 0)
         throw InputError("nseg must be positive, got " + std::to_string(opt.segments));
-    std::vector<std::string> rest = takeCalcOptions(
-        std::vector<std::string>(args.begin() + 6, args.end()), opt.sources);
+    std::vector<std::string> rest =
+        takeCalcOptions(std::vector<std::string>(args.begin() + 6, args.end()), opt.sources);
     for (const std::string& w : rest) {
         if (w == "-s")
             opt.smooth = true;
@@ -177,8 +177,7 @@ std::string formatRevSegment(const GenrevOptions& opt, const RevSegment& s) {
     return out;
 }
 
-std::string genrev(const std::vector<std::string>& args,
-                   const std::vector<std::string>& searchPath,
+std::string genrev(const std::vector<std::string>& args, const std::vector<std::string>& searchPath,
                    std::vector<std::string>& warnings) {
     GenrevOptions opt = parseGenrevArgs(args);
     GenFunctions funcs(opt.sources, searchPath);

@@ -14,9 +14,9 @@ namespace rp::gen {
 struct GenrevOptions {
     std::string material;
     std::string name;
-    std::string zExpr;  // z(t)
-    std::string rExpr;  // r(t)
-    int segments = 0;   // nseg > 0
+    std::string zExpr;                // z(t)
+    std::string rExpr;                // r(t)
+    int segments = 0;                 // nseg > 0
     std::vector<CalcSource> sources;  // -e / -f in order
     bool smooth = false;              // -s
 };
@@ -32,10 +32,10 @@ GenrevOptions parseGenrevArgs(const std::vector<std::string>& args);
 struct RevSegment {
     enum class Kind { Cone, Cup, Cylinder, Tube, Ring };
     Kind kind = Kind::Cone;
-    int index = 0;            // i: the name is "name.i"
-    double z0 = 0, z1 = 0;    // heights at the segment's start and end (ring: z1)
-    double r0 = 0, r1 = 0;    // radii at the start and end
-    double ringNormalZ = 0;   // ring only: +1 or -1
+    int index = 0;           // i: the name is "name.i"
+    double z0 = 0, z1 = 0;   // heights at the segment's start and end (ring: z1)
+    double r0 = 0, r1 = 0;   // radii at the start and end
+    double ringNormalZ = 0;  // ring only: +1 or -1
     // -s: the Phong texfunc's 4 real arguments as genrev.c writes them: for each of the
     // normal's z and r components either a linear fit (slope, offset) in z (or r), or a
     // constant ("0 +-1", written as integers).
@@ -53,8 +53,7 @@ std::string formatRevSegment(const GenrevOptions& opt, const RevSegment& s);
 
 // The whole output: "# genrev ..." header then every segment. `searchPath` is where -f
 // files are found; `warnings` receives the math-error warning, if any.
-std::string genrev(const std::vector<std::string>& args,
-                   const std::vector<std::string>& searchPath,
+std::string genrev(const std::vector<std::string>& args, const std::vector<std::string>& searchPath,
                    std::vector<std::string>& warnings);
 
 }  // namespace rp::gen

@@ -136,14 +136,12 @@ TEST(Genrev, BadInput) {
     EXPECT_EQ(errorOf({"genrev", "m", "c", "t", "1", "0"}), "nseg must be positive, got 0");
     EXPECT_EQ(errorOf({"genrev", "m", "c", "t", "1", "4", "-q"}), "unknown option '-q'");
     EXPECT_EQ(errorOf({"genrev", "m", "c", "t", "1", "4", "-e"}), "option -e needs a value");
-    EXPECT_EQ(errorOf({"genrev", "m", "c", "t*(", "1", "4"}),
-              "z(t): syntax error: unexpected ';'");
+    EXPECT_EQ(errorOf({"genrev", "m", "c", "t*(", "1", "4"}), "z(t): syntax error: unexpected ';'");
     EXPECT_EQ(errorOf({"genrev", "m", "c", "t", "q", "4"}), "r(t): undefined variable 'q'");
     EXPECT_EQ(errorOf({"genrev", "m", "c", "t", "", "4"}), "r(t): empty expression");
     EXPECT_EQ(errorOf({"genrev", "m", "c", "t", "t-.5", "2"}),
               "r(t) is negative (-0.5) at t = 0: radii must be >= 0");
-    EXPECT_NE(errorOf({"genrev", "m", "c", "t", "1", "4", "-f", "no_such_file.cal"}),
-              "(no error)");
+    EXPECT_NE(errorOf({"genrev", "m", "c", "t", "1", "4", "-f", "no_such_file.cal"}), "(no error)");
 }
 
 }  // namespace

@@ -16,9 +16,9 @@ namespace rp::gen {
 
 namespace {
 
-constexpr double kSkyEfficacy = 203.0;  // lm/W, RADIANCE D65EFFICACY
-constexpr double kSunEfficacy = 208.0;  // lm/W, RADIANCE SUNEFFICACY
-constexpr double kSunSolidAngle = 6e-5; // sr, gensky's 0.5 degree disc
+constexpr double kSkyEfficacy = 203.0;   // lm/W, RADIANCE D65EFFICACY
+constexpr double kSunEfficacy = 208.0;   // lm/W, RADIANCE SUNEFFICACY
+constexpr double kSunSolidAngle = 6e-5;  // sr, gensky's 0.5 degree disc
 
 struct TimeZone {
     const char* name;
@@ -27,12 +27,11 @@ struct TimeZone {
 // gensky.1's zones (hours from GMT times 15 degrees). RADIANCE compat: the table holds
 // "AST"/"ADT" twice (Atlantic first, Arabia second) and gensky matches the first.
 constexpr TimeZone kZones[] = {
-    {"YST", 135}, {"YDT", 120},   {"PST", 120},   {"PDT", 105},  {"MST", 105},
-    {"MDT", 90},  {"CST", 90},    {"CDT", 75},    {"EST", 75},   {"EDT", 60},
-    {"AST", 60},  {"ADT", 45},    {"NST", 52.5},  {"NDT", 37.5}, {"GMT", 0},
-    {"BST", -15}, {"CET", -15},   {"CEST", -30},  {"EET", -30},  {"EEST", -45},
-    {"GST", -60}, {"GDT", -75},   {"IST", -82.5}, {"IDT", -97.5}, {"JST", -135},
-    {"NZST", -180}, {"NZDT", -195},
+    {"YST", 135},  {"YDT", 120},   {"PST", 120},   {"PDT", 105}, {"MST", 105},   {"MDT", 90},
+    {"CST", 90},   {"CDT", 75},    {"EST", 75},    {"EDT", 60},  {"AST", 60},    {"ADT", 45},
+    {"NST", 52.5}, {"NDT", 37.5},  {"GMT", 0},     {"BST", -15}, {"CET", -15},   {"CEST", -30},
+    {"EET", -30},  {"EEST", -45},  {"GST", -60},   {"GDT", -75}, {"IST", -82.5}, {"IDT", -97.5},
+    {"JST", -135}, {"NZST", -180}, {"NZDT", -195},
 };
 
 // RADIANCE's cvthour(): "[+]H[.frac]" or "[+]H:MM", optionally followed (standard time
@@ -85,8 +84,9 @@ GenskyOptions parseGenskyArgs(const std::vector<std::string>& args) {
         return opt;
     }
     if (args.size() < 4)
-        throw InputError("usage: gensky month day hour [options] | -ang altitude azimuth "
-                         "[options] | -defaults");
+        throw InputError(
+            "usage: gensky month day hour [options] | -ang altitude azimuth "
+            "[options] | -defaults");
     bool zoneMeridian = false;
     if (args[1] == "-ang") {
         opt.fromAngles = true;
@@ -104,11 +104,22 @@ GenskyOptions parseGenskyArgs(const std::vector<std::string>& args) {
             throw InputError("bad option '" + a + "'");
         bool plus = a[0] == '+';
         switch (a[1]) {
-            case 's': opt.type = SkyType::Clear; opt.sun = plus; continue;
-            case 'i': opt.type = SkyType::Intermediate; opt.sun = plus; continue;
-            case 'c': opt.type = SkyType::Overcast; continue;
-            case 'u': opt.type = SkyType::Uniform; continue;
-            default: break;
+            case 's':
+                opt.type = SkyType::Clear;
+                opt.sun = plus;
+                continue;
+            case 'i':
+                opt.type = SkyType::Intermediate;
+                opt.sun = plus;
+                continue;
+            case 'c':
+                opt.type = SkyType::Overcast;
+                continue;
+            case 'u':
+                opt.type = SkyType::Uniform;
+                continue;
+            default:
+                break;
         }
         if (plus) throw InputError("unknown option '" + a + "'");
         switch (a[1]) {
@@ -176,7 +187,8 @@ GenskySky computeGensky(const GenskyOptions& opt) {
     }
     // The CIE clear and intermediate formulas misbehave with the sun at the zenith.
     if (!overcast && sky.altitude > 87 * kDegree) {
-        sky.warnings.push_back("warning - sun too close to zenith, reducing altitude to 87 degrees");
+        sky.warnings.push_back(
+            "warning - sun too close to zenith, reducing altitude to 87 degrees");
         sky.altitudeLimited = true;
         sky.altitude = 87 * kDegree;
     }
@@ -185,8 +197,12 @@ GenskySky computeGensky(const GenskyOptions& opt) {
 
     double norm = 1.0;  // horizontal diffuse irradiance / (pi * zenith radiance)
     switch (opt.type) {
-        case SkyType::Uniform: norm = 1.0; break;
-        case SkyType::Overcast: norm = 0.777778; break;  // 7/9 for (1 + 2 cos)/3
+        case SkyType::Uniform:
+            norm = 1.0;
+            break;
+        case SkyType::Overcast:
+            norm = 0.777778;
+            break;  // 7/9 for (1 + 2 cos)/3
         case SkyType::Clear:
             sky.f2 = clearSkyF2(sky.altitude);
             norm = skyNormalisationFit(sky.altitude, false) / sky.f2 / kPi;
@@ -249,8 +265,8 @@ std::string formatGensky(const GenskySky& sky, const std::vector<std::string>& a
     }
     out += "\nvoid brightfunc skyfunc\n2 skybr skybright.cal\n0\n";
     if (sky.type == SkyType::Overcast || sky.type == SkyType::Uniform)
-        out += cformat("3 %d %.2e %.2e\n", int(sky.type), sky.zenithBrightness,
-                       sky.groundBrightness);
+        out +=
+            cformat("3 %d %.2e %.2e\n", int(sky.type), sky.zenithBrightness, sky.groundBrightness);
     else
         out += cformat("7 %d %.2e %.2e %.2e %f %f %f\n", int(sky.type), sky.zenithBrightness,
                        sky.groundBrightness, sky.f2, sky.sunDir.x, sky.sunDir.y, sky.sunDir.z);
@@ -260,8 +276,12 @@ std::string formatGensky(const GenskySky& sky, const std::vector<std::string>& a
 std::string genskyDefaults(const GenskyOptions& opt) {
     std::string out;
     switch (opt.type) {
-        case SkyType::Overcast: out += "-c\t\t\t\t# Cloudy sky\n"; break;
-        case SkyType::Uniform: out += "-u\t\t\t\t# Uniform cloudy sky\n"; break;
+        case SkyType::Overcast:
+            out += "-c\t\t\t\t# Cloudy sky\n";
+            break;
+        case SkyType::Uniform:
+            out += "-u\t\t\t\t# Uniform cloudy sky\n";
+            break;
         case SkyType::Intermediate:
             out += opt.sun ? "+i\t\t\t\t# Intermediate sky with sun\n"
                            : "-i\t\t\t\t# Intermediate sky without sun\n";

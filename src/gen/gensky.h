@@ -26,15 +26,15 @@ struct GenskyOptions {
     double altitude = 0;         // radians (from -ang or computed)
     double azimuth = 0;          // radians west of south
     int month = 0, day = 0;
-    int year = 0;                // -y; 0 = day-of-year formulas
+    int year = 0;  // -y; 0 = day-of-year formulas
     double hour = 0;
-    bool solarTime = false;      // "+hour": local solar time
+    bool solarTime = false;  // "+hour": local solar time
     Site site;
     SkyType type = SkyType::Clear;
-    bool sun = true;                 // +s / +i
-    double zenith = 0;               // -b / -B value
+    bool sun = true;    // +s / +i
+    double zenith = 0;  // -b / -B value
     GivenAs zenithGiven = GivenAs::Computed;
-    double solar = 0;                // -r / -R value
+    double solar = 0;  // -r / -R value
     GivenAs solarGiven = GivenAs::Computed;
     double turbidity = 2.45;         // -t
     double groundReflectance = 0.2;  // -g
@@ -44,17 +44,17 @@ struct GenskyOptions {
 struct GenskySky {
     SkyType type = SkyType::Clear;
     bool fromDate = false;
-    double solarTime = 0;          // hours, when fromDate
+    double solarTime = 0;              // hours, when fromDate
     double altitude = 0, azimuth = 0;  // radians, after the 87 degree limit
-    bool altitudeLimited = false;  // sun moved down to 87 degrees
-    double dateAltitude = 0;       // the altitude from the date, before that limit
+    bool altitudeLimited = false;      // sun moved down to 87 degrees
+    double dateAltitude = 0;           // the altitude from the date, before that limit
     Vec3 sunDir;
-    double zenithBrightness = 0;   // W/sr/m2 (skybright.cal A2)
-    double f2 = 0;                 // clear/intermediate normalisation (A4)
-    double groundAmbient = 0;      // diffuse horizontal irradiance / pi ("Ground ambient level")
-    double groundBrightness = 0;   // reflectance * (sky + sun) horizontal irradiance / pi (A3)
-    double solarRadiance = 0;      // W/sr/m2 of the 0.5 degree sun disc
-    bool sun = false;              // whether the sun source is printed
+    double zenithBrightness = 0;  // W/sr/m2 (skybright.cal A2)
+    double f2 = 0;                // clear/intermediate normalisation (A4)
+    double groundAmbient = 0;     // diffuse horizontal irradiance / pi ("Ground ambient level")
+    double groundBrightness = 0;  // reflectance * (sky + sun) horizontal irradiance / pi (A3)
+    double solarRadiance = 0;     // W/sr/m2 of the 0.5 degree sun disc
+    bool sun = false;             // whether the sun source is printed
     std::vector<std::string> warnings;  // for stderr, without the "gensky: " prefix
 };
 

@@ -33,9 +33,14 @@ void referenceSun(double lat, double decl, double solarHours, double* alt, doubl
 TEST(SunPosition, MatchesIndependentDerivation) {
     // Formulas as documented: J = day of year, declination 0.4093 sin(2pi(J-81)/365),
     // solar time = clock + .170 sin(4pi(J-80)/373) - .129 sin(2pi(J-8)/355) + 12(mer-lon)/pi.
-    struct Case { int month, day; double hour, latDeg, lonDeg, merDeg; };
-    const Case cases[] = {{3, 21, 12, 47, -8, -15}, {6, 21, 9.5, 37.815, 122.04, 120},
-                          {12, 1, 15.25, -33.9, -151.2, -150}, {9, 30, 7, 60, -25, -30}};
+    struct Case {
+        int month, day;
+        double hour, latDeg, lonDeg, merDeg;
+    };
+    const Case cases[] = {{3, 21, 12, 47, -8, -15},
+                          {6, 21, 9.5, 37.815, 122.04, 120},
+                          {12, 1, 15.25, -33.9, -151.2, -150},
+                          {9, 30, 7, 60, -25, -30}};
     for (const Case& c : cases) {
         Site site{c.latDeg * kDeg, c.lonDeg * kDeg, c.merDeg * kDeg};
         int J = dayOfYear(c.month, c.day);
@@ -60,8 +65,8 @@ TEST(SunPosition, MatchesIndependentDerivation) {
 TEST(SunPosition, MichalskyAlmanacKnownValues) {
     Site greenwich{51.48 * kDeg, 0, 0};
     // March equinox 2021: 20 March 09:37 UT, declination crosses zero.
-    double d = almanacDeclination(almanacDay(2021, 3, 20, 9 + 37 / 60.0, greenwich), greenwich,
-                                  nullptr);
+    double d =
+        almanacDeclination(almanacDay(2021, 3, 20, 9 + 37 / 60.0, greenwich), greenwich, nullptr);
     EXPECT_NEAR(d / kDeg, 0.0, 0.02);
     // June solstice 2021: declination 23.44 degrees.
     d = almanacDeclination(almanacDay(2021, 6, 21, 3.5, greenwich), greenwich, nullptr);
@@ -94,12 +99,12 @@ TEST(Gensky, ReproducesDaylightValidationScene) {
     }
     ASSERT_FALSE(expected.empty());
     std::vector<std::string> warnings;
-    std::string out = gensky({"gensky", "3", "21", "12", "-a", "47", "-o", "-8", "-m", "-15", "+s"},
-                             &warnings);
+    std::string out =
+        gensky({"gensky", "3", "21", "12", "-a", "47", "-o", "-8", "-m", "-15", "+s"}, &warnings);
     EXPECT_EQ(out, expected);
     EXPECT_TRUE(warnings.empty());
-    GenskySky sky = computeGensky(parseGenskyArgs(
-        {"gensky", "3", "21", "12", "-a", "47", "-o", "-8", "-m", "-15", "+s"}));
+    GenskySky sky = computeGensky(
+        parseGenskyArgs({"gensky", "3", "21", "12", "-a", "47", "-o", "-8", "-m", "-15", "+s"}));
     EXPECT_NEAR(sky.altitude / kDeg, 42.0, 0.05);
     EXPECT_NEAR(sky.azimuth / kDeg, -11.9, 0.05);
 }
@@ -119,8 +124,8 @@ TEST(Gensky, NightSkyWithoutMeridianWarns) {
 TEST(Gensky, GroundBrightnessMatchesIntegratedSky) {
     for (const char* type : {"+s", "+i", "-c"})
         for (const char* alt : {"20", "45", "70"}) {
-            GenskySky sky = computeGensky(
-                parseGenskyArgs({"gensky", "-ang", alt, "30", type, "-g", "0.3"}));
+            GenskySky sky =
+                computeGensky(parseGenskyArgs({"gensky", "-ang", alt, "30", type, "-g", "0.3"}));
             double eSky = skyHorizontalIrradiance(sky.type, sky.zenithBrightness, sky.f2,
                                                   sky.sunDir, 180, 360);
             double eSun = sky.sun ? 6e-5 * sky.solarRadiance * sky.sunDir.z : 0.0;

@@ -146,8 +146,8 @@ GensurfOptions parseGensurfArgs(const std::vector<std::string>& args) {
     opt.n = parseInt(args[7], "n");
     if (opt.m <= 0) throw InputError("m must be positive, got " + std::to_string(opt.m));
     if (opt.n <= 0) throw InputError("n must be positive, got " + std::to_string(opt.n));
-    std::vector<std::string> rest = takeCalcOptions(
-        std::vector<std::string>(args.begin() + 8, args.end()), opt.sources);
+    std::vector<std::string> rest =
+        takeCalcOptions(std::vector<std::string>(args.begin() + 8, args.end()), opt.sources);
     for (const std::string& w : rest) {
         if (w == "-s")
             opt.smooth = true;

@@ -67,7 +67,7 @@ SurfGrid sampleSurface(const GensurfOptions& opt, GenFunctions& funcs, const Sur
 
 // One output polygon. Vertices run counter-clockwise about the (s, t) right-hand normal.
 struct SurfPolygon {
-    std::string name;           // "name.<k>", k counting every polygon from 1
+    std::string name;            // "name.<k>", k counting every polygon from 1
     std::vector<Vec3> vertices;  // 4 (planar cell) or 3 (half of a non-planar cell)
     // -s: the Phong texfunc's 13 real arguments: the dominant normal axis, then the
     // bilinear normal fit a*u*v + b*u + c*v + d over the other two coordinates (u, v),

@@ -38,8 +38,8 @@ SurfaceData readSurfaceData(std::istream& in, const std::string& source, int m, 
         std::string want = std::to_string(withBorder);
         if (m >= 2 && n >= 2) want += " or " + std::to_string(centres);
         throw InputError(loc, "bad number of data points: expected " + want +
-                                  (triplets ? " values (x y z triplets)" : " values") +
-                                  ", got " + std::to_string(got));
+                                  (triplets ? " values (x y z triplets)" : " values") + ", got " +
+                                  std::to_string(got));
     }
     return d;
 }

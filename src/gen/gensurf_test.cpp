@@ -90,8 +90,8 @@ TEST(Gensurf, NonPlanarCellSplitsIntoTriangles) {
 
 TEST(Gensurf, ValidFunctionCutsHoles) {
     // Drop the corner vertex (s,t) = (1,1): its cell keeps one triangle.
-    auto polys = polygons({"gensurf", "m", "p", "s", "t", "0", "2", "2", "-e",
-                           "valid(s,t) = 1.75 - s - t"});
+    auto polys =
+        polygons({"gensurf", "m", "p", "s", "t", "0", "2", "2", "-e", "valid(s,t) = 1.75 - s - t"});
     ASSERT_EQ(polys.size(), 4u);
     EXPECT_EQ(polys[3].vertices.size(), 3u);
     for (const SurfPolygon& p : polys)
@@ -157,8 +157,8 @@ TEST(Gensurf, PhongFitReproducesVertexNormals) {
         Vec3 face = normalize(newellNormal(p.vertices));
         const int u = (p.axis + 1) % 3, v = (p.axis + 2) % 3;
         for (const Vec3& q : p.vertices) {
-            Vec3 fit = p.coef[0] * (q[u] * q[v]) + p.coef[1] * q[u] + p.coef[2] * q[v] +
-                       p.coef[3] + face;
+            Vec3 fit =
+                p.coef[0] * (q[u] * q[v]) + p.coef[1] * q[u] + p.coef[2] * q[v] + p.coef[3] + face;
             Vec3 want;
             for (int i = 0; i <= 3; ++i)
                 for (int j = 0; j <= 2; ++j)
@@ -190,8 +190,7 @@ TEST(Gensurf, BadInput) {
     EXPECT_EQ(errorOf({"gensurf", "m", "p", "s", "t", "0", "2", "x"}),
               "bad n 'x': expected an integer");
     EXPECT_EQ(errorOf({"gensurf", "m", "p", "s", "t", "0", "0", "2"}), "m must be positive, got 0");
-    EXPECT_EQ(errorOf({"gensurf", "m", "p", "s", "t", "0", "2", "2", "-x"}),
-              "unknown option '-x'");
+    EXPECT_EQ(errorOf({"gensurf", "m", "p", "s", "t", "0", "2", "2", "-x"}), "unknown option '-x'");
     EXPECT_EQ(errorOf({"gensurf", "m", "p", "s", "t+", "0", "2", "2"}),
               "y(s,t): syntax error: unexpected ';'");
     EXPECT_EQ(errorOf({"gensurf", "m", "p", "s", "t", "u", "2", "2"}),

@@ -15,8 +15,7 @@ namespace {
 // RADIANCE's FTINY: radii this close make a cylinder instead of a cone.
 constexpr double kFtiny = 1e-6;
 
-const char* kUsage =
-    "usage: genworm mat name 'x(t)' 'y(t)' 'z(t)' 'r(t)' nseg [-e expr][-f file]";
+const char* kUsage = "usage: genworm mat name 'x(t)' 'y(t)' 'z(t)' 'r(t)' nseg [-e expr][-f file]";
 
 }  // namespace
 
@@ -32,8 +31,8 @@ GenwormOptions parseGenwormArgs(const std::vector<std::string>& args) {
     opt.segments = parseInt(args[7], "nseg");
     if (opt.segments <= 0)
         throw InputError("nseg must be positive, got " + std::to_string(opt.segments));
-    std::vector<std::string> rest = takeCalcOptions(
-        std::vector<std::string>(args.begin() + 8, args.end()), opt.sources);
+    std::vector<std::string> rest =
+        takeCalcOptions(std::vector<std::string>(args.begin() + 8, args.end()), opt.sources);
     if (!rest.empty()) throw InputError("unknown option '" + rest.front() + "'");
     return opt;
 }
@@ -100,13 +99,15 @@ std::string formatWormPart(const std::string& material, const WormPart& p) {
             return cformat("\n%s sphere %s\n0\n0\n4 %18.12g %18.12g %18.12g %18.12g\n", m, n,
                            p.p0.x, p.p0.y, p.p0.z, p.r0);
         case WormPart::Kind::Cylinder:
-            return cformat("\n%s cylinder %s\n0\n0\n7\n%18.12g %18.12g %18.12g\n"
-                           "%18.12g %18.12g %18.12g\n%18.12g\n",
-                           m, n, p.p0.x, p.p0.y, p.p0.z, p.p1.x, p.p1.y, p.p1.z, p.r0);
+            return cformat(
+                "\n%s cylinder %s\n0\n0\n7\n%18.12g %18.12g %18.12g\n"
+                "%18.12g %18.12g %18.12g\n%18.12g\n",
+                m, n, p.p0.x, p.p0.y, p.p0.z, p.p1.x, p.p1.y, p.p1.z, p.r0);
         case WormPart::Kind::Cone:
-            return cformat("\n%s cone %s\n0\n0\n8\n%18.12g %18.12g %18.12g\n"
-                           "%18.12g %18.12g %18.12g\n%18.12g %18.12g\n",
-                           m, n, p.p0.x, p.p0.y, p.p0.z, p.p1.x, p.p1.y, p.p1.z, p.r0, p.r1);
+            return cformat(
+                "\n%s cone %s\n0\n0\n8\n%18.12g %18.12g %18.12g\n"
+                "%18.12g %18.12g %18.12g\n%18.12g %18.12g\n",
+                m, n, p.p0.x, p.p0.y, p.p0.z, p.p1.x, p.p1.y, p.p1.z, p.r0, p.r1);
     }
     return {};
 }

@@ -46,7 +46,6 @@ std::string formatWormPart(const std::string& material, const WormPart& p);
 // The whole output: "# genworm ..." header then every part. `searchPath` is where -f
 // files are found; `warnings` receives the math-error warning, if any.
 std::string genworm(const std::vector<std::string>& args,
-                    const std::vector<std::string>& searchPath,
-                    std::vector<std::string>& warnings);
+                    const std::vector<std::string>& searchPath, std::vector<std::string>& warnings);
 
 }  // namespace rp::gen

@@ -71,8 +71,8 @@ TEST(Genworm, ConeIsTangentToBothSpheres) {
     EXPECT_NEAR(c.r0, 0.5 * std::sqrt(1 - a * a), 1e-12);
     EXPECT_NEAR(c.r1, 0.25 * std::sqrt(1 - a * a), 1e-12);
     EXPECT_NEAR(c.p0.z * c.p0.z + c.r0 * c.r0, 0.25, 1e-12);  // rim on sphere 0
-    Vec3 slant(c.r1 - c.r0, 0, c.p1.z - c.p0.z);               // along the cone side
-    Vec3 radius(c.r0, 0, c.p0.z);                              // centre to rim
+    Vec3 slant(c.r1 - c.r0, 0, c.p1.z - c.p0.z);              // along the cone side
+    Vec3 radius(c.r0, 0, c.p0.z);                             // centre to rim
     EXPECT_NEAR(dot(slant, radius), 0, 1e-12);
 }
 
@@ -89,8 +89,7 @@ TEST(Genworm, BadInput) {
               "bad nseg '2x': expected an integer");
     EXPECT_EQ(errorOf({"genworm", "m", "w", "t", "0", "0", "1", "-3"}),
               "nseg must be positive, got -3");
-    EXPECT_EQ(errorOf({"genworm", "m", "w", "t", "0", "0", "1", "3", "-s"}),
-              "unknown option '-s'");
+    EXPECT_EQ(errorOf({"genworm", "m", "w", "t", "0", "0", "1", "3", "-s"}), "unknown option '-s'");
     EXPECT_EQ(errorOf({"genworm", "m", "w", "t", "0", "sin(", "1", "3"}),
               "z(t): syntax error: unexpected ';'");
     EXPECT_EQ(errorOf({"genworm", "m", "w", "t", "0", "0", "-1", "3"}),

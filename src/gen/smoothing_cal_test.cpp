@@ -72,8 +72,8 @@ TEST(SmoothingCal, GensurfVertexNormalsAreTheSurfaceNormals) {
 
 TEST(SmoothingCal, GenrevNormalsAreUnitAndOnTheSurfaceSide) {
     std::vector<std::string> warnings;
-    Scene scene = parseWithMaterial(
-        genrev({"genrev", "m", "r", "t", "1+0.5*t*t", "4", "-s"}, {}, warnings));
+    Scene scene =
+        parseWithMaterial(genrev({"genrev", "m", "r", "t", "1+0.5*t*t", "4", "-s"}, {}, warnings));
     Smoothing rev = load("rev.cal", "rev");
     int checked = 0;
     for (const Primitive& p : scene.prims) {

@@ -58,8 +58,8 @@ using ContextCommandHook = std::function<std::optional<std::string>(
 struct XformOptions {
     std::vector<XformRun> runs;  // in output order
     ContextCommandHook commandHook;
-    CommandContext context;      // where this xform runs and what included it
-    int maxCommandDepth = 32;    // commands whose output runs commands, and so on
+    CommandContext context;    // where this xform runs and what included it
+    int maxCommandDepth = 32;  // commands whose output runs commands, and so on
 };
 
 // The canonical name of scene file `path` for CommandContext::includeChain.
@@ -99,6 +99,5 @@ std::vector<std::string> transformArgs(const Transform& xf);
 // 4 reals, polygon: a multiple of 3 reals, ...). Throws InputError at p.loc
 // ("bad sphere 'ball': expected 4 real arguments, got 3").
 void checkXformArgs(const Primitive& p);
-
 
 }  // namespace rp

@@ -63,8 +63,8 @@ bool makeCone(const Primitive& prim, int32_t primIndex, ConeShape& shape) {
     return true;
 }
 
-bool intersectCone(const ConeShape& c, const Vec3& o, const Vec3& d, double tmin,
-                   double tmax, double& t) {
+bool intersectCone(const ConeShape& c, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                   double& t) {
     // With w = o + t d - p0, h = w.a the height and q = w - h a the radial part, the
     // surface is |q|^2 = (r0 + k h)^2, 0 <= h <= L. Splitting into axial and radial
     // parts first avoids cancellation for rays nearly parallel to the axis.

@@ -11,13 +11,13 @@
 namespace rp {
 
 struct ConeShape {
-    Vec3 p0;          // first end point (v = 0)
-    Vec3 axis;        // unit, from p0 toward p1
-    double length;    // |p1 - p0|
-    double r0, r1;    // radii at p0 and p1 (>= 0, not both zero)
-    double slope;     // (r1 - r0) / length
-    Vec3 e1, e2;      // frame about the axis for u
-    bool inward;      // cup, tube
+    Vec3 p0;        // first end point (v = 0)
+    Vec3 axis;      // unit, from p0 toward p1
+    double length;  // |p1 - p0|
+    double r0, r1;  // radii at p0 and p1 (>= 0, not both zero)
+    double slope;   // (r1 - r0) / length
+    Vec3 e1, e2;    // frame about the axis for u
+    bool inward;    // cup, tube
     int32_t prim;
     int32_t modifier;
 };
@@ -28,8 +28,8 @@ struct ConeShape {
 // the primitive be ignored (returns false). Bad argument counts throw InputError.
 bool makeCone(const Primitive& prim, int32_t primIndex, ConeShape& shape);
 
-bool intersectCone(const ConeShape& c, const Vec3& o, const Vec3& d, double tmin,
-                   double tmax, double& t);
+bool intersectCone(const ConeShape& c, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                   double& t);
 
 // The unit normal at p (outward for cone and cylinder, inward for cup and tube).
 Vec3 coneNormal(const ConeShape& c, const Vec3& p);

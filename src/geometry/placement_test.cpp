@@ -39,7 +39,8 @@ std::string placing(const std::string& mod, const std::string& type, const std::
     size_t n = 1;
     for (size_t i = 0; i < xf.size(); ++i)
         if (xf[i] != ' ' && (i == 0 || xf[i - 1] == ' ')) ++n;
-    return mod + " " + type + " " + name + " " + std::to_string(n) + " " + file + " " + xf + " 0 0\n";
+    return mod + " " + type + " " + name + " " + std::to_string(n) + " " + file + " " + xf +
+           " 0 0\n";
 }
 
 Scene sceneWithObjects(const std::string& text, const TempDir& dir) {
@@ -76,7 +77,8 @@ std::string transformedBox(const Transform& xf) {
         } else if (p.type == PrimType::Sphere) {
             auto q = xf.point({p.rargs[0], p.rargs[1], p.rargs[2]});
             char buf[160];
-            std::snprintf(buf, sizeof buf, " %.17g %.17g %.17g %.17g", q[0], q[1], q[2], p.rargs[3] * xf.scale);
+            std::snprintf(buf, sizeof buf, " %.17g %.17g %.17g %.17g", q[0], q[1], q[2],
+                          p.rargs[3] * xf.scale);
             out += buf;
         } else {
             for (double r : p.rargs) out += " " + std::to_string(r);
@@ -100,7 +102,8 @@ TEST(Placement, InstanceHitsAsTheTransformedSurfaces) {
     const char* xfArgs = "-rz 30 -rx 10 -s 2.5 -t 5 1 2";
     Scene placed = sceneWithObjects(placing("void", "instance", "b", "box.oct", xfArgs), dir);
     ASSERT_EQ(placed.objects.size(), 1u);
-    Transform xf = parseTransform({"-rz", "30", "-rx", "10", "-s", "2.5", "-t", "5", "1", "2"}, 0, {});
+    Transform xf =
+        parseTransform({"-rz", "30", "-rx", "10", "-s", "2.5", "-t", "5", "1", "2"}, 0, {});
     Scene flat = parseScene(transformedBox(xf), "flat.rad");
     SceneGeometry gp(placed), gf(flat);
     EXPECT_EQ(gp.placementCount(), 1u);
@@ -111,7 +114,8 @@ TEST(Placement, InstanceHitsAsTheTransformedSurfaces) {
     }
     Rng rng(7, RngDomain::Test, 0);
     int hits = 0;
-    const Vec3 centre = {xf.point({.5, .5, .5})[0], xf.point({.5, .5, .5})[1], xf.point({.5, .5, .5})[2]};
+    const Vec3 centre = {xf.point({.5, .5, .5})[0], xf.point({.5, .5, .5})[1],
+                         xf.point({.5, .5, .5})[2]};
     for (int i = 0; i < 4000; ++i) {
         Ray ray = randomRay(rng, centre, 3.0);
         auto a = gp.closestHit(ray), b = gf.closestHit(ray);
@@ -131,7 +135,8 @@ TEST(Placement, InstanceHitsAsTheTransformedSurfaces) {
         EXPECT_NEAR(a->objectSpace->forward.scale, 2.5, 1e-12);
         // Occlusion agrees along the same segment.
         EXPECT_EQ(gp.occluded(ray.origin, ray.dir, a->t * 1.001), true);
-        EXPECT_EQ(gp.occluded(ray.origin, ray.dir, a->t * 0.999), gf.occluded(ray.origin, ray.dir, b->t * 0.999));
+        EXPECT_EQ(gp.occluded(ray.origin, ray.dir, a->t * 0.999),
+                  gf.occluded(ray.origin, ray.dir, b->t * 0.999));
     }
     EXPECT_GT(hits, 600);
 }
@@ -145,10 +150,10 @@ TEST(Placement, InstanceModifierOverridesAndNests) {
                     placing("void", "instance", "left", "box.oct", "-t 0 0 0") +
                     placing("blue", "instance", "right", "box.oct", "-t 2 0 0"),
                 "pair");
-    Scene s = sceneWithObjects(
-        "void metal gold 0 0 5 .8 .6 .2 0 0\n" + placing("void", "instance", "p1", "pair.oct", "-t 0 0 0") +
-            placing("gold", "instance", "p2", "pair.oct", "-t 0 10 0"),
-        dir);
+    Scene s = sceneWithObjects("void metal gold 0 0 5 .8 .6 .2 0 0\n" +
+                                   placing("void", "instance", "p1", "pair.oct", "-t 0 0 0") +
+                                   placing("gold", "instance", "p2", "pair.oct", "-t 0 10 0"),
+                               dir);
     ASSERT_EQ(s.objects.size(), 2u);  // pair.oct and box.oct, each loaded once
     SceneGeometry g(s);
     EXPECT_EQ(g.placementCount(), 6u);  // p1, its two boxes, p2, its two boxes
@@ -300,7 +305,8 @@ TEST(Placement, MissingAndWrongFiles) {
     };
     EXPECT_EQ(err("void instance i 1 nowhere.oct 0 0\n"),
               dir.file("scene.rad") + ":1: instance 'i': cannot find octree file 'nowhere.oct'");
-    EXPECT_NE(err("void instance i 1 plain.rad 0 0\n").find("instance 'i': " + dir.file("plain.rad") + ": not an octree"),
+    EXPECT_NE(err("void instance i 1 plain.rad 0 0\n")
+                  .find("instance 'i': " + dir.file("plain.rad") + ": not an octree"),
               std::string::npos);
     // An empty octree first: oconv reads the cube of the octree an instance places.
     writeOctree(dir.file("self.oct"), "", "self");
@@ -380,7 +386,8 @@ TEST(Placement, ClosedMeshDoesNotLeak) {
     for (int i = 1; i < kRings; ++i)
         for (int k = 0; k < kSegs; ++k) {
             double th = kPi * i / kRings, ph = 2 * kPi * k / kSegs;
-            add(c + Vec3{r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph), r * std::cos(th)});
+            add(c + Vec3{r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph),
+                         r * std::cos(th)});
         }
     add(c + Vec3{0, 0, -r});
     m->positions.push_back(0);
@@ -388,9 +395,11 @@ TEST(Placement, ClosedMeshDoesNotLeak) {
     auto ring = [&](int i, int k) { return uint32_t(1 + (i - 1) * kSegs + (k % kSegs)); };
     for (int k = 0; k < kSegs; ++k) {
         for (uint32_t v : {0u, ring(1, k), ring(1, k + 1)}) m->triangles.push_back(v);
-        for (uint32_t v : {south, ring(kRings - 1, k + 1), ring(kRings - 1, k)}) m->triangles.push_back(v);
+        for (uint32_t v : {south, ring(kRings - 1, k + 1), ring(kRings - 1, k)})
+            m->triangles.push_back(v);
         for (int i = 1; i + 1 < kRings; ++i)
-            for (uint32_t v : {ring(i, k), ring(i + 1, k), ring(i + 1, k + 1), ring(i, k), ring(i + 1, k + 1), ring(i, k + 1)})
+            for (uint32_t v : {ring(i, k), ring(i + 1, k), ring(i + 1, k + 1), ring(i, k),
+                               ring(i + 1, k + 1), ring(i, k + 1)})
                 m->triangles.push_back(v);
     }
     m->cubeOrigin = {c.x - 2, c.y - 2, c.z - 2};
@@ -473,7 +482,8 @@ namespace {
 TEST(Placement, RaysFromBeyondTheAcceleratorsRangeMiss) {
     TempDir dir;
     writeOctree(dir.file("box.oct"), kBox, "box");
-    Scene s = sceneWithObjects(std::string(kBox) + placing("void", "instance", "b", "box.oct", "-t 5 0 0"), dir);
+    Scene s = sceneWithObjects(
+        std::string(kBox) + placing("void", "instance", "b", "box.oct", "-t 5 0 0"), dir);
     SceneGeometry g(s);
     ASSERT_TRUE(g.closestHit({{0.5, 0.5, 5}, {0, 0, -1}}));
     for (const Vec3& o : {Vec3{2e18, 0.5, 0.5}, Vec3{0.5, -3e30, 0.5}, Vec3{0.5, 0.5, NAN},

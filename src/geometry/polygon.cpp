@@ -40,7 +40,8 @@ bool makePolygon(const Primitive& prim, int32_t primIndex, PolygonShape& shape,
     if (r.size() % 3 != 0 || r.size() < 9)
         throw InputError(prim.loc, "polygon '" + prim.name +
                                        "': expected a multiple of 3 real arguments (at least "
-                                       "9), got " + std::to_string(r.size()));
+                                       "9), got " +
+                                       std::to_string(r.size()));
     std::vector<Vec3> loop(r.size() / 3);
     for (size_t i = 0; i < loop.size(); ++i) loop[i] = {r[3 * i], r[3 * i + 1], r[3 * i + 2]};
 

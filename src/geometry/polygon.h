@@ -14,13 +14,13 @@ namespace rp {
 
 // One polygon's plane and local frame. Triangles of the accelerator point back here.
 struct PolygonShape {
-    Vec3 normal;     // unit, right-hand rule over the vertex loop (front side)
-    double offset;   // plane: dot(normal, x) == offset (mean over the vertices)
-    Vec3 origin;     // first vertex: origin of the in-plane frame
-    Vec3 vertexMean; // mean of the outline's vertices (RADIANCE's source centre)
-    Vec3 uAxis;      // unit, in plane, along the first non-degenerate edge (PlanarRegion)
-    double scale;    // largest |coordinate| of any vertex (float rounding scale)
-    int32_t prim;    // index into Scene::prims
+    Vec3 normal;      // unit, right-hand rule over the vertex loop (front side)
+    double offset;    // plane: dot(normal, x) == offset (mean over the vertices)
+    Vec3 origin;      // first vertex: origin of the in-plane frame
+    Vec3 vertexMean;  // mean of the outline's vertices (RADIANCE's source centre)
+    Vec3 uAxis;       // unit, in plane, along the first non-degenerate edge (PlanarRegion)
+    double scale;     // largest |coordinate| of any vertex (float rounding scale)
+    int32_t prim;     // index into Scene::prims
     int32_t modifier;
 };
 

@@ -19,7 +19,8 @@ using testing::SceneBuilder;
 void addBox(SceneBuilder& b, const Vec3& c, double h) {
     auto P = [&](double x, double y, double z) { return c + Vec3{x, y, z} * h; };
     auto quad = [&](Vec3 a, Vec3 bb, Vec3 cc, Vec3 d) {
-        b.surface(PrimType::Polygon, {a.x, a.y, a.z, bb.x, bb.y, bb.z, cc.x, cc.y, cc.z, d.x, d.y, d.z});
+        b.surface(PrimType::Polygon,
+                  {a.x, a.y, a.z, bb.x, bb.y, bb.z, cc.x, cc.y, cc.z, d.x, d.y, d.z});
     };
     quad(P(-1, -1, -1), P(1, -1, -1), P(1, 1, -1), P(-1, 1, -1));  // floor, faces +z
     quad(P(-1, -1, 1), P(-1, 1, 1), P(1, 1, 1), P(1, -1, 1));      // ceiling, faces -z
@@ -101,22 +102,25 @@ TEST(Precision, BounceInsideSphereOneKilometreAway) {
     bounceInSphere({1000, 1000, -1000}, 1, PrimType::Sphere);
     bounceInSphere({-1000, 0, 1000}, 0.5, PrimType::Bubble);
 }
-TEST(Precision, BounceInsideMillimetreSphere) { bounceInSphere({0, 0.001, 0}, 0.0005, PrimType::Sphere); }
+TEST(Precision, BounceInsideMillimetreSphere) {
+    bounceInSphere({0, 0.001, 0}, 0.0005, PrimType::Sphere);
+}
 
 // Leaving a surface outward must not re-hit it, at 1 km, for polygons and quadrics.
 TEST(Precision, LeavingSurfaceOneKilometreAway) {
     SceneBuilder b;
     Vec3 c{1000, 1000, 1000};
-    b.surface(PrimType::Polygon, {c.x - 1, c.y - 1, c.z, c.x + 1, c.y - 1, c.z + 0.3,
-                                  c.x + 1, c.y + 1, c.z + 0.6, c.x - 1, c.y + 1, c.z + 0.3});
+    b.surface(PrimType::Polygon, {c.x - 1, c.y - 1, c.z, c.x + 1, c.y - 1, c.z + 0.3, c.x + 1,
+                                  c.y + 1, c.z + 0.6, c.x - 1, c.y + 1, c.z + 0.3});
     b.surface(PrimType::Sphere, {c.x + 5, c.y, c.z, 1});
     b.surface(PrimType::Cylinder, {c.x - 5, c.y, c.z - 1, c.x - 5, c.y, c.z + 1, 1});
     SceneGeometry g(b.scene());
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(-0.9, 0.9);
     for (int i = 0; i < 3000; ++i) {
-        Vec3 target = i % 3 == 0 ? c + Vec3{u(rng), u(rng), 0}
-                    : i % 3 == 1 ? c + Vec3{5, 0, 0} : c + Vec3{-5, 0, 0};
+        Vec3 target = i % 3 == 0   ? c + Vec3{u(rng), u(rng), 0}
+                      : i % 3 == 1 ? c + Vec3{5, 0, 0}
+                                   : c + Vec3{-5, 0, 0};
         Vec3 d = randomDir(rng);
         auto h = g.closestHit({target - d * 10, d});
         if (!h) continue;
@@ -186,10 +190,18 @@ TEST(Threads, ParallelMatchesSerial) {
         b.surface(PrimType::Polygon, v);
         Vec3 s{u(rng), u(rng), u(rng)};
         switch (i % 4) {
-        case 0: b.surface(PrimType::Sphere, {s.x, s.y, s.z, 0.5}); break;
-        case 1: b.surface(PrimType::Cone, {s.x, s.y, s.z, s.x + 1, s.y, s.z + 1, 0.5, 0.2}); break;
-        case 2: b.surface(PrimType::Ring, {s.x, s.y, s.z, 1, 2, 3, 0.2, 0.6}); break;
-        default: b.surface(PrimType::Tube, {s.x, s.y, s.z, s.x, s.y + 1, s.z, 0.3}); break;
+            case 0:
+                b.surface(PrimType::Sphere, {s.x, s.y, s.z, 0.5});
+                break;
+            case 1:
+                b.surface(PrimType::Cone, {s.x, s.y, s.z, s.x + 1, s.y, s.z + 1, 0.5, 0.2});
+                break;
+            case 2:
+                b.surface(PrimType::Ring, {s.x, s.y, s.z, 1, 2, 3, 0.2, 0.6});
+                break;
+            default:
+                b.surface(PrimType::Tube, {s.x, s.y, s.z, s.x, s.y + 1, s.z, 0.3});
+                break;
         }
     }
     SceneGeometry g(b.scene());

@@ -28,8 +28,8 @@ struct Ray {
 
 // Where a ray met a surface.
 struct Hit {
-    double t = 0;       // ray parameter (distance for a unit direction)
-    Vec3 point;         // o + t*dir, recomputed in double against the exact surface
+    double t = 0;  // ray parameter (distance for a unit direction)
+    Vec3 point;    // o + t*dir, recomputed in double against the exact surface
     // Unit geometric normal with the primitive's own orientation as RADIANCE defines it
     // (polygon: right-hand rule; sphere/cone/cylinder: outward; bubble/cup/tube: inward;
     // ring: its direction vector). It is NOT flipped toward the ray: see `front`.
@@ -104,8 +104,7 @@ inline Ray spawnRay(const Hit& hit, const Vec3& dir, double tmax = HUGE_VAL) {
 // A shadow-ray segment from hit.point to target: origin offset toward the target and
 // tmax shortened by the target's own offset so that the target surface itself does not
 // count as an occluder. Fills out (unit direction) and returns out.tmax.
-inline double spawnSegment(const Hit& hit, const Vec3& target, double targetOffset,
-                           Ray& out) {
+inline double spawnSegment(const Hit& hit, const Vec3& target, double targetOffset, Ray& out) {
     Vec3 d = target - hit.point;
     double side = dot(d, hit.normal) >= 0 ? hit.offset : -hit.offset;
     out.origin = hit.point + hit.normal * side;

@@ -14,8 +14,8 @@ bool makeRing(const Primitive& prim, int32_t primIndex, RingShape& shape) {
     const std::string what = "ring '" + prim.name + "'";
     const std::vector<double>& a = prim.rargs;
     if (a.size() != 8)
-        throw InputError(prim.loc, what + ": expected 8 real arguments, got " +
-                                       std::to_string(a.size()));
+        throw InputError(prim.loc,
+                         what + ": expected 8 real arguments, got " + std::to_string(a.size()));
     constexpr double kFtiny = 1e-6;
     if (a[6] < -kFtiny || a[7] < -kFtiny) throw InputError(prim.loc, what + ": negative radii");
     double r0 = std::fmax(0.0, a[6]), r1 = std::fmax(0.0, a[7]);
@@ -39,8 +39,8 @@ bool makeRing(const Primitive& prim, int32_t primIndex, RingShape& shape) {
     return true;
 }
 
-bool intersectRing(const RingShape& r, const Vec3& o, const Vec3& d, double tmin,
-                   double tmax, double& t) {
+bool intersectRing(const RingShape& r, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                   double& t) {
     double dn = dot(d, r.normal);
     if (dn == 0) return false;  // ray in the ring's plane
     Vec3 oc = o - r.centre;     // relative coordinates keep precision far from 0

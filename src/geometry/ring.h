@@ -11,9 +11,9 @@ namespace rp {
 
 struct RingShape {
     Vec3 centre;
-    Vec3 normal;     // unit; the front side
-    double r0, r1;   // inner and outer radius, 0 <= r0 < r1
-    Vec3 e1, e2;     // frame about the normal for u
+    Vec3 normal;    // unit; the front side
+    double r0, r1;  // inner and outer radius, 0 <= r0 < r1
+    Vec3 e1, e2;    // frame about the normal for u
     int32_t prim;
     int32_t modifier;
 };
@@ -22,8 +22,8 @@ struct RingShape {
 // direction warn and return false; negative radii are an InputError for rings.
 bool makeRing(const Primitive& prim, int32_t primIndex, RingShape& shape);
 
-bool intersectRing(const RingShape& r, const Vec3& o, const Vec3& d, double tmin,
-                   double tmax, double& t);
+bool intersectRing(const RingShape& r, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                   double& t);
 
 Bounds3 ringBounds(const RingShape& r);
 

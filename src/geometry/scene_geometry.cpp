@@ -56,15 +56,15 @@ TriangleInset triangleInset(const Vec3& a, const Vec3& b, const Vec3& c, const V
     t.minRoom = HUGE_VAL;
     for (int i = 0; i < 3; ++i) {
         t.inward[i] = normalize(cross(n, *v[(i + 1) % 3] - *v[i]));  // in plane, CCW about n
-        double room = dot(*v[(i + 2) % 3] - *v[i], t.inward[i]);  // height of the third vertex
+        double room = dot(*v[(i + 2) % 3] - *v[i], t.inward[i]);     // height of the third vertex
         t.minRoom = std::isnan(room) || std::isnan(t.minRoom) ? NAN : std::fmin(t.minRoom, room);
     }
     return t;
 }
 
 template <class TriangleInset>
-void insetIntoTriangle(Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c,
-                       const TriangleInset& t, double inset) {
+void insetIntoTriangle(Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const TriangleInset& t,
+                       double inset) {
     if (!(t.minRoom > 4 * inset)) return;
     const Vec3* v[3] = {&a, &b, &c};
     // Pushing off one edge can move the point toward another at an acute corner, so
@@ -126,7 +126,8 @@ SceneGeometry::SceneGeometry(const Scene& scene)
         ObjectGeometry& og = objects_[k];
         if (so.kind == SceneObject::Kind::Mesh) {
             og.mesh = so.mesh;
-            og.cubeOrigin = {so.mesh->cubeOrigin[0], so.mesh->cubeOrigin[1], so.mesh->cubeOrigin[2]};
+            og.cubeOrigin = {so.mesh->cubeOrigin[0], so.mesh->cubeOrigin[1],
+                             so.mesh->cubeOrigin[2]};
             og.cubeSize = so.mesh->cubeSize;
             continue;
         }
@@ -137,7 +138,8 @@ SceneGeometry::SceneGeometry(const Scene& scene)
             const Primitive& p = scene.prims[size_t(i)];
             if (p.placed < 0) continue;
             const ObjectGeometry& inner = objects_[size_t(p.placed)];
-            b.extend(cubeBoundsIn(inner.cubeOrigin, inner.cubeSize, parseTransform(p.sargs, 1, p.loc)));
+            b.extend(
+                cubeBoundsIn(inner.cubeOrigin, inner.cubeSize, parseTransform(p.sargs, 1, p.loc)));
         }
         SceneCube cube = sceneCubeFor(b);
         og.cubeOrigin = cube.origin;
@@ -193,8 +195,8 @@ void SceneGeometry::place(const Scene& scene, int32_t begin, int32_t end, const 
         placements_.push_back(pl);
         if (so.kind == SceneObject::Kind::Octree) {
             const Placement copy = placements_.back();  // the vector may grow below
-            place(scene, so.firstPrim, so.endPrim, copy.where.xf.forward, copy.where.fixed ? &copy : nullptr,
-                  depth + 1);
+            place(scene, so.firstPrim, so.endPrim, copy.where.xf.forward,
+                  copy.where.fixed ? &copy : nullptr, depth + 1);
         }
     }
 }
@@ -212,44 +214,44 @@ Hit shapeHit(const ShapeSet& shapes, const std::vector<Inset>& insets, const Ray
     double scale = maxAbs(h.point);
     uint32_t index = a.index;
     switch (a.kind) {
-    case ShapeKind::Polygon: {
-        const PolygonShape& p = shapes.polygons[index];
-        // Float triangles: the offset must clear their rounding (ray.h).
-        h.offset = fastMax(kFloatOffsetRel * fastMax(scale, p.scale), minOffset);
-        const TriIndices& tri = shapes.triangles[a.triangle];
-        insetIntoTriangle(h.point, shapes.vertices[tri[0]], shapes.vertices[tri[1]],
-                          shapes.vertices[tri[2]], insets[a.triangle], h.offset);
-        h.normal = p.normal;
-        h.prim = p.prim;
-        h.modifier = p.modifier;
-        break;
-    }
-    case ShapeKind::Sphere: {
-        const SphereShape& s = shapes.spheres[index];
-        h.normal = sphereNormal(s, h.point);
-        h.prim = s.prim;
-        h.modifier = s.modifier;
-        h.offset = kDoubleOffsetRel * fastMax(scale, s.radius);
-        break;
-    }
-    case ShapeKind::Cone: {
-        const ConeShape& c = shapes.cones[index];
-        h.normal = coneNormal(c, h.point);
-        h.prim = c.prim;
-        h.modifier = c.modifier;
-        h.offset = kDoubleOffsetRel * std::fmax(scale, c.length + std::fmax(c.r0, c.r1));
-        break;
-    }
-    case ShapeKind::Ring: {
-        const RingShape& r = shapes.rings[index];
-        h.normal = r.normal;
-        h.prim = r.prim;
-        h.modifier = r.modifier;
-        h.offset = kDoubleOffsetRel * fastMax(scale, r.r1);
-        break;
-    }
-    case ShapeKind::Mesh:
-        RP_CHECK(false);  // mesh triangles are always placed
+        case ShapeKind::Polygon: {
+            const PolygonShape& p = shapes.polygons[index];
+            // Float triangles: the offset must clear their rounding (ray.h).
+            h.offset = fastMax(kFloatOffsetRel * fastMax(scale, p.scale), minOffset);
+            const TriIndices& tri = shapes.triangles[a.triangle];
+            insetIntoTriangle(h.point, shapes.vertices[tri[0]], shapes.vertices[tri[1]],
+                              shapes.vertices[tri[2]], insets[a.triangle], h.offset);
+            h.normal = p.normal;
+            h.prim = p.prim;
+            h.modifier = p.modifier;
+            break;
+        }
+        case ShapeKind::Sphere: {
+            const SphereShape& s = shapes.spheres[index];
+            h.normal = sphereNormal(s, h.point);
+            h.prim = s.prim;
+            h.modifier = s.modifier;
+            h.offset = kDoubleOffsetRel * fastMax(scale, s.radius);
+            break;
+        }
+        case ShapeKind::Cone: {
+            const ConeShape& c = shapes.cones[index];
+            h.normal = coneNormal(c, h.point);
+            h.prim = c.prim;
+            h.modifier = c.modifier;
+            h.offset = kDoubleOffsetRel * std::fmax(scale, c.length + std::fmax(c.r0, c.r1));
+            break;
+        }
+        case ShapeKind::Ring: {
+            const RingShape& r = shapes.rings[index];
+            h.normal = r.normal;
+            h.prim = r.prim;
+            h.modifier = r.modifier;
+            h.offset = kDoubleOffsetRel * fastMax(scale, r.r1);
+            break;
+        }
+        case ShapeKind::Mesh:
+            RP_CHECK(false);  // mesh triangles are always placed
     }
     h.offset = fastMax(h.offset, minOffset);
     h.front = dot(ray.dir, h.normal) < 0;
@@ -281,8 +283,9 @@ Hit meshHit(const MeshData& m, const Ray& local, const AccelHit& a, double minOf
     h.t = a.t;
     h.point = local.origin + local.dir * a.t;
     h.normal = normalize(n);
-    h.offset = fastMax(minOffset, kFloatOffsetRel * fastMax(maxAbs(h.point),
-                                                            fastMax(maxAbs(v0), fastMax(maxAbs(v1), maxAbs(v2)))));
+    h.offset = fastMax(
+        minOffset, kFloatOffsetRel * fastMax(maxAbs(h.point),
+                                             fastMax(maxAbs(v0), fastMax(maxAbs(v1), maxAbs(v2)))));
     insetIntoTriangle(h.point, v0, v1, v2, triangleInset<Inset>(v0, v1, v2, h.normal), h.offset);
     shading = Vec3{};
     const uint8_t flags = m.flagsOf(tri[0]) & m.flagsOf(tri[1]) & m.flagsOf(tri[2]);

@@ -88,9 +88,9 @@ private:
     void place(const Scene& scene, int32_t begin, int32_t end, const Transform& outer,
                const Placement* fixedBy, int depth);
 
-    std::unique_ptr<ShapeSet> shapes_;  // heap: the accelerator points into it
-    std::vector<TriangleInset> insets_;  // indexed like shapes_->triangles
-    CoincidentPolygons coincident_;      // the scene's own doubled surfaces
+    std::unique_ptr<ShapeSet> shapes_;     // heap: the accelerator points into it
+    std::vector<TriangleInset> insets_;    // indexed like shapes_->triangles
+    CoincidentPolygons coincident_;        // the scene's own doubled surfaces
     std::vector<ObjectGeometry> objects_;  // indexed like Scene::objects
     std::vector<Placement> placements_;
     Bounds3 bounds_;

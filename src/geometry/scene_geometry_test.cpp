@@ -25,7 +25,8 @@ void expectVec(const Vec3& a, const Vec3& b, double tol = kTol) {
 }
 
 // Axis-aligned square in z = z0, counter-clockwise seen from +z (normal +z) unless flip.
-std::vector<double> square(double x0, double y0, double x1, double y1, double z0, bool flip = false) {
+std::vector<double> square(double x0, double y0, double x1, double y1, double z0,
+                           bool flip = false) {
     if (flip) return {x0, y0, z0, x0, y1, z0, x1, y1, z0, x1, y0, z0};
     return {x0, y0, z0, x1, y0, z0, x1, y1, z0, x0, y1, z0};
 }
@@ -52,8 +53,8 @@ TEST(Polygon, HitFromFrontAndBack) {
     expectVec(back->normal, {0, 0, 1});  // not flipped toward the ray
     EXPECT_FALSE(back->front);
 
-    EXPECT_FALSE(g.closestHit({{1.5, 0, 5}, {0, 0, -1}}));  // outside
-    EXPECT_FALSE(g.closestHit({{0, 0, 5}, {0, 0, 1}}));     // pointing away
+    EXPECT_FALSE(g.closestHit({{1.5, 0, 5}, {0, 0, -1}}));     // outside
+    EXPECT_FALSE(g.closestHit({{0, 0, 5}, {0, 0, 1}}));        // pointing away
     EXPECT_FALSE(g.closestHit({{0, 0, 5}, {0, 0, -1}, 4.9}));  // beyond tmax
 }
 
@@ -147,15 +148,24 @@ TEST(Polygon, RaysThroughASeamCutWindowHitTheGlass) {
         for (int clutter : {0, 1, 2}) {
             SceneBuilder b;
             int32_t wallMat = b.material("wall"), glassMat = b.material("glass");
-            std::vector<double> wall = xz({{0, 0}, {0, 3}, {10, 3}, {10, 0}, {0, 0}, {3, 0.9},
-                                           {7, 0.9}, {7, 2.7}, {3, 2.7}, {3, 0.9}});
+            std::vector<double> wall = xz({{0, 0},
+                                           {0, 3},
+                                           {10, 3},
+                                           {10, 0},
+                                           {0, 0},
+                                           {3, 0.9},
+                                           {7, 0.9},
+                                           {7, 2.7},
+                                           {3, 2.7},
+                                           {3, 0.9}});
             if (returnVertex) wall.insert(wall.end(), {0, 0, 0});
             int32_t wallId = b.surface(PrimType::Polygon, wall, wallMat);
-            int32_t glassId = b.surface(
-                PrimType::Polygon, xz({{3, 0.9}, {3, 2.7}, {7, 2.7}, {7, 0.9}}), glassMat);
+            int32_t glassId = b.surface(PrimType::Polygon,
+                                        xz({{3, 0.9}, {3, 2.7}, {7, 2.7}, {7, 0.9}}), glassMat);
             for (int k = 0; k < 20 * clutter; ++k) {  // blind slats 0.1 m behind the glass
                 double z = 0.9 + 0.09 * k;
-                b.surface(PrimType::Polygon, {3, 0.1, z, 7, 0.1, z, 7, 0.15, z - 0.01, 3, 0.15, z - 0.01});
+                b.surface(PrimType::Polygon,
+                          {3, 0.1, z, 7, 0.1, z, 7, 0.15, z - 0.01, 3, 0.15, z - 0.01});
             }
             SceneGeometry g(b.scene());
             int wallHits = 0, glassHits = 0;
@@ -170,7 +180,8 @@ TEST(Polygon, RaysThroughASeamCutWindowHitTheGlass) {
                 }
             EXPECT_EQ(glassHits, 49) << "return vertex " << returnVertex << ", clutter " << clutter;
             EXPECT_EQ(wallHits, 0);
-            for (Vec3 beside : {Vec3{1, 0, 1.5}, Vec3{8.5, 0, 2}, Vec3{5, 0, 0.4}, Vec3{5, 0, 2.85}}) {
+            for (Vec3 beside :
+                 {Vec3{1, 0, 1.5}, Vec3{8.5, 0, 2}, Vec3{5, 0, 0.4}, Vec3{5, 0, 2.85}}) {
                 auto h = g.closestHit({beside - Vec3{0, 4, 0}, {0, 1, 0}});
                 ASSERT_TRUE(h);
                 EXPECT_EQ(h->prim, wallId);
@@ -323,7 +334,7 @@ TEST(Cylinder, CylinderAndTube) {
     auto ob = g.closestHit({{0, 0, 0}, d});
     ASSERT_TRUE(ob);
     EXPECT_NEAR(ob->t, std::sqrt(1.25), kTol);
-    EXPECT_EQ(ob->v, 0);  // RADIANCE uv: meshes only
+    EXPECT_EQ(ob->v, 0);                                                // RADIANCE uv: meshes only
     EXPECT_FALSE(g.closestHit({{0, 0, 0}, normalize(Vec3{1, 0, 3})}));  // out the top
 }
 

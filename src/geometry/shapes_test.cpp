@@ -19,7 +19,6 @@ namespace {
 
 using testing::SceneBuilder;
 
-
 std::string errorOf(const Scene& s) {
     try {
         buildShapes(s);
@@ -33,13 +32,15 @@ TEST(Shapes, BadArgumentCountsNameTheLocation) {
     {
         SceneBuilder b;
         b.surface(PrimType::Polygon, {0, 0, 0, 1, 0, 0, 1, 1}, kVoid, "p");
-        EXPECT_EQ(errorOf(b.scene()),
-                  "test.rad:1: polygon 'p': expected a multiple of 3 real arguments (at least 9), got 8");
+        EXPECT_EQ(
+            errorOf(b.scene()),
+            "test.rad:1: polygon 'p': expected a multiple of 3 real arguments (at least 9), got 8");
     }
     {
         SceneBuilder b;
         b.surface(PrimType::Sphere, {0, 0, 0}, kVoid, "ball");
-        EXPECT_EQ(errorOf(b.scene()), "test.rad:1: sphere 'ball': expected 4 real arguments, got 3");
+        EXPECT_EQ(errorOf(b.scene()),
+                  "test.rad:1: sphere 'ball': expected 4 real arguments, got 3");
     }
     {
         SceneBuilder b;
@@ -70,7 +71,7 @@ TEST(Shapes, InstancesAndMeshesArePlacementsNotShapes) {
 TEST(Shapes, DegenerateShapesAreSkippedWithWarning) {
     WarningCapture w;
     SceneBuilder b;
-    b.material("paint");                                                   // ignored
+    b.material("paint");                                                  // ignored
     b.surface(PrimType::Sphere, {0, 0, 0, 0}, kVoid, "dot");              // line 2
     b.surface(PrimType::Cylinder, {0, 0, 0, 0, 0, 0, 1}, kVoid, "flat");  // line 3
     b.surface(PrimType::Cone, {0, 0, 0, 0, 0, 1, 0, 0}, kVoid, "needle");

@@ -12,8 +12,8 @@ bool makeSource(const Primitive& prim, int32_t primIndex, DistantSource& src) {
     const std::string what = "source '" + prim.name + "'";
     const std::vector<double>& a = prim.rargs;
     if (a.size() != 4)
-        throw InputError(prim.loc, what + ": expected 4 real arguments, got " +
-                                       std::to_string(a.size()));
+        throw InputError(prim.loc,
+                         what + ": expected 4 real arguments, got " + std::to_string(a.size()));
     Vec3 d{a[0], a[1], a[2]};
     if (!(length(d) > 0)) {
         warn(prim.loc, what + ": zero direction, ignored");

@@ -13,9 +13,9 @@
 namespace rp {
 
 struct DistantSource {
-    Vec3 dir;              // unit, toward the centre of the source
-    double cosHalfAngle;   // cos of half the angular diameter
-    double solidAngle;     // 2 pi (1 - cosHalfAngle) rounded to float, RADIANCE's ss2
+    Vec3 dir;             // unit, toward the centre of the source
+    double cosHalfAngle;  // cos of half the angular diameter
+    double solidAngle;    // 2 pi (1 - cosHalfAngle) rounded to float, RADIANCE's ss2
     int32_t prim;
     int32_t modifier;
 };

@@ -32,8 +32,8 @@ bool makeSphere(const Primitive& prim, int32_t primIndex, SphereShape& shape) {
     return true;
 }
 
-bool intersectSphere(const SphereShape& s, const Vec3& o, const Vec3& d, double tmin,
-                     double tmax, double& t) {
+bool intersectSphere(const SphereShape& s, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                     double& t) {
     // Origin relative to the centre, and the discriminant from the distance of closest
     // approach (r^2 - |l|^2 factored), which stays accurate for rays that start far away
     // or nearly graze (Haines et al., Ray Tracing Gems ch. 7).

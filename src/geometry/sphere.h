@@ -22,8 +22,8 @@ struct SphereShape {
 bool makeSphere(const Primitive& prim, int32_t primIndex, SphereShape& shape);
 
 // Nearest t in (tmin, tmax) where o + t*d meets the sphere. Tangent rays miss.
-bool intersectSphere(const SphereShape& s, const Vec3& o, const Vec3& d, double tmin,
-                     double tmax, double& t);
+bool intersectSphere(const SphereShape& s, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                     double& t);
 
 // The unit normal at p (outward for a sphere, inward for a bubble).
 Vec3 sphereNormal(const SphereShape& s, const Vec3& p);

@@ -104,8 +104,7 @@ struct LinePoint {
 
 class SlabDecomposition {
 public:
-    SlabDecomposition(std::span<const Vec3> verts, const std::vector<P2>& pts)
-        : verts_(verts) {
+    SlabDecomposition(std::span<const Vec3> verts, const std::vector<P2>& pts) : verts_(verts) {
         size_t n = pts.size();
         for (size_t i = 0; i < n; ++i) {
             size_t j = (i + 1) % n;
@@ -218,11 +217,10 @@ private:
             return at[i].xb == at[j].xb && at[i].xt == at[j].xt;
         };
         for (size_t i = 0; i + 1 < at.size(); i += 2) {
-            if (at[i].xb >= at[i + 1].xb && at[i].xm >= at[i + 1].xm &&
-                at[i].xt >= at[i + 1].xt)
+            if (at[i].xb >= at[i + 1].xb && at[i].xm >= at[i + 1].xm && at[i].xt >= at[i + 1].xt)
                 continue;  // no area
-            bool shared = (i > 0 && coincide(i - 1, i)) ||
-                          (i + 2 < at.size() && coincide(i + 1, i + 2));
+            bool shared =
+                (i > 0 && coincide(i - 1, i)) || (i + 2 < at.size() && coincide(i + 1, i + 2));
             uint32_t l = at[i].e, r = at[i + 1].e;
             uint64_t key = (uint64_t(l) << 32) | r;
             if (!shared) {
@@ -251,9 +249,10 @@ private:
         for (auto& line : lines) {
             std::stable_sort(line.begin(), line.end(),
                              [](const LinePoint& a, const LinePoint& b) { return a.x < b.x; });
-            line.erase(std::unique(line.begin(), line.end(),
-                                   [](const LinePoint& a, const LinePoint& b) { return a.x == b.x; }),
-                       line.end());
+            line.erase(
+                std::unique(line.begin(), line.end(),
+                            [](const LinePoint& a, const LinePoint& b) { return a.x == b.x; }),
+                line.end());
             for (LinePoint& p : line) {
                 p.vertex = uint32_t(out.vertices.size());
                 out.vertices.push_back(p.p);
@@ -263,7 +262,8 @@ private:
             auto chain = [&](uint32_t line) {
                 const std::vector<LinePoint>& pts = lines[line];
                 // Corners at a crossing may come out a rounding apart in either order.
-                double a = xAt(edges_[t.left], lineY_[line]), b = xAt(edges_[t.right], lineY_[line]);
+                double a = xAt(edges_[t.left], lineY_[line]),
+                       b = xAt(edges_[t.right], lineY_[line]);
                 if (a > b) std::swap(a, b);
                 auto lo = std::lower_bound(pts.begin(), pts.end(), a,
                                            [](const LinePoint& p, double x) { return p.x < x; });
@@ -279,8 +279,8 @@ private:
     // Triangles between a bottom and a top chain (both left to right), advancing the
     // chain whose next point lies further left; triangles of zero area (to rounding,
     // relative to the polygon's size) are dropped.
-    void strip(std::span<const LinePoint> b, double yb, std::span<const LinePoint> t,
-               double yt, std::vector<TriIndices>& out) const {
+    void strip(std::span<const LinePoint> b, double yb, std::span<const LinePoint> t, double yt,
+               std::vector<TriIndices>& out) const {
         if (b.empty() || t.empty()) return;
         auto emit = [&](const LinePoint& p, double py, const LinePoint& q, double qy,
                         const LinePoint& r, double ry) {
@@ -304,9 +304,10 @@ private:
     std::vector<Edge> edges_;
     std::vector<double> lineY_;  // heights of the slab boundaries so far, increasing
     std::vector<Trapezoid> traps_;
-    std::unordered_map<uint64_t, uint32_t> open_;  // (left, right) -> trapezoid reaching the last line
+    std::unordered_map<uint64_t, uint32_t>
+        open_;                           // (left, right) -> trapezoid reaching the last line
     size_t splits_ = 0, maxSplits_ = 0;  // bound on crossing splits for pathological input
-    double minArea2_ = 0;  // twice the area below which a triangle is rounding noise
+    double minArea2_ = 0;                // twice the area below which a triangle is rounding noise
 };
 
 }  // namespace

@@ -94,8 +94,8 @@ Cover coverAt(const Triangulation& tri, double x, double y, double eps, double s
 
 // Random points in the loop's bounding box, away from its edges by `margin`: inside
 // points covered exactly once, outside points not at all. Returns points checked.
-int checkAgainstEvenOdd(const std::vector<Vec3>& v, const Vec3& n, std::mt19937& rng,
-                        int samples, double margin, const std::string& what) {
+int checkAgainstEvenOdd(const std::vector<Vec3>& v, const Vec3& n, std::mt19937& rng, int samples,
+                        double margin, const std::string& what) {
     Triangulation tri = triangulatePolygon(v, n);
     std::vector<P> p;
     double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
@@ -105,8 +105,7 @@ int checkAgainstEvenOdd(const std::vector<Vec3>& v, const Vec3& n, std::mt19937&
         y0 = std::fmin(y0, q.y), y1 = std::fmax(y1, q.y);
     }
     double sign = n.z > 0 ? 1 : -1;
-    for (const TriIndices& t : tri.triangles)
-        EXPECT_GT(triArea(tri, t, n), 0) << what;
+    for (const TriIndices& t : tri.triangles) EXPECT_GT(triArea(tri, t, n), 0) << what;
     std::uniform_real_distribution<double> ux(x0, x1), uy(y0, y1);
     int checked = 0;
     for (int s = 0; s < samples; ++s) {
@@ -119,8 +118,7 @@ int checkAgainstEvenOdd(const std::vector<Vec3>& v, const Vec3& n, std::mt19937&
             EXPECT_GE(c.loose, 1) << what << ": inside point (" << x << ", " << y << ") lost";
             EXPECT_LE(c.strict, 1) << what << ": point (" << x << ", " << y << ") covered twice";
         } else {
-            EXPECT_EQ(c.strict, 0) << what << ": outside point (" << x << ", " << y
-                                   << ") covered";
+            EXPECT_EQ(c.strict, 0) << what << ": outside point (" << x << ", " << y << ") covered";
         }
         if (::testing::Test::HasFailure()) return checked;
     }
@@ -196,9 +194,9 @@ TEST(Triangulate, Star) {
 }
 
 TEST(Triangulate, Comb) {
-    auto v = loop2d({{0, 0}, {9, 0}, {9, 3}, {8, 3}, {8, 1}, {7, 1}, {7, 3}, {6, 3}, {6, 1},
-                     {5, 1}, {5, 3}, {4, 3}, {4, 1}, {3, 1}, {3, 3}, {2, 3}, {2, 1}, {1, 1},
-                     {1, 3}, {0, 3}});
+    auto v =
+        loop2d({{0, 0}, {9, 0}, {9, 3}, {8, 3}, {8, 1}, {7, 1}, {7, 3}, {6, 3}, {6, 1}, {5, 1},
+                {5, 3}, {4, 3}, {4, 1}, {3, 1}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}});
     auto tri = triangulatePolygon(v, kUp);
     expectCovers(v, tri, kUp);
     EXPECT_NEAR(0.5 * newellNormal(v).z, 19.0, 1e-12);
@@ -209,8 +207,8 @@ TEST(Triangulate, Comb) {
 
 // RADIANCE-style hole: outline CCW, seam to the hole, hole walked clockwise, seam back.
 TEST(Triangulate, HoleJoinedBySeam) {
-    auto v = loop2d({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0},
-                     {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}});
+    auto v =
+        loop2d({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}, {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}});
     auto tri = triangulatePolygon(v, kUp);
     expectCovers(v, tri, kUp);  // 16 - 4 = 12
     EXPECT_NEAR(0.5 * newellNormal(v).z, 12.0, 1e-12);
@@ -225,9 +223,22 @@ TEST(Triangulate, HoleJoinedBySeam) {
 
 TEST(Triangulate, TwoHolesAndFarFromOrigin) {
     // Two holes, each with its own seam, the whole thing 1 km away and tilted.
-    auto flat = loop2d({{0, 0}, {6, 0}, {6, 3}, {0, 3}, {0, 0},
-                        {1, 1}, {1, 2}, {2, 2}, {2, 1}, {1, 1},
-                        {0, 0}, {4, 1}, {4, 2}, {5, 2}, {5, 1}, {4, 1}});
+    auto flat = loop2d({{0, 0},
+                        {6, 0},
+                        {6, 3},
+                        {0, 3},
+                        {0, 0},
+                        {1, 1},
+                        {1, 2},
+                        {2, 2},
+                        {2, 1},
+                        {1, 1},
+                        {0, 0},
+                        {4, 1},
+                        {4, 2},
+                        {5, 2},
+                        {5, 1},
+                        {4, 1}});
     std::vector<Vec3> v;
     Vec3 ex = normalize(Vec3{1, 1, 0}), ey = normalize(Vec3{-1, 1, 1});
     Vec3 n = normalize(cross(ex, ey)), base{1000, -1000, 500};
@@ -270,14 +281,53 @@ std::vector<std::vector<Vec3>> cadWalls() {
         // seam from a corner to the hole, then on around the outline
         {{0, 0}, {10, 0}, {2, 1}, {2, 2.8}, {6, 2.8}, {6, 1}, {2, 1}, {10, 0}, {10, 3}, {0, 3}},
         // two windows chained on one seam
-        {{0, 0}, {10, 0}, {10, 3}, {0, 3}, {0, 0}, {1, 1}, {1, 2}, {4, 2}, {4, 1}, {1, 1},
-         {6, 0.5}, {6, 2.5}, {9, 2.5}, {9, 0.5}, {6, 0.5}, {1, 1}},
+        {{0, 0},
+         {10, 0},
+         {10, 3},
+         {0, 3},
+         {0, 0},
+         {1, 1},
+         {1, 2},
+         {4, 2},
+         {4, 1},
+         {1, 1},
+         {6, 0.5},
+         {6, 2.5},
+         {9, 2.5},
+         {9, 0.5},
+         {6, 0.5},
+         {1, 1}},
         // seam running along the floor line, then up to a window (collinear seam edges)
-        {{0, 0}, {10, 0}, {10, 3}, {0, 3}, {0, 0}, {5, 0}, {5, 1}, {3, 1}, {3, 2}, {7, 2},
-         {7, 1}, {5, 1}, {5, 0}},
+        {{0, 0},
+         {10, 0},
+         {10, 3},
+         {0, 3},
+         {0, 0},
+         {5, 0},
+         {5, 1},
+         {3, 1},
+         {3, 2},
+         {7, 2},
+         {7, 1},
+         {5, 1},
+         {5, 0}},
         // two windows sharing a mullion line, each on its own seam from the corner
-        {{0, 0}, {10, 0}, {10, 3}, {0, 3}, {0, 0}, {2, 1}, {2, 2}, {5, 2}, {5, 1}, {2, 1},
-         {0, 0}, {5, 1}, {5, 2}, {8, 2}, {8, 1}, {5, 1}},
+        {{0, 0},
+         {10, 0},
+         {10, 3},
+         {0, 3},
+         {0, 0},
+         {2, 1},
+         {2, 2},
+         {5, 2},
+         {5, 1},
+         {2, 1},
+         {0, 0},
+         {5, 1},
+         {5, 2},
+         {8, 2},
+         {8, 1},
+         {5, 1}},
         // a door reaching the floor: the outline itself dips (no seam)
         {{0, 0}, {4, 0}, {4, 2.1}, {5, 2.1}, {5, 0}, {10, 0}, {10, 3}, {0, 3}},
     };
@@ -303,8 +353,8 @@ TEST(Triangulate, CadWallsWithWindows) {
 // Random loops: an outline with random radii around a centre, holes of the same kind
 // joined by seams (with or without the return vertex), and fully random vertex
 // sequences that cross themselves. The triangles must match the even-odd rule.
-std::vector<std::pair<double, double>> starLoop(std::mt19937& rng, double cx, double cy,
-                                                double r0, int n, bool clockwise) {
+std::vector<std::pair<double, double>> starLoop(std::mt19937& rng, double cx, double cy, double r0,
+                                                int n, bool clockwise) {
     std::uniform_real_distribution<double> ur(0.3, 1.0);
     std::vector<std::pair<double, double>> p;
     for (int i = 0; i < n; ++i) {
@@ -362,7 +412,8 @@ TEST(Triangulate, ThousandsOfVerticesStaySmall) {
         l.push_back({r * std::cos(a), r * std::sin(a)});
     }
     l.push_back(l[0]);
-    for (int i = 0; i < 4; ++i) l.push_back({i == 0 || i == 1 ? -1.0 : 1.0, i == 0 || i == 3 ? -1.0 : 1.0});
+    for (int i = 0; i < 4; ++i)
+        l.push_back({i == 0 || i == 1 ? -1.0 : 1.0, i == 0 || i == 3 ? -1.0 : 1.0});
     l.push_back({-1, -1});
     auto v = loop2d(l);
     Triangulation tri = triangulatePolygon(v, kUp);

@@ -26,8 +26,7 @@ bool differ(double a, double b) { return a - b - kEps > 0 || b - a - kEps > 0; }
 double parseNumber(const std::string& opt, const std::string& v) {
     char* end = nullptr;
     double d = std::strtod(v.c_str(), &end);
-    if (v.empty() || *end || !std::isfinite(d))
-        throw InputError(opt + ": bad number '" + v + "'");
+    if (v.empty() || *end || !std::isfinite(d)) throw InputError(opt + ": bad number '" + v + "'");
     return d;
 }
 
@@ -50,36 +49,58 @@ FalseColorOptions parseFalseColorArgs(const std::vector<std::string>& args) {
             if (i + 1 >= args.size()) throw InputError("option " + a + " needs a value");
             return args[++i];
         };
-        if (a == "-lw") o.legendWidth = parseInt(a, value());
-        else if (a == "-lh") o.legendHeight = parseInt(a, value());
-        else if (a == "-m") o.multiplier = parseNumber(a, value());
-        else if (a == "-spec") throw InputError("deprecated option '-spec': use '-pal spec'");
+        if (a == "-lw")
+            o.legendWidth = parseInt(a, value());
+        else if (a == "-lh")
+            o.legendHeight = parseInt(a, value());
+        else if (a == "-m")
+            o.multiplier = parseNumber(a, value());
+        else if (a == "-spec")
+            throw InputError("deprecated option '-spec': use '-pal spec'");
         else if (a == "-s") {
             const std::string& v = value();
             // RADIANCE compat: falsecolor.pl takes any value starting with a or A as auto.
-            if (!v.empty() && (v[0] == 'a' || v[0] == 'A')) o.autoScale = true;
-            else o.scale = parseNumber(a, v);
-        } else if (a == "-d") o.decimals = parseInt(a, value());
-        else if (a == "-l") o.label = value();
-        else if (a == "-log") o.decades = parseNumber(a, value());
-        else if (a == "-r") o.channelExpr[0] = value();
-        else if (a == "-g") o.channelExpr[1] = value();
-        else if (a == "-b") o.channelExpr[2] = value();
+            if (!v.empty() && (v[0] == 'a' || v[0] == 'A'))
+                o.autoScale = true;
+            else
+                o.scale = parseNumber(a, v);
+        } else if (a == "-d")
+            o.decimals = parseInt(a, value());
+        else if (a == "-l")
+            o.label = value();
+        else if (a == "-log")
+            o.decades = parseNumber(a, value());
+        else if (a == "-r")
+            o.channelExpr[0] = value();
+        else if (a == "-g")
+            o.channelExpr[1] = value();
+        else if (a == "-b")
+            o.channelExpr[2] = value();
         else if (a == "-pal") {
             const std::string& v = value();
             auto p = paletteByName(v);
             if (!p) throw InputError("invalid palette '" + v + "'");
             o.palette = *p;
-        } else if (a == "-i") o.input = value();
-        else if (a == "-p") o.background = value();
-        else if (a == "-ip" || a == "-pi") o.input = o.background = value();
-        else if (a == "-n") o.ndivs = parseInt(a, value());
-        else if (a == "-cl") o.contour = ContourMode::kLines;
-        else if (a == "-cb") o.contour = ContourMode::kBands;
-        else if (a == "-cp") o.contour = ContourMode::kPosterize;
-        else if (a == "-palettes") o.showPalettes = true;
-        else if (a == "-e") o.extrema = true;
-        else throw InputError("bad option '" + a + "'");
+        } else if (a == "-i")
+            o.input = value();
+        else if (a == "-p")
+            o.background = value();
+        else if (a == "-ip" || a == "-pi")
+            o.input = o.background = value();
+        else if (a == "-n")
+            o.ndivs = parseInt(a, value());
+        else if (a == "-cl")
+            o.contour = ContourMode::kLines;
+        else if (a == "-cb")
+            o.contour = ContourMode::kBands;
+        else if (a == "-cp")
+            o.contour = ContourMode::kPosterize;
+        else if (a == "-palettes")
+            o.showPalettes = true;
+        else if (a == "-e")
+            o.extrema = true;
+        else
+            throw InputError("bad option '" + a + "'");
     }
     if (o.ndivs < 1) throw InputError("-n: need at least one division");
     if (o.decimals < 0) throw InputError("-d: decimal places must be 0 or more");
@@ -103,8 +124,10 @@ FalseColorMap::FalseColorMap(const FalseColorOptions& opt) : opt_(opt) {
     static const char* kOpt[3] = {"-r", "-g", "-b"};
     bool any = false;
     calc::Builder b;
-    b.loadString("PI : 3.14159265358979323846; gamma : 2.2;"
-                 "clip(x) : if(x-1,1,if(x,x,0));", "falsecolor prelude", 0);
+    b.loadString(
+        "PI : 3.14159265358979323846; gamma : 2.2;"
+        "clip(x) : if(x-1,1,if(x,x,0));",
+        "falsecolor prelude", 0);
     for (int c = 0; c < 3; ++c) {
         if (opt.channelExpr[c].empty()) continue;
         any = true;
@@ -167,8 +190,7 @@ bool FalseColorMap::inBand(double v) const {
     return f < 0.1 || f - 0.9 > 0;
 }
 
-bool FalseColorMap::onLine(double v, double left, double right, double above,
-                           double below) const {
+bool FalseColorMap::onLine(double v, double left, double right, double above, double below) const {
     double n = opt_.ndivs;
     if (!(v >= 1 / n / 2 && v < 1 + 1 / n / 2)) return false;
     return differ(std::floor(n * left), std::floor(n * right)) ||
@@ -198,8 +220,10 @@ std::vector<std::string> legendValues(const FalseColorOptions& opt) {
     for (int i = 0; i < count; ++i) {
         double imap = static_cast<double>(opt.ndivs - i) / opt.ndivs;
         double value = opt.scale;
-        if (opt.decades > 0) value *= std::pow(10.0, (imap - 1) * opt.decades);
-        else value *= imap;
+        if (opt.decades > 0)
+            value *= std::pow(10.0, (imap - 1) * opt.decades);
+        else
+            value *= imap;
         out.push_back(legendNumber(value, opt.decimals));
     }
     return out;

@@ -19,22 +19,22 @@ enum class ContourMode { kNone, kLines, kBands, kPosterize };  // -cl, -cb, -cp
 
 // Option defaults are RADIANCE 5.4 falsecolor.pl's.
 struct FalseColorOptions {
-    std::string input = "-";         // -i (or -ip): the picture whose luminance is mapped
-    std::string background;          // -p (or -ip): shown where contours leave gaps
-    double scale = 1000;             // -s: top of the scale, in multiplier units
-    bool autoScale = false;          // -s a: top from the picture's brightest values
-    int ndivs = 8;                   // -n
-    std::string label = "cd/m2";     // -l
-    double multiplier = 179;         // -m: W/sr/m2 to cd/m2 (luminous efficacy)
-    int decimals = 3;                // -d: decimals kept in legend numbers
-    double decades = 0;              // -log: 0 means linear
+    std::string input = "-";      // -i (or -ip): the picture whose luminance is mapped
+    std::string background;       // -p (or -ip): shown where contours leave gaps
+    double scale = 1000;          // -s: top of the scale, in multiplier units
+    bool autoScale = false;       // -s a: top from the picture's brightest values
+    int ndivs = 8;                // -n
+    std::string label = "cd/m2";  // -l
+    double multiplier = 179;      // -m: W/sr/m2 to cd/m2 (luminous efficacy)
+    int decimals = 3;             // -d: decimals kept in legend numbers
+    double decades = 0;           // -log: 0 means linear
     FalseColorPalette palette = FalseColorPalette::kDef;  // -pal
     std::array<std::string, 3> channelExpr;  // -r -g -b: .cal expressions of v ("" = palette)
     ContourMode contour = ContourMode::kNone;
-    bool extrema = false;            // -e
-    bool showPalettes = false;       // -palettes
-    int legendWidth = 100;           // -lw
-    int legendHeight = 200;          // -lh
+    bool extrema = false;       // -e
+    bool showPalettes = false;  // -palettes
+    int legendWidth = 100;      // -lw
+    int legendHeight = 200;     // -lh
 };
 
 // Parses falsecolor's arguments (without the program name). Throws InputError naming the
@@ -84,13 +84,13 @@ double autoScaleTop(const Picture& pic, double multiplier);
 // The whole falsecolor picture: legend left of the (mapped) image, sized and placed as
 // RADIANCE's pcompos composes them. `background` may be null. `commandLine` goes into
 // the header after the input's lines.
-Picture falseColorPicture(const Picture& input, const Picture* background,
-                          FalseColorOptions opt, const std::string& commandLine);
+Picture falseColorPicture(const Picture& input, const Picture* background, FalseColorOptions opt,
+                          const std::string& commandLine);
 // -palettes: every palette as a 256 x 30 strip with its name above, bottom to top.
 Picture paletteChart(const std::string& commandLine);
 
 // The tool: reads the pictures named in `opt`, writes the result to `out`.
-void runFalseColor(const FalseColorOptions& opt, const std::string& commandLine,
-                   std::istream& in, std::ostream& out);
+void runFalseColor(const FalseColorOptions& opt, const std::string& commandLine, std::istream& in,
+                   std::ostream& out);
 
 }  // namespace rp

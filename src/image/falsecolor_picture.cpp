@@ -62,23 +62,21 @@ Picture composeLayers(const std::vector<Layer>& layers) {
 // RGBE-rounded value.
 double packedBright(const Pixel& p) { return bright(toPixel(toColr(p))); }
 
-Picture textPicture(const std::string& text, int height, Pixel ink, Pixel paper,
-                    int maxWidth = 0) {
+Picture textPicture(const std::string& text, int height, Pixel ink, Pixel paper, int maxWidth = 0) {
     TextMask m = renderText(text, height, maxWidth);
     Picture p(std::max(m.width, 1), height);
     for (int y = 0; y < m.height; ++y)
-        for (int x = 0; x < p.width; ++x)
-            p.at(x, y) = (x < m.width && m.at(x, y)) ? ink : paper;
+        for (int x = 0; x < p.width; ++x) p.at(x, y) = (x < m.width && m.at(x, y)) ? ink : paper;
     return p;
 }
 
 // falsecolor.pl's legend geometry (all from -lw, -lh, -n).
 struct LegendGeometry {
-    int sheight = 0;        // height of one division
-    int textHeight = 0;     // psign -h
-    double barExtent = 0;   // pcomb's yres for the bar (may be fractional)
-    int barRows = 0;        // rows pcomb writes: yres rounded
-    int barY = 0;           // bar's lower edge (negative: partly below the picture)
+    int sheight = 0;       // height of one division
+    int textHeight = 0;    // psign -h
+    double barExtent = 0;  // pcomb's yres for the bar (may be fractional)
+    int barRows = 0;       // rows pcomb writes: yres rounded
+    int barY = 0;          // bar's lower edge (negative: partly below the picture)
 };
 
 LegendGeometry legendGeometry(const FalseColorOptions& o) {
@@ -90,9 +88,10 @@ LegendGeometry legendGeometry(const FalseColorOptions& o) {
     g.barRows = static_cast<int>(g.barExtent + 0.5);
     // RADIANCE compat: the bar starts half a division below the picture (a division and
     // a half with contours, where the bottom division carries no colour).
-    g.barY = o.contour == ContourMode::kNone
-                 ? -static_cast<int>(std::floor(o.legendHeight / o.ndivs / 2.0))
-                 : -static_cast<int>(std::floor(o.legendHeight / static_cast<double>(o.ndivs) * 1.5));
+    g.barY =
+        o.contour == ContourMode::kNone
+            ? -static_cast<int>(std::floor(o.legendHeight / o.ndivs / 2.0))
+            : -static_cast<int>(std::floor(o.legendHeight / static_cast<double>(o.ndivs) * 1.5));
     return g;
 }
 
@@ -154,7 +153,8 @@ Picture mapImage(const Picture& in, const Picture* background, const FalseColorO
     int w = in.width, h = in.height;
     std::vector<double> v(static_cast<size_t>(w) * h);
     for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) v[static_cast<size_t>(y) * w + x] = map.position(bright(in.at(x, y)) * norm);
+        for (int x = 0; x < w; ++x)
+            v[static_cast<size_t>(y) * w + x] = map.position(bright(in.at(x, y)) * norm);
     // pcomb's li(1, dx, dy) clamps neighbours to the picture.
     auto at = [&](int x, int y) {
         x = std::clamp(x, 0, w - 1);
@@ -193,7 +193,8 @@ struct Extreme {
 int normBright(const Colr& c) {
     return static_cast<int>((static_cast<long>(kRedWeight * 256 + 0.5) * c[0] +
                              static_cast<long>(kGreenWeight * 256 + 0.5) * c[1] +
-                             static_cast<long>(kBlueWeight * 256 + 0.5) * c[2]) >> 8);
+                             static_cast<long>(kBlueWeight * 256 + 0.5) * c[2]) >>
+                            8);
 }
 
 std::pair<Extreme, Extreme> findExtrema(const Picture& in) {
@@ -204,8 +205,10 @@ std::pair<Extreme, Extreme> findExtrema(const Picture& in) {
         int y = in.height - 1 - row;
         for (int x = in.width - 1; x >= 0; --x) {
             Colr c = toColr(in.at(x, row));
-            if (c[3] > hi.c[3] || (c[3] == hi.c[3] && normBright(c) > normBright(hi.c))) hi = {x, y, c};
-            if (c[3] < lo.c[3] || (c[3] == lo.c[3] && normBright(c) < normBright(lo.c))) lo = {x, y, c};
+            if (c[3] > hi.c[3] || (c[3] == hi.c[3] && normBright(c) > normBright(hi.c)))
+                hi = {x, y, c};
+            if (c[3] < lo.c[3] || (c[3] == lo.c[3] && normBright(c) < normBright(lo.c)))
+                lo = {x, y, c};
         }
     }
     return {lo, hi};
@@ -244,7 +247,8 @@ std::vector<double> reducedLuminances(const Picture& pic) {
             double sum = 0;
             int n = 0;
             for (int y = y0; y < std::min(pic.height, y0 + f); ++y)
-                for (int x = x0; x < std::min(pic.width, x0 + f); ++x, ++n) sum += bright(pic.at(x, y));
+                for (int x = x0; x < std::min(pic.width, x0 + f); ++x, ++n)
+                    sum += bright(pic.at(x, y));
             out.push_back(sum / n / pic.exposure());
         }
     return out;
@@ -266,8 +270,8 @@ double autoScaleTop(const Picture& pic, double multiplier) {
     return multiplier / 179 * std::pow(10.0, std::strtod(buf, nullptr));
 }
 
-Picture falseColorPicture(const Picture& input, const Picture* background,
-                          FalseColorOptions o, const std::string& commandLine) {
+Picture falseColorPicture(const Picture& input, const Picture* background, FalseColorOptions o,
+                          const std::string& commandLine) {
     if (background && (background->width != input.width || background->height != input.height))
         throw InputError("background picture is " + std::to_string(background->width) + "x" +
                          std::to_string(background->height) + ", input " +
@@ -313,8 +317,8 @@ Picture paletteChart(const std::string& commandLine) {
     return out;
 }
 
-void runFalseColor(const FalseColorOptions& opt, const std::string& commandLine,
-                   std::istream& in, std::ostream& out) {
+void runFalseColor(const FalseColorOptions& opt, const std::string& commandLine, std::istream& in,
+                   std::ostream& out) {
     if (opt.showPalettes) {
         writePicture(out, paletteChart(commandLine));
         return;
@@ -326,8 +330,8 @@ void runFalseColor(const FalseColorOptions& opt, const std::string& commandLine,
     std::optional<Picture> background;
     if (!opt.background.empty())
         background = opt.background == opt.input ? input : load(opt.background);
-    writePicture(out, falseColorPicture(input, background ? &*background : nullptr, opt,
-                                        commandLine));
+    writePicture(out,
+                 falseColorPicture(input, background ? &*background : nullptr, opt, commandLine));
 }
 
 }  // namespace rp

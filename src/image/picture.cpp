@@ -8,8 +8,8 @@
 #include <ostream>
 #include <sstream>
 
-#include "util/file_write.h"
 #include "util/error.h"
+#include "util/file_write.h"
 
 namespace rp {
 

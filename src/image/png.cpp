@@ -23,8 +23,8 @@ void noFlush(png_structp) {}
 
 // The libpng calls, after every C++ object they touch exists: libpng reports errors by
 // longjmp, which must not skip a destructor. Returns false on a libpng error.
-bool writeRows(png_structp png, png_infop info, int width, int height,
-               png_bytep* rows, std::string* out, const std::optional<double>& gamma) {
+bool writeRows(png_structp png, png_infop info, int width, int height, png_bytep* rows,
+               std::string* out, const std::optional<double>& gamma) {
     if (setjmp(png_jmpbuf(png))) return false;
     png_set_write_fn(png, out, appendToString, noFlush);
     png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,

@@ -15,9 +15,12 @@ namespace {
 
 const char* formatName(ValueFormat f) {
     switch (f) {
-        case ValueFormat::kFloat: return "float";
-        case ValueFormat::kDouble: return "double";
-        default: return "ascii";
+        case ValueFormat::kFloat:
+            return "float";
+        case ValueFormat::kDouble:
+            return "double";
+        default:
+            return "ascii";
     }
 }
 
@@ -57,8 +60,7 @@ void putBinary(std::ostream& out, double v) {
 
 // One pixel's values (coordinates first, RADIANCE's image coordinates: y from the
 // bottom) in the chosen format; ASCII as pvalue.c's "%7d %7d " and "%15.3e".
-void putPixel(std::ostream& out, const PvalueOptions& opt, int x, int yUp, const double* v,
-              int n) {
+void putPixel(std::ostream& out, const PvalueOptions& opt, int x, int yUp, const double* v, int n) {
     if (opt.format == ValueFormat::kAscii) {
         char buf[64];
         if (opt.coordinates) {
@@ -95,18 +97,18 @@ public:
 
     void add(const double* f, int line) {
         if (count_ >= needed())
-            throw InputError(SourceLoc{what_, line},
-                             "more pixels than the resolution " + formatResolution(res_) +
-                                 " holds (" + std::to_string(needed()) + ")");
+            throw InputError(SourceLoc{what_, line}, "more pixels than the resolution " +
+                                                         formatResolution(res_) + " holds (" +
+                                                         std::to_string(needed()) + ")");
         int x, yTop;
         const double* v = f;
         if (opt_.coordinates) {
             double cx = f[0], cy = f[1];
             if (cx != std::floor(cx) || cy != std::floor(cy) || cx < 0 || cy < 0 ||
                 cx >= res_.xres || cy >= res_.yres)
-                throw InputError(SourceLoc{what_, line},
-                                 "coordinates (" + fmtNum(cx) + ", " + fmtNum(cy) +
-                                     ") outside the picture " + formatResolution(res_));
+                throw InputError(SourceLoc{what_, line}, "coordinates (" + fmtNum(cx) + ", " +
+                                                             fmtNum(cy) + ") outside the picture " +
+                                                             formatResolution(res_));
             x = static_cast<int>(cx);
             yTop = res_.yres - 1 - static_cast<int>(cy);
             v += 2;
@@ -126,10 +128,10 @@ public:
 
     void finish(int line) const {
         if (count_ < needed())
-            throw InputError(SourceLoc{what_, line},
-                             "input ends after " + std::to_string(count_) + " of " +
-                                 std::to_string(needed()) + " pixels for the resolution " +
-                                 formatResolution(res_));
+            throw InputError(SourceLoc{what_, line}, "input ends after " + std::to_string(count_) +
+                                                         " of " + std::to_string(needed()) +
+                                                         " pixels for the resolution " +
+                                                         formatResolution(res_));
     }
 
 private:
@@ -205,11 +207,16 @@ PvalueOptions parsePvalueArgs(const std::vector<std::string>& args) {
         }
         const bool minus = a[0] == '-';
         const std::string name = a.substr(1);
-        if (name == "h") opt.header = !minus;
-        else if (name == "H") opt.resolution = !minus;
-        else if (name == "o") opt.original = minus;
-        else if (name == "b") opt.brightness = minus;
-        else if (name == "r") opt.reverse = minus;
+        if (name == "h")
+            opt.header = !minus;
+        else if (name == "H")
+            opt.resolution = !minus;
+        else if (name == "o")
+            opt.original = minus;
+        else if (name == "b")
+            opt.brightness = minus;
+        else if (name == "r")
+            opt.reverse = minus;
         else if (name == "d" || name == "da" || name == "df" || name == "dd") {
             // As pvalue.c: "-d?" drops the coordinates, "+d?" keeps them; ? picks the type.
             opt.coordinates = !minus;
@@ -273,7 +280,8 @@ void writeValues(std::ostream& out, const Picture& pic, const PvalueOptions& opt
         for (int x = 0; x < pic.width; ++x) {
             const Pixel& p = pic.at(x, y);
             double v[3] = {p[0] * scale[0], p[1] * scale[1], p[2] * scale[2]};
-            if (opt.brightness) v[0] = xyz ? v[1] : brightness({float(v[0]), float(v[1]), float(v[2])});
+            if (opt.brightness)
+                v[0] = xyz ? v[1] : brightness({float(v[0]), float(v[1]), float(v[2])});
             putPixel(out, opt, x, pic.height - 1 - y, v, opt.brightness ? 1 : 3);
         }
     }
@@ -313,9 +321,15 @@ Picture readValues(std::istream& in, const std::string& what, const PvalueOption
 
     PixelSink sink(pic, *res, opt, what);
     switch (opt.format) {
-        case ValueFormat::kAscii: readAsciiPixels(in, sink, what, line); break;
-        case ValueFormat::kFloat: readBinaryPixels<float>(in, sink, what); break;
-        case ValueFormat::kDouble: readBinaryPixels<double>(in, sink, what); break;
+        case ValueFormat::kAscii:
+            readAsciiPixels(in, sink, what, line);
+            break;
+        case ValueFormat::kFloat:
+            readBinaryPixels<float>(in, sink, what);
+            break;
+        case ValueFormat::kDouble:
+            readBinaryPixels<double>(in, sink, what);
+            break;
     }
     return pic;
 }

@@ -15,15 +15,15 @@ namespace rp {
 enum class ValueFormat { kAscii, kFloat, kDouble };  // -da, -df, -dd
 
 struct PvalueOptions {
-    std::string input = "-";       // the picture (or, with -r, the values); "-" is stdin
-    bool reverse = false;          // -r: values -> picture
-    bool header = true;            // -h turns off the header (written or read)
-    bool resolution = true;        // -H turns off the resolution string (written or read)
-    bool original = false;         // -o: values before EXPOSURE (and COLORCORR)
-    bool brightness = false;       // -b: one value per pixel
-    bool coordinates = true;       // -d..: pixel data only; +d.. keeps coordinates
+    std::string input = "-";  // the picture (or, with -r, the values); "-" is stdin
+    bool reverse = false;     // -r: values -> picture
+    bool header = true;       // -h turns off the header (written or read)
+    bool resolution = true;   // -H turns off the resolution string (written or read)
+    bool original = false;    // -o: values before EXPOSURE (and COLORCORR)
+    bool brightness = false;  // -b: one value per pixel
+    bool coordinates = true;  // -d..: pixel data only; +d.. keeps coordinates
     ValueFormat format = ValueFormat::kAscii;
-    double exposure = 1;           // -e: multiplier, or +/-stops when signed
+    double exposure = 1;             // -e: multiplier, or +/-stops when signed
     std::optional<Resolution> size;  // -y N +x M (any of +-x +-y, first is major)
 };
 

@@ -21,7 +21,8 @@ Picture testPicture() {
     Picture pic(3, 2);
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 3; ++x)
-            pic.at(x, y) = toPixel(toColr(Pixel{0.1f + x, 0.5f * (y + 1), 0.01f * (x + 3 * y + 1)}));
+            pic.at(x, y) =
+                toPixel(toColr(Pixel{0.1f + x, 0.5f * (y + 1), 0.01f * (x + 3 * y + 1)}));
     pic.header.lines.push_back("test picture");
     return pic;
 }
@@ -81,7 +82,8 @@ TEST(Pvalue, DataOnlyRoundTripWithCommandLineSize) {
 }
 
 TEST(Pvalue, FirstValueIsTopLeft) {
-    Picture pic = picture("1 1 1\n2 2 2\n3 3 3\n4 4 4\n", {"-r", "-h", "-H", "-d", "-y", "2", "+x", "2"});
+    Picture pic =
+        picture("1 1 1\n2 2 2\n3 3 3\n4 4 4\n", {"-r", "-h", "-H", "-d", "-y", "2", "+x", "2"});
     EXPECT_NEAR(1, pic.at(0, 0)[0], 0.01);
     EXPECT_NEAR(2, pic.at(1, 0)[0], 0.01);
     EXPECT_NEAR(3, pic.at(0, 1)[0], 0.01);
@@ -137,8 +139,8 @@ TEST(Pvalue, BadInputNamesTheFileAndLine) {
               errorOf("1 1 1\n1 1 1\n1 1 1\n", grid));
     EXPECT_EQ("grid.txt:5: more pixels than the resolution -Y 2 +X 2 holds (4)",
               errorOf("1 1 1\n1 1 1\n1 1 1\n1 1 1\n1 1 1\n", grid));
-    EXPECT_NE(std::string::npos,
-              errorOf("5 0 1 1 1\n", {"-r", "-h", "-H", "-y", "2", "+x", "2"}).find("grid.txt:1: coordinates"));
+    EXPECT_NE(std::string::npos, errorOf("5 0 1 1 1\n", {"-r", "-h", "-H", "-y", "2", "+x", "2"})
+                                     .find("grid.txt:1: coordinates"));
     EXPECT_NE(std::string::npos, errorOf("1 1 1\n", {"-r", "-h", "-H"}).find("no resolution"));
     EXPECT_NE(std::string::npos,
               errorOf("#?RADIANCE\n\nnot a size\n", {"-r"}).find("grid.txt:3: bad resolution"));

@@ -8,8 +8,8 @@ namespace rp {
 
 namespace {
 
-constexpr int kMinRun = 4;        // MINRUN in color.c: shorter runs stay literal
-constexpr int kMaxRun = 127;      // a run count byte is 128 + length
+constexpr int kMinRun = 4;    // MINRUN in color.c: shorter runs stay literal
+constexpr int kMaxRun = 127;  // a run count byte is 128 + length
 
 // The next byte, or -1 at the end of the stream.
 inline int nextByte(std::streambuf& in) {

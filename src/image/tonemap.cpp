@@ -5,9 +5,9 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "util/file_write.h"
 #include "image/png.h"
 #include "util/error.h"
+#include "util/file_write.h"
 
 namespace rp {
 

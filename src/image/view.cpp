@@ -399,8 +399,7 @@ std::pair<double, double> squareToDisk(double u1, double u2) {
 
 }  // namespace
 
-bool ViewRays::jitterAperture(Ray& ray, double diameter, double u1, double u2,
-                              double u3) const {
+bool ViewRays::jitterAperture(Ray& ray, double diameter, double u1, double u2, double u3) const {
     if (diameter <= kTiny) return true;
     auto [dx, dy] = squareToDisk(u1, u2);
     dx *= 0.5 * diameter;

@@ -138,7 +138,9 @@ void DirectionTable::add(uint32_t t, uint32_t p, const Color& value) {
     double mean = value.average();
     if (!(mean > 0)) return;
     float prev = cells_.empty() ? 0.0f : cells_.back().cdf;
-    cells_.push_back({uint16_t(t), uint16_t(p), prev + float(mean),
+    cells_.push_back({uint16_t(t),
+                      uint16_t(p),
+                      prev + float(mean),
                       {float(value.r), float(value.g), float(value.b)}});
     integral_ += value * cellSolidAngle_;
 }

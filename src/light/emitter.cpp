@@ -1,11 +1,11 @@
 // Emission plan: partitions, exact flux, partition CDF and photon emission (emitter.h).
 #include "light/emitter.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
-
-#include <tbb/parallel_for.h>
 
 namespace rp::light {
 
@@ -25,7 +25,7 @@ struct Group {
     int32_t port = -1, portPrim = -1;
     bool flipNormal = false;  // emit about minus the surface normal (forward ports)
     Mode mode = Mode::Hemisphere;
-    Cone cone;                // spotlight cone or distant source disk
+    Cone cone;  // spotlight cone or distant source disk
     // Hemisphere mode on a flat shape: its one normal's coneFrame, computed once.
     bool flatFrame = false;
     Vec3 frameU, frameV;
@@ -226,7 +226,8 @@ EmissionPlan::EmissionPlan(const SceneGeometry& geometry, std::vector<LightSourc
                 if (src.shape == EmitterShape::Sphere)  // projected area pi r^2 any way
                     meanProj = 0.25 * g.cone.solidAngle();
                 else
-                    meanProj = meanConeSurfaceProjection(shapes.cones[size_t(src.shapeIndex)], g.cone);
+                    meanProj =
+                        meanConeSurfaceProjection(shapes.cones[size_t(src.shapeIndex)], g.cone);
                 for (const Partition& p : parts) m.add(p, gi, L * (meanProj * p.area), -1);
             }
             m.groups[gi].end = m.parts.size();
@@ -265,7 +266,8 @@ EmissionPlan::EmissionPlan(const SceneGeometry& geometry, std::vector<LightSourc
 
         for (size_t pi = 0; pi < options.ports.size(); ++pi) {
             const PhotonPort& port = options.ports[pi];
-            std::vector<Partition> parts = partitionShape(shapes, port.shape, port.shapeIndex, edge);
+            std::vector<Partition> parts =
+                partitionShape(shapes, port.shape, port.shapeIndex, edge);
             bool flat = port.shape == EmitterShape::Polygon || port.shape == EmitterShape::Ring;
             // Port normals point inside: photons enter along them when emitted about the
             // outward (flipped) normal.
@@ -356,39 +358,38 @@ EmittedPhoton EmissionPlan::emitPhoton(Rng& rng) const {
     Vec3 dir;
     Color colour = g.radiance;
     switch (g.mode) {
-    case Mode::Hemisphere:
-        dir = g.flatFrame ? sampleCosineHemisphere(e.normal, g.frameU, g.frameV, rng)
-                          : sampleProjectedCone(Cone{e.normal, 0}, e.normal, rng);
-        break;
-    case Mode::FlatCone:
-        dir = sampleProjectedCone(g.cone, e.normal, rng);
-        break;
-    case Mode::CurvedCone:
-        // Point uniform by area over the whole group, direction uniform in the cone,
-        // accepted with probability max(0, w.n): exactly L cos dA dw within the cone.
-        for (int tries = 0;; ++tries) {
-            dir = sampleUniformCone(g.cone, rng);
-            if (rng.uniform() < dot(dir, e.normal) || tries > 1000000) break;
-            idx = m.pick(rng.uniform(), g.first, g.end);
-            e = samplePartition(*m.shapes, m.cube, m.parts[idx], rng);
+        case Mode::Hemisphere:
+            dir = g.flatFrame ? sampleCosineHemisphere(e.normal, g.frameU, g.frameV, rng)
+                              : sampleProjectedCone(Cone{e.normal, 0}, e.normal, rng);
+            break;
+        case Mode::FlatCone:
+            dir = sampleProjectedCone(g.cone, e.normal, rng);
+            break;
+        case Mode::CurvedCone:
+            // Point uniform by area over the whole group, direction uniform in the cone,
+            // accepted with probability max(0, w.n): exactly L cos dA dw within the cone.
+            for (int tries = 0;; ++tries) {
+                dir = sampleUniformCone(g.cone, rng);
+                if (rng.uniform() < dot(dir, e.normal) || tries > 1000000) break;
+                idx = m.pick(rng.uniform(), g.first, g.end);
+                e = samplePartition(*m.shapes, m.cube, m.parts[idx], rng);
+            }
+            break;
+        case Mode::CubeCone:
+            dir = -sampleProjectedCone(g.cone, e.normal, rng);
+            break;
+        case Mode::Table: {
+            Vec3 n = g.flipNormal ? -e.normal : e.normal;
+            const DirectionTable& t = m.tables[size_t(m.partTable[idx])];
+            DirectionTable::Sample s = t.sample(rng, [&](const Vec3& w) { return dot(w, n) > 0; });
+            dir = g.distant ? -s.dir : s.dir;
+            colour = s.value;
+            break;
         }
-        break;
-    case Mode::CubeCone:
-        dir = -sampleProjectedCone(g.cone, e.normal, rng);
-        break;
-    case Mode::Table: {
-        Vec3 n = g.flipNormal ? -e.normal : e.normal;
-        const DirectionTable& t = m.tables[size_t(m.partTable[idx])];
-        DirectionTable::Sample s = t.sample(rng, [&](const Vec3& w) { return dot(w, n) > 0; });
-        dir = g.distant ? -s.dir : s.dir;
-        colour = s.value;
-        break;
-    }
     }
     EmittedPhoton ph;
     ph.source = g.source;
-    ph.weight = g.mode == Mode::Table ? colour * (m.total.average() / colour.average())
-                                      : g.weight;
+    ph.weight = g.mode == Mode::Table ? colour * (m.total.average() / colour.average()) : g.weight;
     Hit h;
     h.point = e.point;
     h.normal = e.normal;

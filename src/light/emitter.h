@@ -22,10 +22,10 @@ namespace rp::light {
 // distant source, towards the source), N is the surface normal at the origin (the face
 // or port normal for distant sources), P the origin, Rdot = N . photon direction.
 struct EmissionQuery {
-    Vec3 rayDir;   // D
-    Vec3 point;    // P
-    Vec3 normal;   // N
-    double rdot;   // Rdot
+    Vec3 rayDir;  // D
+    Vec3 point;   // P
+    Vec3 normal;  // N
+    double rdot;  // Rdot
     int32_t source;
 };
 
@@ -37,8 +37,8 @@ struct EmissionModifier {
 };
 
 struct EmissionOptions {
-    double partitionSize = 0.01;  // -ds: partition edge / scene cube size
-    double samplesPerSr = 1000;   // -dp: direction table samples per steradian
+    double partitionSize = 0.01;    // -ds: partition edge / scene cube size
+    double samplesPerSr = 1000;     // -dp: direction table samples per steradian
     std::vector<PhotonPort> ports;  // -apo (findPhotonPorts); distant sources emit here
     // Called once per modified source (LightSource::modified()). A modified source with
     // no modifier (null function or empty eval) throws notSupportedYet.
@@ -49,7 +49,7 @@ struct EmissionOptions {
 // its mean over RGB equals EmissionPlan::totalFluxW() for every photon (facts §7: equal
 // flux, RGB normalised to mean 1), so divide by the number emitted.
 struct EmittedPhoton {
-    Ray ray;           // unit dir; origin off the surface (spawnRay); tmax = glow radius
+    Ray ray;  // unit dir; origin off the surface (spawnRay); tmax = glow radius
     Color weight;
     int32_t source = -1;  // index into EmissionPlan::sources()
     int32_t port = -1;    // index into EmissionOptions::ports, -1 if not from a port
@@ -77,8 +77,8 @@ public:
     }
 
     const std::vector<LightSource>& sources() const;
-    Color totalFlux() const;        // W per channel
-    double totalFluxW() const;      // mean over RGB (RADIANCE's colorAvg)
+    Color totalFlux() const;    // W per channel
+    double totalFluxW() const;  // mean over RGB (RADIANCE's colorAvg)
     Color sourceFlux(size_t source) const;
     // RADIANCE's partition count (cube faces count (1/ds)^2 cells each).
     size_t partitionCount() const;

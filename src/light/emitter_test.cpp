@@ -38,7 +38,8 @@ TEST(Emitter, SphereLightFluxAndDirections) {
     // The furnace emitter: r = 0.05, L = 100 -> 9.8696 W.
     Builder b;
     b.add(PrimType::Sphere, "s", {0, 0, 0, 0.05}, b.light("l", 100, 100, 100));
-    b.add(PrimType::Bubble, "wall", {0, 0, 0, 1}, b.add(PrimType::Plastic, "p", {.5, .5, .5, 0, 0}));
+    b.add(PrimType::Bubble, "wall", {0, 0, 0, 1},
+          b.add(PrimType::Plastic, "p", {.5, .5, .5, 0, 0}));
     SceneGeometry geom(b.scene());
     EmissionPlan plan = planFor(b, geom);
     EXPECT_NEAR(plan.totalFluxW(), 100 * kPi * 4 * kPi * 0.0025, 1e-9);
@@ -74,7 +75,8 @@ TEST(Emitter, ConcavePolygonLightUniformPositions) {
         EmittedPhoton ph = plan.emitPhoton(2, uint64_t(i));
         ASSERT_GT(ph.ray.origin.z, 0);
         ASSERT_LT(ph.ray.origin.z, 1e-5);
-        int ix = std::min(3, int(ph.ray.origin.x / 0.5)), iy = std::min(3, int(ph.ray.origin.y / 0.5));
+        int ix = std::min(3, int(ph.ray.origin.x / 0.5)),
+            iy = std::min(3, int(ph.ray.origin.y / 0.5));
         ++count[size_t(iy * 4 + ix)];
         cosTheta.add(ph.ray.dir.z);
     }
@@ -82,8 +84,10 @@ TEST(Emitter, ConcavePolygonLightUniformPositions) {
     for (int iy = 0; iy < 4; ++iy)
         for (int ix = 0; ix < 4; ++ix) {
             long c = count[size_t(iy * 4 + ix)];
-            if (ix >= 2 && iy >= 2) EXPECT_EQ(c, 0);
-            else chi2 += (c - expected) * (c - expected) / expected;
+            if (ix >= 2 && iy >= 2)
+                EXPECT_EQ(c, 0);
+            else
+                chi2 += (c - expected) * (c - expected) / expected;
         }
     EXPECT_LT(chi2, 37.4);
     EXPECT_NEAR(cosTheta.mean(), 2.0 / 3, 4 * cosTheta.sigmaOfMean());
@@ -218,7 +222,7 @@ TEST(Emitter, SunThroughPort) {
         EmittedPhoton ph = plan.emitPhoton(6, uint64_t(i));
         ASSERT_EQ(ph.port, 0);
         ASSERT_EQ(ph.portPrim, s.window);
-        ASSERT_LT(ph.ray.origin.y, 0);   // just behind (outside) the port
+        ASSERT_LT(ph.ray.origin.y, 0);  // just behind (outside) the port
         ASSERT_GT(ph.ray.origin.y, -1e-4);
         ASSERT_GT(dot(-ph.ray.dir, sun), std::cos(0.25 * kPi / 180) - 1e-9);
         auto hit = geom.closestHit(ph.ray);
@@ -368,8 +372,7 @@ TEST(Emitter, AliasTablePicksEveryPartitionByFlux) {
         ++count[size_t(plan.emitPhoton(5, uint64_t(i)).ray.origin.x / 2)];
     for (int k = 0; k < kLamps; ++k) {
         const double p = (k + 1) / 28.0;
-        EXPECT_NEAR(double(count[size_t(k)]) / kPhotons, p,
-                    4 * std::sqrt(p * (1 - p) / kPhotons))
+        EXPECT_NEAR(double(count[size_t(k)]) / kPhotons, p, 4 * std::sqrt(p * (1 - p) / kPhotons))
             << "lamp " << k;
     }
 }

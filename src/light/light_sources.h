@@ -18,16 +18,16 @@ namespace rp::light {
 enum class EmitterShape : uint8_t { Polygon, Sphere, Cone, Ring, Distant };
 
 struct LightSource {
-    int32_t prim = -1;                // index into Scene::prims of the surface / source
-    std::string name;                 // the surface's name and place, for messages
+    int32_t prim = -1;  // index into Scene::prims of the surface / source
+    std::string name;   // the surface's name and place, for messages
     SourceLoc loc;
-    int32_t material = -1;            // its light/glow/spotlight material record
+    int32_t material = -1;  // its light/glow/spotlight material record
     // First modifier of the material's chain (a pattern such as `brightfunc skyfunc`),
     // kVoid if unmodified. A modified source needs an EmissionModifier (emitter.h).
     int32_t patternModifier = kVoid;
-    material::LightParams params;     // radiance, kind, spotlight cone/aim, glow radius
+    material::LightParams params;  // radiance, kind, spotlight cone/aim, glow radius
     EmitterShape shape = EmitterShape::Polygon;
-    int32_t shapeIndex = -1;          // into the ShapeSet array of `shape`
+    int32_t shapeIndex = -1;  // into the ShapeSet array of `shape`
     // Photon path length limit: a local glow's maximum radius (pmapsrc.c emitPhoton),
     // 0 = unlimited.
     double maxDistance = 0;

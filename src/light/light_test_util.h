@@ -46,7 +46,11 @@ private:
 struct Stats {
     double sum = 0, sum2 = 0;
     long n = 0;
-    void add(double x) { sum += x; sum2 += x * x; ++n; }
+    void add(double x) {
+        sum += x;
+        sum2 += x * x;
+        ++n;
+    }
     double mean() const { return sum / double(n); }
     double sigmaOfMean() const {
         double m = mean();

@@ -61,10 +61,9 @@ std::vector<Partition> partitionCube(double ds);
 uint32_t cubeCellsPerSide(double ds);
 
 // Uniform point in the partition (density 1/area).
-EmissionPoint samplePartition(const ShapeSet& shapes, const SceneCube& cube,
-                              const Partition& part, Rng& rng);
+EmissionPoint samplePartition(const ShapeSet& shapes, const SceneCube& cube, const Partition& part,
+                              Rng& rng);
 // The point at the parametric centre (for tables built once per partition).
-EmissionPoint partitionCentre(const ShapeSet& shapes, const SceneCube& cube,
-                              const Partition& part);
+EmissionPoint partitionCentre(const ShapeSet& shapes, const SceneCube& cube, const Partition& part);
 
 }  // namespace rp::light

@@ -49,8 +49,8 @@ TEST(Partition, ConcavePolygonSphereRingConeCoverTheirArea) {
     for (double edge : {0.5, 0.1, 0.03}) {
         EXPECT_NEAR(totalArea(partitionShape(s, EmitterShape::Polygon, 0, edge)), 3, 1e-12);
         EXPECT_NEAR(totalArea(partitionShape(s, EmitterShape::Sphere, 0, edge)), kPi, 1e-12);
-        EXPECT_NEAR(totalArea(partitionShape(s, EmitterShape::Ring, 0, edge)),
-                    kPi * (1 - 0.0625), 1e-12);
+        EXPECT_NEAR(totalArea(partitionShape(s, EmitterShape::Ring, 0, edge)), kPi * (1 - 0.0625),
+                    1e-12);
         double slant = std::sqrt(4 + 0.25 * 0.25);
         EXPECT_NEAR(totalArea(partitionShape(s, EmitterShape::Cone, 0, edge)),
                     kPi * (0.5 + 0.25) * slant, 1e-12);
@@ -99,8 +99,8 @@ TEST(Aperture, ProjectedSolidAngleMatchesMonteCarlo) {
     Vec3 z{0, 0, 1};
     Case cases[] = {{z, 90, z},
                     {z, 10, z},
-                    {normalize(Vec3{1, 0, 1}), 30, z},     // wholly above
-                    {normalize(Vec3{1, 0, 0.3}), 40, z},   // straddles the horizon
+                    {normalize(Vec3{1, 0, 1}), 30, z},    // wholly above
+                    {normalize(Vec3{1, 0, 0.3}), 40, z},  // straddles the horizon
                     {Vec3{0, 0, -1}, 120, z},             // mostly below
                     {normalize(Vec3{0, 1, 1}), 90, Vec3{0, -1, 0}},
                     {z, 180, normalize(Vec3{1, 2, 3})}};
@@ -140,7 +140,8 @@ TEST(Aperture, CosineHemisphereWithGivenFrameMatchesProjectedCone) {
 // integral((w.n)^2) / integral(w.n), estimated independently with uniform samples.
 TEST(Aperture, ProjectedConeSamplerHasCosineDensity) {
     Vec3 z{0, 0, 1};
-    Cone cones[] = {{z, 0}, {normalize(Vec3{1, 0, 0.3}), std::cos(40 * kPi / 180)},
+    Cone cones[] = {{z, 0},
+                    {normalize(Vec3{1, 0, 0.3}), std::cos(40 * kPi / 180)},
                     {normalize(Vec3{0.2, 0, 1}), std::cos(5 * kPi / 180)}};
     for (const Cone& c : cones) {
         Rng rng(3, RngDomain::Test, 2);
@@ -156,8 +157,9 @@ TEST(Aperture, ProjectedConeSamplerHasCosineDensity) {
             den.add(cu);
         }
         double expected = num.mean() / den.mean();
-        double sigma = std::hypot(sampled.sigmaOfMean(), expected * (num.sigmaOfMean() / num.mean() +
-                                                                     den.sigmaOfMean() / den.mean()));
+        double sigma = std::hypot(
+            sampled.sigmaOfMean(),
+            expected * (num.sigmaOfMean() / num.mean() + den.sigmaOfMean() / den.mean()));
         EXPECT_NEAR(sampled.mean(), expected, 4 * sigma);
     }
     // A narrow cone about the normal (Malley's method in a disc of radius sin 30 deg):

@@ -10,8 +10,8 @@
 
 #include "scene/reader.h"
 #include "scene/scene_load.h"
-#include "util/temp_dir_for_tests.h"
 #include "util/shared_for_tests.h"
+#include "util/temp_dir_for_tests.h"
 
 namespace rp::light {
 
@@ -38,8 +38,8 @@ TEST(PatternEmission, DaylightSkyFluxMatchesTheFormula) {
     viaCalc.ports = viaFormula.ports = findPhotonPorts(scene, geom, {PortSpec{"window_glass"}});
     viaCalc.modifierFor = patternModifiers(chains);
     viaFormula.modifierFor = [](const LightSource&) {
-        return EmissionModifier{[](const EmissionQuery& q) { return Color::grey(clearSky(q.rayDir)); },
-                                true};
+        return EmissionModifier{
+            [](const EmissionQuery& q) { return Color::grey(clearSky(q.rayDir)); }, true};
     };
     EmissionPlan a(geom, sources, viaCalc), b(geom, sources, viaFormula);
     ASSERT_EQ(a.sources().size(), 3u);

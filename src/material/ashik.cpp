@@ -27,12 +27,12 @@ double schlick(double c) {
 
 // Per-hit values, the analogue of RADIANCE's ASHIKDAT.
 struct AshikHit {
-    Color mcolor;          // diffuse colour times the pattern
-    Color scolor;          // specular colour with the view's Fresnel term
-    bool specular = false; // has a specular part (brightness above FTINY)
-    double pdot = 1;       // cos(view) at the shading normal, >= .001 as RADIANCE
-    Vec3 u, v;             // tangent frame, u along the projected orientation vector
-    double nu = 0, nv = 0; // exponents along u and v
+    Color mcolor;           // diffuse colour times the pattern
+    Color scolor;           // specular colour with the view's Fresnel term
+    bool specular = false;  // has a specular part (brightness above FTINY)
+    double pdot = 1;        // cos(view) at the shading normal, >= .001 as RADIANCE
+    Vec3 u, v;              // tangent frame, u along the projected orientation vector
+    double nu = 0, nv = 0;  // exponents along u and v
 };
 
 AshikHit setupAshik(const AshikParams& m, const SurfacePoint& sp) {
@@ -109,8 +109,8 @@ Color evaluateAshik(const AshikParams& m, const SurfacePoint& sp, const Vec3& l)
     const double sin2 = 1 - nh * nh;
     // At h = n the exponent is 0/0 and the power is 1 (ashikhmin.c: pow(1, NaN) = 1).
     const double lobe = sin2 > 0 ? std::pow(nh, (h.nu * hu * hu + h.nv * hw * hw) / sin2) : 1.0;
-    const double val = lobe * std::sqrt((h.nu + 1) * (h.nv + 1)) /
-                       (8 * kPi * dot(l, hv) * std::max(ldot, h.pdot));
+    const double val =
+        lobe * std::sqrt((h.nu + 1) * (h.nv + 1)) / (8 * kPi * dot(l, hv) * std::max(ldot, h.pdot));
     if (val > kFtiny) c += h.scolor * (val * ldot);
     return c;
 }
@@ -144,9 +144,8 @@ PhotonScatter scatterAshik(const AshikParams& m, const SurfacePoint& sp, Rng& rn
     // direction is -sp.dir, so the diffuse part carries the incidence's 1 - F and leaves
     // cosine-distributed; the specular part is the lobe about the incidence.
     const AshikHit h = setupAshik(m, sp);
-    const Component c[2] = {
-        {ScatterKind::DiffuseReflection, h.mcolor * (1 - schlick(h.pdot))},
-        {ScatterKind::SpecularReflection, h.specular ? h.scolor : Color{}}};
+    const Component c[2] = {{ScatterKind::DiffuseReflection, h.mcolor * (1 - schlick(h.pdot))},
+                            {ScatterKind::SpecularReflection, h.specular ? h.scolor : Color{}}};
     PhotonScatter s;
     s.store = h.mcolor.average() > kFtiny;
     Color factor;

@@ -43,9 +43,9 @@ bool makeFrame(const Vec3& normal, const Vec3& up, Frame& f) {
 struct BsdfHit {
     const bsdf::BsdfData* sd = nullptr;
     Frame frame;
-    Vec3 vray;                // local direction back along the ray
-    double srPsa[2] = {0, 0};  // sqrt of the data's smallest and largest cells at vray
-    Color rdiff, tdiff;       // Lambertian parts (data + arguments) times the pattern
+    Vec3 vray;                   // local direction back along the ray
+    double srPsa[2] = {0, 0};    // sqrt of the data's smallest and largest cells at vray
+    Color rdiff, tdiff;          // Lambertian parts (data + arguments) times the pattern
     Color cthru, cthruSurround;  // aBSDF: the through peak and the BTDF around it
 };
 
@@ -77,7 +77,8 @@ bool setupBsdf(const BsdfParams& m, const SurfacePoint& sp, BsdfHit& h) {
     const Vec3 unflipped = sp.front ? sp.normal : -sp.normal;
     if (!makeFrame(unflipped, sp.uDir, h.frame)) {
         static std::atomic<bool> warned{false};  // RADIANCE warns per hit; once is enough
-        if (!warned.exchange(true)) warn("BSDF: illegal orientation vector (up vector along the normal)");
+        if (!warned.exchange(true))
+            warn("BSDF: illegal orientation vector (up vector along the normal)");
         return false;
     }
     h.vray = h.frame.toLocal(-sp.dir);
@@ -96,11 +97,11 @@ bool setupBsdf(const BsdfParams& m, const SurfacePoint& sp, BsdfHit& h) {
 // there is no surround, or where it transmits under 0.05 %.
 void computeThrough(BsdfHit& h, const SurfacePoint& sp) {
     static constexpr double kGrid[29][2] = {
-        {0, 0},       {-.6, 0},     {0, .6},     {0, -.6},   {.6, 0},      {-.6, .6},
-        {-.6, -.6},   {.6, .6},     {.6, -.6},   {-1.2, 0},  {0, 1.2},     {0, -1.2},
-        {1.2, 0},     {-1.2, 1.2},  {-1.2, -1.2}, {1.2, 1.2}, {1.2, -1.2},  {-1.8, 0},
-        {0, 1.8},     {0, -1.8},    {1.8, 0},    {-1.8, 1.8}, {-1.8, -1.8}, {1.8, 1.8},
-        {1.8, -1.8},  {-2.4, 0},    {0, 2.4},    {0, -2.4},  {2.4, 0}};
+        {0, 0},      {-.6, 0},    {0, .6},      {0, -.6},    {.6, 0},      {-.6, .6},
+        {-.6, -.6},  {.6, .6},    {.6, -.6},    {-1.2, 0},   {0, 1.2},     {0, -1.2},
+        {1.2, 0},    {-1.2, 1.2}, {-1.2, -1.2}, {1.2, 1.2},  {1.2, -1.2},  {-1.8, 0},
+        {0, 1.8},    {0, -1.8},   {1.8, 0},     {-1.8, 1.8}, {-1.8, -1.8}, {1.8, 1.8},
+        {1.8, -1.8}, {-2.4, 0},   {0, 2.4},     {0, -2.4},   {2.4, 0}};
     const bsdf::ScatteringSet* t = h.sd->transmission(h.vray.z > 0);
     if (!t || sp.pattern.brightness() <= kFtiny) return;
     const double r = std::sqrt(t->minProjSA);
@@ -110,11 +111,13 @@ void computeThrough(BsdfHit& h, const SurfacePoint& sp) {
         Color c;
     } s[29];
     for (int i = 0; i < 29; ++i) {
-        s[i].dir = normalize(Vec3{-h.vray.x + kGrid[i][0] * r, -h.vray.y + kGrid[i][1] * r, -h.vray.z});
+        s[i].dir =
+            normalize(Vec3{-h.vray.x + kGrid[i][0] * r, -h.vray.y + kGrid[i][1] * r, -h.vray.z});
         s[i].c = h.sd->evaluate(h.vray, s[i].dir);
         s[i].y = s[i].c.brightness();
     }
-    std::stable_sort(std::begin(s), std::end(s), [](const Sample& a, const Sample& b) { return a.y > b.y; });
+    std::stable_sort(std::begin(s), std::end(s),
+                     [](const Sample& a, const Sample& b) { return a.y > b.y; });
     if (s[0].y <= kFtiny) return;
     Color peak, surround;
     double ypeak = 0, omPeak = 0, omSurround = 0;
@@ -177,8 +180,10 @@ Color directSpecular(BsdfHit& h, const BsdfParams& m, const SurfacePoint& sp, co
     // The jitter points: a low-discrepancy set over the cell (the R2 sequence), shifted by
     // a hash of the ray and light directions. RADIANCE draws them at random; a fixed set
     // with a point at the cell's centre read a BSDF's peak cell up to 2-400 times high.
-    const uint64_t hash = mix64(std::bit_cast<uint64_t>(sp.dir.x) ^ mix64(std::bit_cast<uint64_t>(sp.dir.y) ^
-                                mix64(std::bit_cast<uint64_t>(l.x) ^ std::bit_cast<uint64_t>(l.y))));
+    const uint64_t hash =
+        mix64(std::bit_cast<uint64_t>(sp.dir.x) ^
+              mix64(std::bit_cast<uint64_t>(sp.dir.y) ^
+                    mix64(std::bit_cast<uint64_t>(l.x) ^ std::bit_cast<uint64_t>(l.y))));
     const double u0 = double(hash >> 11) * 0x1.0p-53, v0 = double(mix64(hash) >> 11) * 0x1.0p-53;
     Color sum;
     int count = 0;
@@ -266,9 +271,9 @@ Color sampleSet(const BsdfHit& h, const SurfacePoint& sp, bool transmit, const S
         }
         Color w = sampleColour(*comp, vin, out, total);
         if (transmit) w = w * sp.pattern;
-        r.add(makeRay(normalize(h.frame.toWorld(out)),
-                      w, transmit ? ScatterKind::SpecularTransmission : ScatterKind::SpecularReflection,
-                      true));
+        r.add(makeRay(
+            normalize(h.frame.toWorld(out)), w,
+            transmit ? ScatterKind::SpecularTransmission : ScatterKind::SpecularReflection, true));
     }
     return {};
 }

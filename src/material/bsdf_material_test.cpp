@@ -7,8 +7,8 @@
 
 #include "bsdf/bsdf.h"
 #include "material/test_util.h"
-#include "util/temp_dir_for_tests.h"
 #include "util/shared_for_tests.h"
+#include "util/temp_dir_for_tests.h"
 
 namespace rp::material {
 namespace {
@@ -40,10 +40,9 @@ TEST(BsdfMaterial, PhotonsCarryTheDataAlbedo) {
             if (!fromFront) dir = -dir;
             const Vec3 away = -dir;  // RADIANCE's incident vector, local frame = world
             const bool f = away.z > 0;
-            const double albedo = (f ? sd->rLambFront : sd->rLambBack).g +
-                                  (f ? sd->tLambFront : sd->tLambBack).g +
-                                  sd->nonDiffuseHemispherical(away, false) +
-                                  sd->nonDiffuseHemispherical(away, true);
+            const double albedo =
+                (f ? sd->rLambFront : sd->rLambBack).g + (f ? sd->tLambFront : sd->tLambBack).g +
+                sd->nonDiffuseHemispherical(away, false) + sd->nonDiffuseHemispherical(away, true);
             const auto st = photonStats(m, 200000, 3, [&](Rng&) { return hitAt(*sd, dir); });
             expectMeanNear(st, Color::grey(albedo), fromFront ? "front" : "back");
             EXPECT_GT(albedo, 0.3);
@@ -87,14 +86,16 @@ TEST(BsdfMaterial, EmptyBackAbsorbsPhotonsOnlyWithoutBackVisibility) {
     std::string vals;
     for (int k = 0; k < 41 * 41; ++k) vals += "0.1 ";
     const std::string p = dir.file("tb.xml");
-    std::ofstream(p) << "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType>"
-                        "<Optical><Layer><DataDefinition><IncidentDataStructure>Columns"
-                        "</IncidentDataStructure></DataDefinition><WavelengthData><Wavelength>Visible"
-                        "</Wavelength><WavelengthDataBlock><WavelengthDataDirection>Transmission Front"
-                        "</WavelengthDataDirection><ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>"
-                        "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>"
-                     << vals << "</ScatteringData></WavelengthDataBlock></WavelengthData></Layer>"
-                                "</Optical></WindowElement>\n";
+    std::ofstream(p)
+        << "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType>"
+           "<Optical><Layer><DataDefinition><IncidentDataStructure>Columns"
+           "</IncidentDataStructure></DataDefinition><WavelengthData><Wavelength>Visible"
+           "</Wavelength><WavelengthDataBlock><WavelengthDataDirection>Transmission Front"
+           "</WavelengthDataDirection><ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>"
+           "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>"
+        << vals
+        << "</ScatteringData></WavelengthDataBlock></WavelengthData></Layer>"
+           "</Optical></WindowElement>\n";
     const auto sd = bsdf::loadBsdfFile(p);
     ASSERT_TRUE(!sd->tf && !sd->rb && sd->tLambBack.g > .3);  // all Lambertian: 0.1 pi
     const MaterialParams m = BsdfParams{};

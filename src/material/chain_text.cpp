@@ -139,10 +139,12 @@ int squeezedSpacing(std::vector<short>& adv, const std::string& line, const Font
     return width;
 }
 
-int proportionalSpacing(std::vector<short>& adv, const std::string& line, const Font& f,
-                        int gap, int minIndent) {
+int proportionalSpacing(std::vector<short>& adv, const std::string& line, const Font& f, int gap,
+                        int minIndent) {
     squeezedSpacing(adv, line, f, gap);
-    auto glyphAt = [&](size_t i) { return i < line.size() ? f.glyph((unsigned char)line[i]) : nullptr; };
+    auto glyphAt = [&](size_t i) {
+        return i < line.size() ? f.glyph((unsigned char)line[i]) : nullptr;
+    };
     int width = adv[0];
     size_t k = 1, t = 0, next = 0;
     // Each run of text up to a wide gap of spaces (an indent or tab stop) is stretched to
@@ -176,8 +178,8 @@ int proportionalSpacing(std::vector<short>& adv, const std::string& line, const 
     return width;
 }
 
-TextBlock::TextBlock(std::shared_ptr<const Font> font, std::vector<std::string> lines,
-                     Vec3 origin, Vec3 right, Vec3 down, bool hasSpacing, double spacing)
+TextBlock::TextBlock(std::shared_ptr<const Font> font, std::vector<std::string> lines, Vec3 origin,
+                     Vec3 right, Vec3 down, bool hasSpacing, double spacing)
     : font_(std::move(font)), origin_(origin) {
     // Dual vectors: (p - origin) . rightDual counts characters along `right`, and
     // downDual lines along `down`, whatever the angle between them.

@@ -9,8 +9,8 @@
 
 namespace rp::material::detail {
 
-constexpr double kFtiny = 1e-6;      // RADIANCE FTINY (double RREAL)
-constexpr int kMaxIter = 10;         // RADIANCE MAXITER: specular sample attempts
+constexpr double kFtiny = 1e-6;           // RADIANCE FTINY (double RREAL)
+constexpr int kMaxIter = 10;              // RADIANCE MAXITER: specular sample attempts
 constexpr double kFresThresh = 0.017999;  // normal.c FRESTHRESH
 
 // RADIANCE's Fresnel estimate for smooth plastic/metal (normal.c FRESNE, release 6).
@@ -45,13 +45,11 @@ inline Vec3 sampleCosine(const Vec3& n, Rng& rng) {
 // `spread` (rtrace -ss below 1, RADIANCE specjitter) narrows the facet distribution
 // toward the mirror direction: the slope's uniform draw xi becomes 1 - spread xi, so
 // 0 gives the ideal direction. 1 samples the full Ward-Gaussian lobe.
-bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const Vec3& v,
-                          double au, double av, const Vec3& geomN, Rng& rng, Vec3& out,
-                          double spread = 1);
+bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const Vec3& v, double au,
+                          double av, const Vec3& geomN, Rng& rng, Vec3& out, double spread = 1);
 // Transmitted Gaussian lobe around `through` (RADIANCE's approximation: no half vector).
-bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, double au,
-                            double av, const Vec3& geomN, Rng& rng, Vec3& out,
-                            double spread = 1);
+bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, double au, double av,
+                            const Vec3& geomN, Rng& rng, Vec3& out, double spread = 1);
 
 inline SpecularRay makeRay(const Vec3& dir, const Color& w, ScatterKind k, bool sampled = false,
                            const MediumChange& m = {}) {

@@ -31,9 +31,9 @@ Color evaluateFunc(const FuncParams& m, const SurfacePoint& sp, const Vec3& l) {
     // cosine and the specular fraction; reflection is white for plasfunc/plasdata and the
     // (patterned) material colour for metfunc/metdata, transmission is coloured.
     double ldot = dot(sp.normal, l);
-    if (std::fabs(ldot) <= kFtiny) return c;                        // grazing
+    if (std::fabs(ldot) <= kFtiny) return c;                             // grazing
     if (ldot < 0 ? m.trans <= kFtiny : m.trans >= 1 - kFtiny) return c;  // wrong side
-    if (ldot > 0 ? m.rspec <= kFtiny : m.tspec <= kFtiny) return c;     // diffuse only
+    if (ldot > 0 ? m.rspec <= kFtiny : m.tspec <= kFtiny) return c;      // diffuse only
     double f = (*sp.directional)(l).r;
     if (!(f > kFtiny)) return c;  // RADIANCE skips values <= FTINY (and math errors)
     if (ldot > 0) {
@@ -119,7 +119,7 @@ BackwardResult shadeBrtd(const BrtdParams& m, const SurfacePoint& sp) {
         r.add(makeRay(brtdTransmitDir(sp), h.tspec, ScatterKind::SpecularTransmission));
     if (h.rspec.max() > kFtiny)
         r.add(makeRay(normalize(reflect(sp.dir, sp.normal)), h.rspec,
-               ScatterKind::SpecularReflection));
+                      ScatterKind::SpecularReflection));
     r.ambientReflect = h.rdiff;
     r.ambientTransmit = h.tdiff;
     return r;
@@ -138,10 +138,18 @@ PhotonScatter scatterBrtd(const BrtdParams& m, const SurfacePoint& sp, Rng& rng)
     if (i < 0) return s;
     s.kind = c[i].kind;
     switch (i) {
-    case 0: s.dir = sampleCosine(sp.normal, rng); break;
-    case 1: s.dir = sampleCosine(-sp.normal, rng); break;
-    case 2: s.dir = normalize(reflect(sp.dir, sp.normal)); break;
-    default: s.dir = brtdTransmitDir(sp); break;
+        case 0:
+            s.dir = sampleCosine(sp.normal, rng);
+            break;
+        case 1:
+            s.dir = sampleCosine(-sp.normal, rng);
+            break;
+        case 2:
+            s.dir = normalize(reflect(sp.dir, sp.normal));
+            break;
+        default:
+            s.dir = brtdTransmitDir(sp);
+            break;
     }
     return s;
 }

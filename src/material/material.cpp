@@ -23,15 +23,14 @@ void sampleWardSlope(double au, double av, Rng& rng, double spread, double& cosp
     sinp /= len;
     double xi = rng.uniform();
     if (spread < 1) xi = 1 - spread * xi;
-    d = xi <= kFtiny ? 1.0
-                     : std::sqrt(-std::log(xi) /
-                                 (cosp * cosp / (au * au) + sinp * sinp / (av * av)));
+    d = xi <= kFtiny
+            ? 1.0
+            : std::sqrt(-std::log(xi) / (cosp * cosp / (au * au) + sinp * sinp / (av * av)));
 }
 }  // namespace
 
-bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const Vec3& v,
-                          double au, double av, const Vec3& geomN, Rng& rng, Vec3& out,
-                          double spread) {
+bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const Vec3& v, double au,
+                          double av, const Vec3& geomN, Rng& rng, Vec3& out, double spread) {
     for (int iter = 0; iter < kMaxIter; ++iter) {
         double cosp, sinp, d;
         sampleWardSlope(au, av, rng, spread, cosp, sinp, d);
@@ -45,9 +44,8 @@ bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const V
     return false;
 }
 
-bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, double au,
-                            double av, const Vec3& geomN, Rng& rng, Vec3& out,
-                            double spread) {
+bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, double au, double av,
+                            const Vec3& geomN, Rng& rng, Vec3& out, double spread) {
     for (int iter = 0; iter < kMaxIter; ++iter) {
         double cosp, sinp, d;
         sampleWardSlope(au, av, rng, spread, cosp, sinp, d);
@@ -198,32 +196,32 @@ bool transmitsDirect(const MaterialParams& m) {
 
 BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
                              const ShadeOptions& opt, Rng& rng) {
-    BackwardResult r = std::visit(
-        Overloaded{
-            [&](const NormalParams& p) { return shadeNormal(p, sp, opt, rng); },
-            [&](const AnisoParams& p) { return shadeAniso(p, sp, opt, rng); },
-            [&](const AshikParams& p) { return shadeAshik(p, sp, opt, rng); },
-            [&](const MirrorParams& p) { return shadeMirror(p, sp, opt); },
-            [&](const GlassParams& p) { return shadeGlass(p, sp, opt); },
-            [&](const DielectricParams& p) { return shadeDielectric(p, sp); },
-            [&](const LightParams& p) { return shadeLight(p, sp); },
-            [&](const AntimatterParams&) {
-                BackwardResult r;  // clip sets are the ray tracer's business
-                r.transparent = true;
-                return r;
-            },
-            [&](const FuncParams& p) { return shadeFunc(p, sp, opt); },
-            [&](const BrtdParams& p) { return shadeBrtd(p, sp); },
-            [&](const PrismParams& p) { return shadePrism(p, sp); },
-            [&](const BsdfParams& p) { return shadeBsdf(p, sp, opt, rng); },
-            [&](const WgmdParams& p) { return shadeWgmd(p, sp, opt, rng); },
-            [&](const MistParams&) {
-                BackwardResult r;  // the medium change is the ray tracer's business
-                r.transparent = true;
-                return r;
-            },
-        },
-        m);
+    BackwardResult r =
+        std::visit(Overloaded{
+                       [&](const NormalParams& p) { return shadeNormal(p, sp, opt, rng); },
+                       [&](const AnisoParams& p) { return shadeAniso(p, sp, opt, rng); },
+                       [&](const AshikParams& p) { return shadeAshik(p, sp, opt, rng); },
+                       [&](const MirrorParams& p) { return shadeMirror(p, sp, opt); },
+                       [&](const GlassParams& p) { return shadeGlass(p, sp, opt); },
+                       [&](const DielectricParams& p) { return shadeDielectric(p, sp); },
+                       [&](const LightParams& p) { return shadeLight(p, sp); },
+                       [&](const AntimatterParams&) {
+                           BackwardResult r;  // clip sets are the ray tracer's business
+                           r.transparent = true;
+                           return r;
+                       },
+                       [&](const FuncParams& p) { return shadeFunc(p, sp, opt); },
+                       [&](const BrtdParams& p) { return shadeBrtd(p, sp); },
+                       [&](const PrismParams& p) { return shadePrism(p, sp); },
+                       [&](const BsdfParams& p) { return shadeBsdf(p, sp, opt, rng); },
+                       [&](const WgmdParams& p) { return shadeWgmd(p, sp, opt, rng); },
+                       [&](const MistParams&) {
+                           BackwardResult r;  // the medium change is the ray tracer's business
+                           r.transparent = true;
+                           return r;
+                       },
+                   },
+                   m);
     r.directFromBehind = r.directFromBehind || transmitsDirect(m);
     return r;
 }
@@ -278,30 +276,33 @@ Medium changeMedium(const Medium& cur, const MediumChange& c, const Medium& glob
                     const MistParams* mist) {
     using K = MediumChange::Kind;
     switch (c.kind) {
-    case K::Unchanged: return cur;
-    case K::Global: {
-        Medium m = global;
-        m.eccentricity = cur.eccentricity;  // dielectric.c sets cext and albedo only
-        return m;
-    }
-    case K::Given: return Medium{c.extinction, Color{}, 0};  // dielectric.c: no scattering
-    case K::EnterMist: {
-        Medium m = cur;
-        m.extinction += c.extinction;
-        RP_CHECK(mist);
-        if (mist->albedo) m.albedo = *mist->albedo;
-        if (mist->eccentricity) m.eccentricity = *mist->eccentricity;
-        return m;
-    }
-    case K::LeaveMist: {
-        Medium m = cur;
-        for (int k = 0; k < 3; ++k)
-            m.extinction[k] = std::max(cur.extinction[k] - c.extinction[k], global.extinction[k]);
-        RP_CHECK(mist);
-        if (mist->albedo) m.albedo = global.albedo;
-        if (mist->eccentricity) m.eccentricity = global.eccentricity;
-        return m;
-    }
+        case K::Unchanged:
+            return cur;
+        case K::Global: {
+            Medium m = global;
+            m.eccentricity = cur.eccentricity;  // dielectric.c sets cext and albedo only
+            return m;
+        }
+        case K::Given:
+            return Medium{c.extinction, Color{}, 0};  // dielectric.c: no scattering
+        case K::EnterMist: {
+            Medium m = cur;
+            m.extinction += c.extinction;
+            RP_CHECK(mist);
+            if (mist->albedo) m.albedo = *mist->albedo;
+            if (mist->eccentricity) m.eccentricity = *mist->eccentricity;
+            return m;
+        }
+        case K::LeaveMist: {
+            Medium m = cur;
+            for (int k = 0; k < 3; ++k)
+                m.extinction[k] =
+                    std::max(cur.extinction[k] - c.extinction[k], global.extinction[k]);
+            RP_CHECK(mist);
+            if (mist->albedo) m.albedo = global.albedo;
+            if (mist->eccentricity) m.eccentricity = global.eccentricity;
+            return m;
+        }
     }
     return cur;
 }
@@ -314,34 +315,35 @@ MediumChange mistCrossing(const MistParams& m, bool entering, const Color& patte
 }
 
 bool storesPhotons(const MaterialParams& m) {
-    return std::visit(
-        Overloaded{
-            [](const NormalParams& p) {
-                return p.diffuseReflectance.average() > kFtiny ||
-                       p.diffuseTransmittance.average() > kFtiny;
-            },
-            [](const AnisoParams& p) {
-                return p.diffuseReflectance.average() > kFtiny ||
-                       p.diffuseTransmittance.average() > kFtiny;
-            },
-            [](const AshikParams& p) { return p.diffuse.average() > kFtiny; },
-            [](const FuncParams& p) {
-                return p.diffuseReflectance.average() > kFtiny ||
-                       p.diffuseTransmittance.average() > kFtiny;
-            },
-            [](const BrtdParams& p) {
-                return p.frontDiffuse.average() > kFtiny || p.backDiffuse.average() > kFtiny ||
-                       p.diffuseTransmittance.average() > kFtiny;
-            },
-            // Per hit (the data's Lambertian parts): stores decides.
-            [](const BsdfParams&) { return true; },
-            [](const WgmdParams& p) {
-                return p.frontDiffuse.average() > kFtiny || p.backDiffuse.average() > kFtiny ||
-                       p.diffuseTransmittance.average() > kFtiny;
-            },
-            [](const auto&) { return false; },
-        },
-        m);
+    return std::visit(Overloaded{
+                          [](const NormalParams& p) {
+                              return p.diffuseReflectance.average() > kFtiny ||
+                                     p.diffuseTransmittance.average() > kFtiny;
+                          },
+                          [](const AnisoParams& p) {
+                              return p.diffuseReflectance.average() > kFtiny ||
+                                     p.diffuseTransmittance.average() > kFtiny;
+                          },
+                          [](const AshikParams& p) { return p.diffuse.average() > kFtiny; },
+                          [](const FuncParams& p) {
+                              return p.diffuseReflectance.average() > kFtiny ||
+                                     p.diffuseTransmittance.average() > kFtiny;
+                          },
+                          [](const BrtdParams& p) {
+                              return p.frontDiffuse.average() > kFtiny ||
+                                     p.backDiffuse.average() > kFtiny ||
+                                     p.diffuseTransmittance.average() > kFtiny;
+                          },
+                          // Per hit (the data's Lambertian parts): stores decides.
+                          [](const BsdfParams&) { return true; },
+                          [](const WgmdParams& p) {
+                              return p.frontDiffuse.average() > kFtiny ||
+                                     p.backDiffuse.average() > kFtiny ||
+                                     p.diffuseTransmittance.average() > kFtiny;
+                          },
+                          [](const auto&) { return false; },
+                      },
+                      m);
 }
 
 }  // namespace rp::material

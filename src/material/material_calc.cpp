@@ -37,20 +37,29 @@ std::string what(const Primitive& p) {
 // Where the function file sits in each family's string arguments (ray.html).
 size_t funcFileIndex(PrimType t) {
     switch (t) {
-    case PrimType::Plastic2:
-    case PrimType::Metal2:
-    case PrimType::Trans2:
-    case PrimType::Ashik2: return 3;   // ux uy uz funcfile transform
-    case PrimType::Plasdata:
-    case PrimType::Metdata:
-    case PrimType::Transdata: return 2;  // func datafile funcfile x1 .. xN transform
-    case PrimType::BRTDfunc: return 9;   // 6 colours, 3 brtd functions, funcfile
-    case PrimType::Prism1: return 4;     // coef dx dy dz funcfile transform
-    case PrimType::Prism2: return 8;     // coef1 dx1 dy1 dz1 coef2 dx2 dy2 dz2 funcfile
-    case PrimType::BSDF: return 5;       // thick file ux uy uz funcfile transform
-    case PrimType::ABSDF: return 4;      // file ux uy uz funcfile transform
-    case PrimType::WGMDfunc: return 12;  // 3 modifiers, 6 coefficients, ux uy uz, funcfile
-    default: return 1;                   // func funcfile transform
+        case PrimType::Plastic2:
+        case PrimType::Metal2:
+        case PrimType::Trans2:
+        case PrimType::Ashik2:
+            return 3;  // ux uy uz funcfile transform
+        case PrimType::Plasdata:
+        case PrimType::Metdata:
+        case PrimType::Transdata:
+            return 2;  // func datafile funcfile x1 .. xN transform
+        case PrimType::BRTDfunc:
+            return 9;  // 6 colours, 3 brtd functions, funcfile
+        case PrimType::Prism1:
+            return 4;  // coef dx dy dz funcfile transform
+        case PrimType::Prism2:
+            return 8;  // coef1 dx1 dy1 dz1 coef2 dx2 dy2 dz2 funcfile
+        case PrimType::BSDF:
+            return 5;  // thick file ux uy uz funcfile transform
+        case PrimType::ABSDF:
+            return 4;  // file ux uy uz funcfile transform
+        case PrimType::WGMDfunc:
+            return 12;  // 3 modifiers, 6 coefficients, ux uy uz, funcfile
+        default:
+            return 1;  // func funcfile transform
     }
 }
 
@@ -63,8 +72,7 @@ public:
     }
 
     void functionFile(const Primitive& p, const std::string& file) {
-        if (file == "." || std::find(loaded_.begin(), loaded_.end(), file) != loaded_.end())
-            return;
+        if (file == "." || std::find(loaded_.begin(), loaded_.end(), file) != loaded_.end()) return;
         try {
             builder.loadFile(file);
         } catch (const InputError& e) {
@@ -138,7 +146,8 @@ void setWgmdModifiers(const Scene& scene, int32_t material, int32_t (&out)[3]) {
         if (m.mod[size_t(c)] != WgmdParams::Mod::Named) continue;
         out[c] = lastModifier(scene, material, m.modName[size_t(c)]);
         if (out[c] == kVoid)
-            fail(p, std::string("unknown ") + kWhat[c] + " modifier '" + m.modName[size_t(c)] + "'");
+            fail(p,
+                 std::string("unknown ") + kWhat[c] + " modifier '" + m.modName[size_t(c)] + "'");
     }
 }
 
@@ -151,23 +160,38 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
         const Primitive& p = scene.prims[i];
         Record r;
         switch (p.type) {
-        case PrimType::Plastic2:
-        case PrimType::Metal2:
-        case PrimType::Trans2:
-        case PrimType::Ashik2: r.kind = Kind::Aniso; break;
-        case PrimType::Plasfunc:
-        case PrimType::Metfunc:
-        case PrimType::Transfunc: r.kind = Kind::Func; break;
-        case PrimType::Plasdata:
-        case PrimType::Metdata:
-        case PrimType::Transdata: r.kind = Kind::Data; break;
-        case PrimType::BRTDfunc: r.kind = Kind::Brtd; break;
-        case PrimType::Prism1:
-        case PrimType::Prism2: r.kind = Kind::Prism; break;
-        case PrimType::BSDF:
-        case PrimType::ABSDF: r.kind = Kind::Bsdf; break;
-        case PrimType::WGMDfunc: r.kind = Kind::Wgmd; break;
-        default: continue;
+            case PrimType::Plastic2:
+            case PrimType::Metal2:
+            case PrimType::Trans2:
+            case PrimType::Ashik2:
+                r.kind = Kind::Aniso;
+                break;
+            case PrimType::Plasfunc:
+            case PrimType::Metfunc:
+            case PrimType::Transfunc:
+                r.kind = Kind::Func;
+                break;
+            case PrimType::Plasdata:
+            case PrimType::Metdata:
+            case PrimType::Transdata:
+                r.kind = Kind::Data;
+                break;
+            case PrimType::BRTDfunc:
+                r.kind = Kind::Brtd;
+                break;
+            case PrimType::Prism1:
+            case PrimType::Prism2:
+                r.kind = Kind::Prism;
+                break;
+            case PrimType::BSDF:
+            case PrimType::ABSDF:
+                r.kind = Kind::Bsdf;
+                break;
+            case PrimType::WGMDfunc:
+                r.kind = Kind::Wgmd;
+                break;
+            default:
+                continue;
         }
         r.prim = int32_t(i);
         r.type = p.type;
@@ -261,7 +285,6 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
 
 MaterialCalc::~MaterialCalc() = default;
 
-
 bool MaterialCalc::uses(int32_t material) const {
     if (material < 0 || size_t(material) >= recordOf_.size()) return false;
     int32_t r = recordOf_[material];
@@ -291,8 +314,8 @@ void MaterialCalcEvaluator::setHit(int32_t material, const PatternPoint& at,
     ctxDir_ = at.dir;
     ctx_ = functionSpace(at, rec_->toObject);
     object_ = at.object;
-    if (at.rdot < 0 && (rec_->kind == MaterialCalc::Kind::Func ||
-                        rec_->kind == MaterialCalc::Kind::Data)) {
+    if (at.rdot < 0 &&
+        (rec_->kind == MaterialCalc::Kind::Func || rec_->kind == MaterialCalc::Kind::Data)) {
         // m_brdf.c m_brdf2 turns the surface to the ray (flipsurface) before its
         // functions run, so on the back they see N and Rdot reversed; BRTDfunc does not.
         ctx_.N = -ctx_.N;
@@ -419,9 +442,12 @@ void MaterialCalcEvaluator::wgmd(WgmdInputs& in) {
 
 double MaterialCalcEvaluator::call(const MaterialCalc::Callable& c, std::span<const double> args) {
     switch (c.how) {
-    case MaterialCalc::Callable::How::Constant: return c.value;
-    case MaterialCalc::Callable::How::Function: return eval_.call(c.function, args);
-    default: return eval_.eval(c.variable);
+        case MaterialCalc::Callable::How::Constant:
+            return c.value;
+        case MaterialCalc::Callable::How::Function:
+            return eval_.call(c.function, args);
+        default:
+            return eval_.eval(c.variable);
     }
 }
 
@@ -442,26 +468,26 @@ Color MaterialCalcEvaluator::directionalValue(const Vec3& toLight, double omega)
     double args[5] = {0, l.x, l.y, l.z, omega};
     std::span<const double> ldx(args + 1, 4);
     switch (rec_->kind) {
-    case MaterialCalc::Kind::Func:
-        return Color::grey(call(rec_->fn[0], ldx));
-    case MaterialCalc::Kind::Data: {
-        std::array<double, calc::DataFile::kMaxDimensions> pt{};
-        size_t nd = rec_->coords.size();
-        for (size_t k = 0; k < nd; ++k) pt[k] = call(rec_->coords[k], ldx);
-        args[0] = rec_->data->value(std::span<const double>(pt.data(), nd));
-        return Color::grey(call(rec_->fn[0], std::span<const double>(args, 5)));
-    }
-    default: {  // BRTDfunc; a repeated name is evaluated once (m_brdf.c)
-        Color c;
-        for (int k = 0; k < 3; ++k) {
-            const auto& f = rec_->fn[k];
-            int same = -1;
-            for (int j = 0; j < k && same < 0; ++j)
-                if (rec_->fn[j].name == f.name) same = j;
-            c[k] = same >= 0 ? c[same] : call(f, ldx);
+        case MaterialCalc::Kind::Func:
+            return Color::grey(call(rec_->fn[0], ldx));
+        case MaterialCalc::Kind::Data: {
+            std::array<double, calc::DataFile::kMaxDimensions> pt{};
+            size_t nd = rec_->coords.size();
+            for (size_t k = 0; k < nd; ++k) pt[k] = call(rec_->coords[k], ldx);
+            args[0] = rec_->data->value(std::span<const double>(pt.data(), nd));
+            return Color::grey(call(rec_->fn[0], std::span<const double>(args, 5)));
         }
-        return c;
-    }
+        default: {  // BRTDfunc; a repeated name is evaluated once (m_brdf.c)
+            Color c;
+            for (int k = 0; k < 3; ++k) {
+                const auto& f = rec_->fn[k];
+                int same = -1;
+                for (int j = 0; j < k && same < 0; ++j)
+                    if (rec_->fn[j].name == f.name) same = j;
+                c[k] = same >= 0 ? c[same] : call(f, ldx);
+            }
+            return c;
+        }
     }
 }
 

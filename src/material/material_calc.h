@@ -78,8 +78,8 @@ private:
         int expr[kMaxExpr] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};
         bool exprConstant[kMaxExpr] = {};
         double exprValue[kMaxExpr] = {};
-        Callable fn[3];                 // func/data: fn[0]; BRTDfunc: rbrtd gbrtd bbrtd
-        std::vector<Callable> coords;   // data types: x1 .. xN
+        Callable fn[3];                // func/data: fn[0]; BRTDfunc: rbrtd gbrtd bbrtd
+        std::vector<Callable> coords;  // data types: x1 .. xN
         std::shared_ptr<const calc::DataFile> data;
         std::shared_ptr<const bsdf::BsdfData> bsdf;  // BSDF/aBSDF: expr 0-2 up, 3 thickness
         bool needed = true;
@@ -155,8 +155,8 @@ private:
     calc::RayContext ctx_;
     const MaterialCalc::Record* rec_ = nullptr;
     const TransformPair* object_ = nullptr;  // the hit's object space (PatternPoint::object)
-    Transform npTransform_;  // world -> function space at the hit, for NxP NyP NzP
-    Vec3 ctxDir_;            // the ray direction at the hit (world), for RdotP
+    Transform npTransform_;                  // world -> function space at the hit, for NxP NyP NzP
+    Vec3 ctxDir_;                            // the ray direction at the hit (world), for RdotP
     long errorsAtHit_ = 0;
 };
 

@@ -39,7 +39,8 @@ struct Fixture {
     void load(const std::string& text) {
         scene = std::make_unique<Scene>(parseScene(text, "c.rad"));
         calc = std::make_unique<MaterialCalc>(
-            *scene, std::vector<std::string>{dir.path().string(), std::string(RP_SOURCE_DIR) + "/lib"});
+            *scene,
+            std::vector<std::string>{dir.path().string(), std::string(RP_SOURCE_DIR) + "/lib"});
         eval = std::make_unique<MaterialCalcEvaluator>(*calc);
         fn = [this](const Vec3& l) { return eval->directional(l); };
     }
@@ -124,8 +125,9 @@ TEST(MaterialCalcFunc, FunctionSeesLightDirectionInFunctionSpace) {
 TEST(MaterialCalcFunc, MathErrorDropsTheSpecularPart) {
     Fixture f;
     f.write("f.cal", "refl(lx, ly, lz, om) = 1 / (lx - lx) + 1;\n");
-    f.load("void plasfunc pf\n2 refl f.cal\n0\n4 .5 .5 .5 .2\n"
-           "void plastic2 a\n4 1/(Px-Px) 0 1 .\n0\n6 .5 .5 .5 .05 .1 .2\n");
+    f.load(
+        "void plasfunc pf\n2 refl f.cal\n0\n4 .5 .5 .5 .2\n"
+        "void plastic2 a\n4 1/(Px-Px) 0 1 .\n0\n6 .5 .5 .5 .05 .1 .2\n");
     int32_t m = f.hit("pf");
     Vec3 l = lightAt(40);
     expectColor(f.eval->directional(l), {});  // m_brdf.c: "compute error", no specular
@@ -161,8 +163,9 @@ TEST(MaterialCalcFunc, PlasdataLooksUpTheDataFile) {
 TEST(MaterialCalcBrtd, SpecularColoursFromConstantsAndExpressions) {
     Fixture f;
     f.write("f.cal", "rr = 0.25;\ntt = 0.1 + 0 * Dz;\n");
-    f.load("void BRTDfunc b\n10 0.5 rr 0.5 0 0 tt 0 0 0 f.cal\n0\n9 .1 .1 .1 .2 .2 .2 0 0 0\n"
-           "void BRTDfunc k\n10 0.5 0.5 0.5 0 0 0 0 0 0 .\n0\n9 .1 .1 .1 .2 .2 .2 0 0 0\n");
+    f.load(
+        "void BRTDfunc b\n10 0.5 rr 0.5 0 0 tt 0 0 0 f.cal\n0\n9 .1 .1 .1 .2 .2 .2 0 0 0\n"
+        "void BRTDfunc k\n10 0.5 0.5 0.5 0 0 0 0 0 0 .\n0\n9 .1 .1 .1 .2 .2 .2 0 0 0\n");
     int32_t m = f.hit("b");
     EXPECT_TRUE(f.calc->uses(m));
     EXPECT_FALSE(f.calc->uses(indexOf(*f.scene, "k")));  // constants only: params.cpp has them
@@ -188,12 +191,13 @@ PerturbedValues perturbedValues(Fixture& f, const std::string& type, const std::
         std::string fn = "f" + std::to_string(k);
         cal += fn + "(lx, ly, lz, om) = " + vars[k] + ";\n";
         if (type == "plasfunc")
-            rad += "void plasfunc m" + std::to_string(k) + "\n" + std::to_string(2 + (transform.empty() ? 0 : 2)) +
-                   " " + fn + " p.cal " + transform + "\n0\n4 .5 .4 .3 .2\n";
+            rad += "void plasfunc m" + std::to_string(k) + "\n" +
+                   std::to_string(2 + (transform.empty() ? 0 : 2)) + " " + fn + " p.cal " +
+                   transform + "\n0\n4 .5 .4 .3 .2\n";
         else
             rad += "void BRTDfunc m" + std::to_string(k) + "\n" +
-                   std::to_string(10 + (transform.empty() ? 0 : 2)) + " 0 0 0 0 0 0 " + fn + " " + fn +
-                   " " + fn + " p.cal " + transform + "\n0\n9 .1 .1 .1 .1 .1 .1 0 0 0\n";
+                   std::to_string(10 + (transform.empty() ? 0 : 2)) + " 0 0 0 0 0 0 " + fn + " " +
+                   fn + " " + fn + " p.cal " + transform + "\n0\n9 .1 .1 .1 .1 .1 .1 0 0 0\n";
     }
     f.write("p.cal", cal);
     f.load(rad);
@@ -231,11 +235,11 @@ TEST(MaterialCalcBrtd, PerturbedVariablesOfBrtdfunc) {
     Fixture f;
     Vec3 up = normalize(Vec3{0, 0.6, 0.8});
     PerturbedValues b = perturbedValues(f, "BRTDfunc", "", up, {0, 0, -1}, {0.5, 0.25, 2});
-    EXPECT_NEAR(b.nz, -1, kEps);     // flipped to the ray's side
+    EXPECT_NEAR(b.nz, -1, kEps);  // flipped to the ray's side
     EXPECT_NEAR(b.rdotp, 0.8, kEps);
-    EXPECT_NEAR(b.n, 1, kEps);       // but N and Rdot stay as the surface has them
+    EXPECT_NEAR(b.n, 1, kEps);  // but N and Rdot stay as the surface has them
     EXPECT_NEAR(b.r, -0.8, kEps);
-    EXPECT_NEAR(b.cr, 0.5, kEps);    // the pattern alone
+    EXPECT_NEAR(b.cr, 0.5, kEps);  // the pattern alone
     EXPECT_NEAR(b.cg, 0.25, kEps);
     EXPECT_NEAR(b.cb, 2, kEps);
 }
@@ -243,9 +247,11 @@ TEST(MaterialCalcBrtd, PerturbedVariablesOfBrtdfunc) {
 // RADIANCE's rayinit.cal frame functions on top of them (Idz is RdotP; Ldz projects on NP).
 TEST(MaterialCalcFunc, RayinitFrameFunctions) {
     Fixture f;
-    f.write("p.cal", "fz(lx, ly, lz, om) = Idz;\nfl(lx, ly, lz, om) = Ldz(lx, ly, lz) + 10*Ldx(1, 0, 0);\n");
-    f.load("void plasfunc a\n2 fz p.cal\n0\n7 .5 .5 .5 .1 0 1 0\n"
-           "void plasfunc b\n2 fl p.cal\n0\n7 .5 .5 .5 .1 0 1 0\n");
+    f.write("p.cal",
+            "fz(lx, ly, lz, om) = Idz;\nfl(lx, ly, lz, om) = Ldz(lx, ly, lz) + 10*Ldx(1, 0, 0);\n");
+    f.load(
+        "void plasfunc a\n2 fz p.cal\n0\n7 .5 .5 .5 .1 0 1 0\n"
+        "void plasfunc b\n2 fl p.cal\n0\n7 .5 .5 .5 .1 0 1 0\n");
     Vec3 d = normalize(Vec3{0.3, 0, -1});
     f.hit("a", d);
     EXPECT_NEAR(f.eval->directional({0, 0, 1}).r, -d.z, kEps);
@@ -270,8 +276,8 @@ TEST(MaterialCalcBrtd, DirectionalDiffuseFunctionOfLightDirection) {
     expectColor(evaluate(p, sp, l), diffuse + Color{c * c, c * c, 1.5} * c, 1e-9);
     // Transmission side: the transmitted diffuse plus the function's value at the light.
     Vec3 lb = {0, l.y, -l.z};
-    expectColor(evaluate(p, sp, lb),
-                Color{.1, .05, .1} * (c / kPi) + Color{c * c, c * c, 1.5} * c, 1e-9);
+    expectColor(evaluate(p, sp, lb), Color{.1, .05, .1} * (c / kPi) + Color{c * c, c * c, 1.5} * c,
+                1e-9);
     // RADIANCE compat: a brtd colour of brightness <= FTINY adds nothing at all.
     f.write("g.cal", "n(lx, ly, lz, om) = -1;\np(lx, ly, lz, om) = 1;\n");
     f.load("void BRTDfunc b\n10 0 0 0 0 0 0 n n p g.cal\n0\n9 .2 .2 .2 0 0 0 0 0 0\n");
@@ -281,9 +287,10 @@ TEST(MaterialCalcBrtd, DirectionalDiffuseFunctionOfLightDirection) {
 
 TEST(MaterialCalcAniso, UOrientationRotatesWithTheTransform) {
     Fixture f;
-    f.load("void plastic2 a\n4 1 0 0 .\n0\n6 .5 .5 .5 .05 .1 .2\n"
-           "void plastic2 r\n6 1 0 0 . -rz 90\n0\n6 .5 .5 .5 .05 .1 .2\n"
-           "void metal2 e\n4 Px 0 1 .\n0\n6 .5 .5 .5 .05 .1 .2\n");
+    f.load(
+        "void plastic2 a\n4 1 0 0 .\n0\n6 .5 .5 .5 .05 .1 .2\n"
+        "void plastic2 r\n6 1 0 0 . -rz 90\n0\n6 .5 .5 .5 .05 .1 .2\n"
+        "void metal2 e\n4 Px 0 1 .\n0\n6 .5 .5 .5 .05 .1 .2\n");
     f.hit("a");
     Vec3 u = f.eval->anisoU();
     EXPECT_NEAR(u.x, 1, kEps);
@@ -341,7 +348,7 @@ TEST(MaterialCalc, PrismRedirectionsSeeDxAAndTheTransform) {
     Redirection r2 = f.eval->redirect(1, {});
     ASSERT_TRUE(r2.ok);
     EXPECT_NEAR(r2.coef, 0.3, kEps);
-    EXPECT_NEAR(length(r2.dir - Vec3{0, 1, 0}), 0, 1e-9);  // made unit, back in world
+    EXPECT_NEAR(length(r2.dir - Vec3{0, 1, 0}), 0, 1e-9);       // made unit, back in world
     EXPECT_NEAR(f.eval->redirect(1, {1, 0, 0}).coef, 1, kEps);  // DyA = -1
 }
 
@@ -358,7 +365,7 @@ TEST(MaterialCalc, PrismRedirectionsInsideAnInstance) {
     ASSERT_TRUE(r.ok);
     EXPECT_NEAR(r.coef, 1, kEps);
     EXPECT_NEAR(length(r.dir - Vec3{0, 1, 0}), 0, 1e-9);  // object +x, world +y
-    f.hit("p", normalize(Vec3{0.3, 0.4, -1}));           // world space: DyA = 0
+    f.hit("p", normalize(Vec3{0.3, 0.4, -1}));            // world space: DyA = 0
     EXPECT_NEAR(f.eval->redirect(0, {1, 0, 0}).coef, 0.3, kEps);
     EXPECT_NEAR(length(f.eval->redirect(0, {1, 0, 0}).dir - Vec3{1, 0, 0}), 0, 1e-9);
 }

@@ -17,9 +17,9 @@ bool isLightType(PrimType t) {
 
 bool takesDirect(const MaterialParams& m) {
     return std::holds_alternative<NormalParams>(m) || std::holds_alternative<AnisoParams>(m) ||
-           std::holds_alternative<AshikParams>(m) ||
-           std::holds_alternative<FuncParams>(m) || std::holds_alternative<BrtdParams>(m) ||
-           std::holds_alternative<BsdfParams>(m) || std::holds_alternative<WgmdParams>(m);
+           std::holds_alternative<AshikParams>(m) || std::holds_alternative<FuncParams>(m) ||
+           std::holds_alternative<BrtdParams>(m) || std::holds_alternative<BsdfParams>(m) ||
+           std::holds_alternative<WgmdParams>(m);
 }
 
 bool opaqueBackAbsorbs(const MaterialParams& m) {

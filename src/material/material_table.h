@@ -19,16 +19,16 @@ struct MaterialRecord {
     std::string error;
     int32_t alternate = kVoid;  // mirror/illum alternate material record (kVoid: void)
     bool hasAlternate = false;
-    bool isLight = false;       // light, illum, glow, spotlight
-    bool diffuseLike = false;   // material::evaluate can be non-zero (direct light applies)
+    bool isLight = false;      // light, illum, glow, spotlight
+    bool diffuseLike = false;  // material::evaluate can be non-zero (direct light applies)
     bool antimatter = false;
-    bool backAbsorbs = false;   // opaque: photons meeting the back are absorbed unless -bv
+    bool backAbsorbs = false;  // opaque: photons meeting the back are absorbed unless -bv
     // Shading turns the surface to face a ray that hits its back (RADIANCE flipsurface in
     // normal.c, aniso.c, ashikhmin.c, glass.c, m_brdf.c m_brdf2), so rtrace -on reports
     // the normal facing the ray; the others (lights, mirror, dielectric, BRTDfunc, BSDF,
     // mist, prisms) keep it as given.
     bool reorientsBackHits = false;
-    std::vector<int32_t> clips; // antimatter: the modifiers it clips (RADIANCE lastmod)
+    std::vector<int32_t> clips;  // antimatter: the modifiers it clips (RADIANCE lastmod)
 };
 
 // The last modifier named `name` defined before record `before` (RADIANCE lastmod);

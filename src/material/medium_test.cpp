@@ -46,12 +46,12 @@ TEST(Medium, MistWithoutAlbedoKeepsTheRays) {
 TEST(Medium, DielectricInsideAndOut) {
     // Inside: its own absorption, no scattering (dielectric.c); leaving: the global
     // extinction and albedo, the eccentricity kept.
-    Medium glass = changeMedium(kGlobal, MediumChange{MediumChange::Kind::Given, Color{2, 2, 2}},
-                                kGlobal);
+    Medium glass =
+        changeMedium(kGlobal, MediumChange{MediumChange::Kind::Given, Color{2, 2, 2}}, kGlobal);
     EXPECT_EQ(glass.extinction, (Color{2, 2, 2}));
     EXPECT_FALSE(glass.scatters());
-    Medium out = changeMedium(Medium{Color{}, Color{}, 0.7}, MediumChange{MediumChange::Kind::Global, Color{}},
-                              kGlobal);
+    Medium out = changeMedium(Medium{Color{}, Color{}, 0.7},
+                              MediumChange{MediumChange::Kind::Global, Color{}}, kGlobal);
     EXPECT_EQ(out.extinction, kGlobal.extinction);
     EXPECT_EQ(out.albedo, kGlobal.albedo);
     EXPECT_EQ(out.eccentricity, 0.7);

@@ -38,8 +38,13 @@ TEST(DiffuseSampling, SampleCosineIsCosineWeighted) {
 // for every unit normal, including both poles, -0 and the equator, where the helper
 // division would cancel if the sign were taken the other way.
 TEST(DiffuseSampling, PerpendicularFrameIsOrthonormal) {
-    std::vector<Vec3> normals{{0, 0, 1}, {0, 0, -1}, {1, 0, -0.0}, {1, 0, 0}, {0, -1, 0},
-                              {0, 1, -1e-300}, normalize(Vec3{1, 1, 1e-9})};
+    std::vector<Vec3> normals{{0, 0, 1},
+                              {0, 0, -1},
+                              {1, 0, -0.0},
+                              {1, 0, 0},
+                              {0, -1, 0},
+                              {0, 1, -1e-300},
+                              normalize(Vec3{1, 1, 1e-9})};
     Rng rng(5, RngDomain::Test, 0);
     for (int i = 0; i < 1000; ++i) {
         Vec3 r{2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1};
@@ -73,8 +78,8 @@ TEST(Lights, AbsorbPhotonsAndEmit) {
     // illum seen directly: its alternate material, or invisible.
     EXPECT_TRUE(shadeBackward(makeMaterial(prim(PrimType::Illum, {1, 1, 1}, {"m2"})), sp, {}, rng)
                     .useAlternate);
-    EXPECT_TRUE(shadeBackward(makeMaterial(prim(PrimType::Illum, {1, 1, 1})), sp, {}, rng)
-                    .transparent);
+    EXPECT_TRUE(
+        shadeBackward(makeMaterial(prim(PrimType::Illum, {1, 1, 1})), sp, {}, rng).transparent);
 }
 
 TEST(Lights, SpotlightCone) {
@@ -106,8 +111,8 @@ TEST(Antimatter, PassesPhotonsThrough) {
 TEST(FuncMaterials, PhotonsScatterDiffuselyOnly) {
     // transfunc: rdiff = 1 - trans - rspec, tdiff = trans (1 - Ts); the specular part is
     // absorbed (photon-map manual 3.1, pmapmat.c brdf2PhotonScatter).
-    MaterialParams m = makeMaterial(
-        prim(PrimType::Transfunc, {.8, .6, .4, .1, .5, .4}, {"brtd", "f.cal"}));
+    MaterialParams m =
+        makeMaterial(prim(PrimType::Transfunc, {.8, .6, .4, .1, .5, .4}, {"brtd", "f.cal"}));
     double trans = 0.5 * 0.9, tdiff = trans * 0.6, rdiff = 1 - trans - 0.1;
     Color c{.8, .6, .4};
     auto st = test::photonStats(m, 200000, 4, [&](Rng& r) {
@@ -125,12 +130,13 @@ TEST(FuncMaterials, PhotonsScatterDiffuselyOnly) {
 
 TEST(BRTDfunc, IdealSpecularPlusDiffuse) {
     std::vector<std::string> s{".2", ".2", ".2", ".1", ".1", ".1", "0", "0", "0", "."};
-    MaterialParams m = makeMaterial(
-        prim(PrimType::BRTDfunc, {.3, .3, .3, .05, .05, .05, .1, .1, .1}, s));
+    MaterialParams m =
+        makeMaterial(prim(PrimType::BRTDfunc, {.3, .3, .3, .05, .05, .05, .1, .1, .1}, s));
     Vec3 d = test::incident(45, 0);
     auto st = test::photonStats(m, 200000, 5, [&](Rng&) { return makeSurfacePoint(d, kUp, true); });
     test::expectMeanNear(st, Color::grey(.3 + .1 + .2 + .1), "front albedo");
-    auto back = test::photonStats(m, 200000, 6, [&](Rng&) { return makeSurfacePoint(d, kUp, false); });
+    auto back =
+        test::photonStats(m, 200000, 6, [&](Rng&) { return makeSurfacePoint(d, kUp, false); });
     test::expectMeanNear(back, Color::grey(.05 + .1 + .2 + .1), "back albedo");
     Rng rng(7, RngDomain::Test, 0);
     BackwardResult r = shadeBackward(m, makeSurfacePoint(d, kUp, true), {}, rng);

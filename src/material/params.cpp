@@ -21,9 +21,7 @@ std::string header(const Primitive& p) {
 [[noreturn]] void fail(const Primitive& p, const std::string& what) {
     throw InputError(p.loc, header(p) + what);
 }
-Color rgb(const Primitive& p, size_t at) {
-    return {p.rargs[at], p.rargs[at + 1], p.rargs[at + 2]};
-}
+Color rgb(const Primitive& p, size_t at) { return {p.rargs[at], p.rargs[at + 1], p.rargs[at + 2]}; }
 std::optional<std::string> alternateOf(const Primitive& p) {
     if (p.sargs.empty()) return std::nullopt;
     return p.sargs[0];
@@ -155,27 +153,27 @@ LightParams makeLight(const Primitive& p) {
     LightParams m;
     m.radiance = rgb(p, 0);
     switch (p.type) {
-    case PrimType::Illum:
-        m.kind = LightParams::Kind::Illum;
-        m.alternate = alternateOf(p);
-        break;
-    case PrimType::Glow:
-        m.kind = LightParams::Kind::Glow;
-        m.glowMaxRadius = p.rargs[3];
-        break;
-    case PrimType::Spotlight: {
-        m.kind = LightParams::Kind::Spotlight;
-        m.spotAngleDeg = p.rargs[3];
-        if (m.spotAngleDeg <= kFtiny) fail(p, "zero angle");  // srcsupp.c makespot
-        m.spotSolidAngle = 2 * kPi * (1 - std::cos(kPi / 180 / 2 * m.spotAngleDeg));
-        Vec3 aim{p.rargs[4], p.rargs[5], p.rargs[6]};
-        m.spotFocalLength = length(aim);
-        if (m.spotFocalLength == 0) fail(p, "zero focus vector");
-        m.spotAim = aim / m.spotFocalLength;
-        break;
-    }
-    default:
-        break;
+        case PrimType::Illum:
+            m.kind = LightParams::Kind::Illum;
+            m.alternate = alternateOf(p);
+            break;
+        case PrimType::Glow:
+            m.kind = LightParams::Kind::Glow;
+            m.glowMaxRadius = p.rargs[3];
+            break;
+        case PrimType::Spotlight: {
+            m.kind = LightParams::Kind::Spotlight;
+            m.spotAngleDeg = p.rargs[3];
+            if (m.spotAngleDeg <= kFtiny) fail(p, "zero angle");  // srcsupp.c makespot
+            m.spotSolidAngle = 2 * kPi * (1 - std::cos(kPi / 180 / 2 * m.spotAngleDeg));
+            Vec3 aim{p.rargs[4], p.rargs[5], p.rargs[6]};
+            m.spotFocalLength = length(aim);
+            if (m.spotFocalLength == 0) fail(p, "zero focus vector");
+            m.spotAim = aim / m.spotFocalLength;
+            break;
+        }
+        default:
+            break;
     }
     return m;
 }
@@ -213,76 +211,76 @@ MaterialParams makeMaterial(const Primitive& p) {
     // Counts are the reader's job; a short record here is a programming error.
     RP_CHECK(argRule(p.type).reals.allows(p.rargs.size()));
     switch (p.type) {
-    case PrimType::Plastic:
-    case PrimType::Metal:
-    case PrimType::Trans:
-        return makeNormal(p);
-    case PrimType::Plastic2:
-    case PrimType::Metal2:
-    case PrimType::Trans2:
-        return makeAniso(p);
-    case PrimType::Ashik2:
-        return makeAshik(p);
-    case PrimType::Mirror: {
-        MirrorParams m{rgb(p, 0), alternateOf(p), {}};
-        const detail::Component c{ScatterKind::SpecularReflection, m.color};
-        m.photonRoulette = detail::makeRouletteTable(&c, 1);
-        return m;
-    }
-    case PrimType::Glass:
-        return makeGlass(p);
-    case PrimType::Dielectric:
-    case PrimType::Interface:
-        return makeDielectric(p);
-    case PrimType::Light:
-    case PrimType::Illum:
-    case PrimType::Glow:
-    case PrimType::Spotlight:
-        return makeLight(p);
-    case PrimType::Antimatter:
-        return AntimatterParams{p.sargs};
-    case PrimType::Plasfunc:
-    case PrimType::Metfunc:
-    case PrimType::Transfunc:
-    case PrimType::Plasdata:
-    case PrimType::Metdata:
-    case PrimType::Transdata:
-        return makeFunc(p);
-    case PrimType::BRTDfunc:
-        return makeBrtd(p);
-    case PrimType::Prism1:
-    case PrimType::Prism2:
-        // The expressions and the function file are checked by MaterialCalc at load.
-        return PrismParams{p.type == PrimType::Prism2 ? 2 : 1};
-    case PrimType::BSDF:
-    case PrimType::ABSDF: {
-        // The strings (thickness, file, up vector, function file) are MaterialCalc's.
-        BsdfParams m;
-        m.absdf = p.type == PrimType::ABSDF;
-        if (p.rargs.size() >= 3) m.frontDiffuse = rgb(p, 0);
-        if (p.rargs.size() >= 6) m.backDiffuse = rgb(p, 3);
-        if (p.rargs.size() >= 9) m.diffuseTransmittance = rgb(p, 6);
-        m.hasBackDiffuse = p.rargs.size() >= 6;
-        return m;
-    }
-    case PrimType::WGMDfunc:
-        return detail::makeWgmd(p);  // wgmd.cpp; expressions and modifiers: MaterialCalc
-    case PrimType::Mist: {
-        // Counts 0, 3, 6 or 7 were checked by the reader.
-        MistParams m;
-        m.sources = p.sargs;
-        if (p.rargs.size() >= 3) m.extinction = rgb(p, 0);
-        if (p.rargs.size() >= 6) m.albedo = rgb(p, 3);
-        if (p.rargs.size() >= 7) m.eccentricity = p.rargs[6];
-        if (m.extinction.min() < 0) fail(p, "negative extinction");
-        if (m.albedo && (m.albedo->min() < 0 || m.albedo->max() > 1))
-            fail(p, "albedo outside [0,1]");
-        if (m.eccentricity && !(std::fabs(*m.eccentricity) < 1))
-            fail(p, "eccentricity outside (-1,1)");
-        return m;
-    }
-    default:
-        fail(p, "not a material");
+        case PrimType::Plastic:
+        case PrimType::Metal:
+        case PrimType::Trans:
+            return makeNormal(p);
+        case PrimType::Plastic2:
+        case PrimType::Metal2:
+        case PrimType::Trans2:
+            return makeAniso(p);
+        case PrimType::Ashik2:
+            return makeAshik(p);
+        case PrimType::Mirror: {
+            MirrorParams m{rgb(p, 0), alternateOf(p), {}};
+            const detail::Component c{ScatterKind::SpecularReflection, m.color};
+            m.photonRoulette = detail::makeRouletteTable(&c, 1);
+            return m;
+        }
+        case PrimType::Glass:
+            return makeGlass(p);
+        case PrimType::Dielectric:
+        case PrimType::Interface:
+            return makeDielectric(p);
+        case PrimType::Light:
+        case PrimType::Illum:
+        case PrimType::Glow:
+        case PrimType::Spotlight:
+            return makeLight(p);
+        case PrimType::Antimatter:
+            return AntimatterParams{p.sargs};
+        case PrimType::Plasfunc:
+        case PrimType::Metfunc:
+        case PrimType::Transfunc:
+        case PrimType::Plasdata:
+        case PrimType::Metdata:
+        case PrimType::Transdata:
+            return makeFunc(p);
+        case PrimType::BRTDfunc:
+            return makeBrtd(p);
+        case PrimType::Prism1:
+        case PrimType::Prism2:
+            // The expressions and the function file are checked by MaterialCalc at load.
+            return PrismParams{p.type == PrimType::Prism2 ? 2 : 1};
+        case PrimType::BSDF:
+        case PrimType::ABSDF: {
+            // The strings (thickness, file, up vector, function file) are MaterialCalc's.
+            BsdfParams m;
+            m.absdf = p.type == PrimType::ABSDF;
+            if (p.rargs.size() >= 3) m.frontDiffuse = rgb(p, 0);
+            if (p.rargs.size() >= 6) m.backDiffuse = rgb(p, 3);
+            if (p.rargs.size() >= 9) m.diffuseTransmittance = rgb(p, 6);
+            m.hasBackDiffuse = p.rargs.size() >= 6;
+            return m;
+        }
+        case PrimType::WGMDfunc:
+            return detail::makeWgmd(p);  // wgmd.cpp; expressions and modifiers: MaterialCalc
+        case PrimType::Mist: {
+            // Counts 0, 3, 6 or 7 were checked by the reader.
+            MistParams m;
+            m.sources = p.sargs;
+            if (p.rargs.size() >= 3) m.extinction = rgb(p, 0);
+            if (p.rargs.size() >= 6) m.albedo = rgb(p, 3);
+            if (p.rargs.size() >= 7) m.eccentricity = p.rargs[6];
+            if (m.extinction.min() < 0) fail(p, "negative extinction");
+            if (m.albedo && (m.albedo->min() < 0 || m.albedo->max() > 1))
+                fail(p, "albedo outside [0,1]");
+            if (m.eccentricity && !(std::fabs(*m.eccentricity) < 1))
+                fail(p, "eccentricity outside (-1,1)");
+            return m;
+        }
+        default:
+            fail(p, "not a material");
     }
 }
 

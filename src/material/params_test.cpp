@@ -34,7 +34,7 @@ TEST(MaterialParams, PlasticDerivedConstants) {
     EXPECT_FALSE(m.pureSpecular);
     EXPECT_DOUBLE_EQ(m.diffuseReflectance.r, 0.95 * 0.5);  // (1 - spec) colour
     EXPECT_DOUBLE_EQ(m.diffuseReflectance.b, 0.95 * 0.3);
-    EXPECT_EQ(m.specularColor, Color::grey(0.05));        // uncoloured highlight
+    EXPECT_EQ(m.specularColor, Color::grey(0.05));  // uncoloured highlight
     EXPECT_EQ(m.diffuseTransmittance, Color{});
 }
 
@@ -47,8 +47,7 @@ TEST(MaterialParams, MetalSpecularIsColoured) {
 
 TEST(MaterialParams, TransSplits) {
     // normal.c: trans = T (1 - rspec), tspec = trans Ts, tdiff = trans - tspec.
-    auto m = as<NormalParams>(
-        makeMaterial(prim(PrimType::Trans, {.6, .6, .6, .04, .02, .5, .3})));
+    auto m = as<NormalParams>(makeMaterial(prim(PrimType::Trans, {.6, .6, .6, .04, .02, .5, .3})));
     EXPECT_DOUBLE_EQ(m.trans, 0.5 * 0.96);
     EXPECT_DOUBLE_EQ(m.tspec, 0.5 * 0.96 * 0.3);
     EXPECT_DOUBLE_EQ(m.tdiff, 0.5 * 0.96 * 0.7);
@@ -114,8 +113,8 @@ TEST(MaterialParams, DielectricAndInterface) {
 }
 
 TEST(MaterialParams, FuncMaterialsKeepArgs) {
-    auto f = as<FuncParams>(makeMaterial(
-        prim(PrimType::Transfunc, {.5, .5, .5, .1, .4, .25, 7}, {"brtd", "my.cal"})));
+    auto f = as<FuncParams>(
+        makeMaterial(prim(PrimType::Transfunc, {.5, .5, .5, .1, .4, .25, 7}, {"brtd", "my.cal"})));
     EXPECT_EQ(f.sargs[1], "my.cal");
     EXPECT_EQ(f.rargs.size(), 7u);
     EXPECT_DOUBLE_EQ(f.trans, 0.4 * 0.9);
@@ -161,16 +160,17 @@ TEST(MaterialParams, Mist) {
 
 TEST(MaterialParams, PrismsCountTheirRedirections) {
     // The expressions and the function file are MaterialCalc's (checked at load there).
-    EXPECT_EQ(as<PrismParams>(makeMaterial(prim(PrimType::Prism1, {},
-                                                {"coef1", "dx1", "dy1", "dz1", "p.cal"})))
+    EXPECT_EQ(as<PrismParams>(
+                  makeMaterial(prim(PrimType::Prism1, {}, {"coef1", "dx1", "dy1", "dz1", "p.cal"})))
                   .redirections,
               1);
     EXPECT_EQ(as<PrismParams>(makeMaterial(prim(PrimType::Prism2, {1.52},
-                                                {"c1", "x1", "y1", "z1", "c2", "x2", "y2",
-                                                 "z2", "p.cal", "-rz", "90"})))
+                                                {"c1", "x1", "y1", "z1", "c2", "x2", "y2", "z2",
+                                                 "p.cal", "-rz", "90"})))
                   .redirections,
               2);
-    EXPECT_FALSE(storesPhotons(makeMaterial(prim(PrimType::Prism1, {}, {"1", "0", "0", "1", "."}))));
+    EXPECT_FALSE(
+        storesPhotons(makeMaterial(prim(PrimType::Prism1, {}, {"1", "0", "0", "1", "."}))));
 }
 
 TEST(MaterialParams, NotAMaterial) {
@@ -185,8 +185,8 @@ TEST(MaterialParams, StoresPhotons) {
     EXPECT_FALSE(storesPhotons(makeMaterial(prim(PrimType::Light, {9, 9, 9}))));
     EXPECT_FALSE(storesPhotons(makeMaterial(prim(PrimType::Antimatter, {}, {"void"}))));
     EXPECT_TRUE(storesPhotons(makeMaterial(prim(PrimType::Trans, {.5, .5, .5, 0, 0, 1, 0}))));
-    EXPECT_TRUE(storesPhotons(makeMaterial(prim(PrimType::Plasdata, {.5, .5, .5, .1},
-                                                {"f", "d.dat", "f.cal", "x"}))));
+    EXPECT_TRUE(storesPhotons(
+        makeMaterial(prim(PrimType::Plasdata, {.5, .5, .5, .1}, {"f", "d.dat", "f.cal", "x"}))));
 }
 
 }  // namespace

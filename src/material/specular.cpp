@@ -39,8 +39,7 @@ BackwardResult shadePrism(const PrismParams& m, const SurfacePoint& sp) {
 
 // --- mirror ------------------------------------------------------------------------------
 
-BackwardResult shadeMirror(const MirrorParams& m, const SurfacePoint& sp,
-                           const ShadeOptions& opt) {
+BackwardResult shadeMirror(const MirrorParams& m, const SurfacePoint& sp, const ShadeOptions& opt) {
     BackwardResult r;
     // The alternate material shades non-source rays; the caller knows the ray type and
     // decides (m_mirror.c). We only flag that one exists.
@@ -92,10 +91,9 @@ void glassCoefficients(const GlassParams& m, double pdot, const Color& pattern, 
     // Sum over all internal reflections (geometric series), averaged over polarisations.
     for (int i = 0; i < 3; ++i) {
         double d = t[i], d2 = d * d;
-        trans[i] = m.hasTransmission
-                       ? 0.5 * (1 - r1e) * (1 - r1e) * d / (1 - r1e * r1e * d2) +
-                             0.5 * (1 - r1m) * (1 - r1m) * d / (1 - r1m * r1m * d2)
-                       : 0.0;
+        trans[i] = m.hasTransmission ? 0.5 * (1 - r1e) * (1 - r1e) * d / (1 - r1e * r1e * d2) +
+                                           0.5 * (1 - r1m) * (1 - r1m) * d / (1 - r1m * r1m * d2)
+                                     : 0.0;
         refl[i] = 0.5 * r1e * (1 + (1 - 2 * r1e) * d2) / (1 - r1e * r1e * d2) +
                   0.5 * r1m * (1 + (1 - 2 * r1m) * d2) / (1 - r1m * r1m * d2);
     }
@@ -114,8 +112,7 @@ Vec3 glassTransmitDir(const GlassParams& m, const SurfacePoint& sp) {
 }
 }  // namespace
 
-BackwardResult shadeGlass(const GlassParams& m, const SurfacePoint& sp,
-                          const ShadeOptions& opt) {
+BackwardResult shadeGlass(const GlassParams& m, const SurfacePoint& sp, const ShadeOptions& opt) {
     BackwardResult r;
     if (!sp.front && !opt.backVisible) {
         r.transparent = true;
@@ -146,8 +143,8 @@ PhotonScatter scatterGlass(const GlassParams& m, const SurfacePoint& sp, Rng& rn
 
 namespace {
 struct DielectricHit {
-    double refl = 1;      // Fresnel reflectance (1: total internal reflection)
-    double nratio = 1;    // n_incident / n_transmitted
+    double refl = 1;    // Fresnel reflectance (1: total internal reflection)
+    double nratio = 1;  // n_incident / n_transmitted
     Vec3 refracted, reflected;
     MediumChange transmittedMedium, reflectedMedium;
 };
@@ -199,10 +196,10 @@ BackwardResult shadeDielectric(const DielectricParams& m, const SurfacePoint& sp
         // Radiance is compressed into the smaller solid angle: (1 - R) (n1/n2)^2.
         double t = (1 - h.refl) * h.nratio * h.nratio;
         r.add(makeRay(h.refracted, Color::grey(t), ScatterKind::SpecularTransmission, false,
-               h.transmittedMedium));
+                      h.transmittedMedium));
     }
     r.add(makeRay(h.reflected, Color::grey(h.refl), ScatterKind::SpecularReflection, false,
-           h.reflectedMedium));
+                  h.reflectedMedium));
     return r;
 }
 

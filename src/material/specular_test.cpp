@@ -37,7 +37,7 @@ void paneSeries(double r, double d, double& R, double& T) {
     double inside = (1 - r) * d;  // entered, crossed once
     for (int k = 0; k < 200; ++k) {
         T += inside * (1 - r);
-        inside *= r * d;           // reflected back, crosses again
+        inside *= r * d;  // reflected back, crosses again
         R += inside * (1 - r);
         inside *= r * d;
     }
@@ -98,7 +98,8 @@ TEST(Dielectric, PhotonsConserveFluxAndSplitByFresnel) {
     MaterialParams m = makeMaterial(prim(PrimType::Dielectric, {.9, .9, .9, 1.5, 0}));
     for (double theta : {0.0, 30.0, 60.0, 80.0}) {
         Vec3 d = test::incident(theta, 45);
-        auto st = test::photonStats(m, 100000, 5, [&](Rng&) { return makeSurfacePoint(d, kUp, true); });
+        auto st =
+            test::photonStats(m, 100000, 5, [&](Rng&) { return makeSurfacePoint(d, kUp, true); });
         test::expectMeanNear(st, {1, 1, 1}, "R+T = 1");
         double R = fresnel(1, 1.5, std::cos(theta * kPi / 180));
         double fr = double(st.counts[int(ScatterKind::SpecularReflection)]) / 100000;
@@ -114,8 +115,8 @@ TEST(Dielectric, SnellAndTotalInternalReflection) {
     ASSERT_EQ(r.numRays, 2);
     const SpecularRay& t = r.rays[0];
     double sin1 = std::sqrt(1 - d.z * d.z), sin2 = std::sqrt(1 - t.dir.z * t.dir.z);
-    EXPECT_NEAR(sin1, 1.5 * sin2, 1e-12);                   // n1 sin1 = n2 sin2
-    EXPECT_NEAR(dot(cross(d, kUp), t.dir), 0, 1e-12);       // plane of incidence
+    EXPECT_NEAR(sin1, 1.5 * sin2, 1e-12);              // n1 sin1 = n2 sin2
+    EXPECT_NEAR(dot(cross(d, kUp), t.dir), 0, 1e-12);  // plane of incidence
     double R = fresnel(1, 1.5, -d.z);
     EXPECT_NEAR(t.weight.r, (1 - R) / (1.5 * 1.5), 1e-12);  // radiance compression
     EXPECT_NEAR(r.rays[1].weight.r, R, 1e-12);
@@ -135,7 +136,8 @@ TEST(Dielectric, SnellAndTotalInternalReflection) {
         EXPECT_NEAR(s.extinction.g, -std::log(0.8), 1e-12);
     }
     // Leaving a dielectric below the critical angle enters the global medium.
-    BackwardResult out = shadeBackward(m, makeSurfacePoint(test::incident(20), kUp, false), {}, rng);
+    BackwardResult out =
+        shadeBackward(m, makeSurfacePoint(test::incident(20), kUp, false), {}, rng);
     ASSERT_EQ(out.numRays, 2);
     EXPECT_EQ(out.rays[0].medium.kind, MediumChange::Kind::Global);
 }

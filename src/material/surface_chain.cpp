@@ -27,23 +27,41 @@ std::string what(const Primitive& p) {
 
 ChainKind kindOf(PrimType t) {
     switch (primCategory(t)) {
-        case PrimCategory::Surface: return ChainKind::NotModifier;
-        case PrimCategory::Material: return ChainKind::Material;
-        case PrimCategory::Alias: return ChainKind::Unsupported;
-        default: break;
+        case PrimCategory::Surface:
+            return ChainKind::NotModifier;
+        case PrimCategory::Material:
+            return ChainKind::Material;
+        case PrimCategory::Alias:
+            return ChainKind::Unsupported;
+        default:
+            break;
     }
     switch (t) {
-        case PrimType::Colorfunc: case PrimType::Brightfunc: return ChainKind::Func;
-        case PrimType::Colordata: case PrimType::Brightdata: return ChainKind::Data;
-        case PrimType::Colorpict: return ChainKind::Pict;
-        case PrimType::Colortext: case PrimType::Brighttext: return ChainKind::Text;
-        case PrimType::Texfunc: return ChainKind::TexFunc;
-        case PrimType::Texdata: return ChainKind::TexData;
-        case PrimType::Mixfunc: return ChainKind::MixFunc;
-        case PrimType::Mixdata: return ChainKind::MixData;
-        case PrimType::Mixpict: return ChainKind::MixPict;
-        case PrimType::Mixtext: return ChainKind::MixText;
-        default: return ChainKind::Unsupported;  // spectrum, specfile, specfunc, ...
+        case PrimType::Colorfunc:
+        case PrimType::Brightfunc:
+            return ChainKind::Func;
+        case PrimType::Colordata:
+        case PrimType::Brightdata:
+            return ChainKind::Data;
+        case PrimType::Colorpict:
+            return ChainKind::Pict;
+        case PrimType::Colortext:
+        case PrimType::Brighttext:
+            return ChainKind::Text;
+        case PrimType::Texfunc:
+            return ChainKind::TexFunc;
+        case PrimType::Texdata:
+            return ChainKind::TexData;
+        case PrimType::Mixfunc:
+            return ChainKind::MixFunc;
+        case PrimType::Mixdata:
+            return ChainKind::MixData;
+        case PrimType::Mixpict:
+            return ChainKind::MixPict;
+        case PrimType::Mixtext:
+            return ChainKind::MixText;
+        default:
+            return ChainKind::Unsupported;  // spectrum, specfile, specfunc, ...
     }
 }
 
@@ -141,11 +159,11 @@ int32_t lookupModifier(const Scene& s, int32_t before, const std::string& name) 
 // than only the direction. Only meaningful when no function file is loaded.
 
 // Function file at `fileAt`, then `nexpr` expressions at `exprAt`, then the transform.
-void compileFunctions(Loader& ld, const Primitive& p, ChainRecord& r, size_t fileAt,
-                      size_t exprAt, size_t nexpr, size_t xfAt) {
-    if (p.sargs.size() < xfAt) fail(p, "expected at least " + std::to_string(xfAt) +
-                                           " string arguments, got " +
-                                           std::to_string(p.sargs.size()));
+void compileFunctions(Loader& ld, const Primitive& p, ChainRecord& r, size_t fileAt, size_t exprAt,
+                      size_t nexpr, size_t xfAt) {
+    if (p.sargs.size() < xfAt)
+        fail(p, "expected at least " + std::to_string(xfAt) + " string arguments, got " +
+                    std::to_string(p.sargs.size()));
     ld.loadFunctionFile(p, p.sargs[fileAt]);
     r.directional = true;  // judged once the program is built (directionOnly)
     for (size_t k = 0; k < nexpr; ++k)
@@ -167,30 +185,31 @@ void compileData(Loader& ld, const Primitive& p, ChainRecord& r, size_t dataAt, 
     }
     size_t nd = size_t(r.data[0]->dimensions());
     size_t coordsAt = fileAt + 1;
-    if (p.sargs.size() < coordsAt + nd || (p.sargs.size() > coordsAt + nd &&
-                                           !isTransformOption(p.sargs[coordsAt + nd])))
-        fail(p, "dimension error: data file '" + p.sargs[dataAt] + "' has " +
-                    std::to_string(nd) + " dimension(s), the record gives " +
+    if (p.sargs.size() < coordsAt + nd ||
+        (p.sargs.size() > coordsAt + nd && !isTransformOption(p.sargs[coordsAt + nd])))
+        fail(p, "dimension error: data file '" + p.sargs[dataAt] + "' has " + std::to_string(nd) +
+                    " dimension(s), the record gives " +
                     std::to_string(p.sargs.size() > coordsAt ? p.sargs.size() - coordsAt : 0) +
                     " coordinate(s) and transform argument(s)");
     compileFunctions(ld, p, r, fileAt, coordsAt, nd, coordsAt + nd);
 }
 
-void compileText(Loader& ld, const Primitive& p, ChainRecord& r, size_t fontAt,
-                 size_t spacingAt) {
+void compileText(Loader& ld, const Primitive& p, ChainRecord& r, size_t fontAt, size_t spacingAt) {
     size_t textAt = fontAt + 1;
     if (p.sargs.size() <= textAt) fail(p, "missing text file or text");
     std::vector<std::string> lines;
     if (p.sargs.size() > textAt + 1) {  // "fontfile . words ...": one line of text
         std::string line;
-        for (size_t k = textAt + 1; k < p.sargs.size(); ++k) line += (line.empty() ? "" : " ") + p.sargs[k];
+        for (size_t k = textAt + 1; k < p.sargs.size(); ++k)
+            line += (line.empty() ? "" : " ") + p.sargs[k];
         lines.push_back(line);
     } else {
         lines = ld.textLines(p, p.sargs[textAt]);
     }
     auto font = ld.font(p, p.sargs[fontAt]);
     const auto& a = p.rargs;
-    if (a.size() < spacingAt) fail(p, "expected at least " + std::to_string(spacingAt) + " real arguments");
+    if (a.size() < spacingAt)
+        fail(p, "expected at least " + std::to_string(spacingAt) + " real arguments");
     bool hasSpacing = a.size() > spacingAt;
     try {
         r.text = std::make_shared<const TextBlock>(font, std::move(lines), Vec3(a[0], a[1], a[2]),
@@ -205,9 +224,16 @@ void compileRecord(Loader& ld, const Scene& s, int32_t index, ChainRecord& r) {
     const Primitive& p = s.prims[index];
     const auto& sa = p.sargs;
     switch (p.type) {
-        case PrimType::Colorfunc: r.colour = true; compileFunctions(ld, p, r, 3, 0, 3, 4); break;
-        case PrimType::Brightfunc: compileFunctions(ld, p, r, 1, 0, 1, 2); break;
-        case PrimType::Texfunc: compileFunctions(ld, p, r, 3, 0, 3, 4); break;
+        case PrimType::Colorfunc:
+            r.colour = true;
+            compileFunctions(ld, p, r, 3, 0, 3, 4);
+            break;
+        case PrimType::Brightfunc:
+            compileFunctions(ld, p, r, 1, 0, 1, 2);
+            break;
+        case PrimType::Texfunc:
+            compileFunctions(ld, p, r, 3, 0, 3, 4);
+            break;
         case PrimType::Colordata:
             r.colour = true;
             r.funcNames = {sa.at(0), sa.at(1), sa.at(2)};
@@ -261,16 +287,22 @@ void compileRecord(Loader& ld, const Scene& s, int32_t index, ChainRecord& r) {
             r.backMod = lookupModifier(s, index, sa.at(1));
             compileText(ld, p, r, 2, 9);
             break;
-        default: break;
+        default:
+            break;
     }
 }
 
 // How many values each named function of a record is called with (ray.html).
 bool callsWithThree(PrimType t, const calc::Function& f) {
     switch (t) {
-        case PrimType::Texdata: case PrimType::Mixpict: return true;
-        case PrimType::Colordata: case PrimType::Colorpict: return f.nparams >= 3;
-        default: return false;  // brightdata, mixdata
+        case PrimType::Texdata:
+        case PrimType::Mixpict:
+            return true;
+        case PrimType::Colordata:
+        case PrimType::Colorpict:
+            return f.nparams >= 3;
+        default:
+            return false;  // brightdata, mixdata
     }
 }
 
@@ -278,9 +310,8 @@ bool callsWithThree(PrimType t, const calc::Function& f) {
 // record's own transform), so that a source's emission through it is one table for
 // every point (light/emitter.cpp). skybright.cal's sky qualifies.
 bool directionOnly(const calc::Program& prog, const ChainRecord& r) {
-    static constexpr std::string_view kAllowed[] = {"Dx", "Dy", "Dz", "S",  "Tx", "Ty", "Tz",
-                                                    "Ix", "Iy", "Iz", "Jx", "Jy", "Jz",
-                                                    "Kx", "Ky", "Kz"};
+    static constexpr std::string_view kAllowed[] = {"Dx", "Dy", "Dz", "S",  "Tx", "Ty", "Tz", "Ix",
+                                                    "Iy", "Iz", "Jx", "Jy", "Jz", "Kx", "Ky", "Kz"};
     for (int id : r.exprIds)
         if (!prog.readsOnly(id, kAllowed)) return false;
     for (const auto& f : r.funcs)
@@ -313,7 +344,8 @@ SurfaceChains::SurfaceChains(const Scene& scene, std::vector<std::string> search
             r.funcs.push_back({*f, callsWithThree(p.type, *f)});
         }
         r.directional = r.directional && directionOnly(prog, r);
-        if (r.kind == ChainKind::Material && p.modifier == kVoid) impl_->plainMaterial[i] = int32_t(i);
+        if (r.kind == ChainKind::Material && p.modifier == kVoid)
+            impl_->plainMaterial[i] = int32_t(i);
     }
 }
 
@@ -325,8 +357,8 @@ const MaterialTable& SurfaceChains::materials() const { return impl_->materials;
 
 namespace {
 
-void checkFrom(const Scene& s, const std::vector<ChainRecord>& records, int32_t mod,
-               bool inTexture, int depth) {
+void checkFrom(const Scene& s, const std::vector<ChainRecord>& records, int32_t mod, bool inTexture,
+               int depth) {
     for (int32_t m = mod; m != kVoid; m = s.prims[m].modifier) {
         const Primitive& p = s.prims[m];
         const ChainRecord& r = records[m];
@@ -334,8 +366,10 @@ void checkFrom(const Scene& s, const std::vector<ChainRecord>& records, int32_t 
         // against pathological nesting.
         if (depth > 200) fail(p, "modifier chain too deep");
         switch (r.kind) {
-            case ChainKind::NotModifier: fail(p, "a surface cannot modify another primitive");
-            case ChainKind::Unsupported: throw notSupportedYet(p.loc, what(p) + " in a modifier chain");
+            case ChainKind::NotModifier:
+                fail(p, "a surface cannot modify another primitive");
+            case ChainKind::Unsupported:
+                throw notSupportedYet(p.loc, what(p) + " in a modifier chain");
             case ChainKind::Material:
                 // RADIANCE compat (raytrace.c raytexture): a material's own chain may hold
                 // only patterns, textures and mixtures of them.

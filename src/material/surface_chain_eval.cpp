@@ -16,7 +16,6 @@ constexpr double kFtiny = 1e-6;  // RADIANCE FTINY: mixture sides below this are
 constexpr int kBufferLayers = 64;
 constexpr int kMaxDepth = 200;
 
-
 // What the chain has done so far to the ray (RADIANCE r->pcol, r->pert).
 struct WalkState {
     Color pcol{1, 1, 1};
@@ -150,8 +149,8 @@ bool SurfaceChainEvaluator::Impl::mix(int32_t m, int32_t fore, int32_t back, dou
     return true;
 }
 
-bool SurfaceChainEvaluator::Impl::shade(int32_t mod, WalkState& st, double weight,
-                                        bool inTexture, int depth) {
+bool SurfaceChainEvaluator::Impl::shade(int32_t mod, WalkState& st, double weight, bool inTexture,
+                                        int depth) {
     for (int32_t m = mod; m != kVoid; m = prim(m).modifier) {
         const Primitive& p = prim(m);
         const ChainRecord& r = chains.records[m];
@@ -199,8 +198,9 @@ bool SurfaceChainEvaluator::Impl::shade(int32_t mod, WalkState& st, double weigh
             case ChainKind::TexData: {
                 setRay(r, p);
                 auto v = dataValues(r);
-                addPerturbation(r, st, {call3(r.funcs[0], v.data()), call3(r.funcs[1], v.data()),
-                                        call3(r.funcs[2], v.data())});
+                addPerturbation(r, st,
+                                {call3(r.funcs[0], v.data()), call3(r.funcs[1], v.data()),
+                                 call3(r.funcs[2], v.data())});
                 break;
             }
             case ChainKind::MixFunc:

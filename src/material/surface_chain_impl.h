@@ -21,10 +21,10 @@ enum class ChainKind : uint8_t {
     NotModifier,  // a surface: cannot be in a chain
     Unsupported,  // a modifier type this module does not evaluate (spectral patterns)
     Material,
-    Func,     // colorfunc, brightfunc
-    Data,     // colordata, brightdata
-    Pict,     // colorpict
-    Text,     // colortext, brighttext
+    Func,  // colorfunc, brightfunc
+    Data,  // colordata, brightdata
+    Pict,  // colorpict
+    Text,  // colortext, brighttext
     TexFunc,
     TexData,
     MixFunc,
@@ -77,8 +77,8 @@ struct SurfaceChains::Impl {
     explicit Impl(const Scene& s) : scene(&s), materials(s) {}
     const Scene* scene = nullptr;
     MaterialTable materials;
-    std::vector<ChainRecord> records;   // one per scene primitive
-    std::vector<int32_t> plainMaterial; // per primitive: the material if plain, else -2
+    std::vector<ChainRecord> records;    // one per scene primitive
+    std::vector<int32_t> plainMaterial;  // per primitive: the material if plain, else -2
     std::shared_ptr<const calc::Program> program;
 };
 

@@ -10,8 +10,8 @@
 #include "image/picture.h"
 #include "scene/reader.h"
 #include "scene/scene_load.h"
-#include "util/temp_dir_for_tests.h"
 #include "util/shared_for_tests.h"
+#include "util/temp_dir_for_tests.h"
 
 namespace rp::material {
 
@@ -23,9 +23,7 @@ int32_t indexOf(const Scene& s, const std::string& name) {
     return -2;
 }
 
-void writeFile(const std::string& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
+void writeFile(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 struct Fixture {
     TempDir dir;
@@ -37,7 +35,8 @@ struct Fixture {
     void load(const std::string& text) {
         scene = std::make_unique<Scene>(parseScene(text, "c.rad"));
         chains = std::make_unique<SurfaceChains>(
-            *scene, std::vector<std::string>{dir.path().string(), std::string(RP_SOURCE_DIR) + "/lib"});
+            *scene,
+            std::vector<std::string>{dir.path().string(), std::string(RP_SOURCE_DIR) + "/lib"});
         eval = std::make_unique<SurfaceChainEvaluator>(*chains);
     }
     int32_t mod(const std::string& name) const { return indexOf(*scene, name); }
@@ -67,8 +66,9 @@ void expectColor(const Color& c, double r, double g, double b, double tol = 1e-9
 }  // namespace
 
 TEST_F(SurfaceChain, PlainMaterialIsOneLayerWithoutEvaluation) {
-    f.load("void plastic m 0 0 5 .5 .5 .5 0 0\n"
-           "void brightfunc b 2 2 . 0 0\nb plastic pm 0 0 5 .5 .5 .5 0 0\n");
+    f.load(
+        "void plastic m 0 0 5 .5 .5 .5 0 0\n"
+        "void brightfunc b 2 2 . 0 0\nb plastic pm 0 0 5 .5 .5 .5 0 0\n");
     EXPECT_TRUE(f.chains->isPlain(f.mod("m")));
     EXPECT_EQ(f.chains->plainMaterial(f.mod("m")), f.mod("m"));
     EXPECT_TRUE(f.chains->isPlain(kVoid));
@@ -81,9 +81,10 @@ TEST_F(SurfaceChain, PlainMaterialIsOneLayerWithoutEvaluation) {
 }
 
 TEST_F(SurfaceChain, BrightfuncAndColorfuncInObjectSpace) {
-    f.load("void brightfunc bx 6 Px . -t 1 0 0 0 0\n"
-           "bx colorfunc cf 4 Py 2 A1 . 0 1 3\n"
-           "cf plastic m 0 0 5 .5 .5 .5 0 0\n");
+    f.load(
+        "void brightfunc bx 6 Px . -t 1 0 0 0 0\n"
+        "bx colorfunc cf 4 Py 2 A1 . 0 1 3\n"
+        "cf plastic m 0 0 5 .5 .5 .5 0 0\n");
     ChainResult r = f.at("m", {3, 5, 0});
     ASSERT_EQ(r.count, 1);
     EXPECT_EQ(r.layers[0].material, f.mod("m"));
@@ -103,8 +104,9 @@ TEST_F(SurfaceChain, ColordataWithOneAndThreeArgumentFunctions) {
     writeFile(f.dir.file("g.dat"), "1\n0 1 2\n2 4\n");
     writeFile(f.dir.file("b.dat"), "1\n0 1 2\n10 20\n");
     writeFile(f.dir.file("f.cal"), "twice(x) = 2*x;\nsum3(r, g, b) = r + g + b;\n");
-    f.load("void colordata cd 8 twice noop sum3 r.dat g.dat b.dat f.cal Px 0 0\n"
-           "cd plastic m 0 0 5 1 1 1 0 0\n");
+    f.load(
+        "void colordata cd 8 twice noop sum3 r.dat g.dat b.dat f.cal Px 0 0\n"
+        "cd plastic m 0 0 5 1 1 1 0 0\n");
     // At x = .25: r .25, g 2.5, b 12.5.
     expectColor(f.at("m", {0.25, 0, 0}).layers[0].pattern, 0.5, 2.5, 0.25 + 2.5 + 12.5);
 }
@@ -116,8 +118,9 @@ TEST_F(SurfaceChain, ColorpictReadsThePictureAtUV) {
     pic.at(0, 1) = {0, 0, 1};  // bottom left
     pic.at(1, 1) = {1, 1, 1};  // bottom right
     writePicture(f.dir.file("p.hdr"), pic);
-    f.load("void colorpict cp 7 red green blue p.hdr picture.cal pic_u pic_v 0 0\n"
-           "cp plastic m 0 0 5 1 1 1 0 0\n");
+    f.load(
+        "void colorpict cp 7 red green blue p.hdr picture.cal pic_u pic_v 0 0\n"
+        "cp plastic m 0 0 5 1 1 1 0 0\n");
     // RGBE keeps 1 exactly but decodes 0 beside it as half a mantissa step (1/256).
     const double q = 1.0 / 128;
     expectColor(f.at("m", {0, 0, 0}).layers[0].pattern, 0, 0, 1, q);
@@ -131,9 +134,10 @@ TEST_F(SurfaceChain, ColorpictReadsThePictureAtUV) {
 }
 
 TEST_F(SurfaceChain, TexfuncAddsATransformedPerturbation) {
-    f.load("void texfunc t 4 .1 0 A1 . 0 1 .05\n"
-           "t texfunc t2 8 .1 0 0 . -rz 90 -s 2 0 0\n"
-           "t2 plastic m 0 0 5 1 1 1 0 0\n");
+    f.load(
+        "void texfunc t 4 .1 0 A1 . 0 1 .05\n"
+        "t texfunc t2 8 .1 0 0 . -rz 90 -s 2 0 0\n"
+        "t2 plastic m 0 0 5 1 1 1 0 0\n");
     ChainResult r = f.at("m", {0, 0, 0});
     ASSERT_EQ(r.count, 1);
     // t2: (.1, 0, 0) rotated to +y, not scaled (t_func.c divides by the scale: RADIANCE
@@ -147,8 +151,9 @@ TEST_F(SurfaceChain, TexdataCallsItsFunctionsWithTheThreeValues) {
     writeFile(f.dir.file("x.dat"), "1\n0 1 2\n0 1\n");
     writeFile(f.dir.file("z.dat"), "1\n0 1 2\n1 1\n");
     writeFile(f.dir.file("t.cal"), "px(a, b, c) = a*c;\npz(a, b, c) = b;\n");
-    f.load("void texdata td 8 px pz pz x.dat z.dat x.dat t.cal Py 0 0\n"
-           "td plastic m 0 0 5 1 1 1 0 0\n");
+    f.load(
+        "void texdata td 8 px pz pz x.dat z.dat x.dat t.cal Py 0 0\n"
+        "td plastic m 0 0 5 1 1 1 0 0\n");
     Vec3 p = f.at("m", {0, 0.5, 0}).layers[0].perturbation;
     EXPECT_NEAR(p.x, 0.25, 1e-12);  // a = c = x.dat at .5
     EXPECT_NEAR(p.y, 1.0, 1e-12);
@@ -156,10 +161,11 @@ TEST_F(SurfaceChain, TexdataCallsItsFunctionsWithTheThreeValues) {
 }
 
 TEST_F(SurfaceChain, MixfuncSplitsIntoWeightedLayers) {
-    f.load("void plastic red 0 0 5 1 0 0 0 0\n"
-           "void plastic blue 0 0 5 0 0 1 0 0\n"
-           "void mixfunc mx 4 red blue .25 . 0 0\n"
-           "void mixfunc all 4 red blue Px . 0 0\n");
+    f.load(
+        "void plastic red 0 0 5 1 0 0 0 0\n"
+        "void plastic blue 0 0 5 0 0 1 0 0\n"
+        "void mixfunc mx 4 red blue .25 . 0 0\n"
+        "void mixfunc all 4 red blue Px . 0 0\n");
     ChainResult r = f.at("mx", {0, 0, 0});
     ASSERT_EQ(r.count, 2);
     EXPECT_EQ(r.layers[0].material, f.mod("red"));
@@ -176,8 +182,9 @@ TEST_F(SurfaceChain, MixfuncSplitsIntoWeightedLayers) {
 }
 
 TEST_F(SurfaceChain, VoidSideOfAMaterialMixtureIsTransparent) {
-    f.load("void plastic red 0 0 5 1 0 0 0 0\n"
-           "void mixfunc cut 4 red void .3 . 0 0\n");
+    f.load(
+        "void plastic red 0 0 5 1 0 0 0 0\n"
+        "void mixfunc cut 4 red void .3 . 0 0\n");
     ChainResult r = f.at("cut", {0, 0, 0});
     ASSERT_EQ(r.count, 2);
     EXPECT_EQ(r.layers[0].material, f.mod("red"));
@@ -187,11 +194,12 @@ TEST_F(SurfaceChain, VoidSideOfAMaterialMixtureIsTransparent) {
 }
 
 TEST_F(SurfaceChain, MixtureOfPatternsBlendsColourAndPerturbation) {
-    f.load("void brightfunc two 2 2 . 0 0\n"
-           "void brightfunc four 2 4 . 0 0\n"
-           "four texfunc bump 4 0 0 1 . 0 0\n"
-           "void mixfunc mp 4 two bump .25 . 0 0\n"
-           "mp plastic m 0 0 5 1 1 1 0 0\n");
+    f.load(
+        "void brightfunc two 2 2 . 0 0\n"
+        "void brightfunc four 2 4 . 0 0\n"
+        "four texfunc bump 4 0 0 1 . 0 0\n"
+        "void mixfunc mp 4 two bump .25 . 0 0\n"
+        "mp plastic m 0 0 5 1 1 1 0 0\n");
     ChainResult r = f.at("m", {0, 0, 0});
     ASSERT_EQ(r.count, 1);
     EXPECT_EQ(r.layers[0].material, f.mod("m"));
@@ -200,10 +208,11 @@ TEST_F(SurfaceChain, MixtureOfPatternsBlendsColourAndPerturbation) {
 }
 
 TEST_F(SurfaceChain, MaterialPatternsApplyInsideEachLayer) {
-    f.load("void brightfunc half 2 .5 . 0 0\n"
-           "half plastic red 0 0 5 1 0 0 0 0\n"
-           "void plastic blue 0 0 5 0 0 1 0 0\n"
-           "void mixfunc mx 4 red blue .5 . 0 0\n");
+    f.load(
+        "void brightfunc half 2 .5 . 0 0\n"
+        "half plastic red 0 0 5 1 0 0 0 0\n"
+        "void plastic blue 0 0 5 0 0 1 0 0\n"
+        "void mixfunc mx 4 red blue .5 . 0 0\n");
     ChainResult r = f.at("mx", {0, 0, 0});
     ASSERT_EQ(r.count, 2);
     expectColor(r.layers[0].pattern, .5, .5, .5);
@@ -211,11 +220,12 @@ TEST_F(SurfaceChain, MaterialPatternsApplyInsideEachLayer) {
 }
 
 TEST_F(SurfaceChain, NestedMixturesMultiplyWeights) {
-    f.load("void plastic a 0 0 5 1 0 0 0 0\n"
-           "void plastic b 0 0 5 0 1 0 0 0\n"
-           "void plastic c 0 0 5 0 0 1 0 0\n"
-           "void mixfunc ab 4 a b .5 . 0 0\n"
-           "void mixfunc abc 4 ab c .4 . 0 0\n");
+    f.load(
+        "void plastic a 0 0 5 1 0 0 0 0\n"
+        "void plastic b 0 0 5 0 1 0 0 0\n"
+        "void plastic c 0 0 5 0 0 1 0 0\n"
+        "void mixfunc ab 4 a b .5 . 0 0\n"
+        "void mixfunc abc 4 ab c .4 . 0 0\n");
     ChainResult r = f.at("abc", {0, 0, 0});
     ASSERT_EQ(r.count, 3);
     EXPECT_EQ(r.layers[0].material, f.mod("a"));
@@ -227,11 +237,12 @@ TEST_F(SurfaceChain, NestedMixturesMultiplyWeights) {
 }
 
 TEST_F(SurfaceChain, MoreThanFourLayersChooseSidesAtRandomWithTheRightExpectation) {
-    f.load("void plastic a 0 0 5 1 0 0 0 0\nvoid plastic b 0 0 5 0 1 0 0 0\n"
-           "void plastic c 0 0 5 0 0 1 0 0\nvoid plastic d 0 0 5 1 1 0 0 0\n"
-           "void plastic e 0 0 5 0 1 1 0 0\n"
-           "void mixfunc ab 4 a b .5 . 0 0\nvoid mixfunc cd 4 c d .5 . 0 0\n"
-           "void mixfunc abcd 4 ab cd .5 . 0 0\nvoid mixfunc all 4 abcd e .8 . 0 0\n");
+    f.load(
+        "void plastic a 0 0 5 1 0 0 0 0\nvoid plastic b 0 0 5 0 1 0 0 0\n"
+        "void plastic c 0 0 5 0 0 1 0 0\nvoid plastic d 0 0 5 1 1 0 0 0\n"
+        "void plastic e 0 0 5 0 1 1 0 0\n"
+        "void mixfunc ab 4 a b .5 . 0 0\nvoid mixfunc cd 4 c d .5 . 0 0\n"
+        "void mixfunc abcd 4 ab cd .5 . 0 0\nvoid mixfunc all 4 abcd e .8 . 0 0\n");
     const int n = 20000;
     double sum[5] = {};
     for (int i = 0; i < n; ++i) {
@@ -263,9 +274,10 @@ TEST_F(SurfaceChain, MixdataAndMixpictCoefficients) {
     Picture pic(1, 1);
     pic.at(0, 0) = {.5, .5, .5};
     writePicture(f.dir.file("g.hdr"), pic);
-    f.load("void plastic a 0 0 5 1 0 0 0 0\nvoid plastic b 0 0 5 0 1 0 0 0\n"
-           "void mixdata md 6 a b noop c.dat . Px 0 0\n"
-           "void mixpict mp 7 a b grey g.hdr picture.cal pic_u pic_v 0 0\n");
+    f.load(
+        "void plastic a 0 0 5 1 0 0 0 0\nvoid plastic b 0 0 5 0 1 0 0 0\n"
+        "void mixdata md 6 a b noop c.dat . Px 0 0\n"
+        "void mixpict mp 7 a b grey g.hdr picture.cal pic_u pic_v 0 0\n");
     ChainResult r = f.at("md", {0.3, 0, 0});
     ASSERT_EQ(r.count, 2);
     EXPECT_NEAR(r.layers[0].weight, .3, 1e-12);
@@ -276,14 +288,16 @@ TEST_F(SurfaceChain, MixdataAndMixpictCoefficients) {
 
 TEST_F(SurfaceChain, TextPatternsAndMixtext) {
     // 'A' fills its cell; 'B' only the left part (x < 100).
-    writeFile(f.dir.file("tiny.fnt"), "# test font\n65 4 0 0 255 0 255 255 0 255\n"
-                                      "66 4 0 0 100 0 100 255 0 255\n32 0\n");
-    f.load("void plastic fg 0 0 5 1 0 0 0 0\nvoid plastic bg 0 0 5 0 1 0 0 0\n"
-           "void colortext ct 3 tiny.fnt . AB 0 15 0 1 0 1 0 0 0 -1 0 2 3 4 .5 .5 .5\n"
-           "ct plastic m 0 0 5 1 1 1 0 0\n"
-           "void brighttext bt 3 tiny.fnt . AB 0 11 0 1 0 1 0 0 0 -1 0 5 1\n"
-           "bt plastic mb 0 0 5 1 1 1 0 0\n"
-           "void mixtext mt 5 fg bg tiny.fnt . AB 0 9 0 1 0 1 0 0 0 -1 0\n");
+    writeFile(f.dir.file("tiny.fnt"),
+              "# test font\n65 4 0 0 255 0 255 255 0 255\n"
+              "66 4 0 0 100 0 100 255 0 255\n32 0\n");
+    f.load(
+        "void plastic fg 0 0 5 1 0 0 0 0\nvoid plastic bg 0 0 5 0 1 0 0 0\n"
+        "void colortext ct 3 tiny.fnt . AB 0 15 0 1 0 1 0 0 0 -1 0 2 3 4 .5 .5 .5\n"
+        "ct plastic m 0 0 5 1 1 1 0 0\n"
+        "void brighttext bt 3 tiny.fnt . AB 0 11 0 1 0 1 0 0 0 -1 0 5 1\n"
+        "bt plastic mb 0 0 5 1 1 1 0 0\n"
+        "void mixtext mt 5 fg bg tiny.fnt . AB 0 9 0 1 0 1 0 0 0 -1 0\n");
     // The text's upper left corner is (0,1); one character per unit of x, line 0 is
     // y in (0,1].
     expectColor(f.at("m", {0.5, 0.5, 0}).layers[0].pattern, 2, 3, 4);
@@ -303,8 +317,9 @@ TEST_F(SurfaceChain, TextFromAFileHasOneLinePerFileLine) {
     // RADIANCE compat: a character without a glyph takes no room, so the space needs one.
     writeFile(f.dir.file("tiny.fnt"), "65 4 0 0 255 0 255 255 0 255\n32 0\n");
     writeFile(f.dir.file("lines.txt"), "A\n A\n");
-    f.load("void brighttext bt 2 tiny.fnt lines.txt 0 11 0 2 0 1 0 0 0 -1 0 1 0\n"
-           "bt plastic m 0 0 5 1 1 1 0 0\n");
+    f.load(
+        "void brighttext bt 2 tiny.fnt lines.txt 0 11 0 2 0 1 0 0 0 -1 0 1 0\n"
+        "bt plastic m 0 0 5 1 1 1 0 0\n");
     EXPECT_EQ(f.at("m", {0.5, 1.5, 0}).layers[0].pattern.r, 1);
     EXPECT_EQ(f.at("m", {1.5, 1.5, 0}).layers[0].pattern.r, 0);
     EXPECT_EQ(f.at("m", {0.5, 0.5, 0}).layers[0].pattern.r, 0);  // the space
@@ -363,10 +378,11 @@ TEST_F(SurfaceChain, DataDimensionsMustMatchTheCoordinates) {
 }
 
 TEST_F(SurfaceChain, MaterialInsideAMaterialsChainConflicts) {
-    f.load("void plastic a 0 0 5 1 0 0 0 0\n"
-           "void mixfunc mx 4 a void .5 . 0 0\n"
-           "mx plastic m 0 0 5 1 1 1 0 0\n"
-           "void spectrum sp 0 0 5 400 500 1 1 1\nsp plastic ms 0 0 5 1 1 1 0 0\n");
+    f.load(
+        "void plastic a 0 0 5 1 0 0 0 0\n"
+        "void mixfunc mx 4 a void .5 . 0 0\n"
+        "mx plastic m 0 0 5 1 1 1 0 0\n"
+        "void spectrum sp 0 0 5 400 500 1 1 1\nsp plastic ms 0 0 5 1 1 1 0 0\n");
     EXPECT_THROW(f.chains->checkChain(f.mod("m")), InputError);
     try {
         f.chains->checkChain(f.mod("ms"));
@@ -384,10 +400,11 @@ TEST_F(SurfaceChain, MaterialInsideAMaterialsChainConflicts) {
 TEST_F(SurfaceChain, LuminaireDataSeesUnitDirectionsThroughAScaledTransform) {
     writeFile(f.dir.file("dist.dat"), "1\n0 90 3\n1 0.5 0\n");
     writeFile(f.dir.file("flat.cal"), "flat(v) = v / Rdot;\ntheta = Acos(Dz) / DEGREE;\n");
-    f.load("void brightdata dist 8 flat dist.dat flat.cal theta -s 0.0254 -rz 90 0 0\n"
-           "dist light lamp 0 0 3 10 10 10\n");
+    f.load(
+        "void brightdata dist 8 flat dist.dat flat.cal theta -s 0.0254 -rz 90 0 0\n"
+        "dist light lamp 0 0 3 10 10 10\n");
     PatternPoint pp;
-    pp.normal = {0, 0, -1};  // facing the floor
+    pp.normal = {0, 0, -1};              // facing the floor
     pp.dir = {0.5, 0, std::sqrt(0.75)};  // from the floor up to the lamp, 30 degrees off
     pp.rdot = -dot(pp.dir, pp.normal);
     f.chains->checkChain(f.mod("lamp"));
@@ -401,20 +418,21 @@ TEST_F(SurfaceChain, LuminaireDataSeesUnitDirectionsThroughAScaledTransform) {
 TEST_F(SurfaceChain, DirectionalOnlyWithoutPositionVariables) {
     writeFile(f.dir.file("d.dat"), "1\n0 1 2\n0 1\n");
     writeFile(f.dir.file("any.cal"), "g = Dz;\nh(x) = x * Py;\nk = h(Dz);\n");
-    f.load("void colorfunc dirs 6 Dx Dy Dz . -rz 90 0 0\n"
-           "dirs brightfunc twice 2 2 . 0 0\n"
-           "twice light a 0 0 3 1 1 1\n"
-           "void brightdata dd 4 noop d.dat . Dz 0 0\n"
-           "dd light b 0 0 3 1 1 1\n"
-           "void brightfunc pos 2 A1*Px+Ts . 0 1 2\n"
-           "pos light c 0 0 3 1 1 1\n"
-           "void brightfunc file 2 g any.cal 0 0\n"
-           "file light d 0 0 3 1 1 1\n"
-           "void brightfunc hidden 2 k any.cal 0 0\n"
-           "hidden light h 0 0 3 1 1 1\n"
-           "void brightfunc half 2 .5 . 0 0\n"
-           "void mixfunc mx 4 half void .5 . 0 0\n"
-           "mx light e 0 0 3 1 1 1\n");
+    f.load(
+        "void colorfunc dirs 6 Dx Dy Dz . -rz 90 0 0\n"
+        "dirs brightfunc twice 2 2 . 0 0\n"
+        "twice light a 0 0 3 1 1 1\n"
+        "void brightdata dd 4 noop d.dat . Dz 0 0\n"
+        "dd light b 0 0 3 1 1 1\n"
+        "void brightfunc pos 2 A1*Px+Ts . 0 1 2\n"
+        "pos light c 0 0 3 1 1 1\n"
+        "void brightfunc file 2 g any.cal 0 0\n"
+        "file light d 0 0 3 1 1 1\n"
+        "void brightfunc hidden 2 k any.cal 0 0\n"
+        "hidden light h 0 0 3 1 1 1\n"
+        "void brightfunc half 2 .5 . 0 0\n"
+        "void mixfunc mx 4 half void .5 . 0 0\n"
+        "mx light e 0 0 3 1 1 1\n");
     auto chainOf = [&](const char* light) { return f.scene->prims[f.mod(light)].modifier; };
     EXPECT_TRUE(f.chains->directionalOnly(chainOf("a")));
     EXPECT_TRUE(f.chains->directionalOnly(chainOf("b")));

@@ -2,11 +2,11 @@
 // directions, and running many photons through scatterPhoton. Test-only.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "material/material.h"
 

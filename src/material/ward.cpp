@@ -14,11 +14,11 @@ namespace {
 struct WardHit {
     Color mcolor, scolor;
     double rspec = 0, trans = 0, tspec = 0, tdiff = 0, rdiff = 0;
-    bool fresnel = false;  // roughness-0 Fresnel estimate in effect
-    double pdot = 1;       // cos(incidence) at the shading normal, >= .001 as RADIANCE
-    Vec3 prdir;            // transmitted direction (texture-perturbed)
-    Vec3 u, v;             // tangent frame (aniso: u along the projected uDir)
-    double au = 0, av = 0; // roughness along u, v
+    bool fresnel = false;   // roughness-0 Fresnel estimate in effect
+    double pdot = 1;        // cos(incidence) at the shading normal, >= .001 as RADIANCE
+    Vec3 prdir;             // transmitted direction (texture-perturbed)
+    Vec3 u, v;              // tangent frame (aniso: u along the projected uDir)
+    double au = 0, av = 0;  // roughness along u, v
 };
 
 bool perturbed(const SurfacePoint& sp) { return lengthSquared(sp.normal - sp.geomNormal) > 1e-12; }
@@ -122,8 +122,8 @@ BackwardResult shadeWard(const WardHit& h, bool pure, const SurfacePoint& sp,
             r.add(ray);
         } else if (opt.specThreshold >= h.rspec - kFtiny) {
             rblt = true;
-        } else if (sampleWardReflection(sp.dir, sp.normal, h.u, h.v, h.au, h.av,
-                                        sp.geomNormal, rng, ray.dir, opt.specJitter)) {
+        } else if (sampleWardReflection(sp.dir, sp.normal, h.u, h.v, h.au, h.av, sp.geomNormal, rng,
+                                        ray.dir, opt.specJitter)) {
             ray.sampled = true;
             r.add(ray);
         }
@@ -138,32 +138,32 @@ BackwardResult shadeWard(const WardHit& h, bool pure, const SurfacePoint& sp,
 
 // The outgoing direction for the roulette's choice `kind` (second half of pmapmat.c
 // normalPhotonScatter/anisoPhotonScatter); false where RADIANCE absorbs the photon.
-bool wardDirection(const WardHit& h, bool pure, const SurfacePoint& sp, ScatterKind kind,
-                   Rng& rng, Vec3& dir) {
+bool wardDirection(const WardHit& h, bool pure, const SurfacePoint& sp, ScatterKind kind, Rng& rng,
+                   Vec3& dir) {
     switch (kind) {
-    case ScatterKind::DiffuseReflection:
-        dir = sampleCosine(sp.normal, rng);
-        return true;
-    case ScatterKind::DiffuseTransmission:
-        dir = sampleCosine(-sp.normal, rng);
-        return true;
-    case ScatterKind::SpecularReflection:
-        if (pure) {
-            dir = sp.dir + sp.normal * (2 * h.pdot);
-            if (perturbed(sp) && dot(dir, sp.geomNormal) <= kFtiny)
-                dir = reflect(sp.dir, sp.geomNormal);
-            dir = normalize(dir);
+        case ScatterKind::DiffuseReflection:
+            dir = sampleCosine(sp.normal, rng);
             return true;
-        }
-        // RADIANCE: no valid sample in MAXITER tries -> absorbed
-        return sampleWardReflection(sp.dir, sp.normal, h.u, h.v, h.au, h.av, sp.geomNormal,
-                                    rng, dir);
-    default:  // SpecularTransmission
-        if (pure) {
-            dir = h.prdir;
+        case ScatterKind::DiffuseTransmission:
+            dir = sampleCosine(-sp.normal, rng);
             return true;
-        }
-        return sampleWardTransmission(h.prdir, h.u, h.v, h.au, h.av, sp.geomNormal, rng, dir);
+        case ScatterKind::SpecularReflection:
+            if (pure) {
+                dir = sp.dir + sp.normal * (2 * h.pdot);
+                if (perturbed(sp) && dot(dir, sp.geomNormal) <= kFtiny)
+                    dir = reflect(sp.dir, sp.geomNormal);
+                dir = normalize(dir);
+                return true;
+            }
+            // RADIANCE: no valid sample in MAXITER tries -> absorbed
+            return sampleWardReflection(sp.dir, sp.normal, h.u, h.v, h.au, h.av, sp.geomNormal, rng,
+                                        dir);
+        default:  // SpecularTransmission
+            if (pure) {
+                dir = h.prdir;
+                return true;
+            }
+            return sampleWardTransmission(h.prdir, h.u, h.v, h.au, h.av, sp.geomNormal, rng, dir);
     }
 }
 
@@ -221,8 +221,7 @@ PhotonScatter scatterNormalFixed(const NormalParams& m, const SurfacePoint& sp, 
 
 }  // namespace
 
-Color evaluateNormal(const NormalParams& m, const SurfacePoint& sp, const Vec3& l,
-                     double omega) {
+Color evaluateNormal(const NormalParams& m, const SurfacePoint& sp, const Vec3& l, double omega) {
     WardHit h = setupNormal(m, sp);
     const Vec3& n = sp.normal;
     double ldot = dot(n, l);
@@ -253,8 +252,8 @@ Color evaluateNormal(const NormalParams& m, const SurfacePoint& sp, const Vec3& 
     return c;
 }
 
-BackwardResult shadeNormal(const NormalParams& m, const SurfacePoint& sp,
-                           const ShadeOptions& opt, Rng& rng) {
+BackwardResult shadeNormal(const NormalParams& m, const SurfacePoint& sp, const ShadeOptions& opt,
+                           Rng& rng) {
     if (!sp.front && !opt.backVisible) {  // normal.c: raytrans() unless -bv
         BackwardResult r;
         r.transparent = true;
@@ -273,8 +272,7 @@ PhotonScatter scatterNormalPerHit(const NormalParams& m, const SurfacePoint& sp,
     return scatterWard(setupNormal(m, sp), m.pureSpecular, sp, rng);
 }
 
-Color evaluateAniso(const AnisoParams& m, const SurfacePoint& sp, const Vec3& l,
-                    double omega) {
+Color evaluateAniso(const AnisoParams& m, const SurfacePoint& sp, const Vec3& l, double omega) {
     WardHit h = setupAniso(m, sp);
     const Vec3& n = sp.normal;
     double ldot = dot(n, l);
@@ -307,8 +305,8 @@ Color evaluateAniso(const AnisoParams& m, const SurfacePoint& sp, const Vec3& l,
     return c;
 }
 
-BackwardResult shadeAniso(const AnisoParams& m, const SurfacePoint& sp,
-                          const ShadeOptions& opt, Rng& rng) {
+BackwardResult shadeAniso(const AnisoParams& m, const SurfacePoint& sp, const ShadeOptions& opt,
+                          Rng& rng) {
     if (!sp.front && !opt.backVisible) {
         BackwardResult r;
         r.transparent = true;

@@ -18,8 +18,8 @@ SurfacePoint at(const Vec3& dir) { return makeSurfacePoint(dir, kUp, true); }
 
 // Expected total scattered flux factor for a Ward material at cos(incidence) `ci`,
 // written out from ray.html/normal.c independently of ward.cpp.
-Color expectedAlbedo(const Color& c, double spec, double rough, double T, double Ts,
-                     bool metal, double ci) {
+Color expectedAlbedo(const Color& c, double spec, double rough, double T, double Ts, bool metal,
+                     double ci) {
     double rspec = spec, fest = 0;
     if (rough * rough <= 1e-6 && spec >= 0.017999) {
         fest = std::exp(-5.85 * ci) - 0.00202943064;
@@ -32,20 +32,35 @@ Color expectedAlbedo(const Color& c, double spec, double rough, double T, double
 }
 
 TEST(WardPhoton, EnergyConservation) {
-    struct Case { PrimType t; std::vector<double> r; bool metal; };
+    struct Case {
+        PrimType t;
+        std::vector<double> r;
+        bool metal;
+    };
     std::vector<Case> cases = {
         {PrimType::Plastic, {.7, .5, .2, .05, .05}, false},
         {PrimType::Plastic, {.7, .5, .2, .05, 0}, false},  // Fresnel estimate active
         {PrimType::Metal, {.9, .6, .3, .9, .03}, true},
         {PrimType::Metal, {.9, .6, .3, .9, 0}, true},
-        {PrimType::Trans, {.6, .7, .8, .04, .03, .6, .4, }, false},
+        {PrimType::Trans,
+         {
+             .6,
+             .7,
+             .8,
+             .04,
+             .03,
+             .6,
+             .4,
+         },
+         false},
         {PrimType::Trans, {.6, .7, .8, .04, 0, .6, .4}, false},
     };
     for (auto& c : cases) {
         MaterialParams m = makeMaterial(prim(c.t, c.r));
         double T = c.r.size() > 5 ? c.r[5] : 0, Ts = c.r.size() > 6 ? c.r[6] : 0;
         for (double theta : {0.0, 30.0, 60.0}) {
-            auto st = test::photonStats(m, 200000, 11, [&](Rng&) { return at(test::incident(theta)); });
+            auto st =
+                test::photonStats(m, 200000, 11, [&](Rng&) { return at(test::incident(theta)); });
             Color want = expectedAlbedo({c.r[0], c.r[1], c.r[2]}, c.r[3], c.r[4], T, Ts, c.metal,
                                         std::cos(theta * kPi / 180));
             test::expectMeanNear(st, want, "albedo");
@@ -88,11 +103,10 @@ TEST(WardPhoton, SmoothSpecularIsExactMirror) {
 
 TEST(WardBackward, Reciprocity) {
     // RADIANCE's reflection model is reciprocal: f(l, v) = evaluate / cos(l) symmetric.
-    std::vector<Primitive> ps = {prim(PrimType::Plastic, {.5, .4, .3, .06, .15}),
-                                 prim(PrimType::Metal, {.9, .7, .4, .8, .08}),
-                                 prim(PrimType::Plastic, {.5, .4, .3, .06, 0}),
-                                 prim(PrimType::Plastic2, {.5, .4, .3, .06, .05, .2},
-                                      {"1", "0", "0", "."})};
+    std::vector<Primitive> ps = {
+        prim(PrimType::Plastic, {.5, .4, .3, .06, .15}),
+        prim(PrimType::Metal, {.9, .7, .4, .8, .08}), prim(PrimType::Plastic, {.5, .4, .3, .06, 0}),
+        prim(PrimType::Plastic2, {.5, .4, .3, .06, .05, .2}, {"1", "0", "0", "."})};
     Rng rng(7, RngDomain::Test, 0);
     for (auto& p : ps) {
         MaterialParams m = makeMaterial(p);
@@ -166,7 +180,9 @@ TEST(WardConsistency, DiffuseForwardMatchesBackward) {
             SurfacePoint sp = makeSurfacePoint(d, front ? kUp : -kUp, front);
             PhotonScatter s = scatterPhoton(m, sp, rng);
             Color f = (s.kind == ScatterKind::DiffuseReflection ||
-                       s.kind == ScatterKind::DiffuseTransmission) ? s.fluxFactor : Color{};
+                       s.kind == ScatterKind::DiffuseTransmission)
+                          ? s.fluxFactor
+                          : Color{};
             fwd += f, fwd2 += f * f;
         }
         // Backward: integrate evaluate() over the full sphere of light directions with a

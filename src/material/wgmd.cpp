@@ -72,7 +72,7 @@ namespace {
 
 // One specular component at a hit (m_wgmdf.c SCOMP).
 struct Lobe {
-    Color color;            // coefficient times its modifier's pattern (black: none)
+    Color color;  // coefficient times its modifier's pattern (black: none)
     bool on = false;
     bool pure = false;      // ideal: roughness 0
     Vec3 n, u, v;           // shading normal on the ray's side and tangent frame
@@ -81,12 +81,12 @@ struct Lobe {
 
 // Per-hit values, the analogue of WGMDDAT.
 struct WgmdHit {
-    Color rd, td;          // diffuse reflection (front or back colour), transmission
-    Vec3 nrd, ntd;         // their normals
+    Color rd, td;   // diffuse reflection (front or back colour), transmission
+    Vec3 nrd, ntd;  // their normals
     Lobe rs, ts;
-    double fest = 0;       // Fresnel estimate for the view where it applies, else 0
+    double fest = 0;  // Fresnel estimate for the view where it applies, else 0
     bool fresnel = false;
-    Vec3 prdir;            // through direction for specular transmission
+    Vec3 prdir;  // through direction for specular transmission
 };
 
 // set_scomp: the coefficient, roughness and frame of one specular part.
@@ -200,8 +200,10 @@ BackwardResult shadeWgmd(const WgmdParams& m, const SurfacePoint& sp, const Shad
         return r;
     }
     const WgmdHit h = setupWgmd(m, sp);
-    const bool rblt = h.rs.on && !h.rs.pure && opt.specThreshold >= h.rs.color.brightness() - kFtiny;
-    const bool tblt = h.ts.on && !h.ts.pure && opt.specThreshold >= h.ts.color.brightness() - kFtiny;
+    const bool rblt =
+        h.rs.on && !h.rs.pure && opt.specThreshold >= h.rs.color.brightness() - kFtiny;
+    const bool tblt =
+        h.ts.on && !h.ts.pure && opt.specThreshold >= h.ts.color.brightness() - kFtiny;
     if (h.ts.on && h.ts.pure) {
         r.add(makeRay(h.prdir, h.ts.color, ScatterKind::SpecularTransmission));
     }
@@ -214,14 +216,14 @@ BackwardResult shadeWgmd(const WgmdParams& m, const SurfacePoint& sp, const Shad
     // RADIANCE; a ray has room for two, and an ideal part excludes a rough one).
     if (h.rs.on && !h.rs.pure && !rblt && r.numRays < 2) {
         SpecularRay ray = makeRay({}, h.rs.color, ScatterKind::SpecularReflection, true);
-        if (sampleWardReflection(sp.dir, h.rs.n, h.rs.u, h.rs.v, h.rs.au, h.rs.av,
-                                 sp.geomNormal, rng, ray.dir, opt.specJitter))
+        if (sampleWardReflection(sp.dir, h.rs.n, h.rs.u, h.rs.v, h.rs.au, h.rs.av, sp.geomNormal,
+                                 rng, ray.dir, opt.specJitter))
             r.add(ray);
     }
     if (h.ts.on && !h.ts.pure && !tblt && r.numRays < 2) {
         SpecularRay ray = makeRay({}, h.ts.color, ScatterKind::SpecularTransmission, true);
-        if (sampleWardTransmission(h.prdir, h.ts.u, h.ts.v, h.ts.au, h.ts.av, sp.geomNormal,
-                                   rng, ray.dir, opt.specJitter))
+        if (sampleWardTransmission(h.prdir, h.ts.u, h.ts.v, h.ts.au, h.ts.av, sp.geomNormal, rng,
+                                   ray.dir, opt.specJitter))
             r.add(ray);
     }
     // RADIANCE compat: a part below -st joins the ambient only where its side has a
@@ -265,8 +267,8 @@ bool scatterReflLobe(const Lobe& s, const SurfacePoint& sp, Rng& rng, Vec3& out,
 // f cos(out) / pdf with pdf = slope density |t|^3. Draws on the incident side are
 // absorbed (the model is zero there). This BTDF is symmetric in its two directions, so
 // the backward model's value for light from `out` is the photon's.
-bool scatterTransLobe(const Lobe& s, const WgmdHit& h, const SurfacePoint& sp, Rng& rng,
-                      Vec3& out, double& w) {
+bool scatterTransLobe(const Lobe& s, const WgmdHit& h, const SurfacePoint& sp, Rng& rng, Vec3& out,
+                      double& w) {
     const Vec3& p = h.prdir;
     Vec3 vp = s.v - p * dot(s.v, p);
     if (lengthSquared(vp) <= 1e-24) return false;  // p along v: a grazing through direction
@@ -304,25 +306,27 @@ PhotonScatter scatterWgmd(const WgmdParams& m, const SurfacePoint& sp, Rng& rng)
     double w = 1;
     bool ok = true;
     switch (c[i].kind) {
-    case ScatterKind::DiffuseReflection:
-    case ScatterKind::DiffuseTransmission:
-        s.dir = sampleCosine(i == 0 ? h.nrd : -h.ntd, rng);
-        // The outgoing side's Fresnel factor, as the backward model's for the light.
-        if (h.fresnel) w = 1 - fresnelEstimate(std::fabs(dot(s.dir, h.rs.n)));
-        break;
-    case ScatterKind::SpecularReflection:
-        if (h.rs.pure) {
-            Vec3 d = reflect(sp.dir, h.rs.n);
-            if (dot(d, sp.geomNormal) <= 0) d = reflect(sp.dir, sp.geomNormal);
-            s.dir = normalize(d);
-        } else {
-            ok = scatterReflLobe(h.rs, sp, rng, s.dir, w);
-        }
-        break;
-    default:
-        if (h.ts.pure) s.dir = h.prdir;
-        else ok = scatterTransLobe(h.ts, h, sp, rng, s.dir, w);
-        break;
+        case ScatterKind::DiffuseReflection:
+        case ScatterKind::DiffuseTransmission:
+            s.dir = sampleCosine(i == 0 ? h.nrd : -h.ntd, rng);
+            // The outgoing side's Fresnel factor, as the backward model's for the light.
+            if (h.fresnel) w = 1 - fresnelEstimate(std::fabs(dot(s.dir, h.rs.n)));
+            break;
+        case ScatterKind::SpecularReflection:
+            if (h.rs.pure) {
+                Vec3 d = reflect(sp.dir, h.rs.n);
+                if (dot(d, sp.geomNormal) <= 0) d = reflect(sp.dir, sp.geomNormal);
+                s.dir = normalize(d);
+            } else {
+                ok = scatterReflLobe(h.rs, sp, rng, s.dir, w);
+            }
+            break;
+        default:
+            if (h.ts.pure)
+                s.dir = h.prdir;
+            else
+                ok = scatterTransLobe(h.ts, h, sp, rng, s.dir, w);
+            break;
     }
     if (!ok) return s;
     s.kind = c[i].kind;

@@ -15,10 +15,9 @@ using test::prim;
 MaterialParams wgmd(std::vector<double> r, const std::string& rs, const std::string& rsU,
                     const std::string& rsV, const std::string& ts, const std::string& tsU,
                     const std::string& tsV, const std::string& ux = "1", int line = 7) {
-    return makeMaterial(prim(PrimType::WGMDfunc, std::move(r),
-                             {"void", rs, rsU, rsV, "void", ts, tsU, tsV, "void", ux, "0", "0",
-                              "."},
-                             line));
+    return makeMaterial(
+        prim(PrimType::WGMDfunc, std::move(r),
+             {"void", rs, rsU, rsV, "void", ts, tsU, tsV, "void", ux, "0", "0", "."}, line));
 }
 
 SurfacePoint at(const Vec3& dir, const Vec3& facing = {0, 0, 1}) {
@@ -27,8 +26,8 @@ SurfacePoint at(const Vec3& dir, const Vec3& facing = {0, 0, 1}) {
 
 TEST(Wgmdfunc, ParamsFollowRayHtmlLayout) {
     Primitive p = prim(PrimType::WGMDfunc, {.1, .2, .3, .4, .5, .6, .7, .8, .9, 42},
-                       {"inherit", "rs", ".05", "rv", "pat", ".2", "0", "0", "void", "ux", "0",
-                        "1", "w.cal", "-rz", "90"});
+                       {"inherit", "rs", ".05", "rv", "pat", ".2", "0", "0", "void", "ux", "0", "1",
+                        "w.cal", "-rz", "90"});
     p.modifierName = "pat";
     const auto m = std::get<WgmdParams>(makeMaterial(p));
     using M = WgmdParams::Mod;
@@ -67,15 +66,15 @@ TEST(Wgmdfunc, NonFiniteRealIsAnErrorAtItsLine) {
 TEST(Wgmdfunc, ReducesToPlastic2AndTrans2) {
     const Color c{.5, .3, .2};
     const double s = .08, ur = .05, vr = .2;
-    auto p2 = makeMaterial(prim(PrimType::Plastic2, {c.r, c.g, c.b, s, ur, vr},
-                                {"1", "0", "0", "."}));
+    auto p2 =
+        makeMaterial(prim(PrimType::Plastic2, {c.r, c.g, c.b, s, ur, vr}, {"1", "0", "0", "."}));
     const Color rd = c * (1 - s);
     auto w = wgmd({rd.r, rd.g, rd.b, rd.r, rd.g, rd.b, 0, 0, 0}, ".08", ".05", ".2", "0", "0", "0");
     // trans2 .6 grey, spec .05, ur .1 vr .15, trans .4, tspec .5
     const double g = .6, sp = .05, t = .4 * (1 - sp), tspec = t * .5, tdiff = t - tspec;
     const double rdiff = 1 - t - sp;
-    auto t2 = makeMaterial(prim(PrimType::Trans2, {g, g, g, sp, .1, .15, .4, .5},
-                                {"1", "0", "0", "."}));
+    auto t2 =
+        makeMaterial(prim(PrimType::Trans2, {g, g, g, sp, .1, .15, .4, .5}, {"1", "0", "0", "."}));
     auto wt = wgmd({g * rdiff, g * rdiff, g * rdiff, g * rdiff, g * rdiff, g * rdiff, g * tdiff,
                     g * tdiff, g * tdiff},
                    ".05", ".1", ".15", std::to_string(g * tspec), ".1", ".15");
@@ -108,7 +107,8 @@ TEST(Wgmdfunc, SmoothReducesToPlastic) {
             const Color x = evaluate(pl, pt, l), y = evaluate(w, pt, l);
             for (int k = 0; k < 3; ++k) EXPECT_NEAR(y[k], x[k], 1e-12) << th;
         }
-        const BackwardResult a = shadeBackward(pl, pt, opt, rng), b = shadeBackward(w, pt, opt, rng);
+        const BackwardResult a = shadeBackward(pl, pt, opt, rng),
+                             b = shadeBackward(w, pt, opt, rng);
         ASSERT_EQ(a.numRays, 1);
         ASSERT_EQ(b.numRays, 1);
         EXPECT_NEAR(b.rays[0].weight.r, a.rays[0].weight.r, 1e-12);
@@ -159,8 +159,7 @@ TEST(Wgmdfunc, RaysAndSpecularThreshold) {
 // f(i, o) = f(o, i) for the rough reflection and transmission (no texture), to 1e-5
 // absolute: RADIANCE drops a lobe value below FTINY before its cosine factor.
 TEST(Wgmdfunc, Reciprocal) {
-    auto w = wgmd({.2, .1, .1, .2, .1, .1, .1, .1, .1}, ".1", ".08", ".25", ".3", ".12", ".2",
-                  "1");
+    auto w = wgmd({.2, .1, .1, .2, .1, .1, .1, .1, .1}, ".1", ".08", ".25", ".3", ".12", ".2", "1");
     Rng rng(9, RngDomain::Test, 0);
     int checked = 0;
     for (int i = 0; i < 4000; ++i) {

@@ -37,22 +37,20 @@ double BiasCompStats::rmsError() const {
 
 std::string BiasCompStats::report(const char* photonType) const {
     if (!lookups) return {};
-    return fmt::format("{}/{}/{:.1f} {}, ({:.3f}/{:.3f}/{:.3f} error)", minBandwidth,
-                       maxBandwidth, meanBandwidth(), photonType, minError, maxError,
-                       rmsError());
+    return fmt::format("{}/{}/{:.1f} {}, ({:.3f}/{:.3f}/{:.3f} error)", minBandwidth, maxBandwidth,
+                       meanBandwidth(), photonType, minError, maxError, rmsError());
 }
 
-BiasCompResult compensateBias(std::span<FoundPhoton> hits, double searchDist2, bool full,
-                              int bwMin, int bwMax,
-                              std::vector<std::array<double, 3>>& prefix) {
+BiasCompResult compensateBias(std::span<FoundPhoton> hits, double searchDist2, bool full, int bwMin,
+                              int bwMax, std::vector<std::array<double, 3>>& prefix) {
     BiasCompResult res;
     const size_t m = hits.size();
     if (m < 2) return res;
     // Ties broken by the photons' contents so the order (and so the sums) never depends
     // on the search or the store.
     auto key = [](const FoundPhoton& f) {
-        return std::tuple(f.dist2, f.flux[0], f.flux[1], f.flux[2], f.flux[3], f.norm[0],
-                          f.norm[1], f.norm[2], f.flags, f.primary);
+        return std::tuple(f.dist2, f.flux[0], f.flux[1], f.flux[2], f.flux[3], f.norm[0], f.norm[1],
+                          f.norm[2], f.flags, f.primary);
     };
     std::sort(hits.begin(), hits.end(),
               [&](const FoundPhoton& a, const FoundPhoton& b) { return key(a) < key(b); });

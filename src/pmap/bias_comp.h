@@ -75,8 +75,7 @@ struct BiasCompResult {
 // radius^2 of the lookup, `full` whether the search filled its queue (then the furthest
 // photon only sets the radius of E(m-1)). `prefix` is scratch (reused, no allocation once
 // large enough). Deterministic: depends on nothing else.
-BiasCompResult compensateBias(std::span<FoundPhoton> hits, double searchDist2, bool full,
-                              int bwMin, int bwMax,
-                              std::vector<std::array<double, 3>>& prefix);
+BiasCompResult compensateBias(std::span<FoundPhoton> hits, double searchDist2, bool full, int bwMin,
+                              int bwMax, std::vector<std::array<double, 3>>& prefix);
 
 }  // namespace rp::pmap

@@ -80,7 +80,7 @@ TEST(BiasComp, StaysSmallNextToDensityEdge) {
     // step, so the compensation is partial (bias_comp.h).
     EXPECT_LT(stats.meanBandwidth(), 0.6 * 500) << stats.report("global");
     EXPECT_GE(stats.minBandwidth, 50);
-    EXPECT_LT(errFixed / m, -0.15);                       // fixed bandwidth: strongly biased
+    EXPECT_LT(errFixed / m, -0.15);  // fixed bandwidth: strongly biased
     EXPECT_LT(std::abs(errComp / m), 0.6 * std::abs(errFixed / m));  // compensated: less
 }
 

@@ -1,6 +1,8 @@
 // Contribution photon distribution, source by source (contrib.h).
 #include "pmap/contrib.h"
 
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -8,8 +10,6 @@
 #include <cstdio>
 #include <mutex>
 #include <ostream>
-
-#include <tbb/task_arena.h>
 
 #include "pmap/chunk_stream.h"
 #include "pmap/distribute.h"
@@ -52,7 +52,8 @@ PrimaryRay primaryRay(const light::EmissionPlan& plan, uint64_t seed, uint64_t i
 
 class Reporter {
 public:
-    explicit Reporter(const ContribSettings& s) : s_(s), start_(Clock::now()), next_(s.reportSeconds) {}
+    explicit Reporter(const ContribSettings& s)
+        : s_(s), start_(Clock::now()), next_(s.reportSeconds) {}
     void add(uint64_t emitted, uint64_t stored) {
         emitted_.fetch_add(emitted, std::memory_order_relaxed);
         stored_.fetch_add(stored, std::memory_order_relaxed);
@@ -97,9 +98,9 @@ void decode(ByteReader& r, PathBatch& b) {
 // Traces [begin, end) over threads and ranks (chunk_stream.h); the root gets the paths in
 // index order. `rays` (may be null): the plan to record each storing path's primary ray
 // from.
-PathBatch traceRange(const PhotonTracer& tracer, tbb::task_arena& arena,
-                     const ContribSettings& s, uint64_t seed, uint64_t begin, uint64_t end,
-                     Reporter& reporter, const light::EmissionPlan* rays) {
+PathBatch traceRange(const PhotonTracer& tracer, tbb::task_arena& arena, const ContribSettings& s,
+                     uint64_t seed, uint64_t begin, uint64_t end, Reporter& reporter,
+                     const light::EmissionPlan* rays) {
     PathBatch out;
     if (end <= begin) return out;
     std::array<double, kNumPhotonMapTypes> all{};
@@ -173,8 +174,8 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
         uint64_t pass = std::max<uint64_t>(1, uint64_t(std::ceil(settings.preDistrib * srcTarget)));
         uint64_t stored = 0;  // the root's count, known to every rank
         for (int prepass = 1; prepass <= settings.maxPrepass; ++prepass, pass *= 2) {
-            batch.append(traceRange(tracer, arena, settings, seed, emitted, emitted + pass,
-                                    reporter, rays));
+            batch.append(
+                traceRange(tracer, arena, settings, seed, emitted, emitted + pass, reporter, rays));
             emitted += pass;
             stored = broadcastValue(settings.cluster, uint64_t(batch.photons.size()));
             if (stored > 0) break;
@@ -203,7 +204,8 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
         size_t k = 0;
         result.photons.reserve(result.photons.size() + batch.photons.size());
         if (settings.primaryRays)
-            result.primaryRays.insert(result.primaryRays.end(), batch.rays.begin(), batch.rays.end());
+            result.primaryRays.insert(result.primaryRays.end(), batch.rays.begin(),
+                                      batch.rays.end());
         for (uint32_t n : batch.pathSizes) {
             const uint32_t primary = uint32_t(result.primaries.size());
             result.primaries.push_back(PhotonPrimary{int16_t(s)});

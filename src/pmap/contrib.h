@@ -40,8 +40,8 @@ struct ContribResult {
     std::vector<Photon> photons;  // normalised flux, primary = index into primaries
     std::vector<PhotonPrimary> primaries;
     std::vector<PrimaryRay> primaryRays;  // one per primary with primaryRays, else empty
-    std::vector<uint64_t> emitted;  // per source (index into plan.sources())
-    std::vector<uint64_t> stored;   // per source
+    std::vector<uint64_t> emitted;        // per source (index into plan.sources())
+    std::vector<uint64_t> stored;         // per source
     uint64_t totalEmitted = 0;
     long runaways = 0;
 };

@@ -15,8 +15,8 @@
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon_map.h"
 #include "pmap/pmap_test_util.h"
-#include "util/temp_dir_for_tests.h"
 #include "util/shared_for_tests.h"
+#include "util/temp_dir_for_tests.h"
 
 namespace rp::pmap {
 namespace {

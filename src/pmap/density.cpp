@@ -44,8 +44,7 @@ std::span<const FoundPhoton> PhotonLookup::findPhotons(const Vec3& pos, const Ve
 }
 
 // hits_[0] is the furthest, the others in no particular order (PhotonStore::findNearest).
-std::span<FoundPhoton> PhotonLookup::search(const Vec3& pos, const Vec3* normal,
-                                            size_t queueLen) {
+std::span<FoundPhoton> PhotonLookup::search(const Vec3& pos, const Vec3* normal, size_t queueLen) {
     lastSearchDist2_ = static_cast<float>(maxDist2_);
     const PhotonQuery query{pos, normal, causticOnly_, lastSearchDist2_, queueLen};
     found_ = map_->store().findNearest(*cursor_, query, hits_);
@@ -146,9 +145,8 @@ std::array<double, 3> PhotonLookup::biasCompensatedDensity(const Vec3& pos, cons
     const size_t queueLen = static_cast<size_t>(upper) + 1;
     if (hits_.size() < queueLen) hits_.resize(queueLen);
     auto hits = search(pos, &normal, queueLen);
-    const BiasCompResult r = compensateBias(hits, lastSearchDist2_,
-                                            hits.size() == queueLen, std::min(bwMin, upper),
-                                            upper, biasPrefix_);
+    const BiasCompResult r = compensateBias(hits, lastSearchDist2_, hits.size() == queueLen,
+                                            std::min(bwMin, upper), upper, biasPrefix_);
     // compensateBias sorted the hits: no longer a heap, so forget them.
     found_ = 0;
     if (stats && r.bandwidth > 0) stats->add(r.bandwidth, r.relError);

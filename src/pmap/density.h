@@ -23,7 +23,7 @@ struct LookupParams {
     int bandwidth = 40;  // photons per density estimate (-ap file bwidth; RADIANCE default 40)
     double maxSearchRadius = 0;    // -am: fixed maximum search radius (not squared); 0 = automatic
     double gatherTolerance = 0.5;  // short lookup: found < tolerance x queue length (contrib: 1)
-    bool causticOnly = false;      // only caustic photons (a contribution map's, at non-ambient hits)
+    bool causticOnly = false;  // only caustic photons (a contribution map's, at non-ambient hits)
 };
 
 // Per-thread lookup state for one photon map: the result buffer (k+1 entries, allocated once)

@@ -163,7 +163,7 @@ TEST(Density, PrecompTakesNearestPhotonFlux) {
     map.makeSearchable();
     PhotonLookup lookup(map, LookupParams{1, 0, 0.5});
     auto e = lookup.precompDensity(Vec3(0.3, 0, 0), Vec3(0, 0, 1));  // skips the -z photon
-    const auto want = v[0].fluxRgb();  // the nearest facing +z
+    const auto want = v[0].fluxRgb();                                // the nearest facing +z
     EXPECT_EQ(e, (std::array<double, 3>{want[0], want[1], want[2]}));
     EXPECT_NEAR(e[0], 1, 0.01);
 }

@@ -1,6 +1,10 @@
 // Photon distribution: prepass, prediction, main pass, normalisation (distribute.h).
 #include "pmap/distribute.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -9,10 +13,6 @@
 #include <memory>
 #include <mutex>
 #include <ostream>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include "pmap/chunk_stream.h"
 #include "util/error.h"
@@ -165,7 +165,8 @@ double traceStreamed(const PhotonTracer& tracer, tbb::task_arena& arena,
                 for (size_t m = 0; m < t.final.size(); ++m) {
                     auto& raw = t.bins.maps[m];
                     t.final[m].reserve(raw.size());
-                    for (const RawPhoton& r : raw) t.final[m].push_back(finalPhoton(r, (*scale)[m]));
+                    for (const RawPhoton& r : raw)
+                        t.final[m].push_back(finalPhoton(r, (*scale)[m]));
                     std::vector<RawPhoton>().swap(raw);
                 }
             return t;
@@ -175,8 +176,8 @@ double traceStreamed(const PhotonTracer& tracer, tbb::task_arena& arena,
 
 // Appends the kept prepass deposits of `block` (u < prob) to `out` as final records
 // scaled by `scale`, converted in parallel, appended in order.
-void thinBlock(std::span<const RawPhoton> block, double prob, double scale,
-               tbb::task_arena& arena, RecordStore<Photon>& out) {
+void thinBlock(std::span<const RawPhoton> block, double prob, double scale, tbb::task_arena& arena,
+               RecordStore<Photon>& out) {
     std::vector<Photon> converted(block.size());
     std::vector<uint8_t> keep(block.size());
     arena.execute([&] {
@@ -231,18 +232,19 @@ Prepass runPrepass(const PhotonTracer& tracer, tbb::task_arena& arena,
     // doubling, and those copies and their page faults were ~1 % of a Cornell run.
     std::array<double, kNumPhotonMapTypes> perPhoton{};
     for (size_t t : active) perPhoton[t] = 2;
-    uint64_t passSize = std::max<uint64_t>(
-        1, uint64_t(std::ceil(settings.preDistrib * double(minTarget))));
+    uint64_t passSize =
+        std::max<uint64_t>(1, uint64_t(std::ceil(settings.preDistrib * double(minTarget))));
     for (;;) {
         progress.setPass(pre.emitted, pre.emitted + passSize);
-        pre.storingSeconds += traceStreamed(
-            tracer, arena, settings, pre.emitted, pre.emitted + passSize, all, perPhoton,
-            nullptr, [&](const Traced& c) {
-                progress.add(c.photons, c.counts());
-                pre.runaways += c.bins.runaways;
-                for (size_t t : active)
-                    for (const RawPhoton& r : c.bins.maps[t]) pre.deposits[t].append(r);
-            });
+        pre.storingSeconds +=
+            traceStreamed(tracer, arena, settings, pre.emitted, pre.emitted + passSize, all,
+                          perPhoton, nullptr, [&](const Traced& c) {
+                              progress.add(c.photons, c.counts());
+                              pre.runaways += c.bins.runaways;
+                              for (size_t t : active)
+                                  for (const RawPhoton& r : c.bins.maps[t])
+                                      pre.deposits[t].append(r);
+                          });
         pre.emitted += passSize;
         ++pre.passes;
         // Every rank takes the root's counts, so all decide on the next pass alike.
@@ -333,13 +335,14 @@ DistributionResult distributePhotons(const PhotonTracer& tracer,
 
     // ---- Main pass.
     progress.setPass(emitted, total);
-    result.storingSeconds += traceStreamed(
-        tracer, arena, settings, emitted, total, prob, perPhoton, &scale, [&](const Traced& c) {
-            progress.add(c.photons, c.counts());
-            result.runaways += c.bins.runaways;
-            for (size_t t : active)
-                for (const Photon& p : c.final[t]) result.photons[t].append(p);
-        });
+    result.storingSeconds += traceStreamed(tracer, arena, settings, emitted, total, prob, perPhoton,
+                                           &scale, [&](const Traced& c) {
+                                               progress.add(c.photons, c.counts());
+                                               result.runaways += c.bins.runaways;
+                                               for (size_t t : active)
+                                                   for (const Photon& p : c.final[t])
+                                                       result.photons[t].append(p);
+                                           });
     result.emitted = total;
     return result;
 }

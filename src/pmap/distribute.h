@@ -20,11 +20,11 @@ namespace rp::pmap {
 
 struct DistributionSettings {
     std::array<uint64_t, kNumPhotonMapTypes> targets{};  // 0 = map not requested
-    double preDistrib = 0.25;  // -apD: prepass size as a fraction of the smallest target
-    int maxPrepass = 4;        // -apM
-    uint64_t seed = 0;         // -apr
-    int threads = 1;           // -n
-    int reportSeconds = 0;     // -t (0 = no progress reports)
+    double preDistrib = 0.25;          // -apD: prepass size as a fraction of the smallest target
+    int maxPrepass = 4;                // -apM
+    uint64_t seed = 0;                 // -apr
+    int threads = 1;                   // -n
+    int reportSeconds = 0;             // -t (0 = no progress reports)
     std::ostream* progress = nullptr;  // where -t reports go
     // With a budget (mkpmap -aC), the photons held in memory (prepass deposits and final
     // records, all maps together) stay within it; map t's photons beyond it are spilled to
@@ -40,7 +40,7 @@ struct DistributionResult {
     // Normalised flux, in photon index order (as the kd-tree build wants them: any order);
     // empty on ranks other than the root. The counts are the same on every rank.
     std::array<RecordStore<Photon>, kNumPhotonMapTypes> photons;
-    uint64_t emitted = 0;          // photons emitted over all passes
+    uint64_t emitted = 0;  // photons emitted over all passes
     uint64_t prepassEmitted = 0;
     int prepasses = 0;
     std::array<double, kNumPhotonMapTypes> storeProbability{};  // per map, all passes

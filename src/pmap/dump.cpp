@@ -35,12 +35,18 @@ void appendMaterial(std::string& out, const char* name, const std::array<float, 
 
 std::array<float, 3> defaultDumpColour(PhotonMapType type) {
     switch (type) {
-        case PhotonMapType::Global: return {0.25f, 0.25f, 2.0f};
-        case PhotonMapType::PreComp: return {0.1f, 1.0f, 1.0f};
-        case PhotonMapType::Caustic: return {1.0f, 0.1f, 0.1f};
-        case PhotonMapType::Volume: return {0.1f, 1.0f, 0.1f};
-        case PhotonMapType::Direct: return {1.0f, 0.1f, 1.0f};
-        case PhotonMapType::Contrib: return {1.0f, 1.0f, 0.1f};
+        case PhotonMapType::Global:
+            return {0.25f, 0.25f, 2.0f};
+        case PhotonMapType::PreComp:
+            return {0.1f, 1.0f, 1.0f};
+        case PhotonMapType::Caustic:
+            return {1.0f, 0.1f, 0.1f};
+        case PhotonMapType::Volume:
+            return {0.1f, 1.0f, 0.1f};
+        case PhotonMapType::Direct:
+            return {1.0f, 0.1f, 1.0f};
+        case PhotonMapType::Contrib:
+            return {1.0f, 1.0f, 0.1f};
     }
     RP_CHECK(false);
     return {};
@@ -48,12 +54,18 @@ std::array<float, 3> defaultDumpColour(PhotonMapType type) {
 
 const char* dumpObjectName(PhotonMapType type) {
     switch (type) {
-        case PhotonMapType::Global: return "global";
-        case PhotonMapType::PreComp: return "pglobal";
-        case PhotonMapType::Caustic: return "caustic";
-        case PhotonMapType::Volume: return "volume";
-        case PhotonMapType::Direct: return "direct";
-        case PhotonMapType::Contrib: return "contrib";
+        case PhotonMapType::Global:
+            return "global";
+        case PhotonMapType::PreComp:
+            return "pglobal";
+        case PhotonMapType::Caustic:
+            return "caustic";
+        case PhotonMapType::Volume:
+            return "volume";
+        case PhotonMapType::Direct:
+            return "direct";
+        case PhotonMapType::Contrib:
+            return "contrib";
     }
     RP_CHECK(false);
     return "";
@@ -116,8 +128,8 @@ void writeDumpScene(std::ostream& out, const DumpedMap& map, const std::string& 
     if (!map.options.fluxColour) appendMaterial(text, name, map.colour);
     for (const DumpPoint& p : map.points) {
         if (map.options.fluxColour) appendMaterial(text, name, p.colour);
-        appendf(text, "mat.%s sphere obj.%s\n0\n0\n4 %g %g %g %g\n\n", name, name,
-                double(p.pos[0]), double(p.pos[1]), double(p.pos[2]), map.radius);
+        appendf(text, "mat.%s sphere obj.%s\n0\n0\n4 %g %g %g %g\n\n", name, name, double(p.pos[0]),
+                double(p.pos[1]), double(p.pos[2]), map.radius);
         if (text.size() > (1u << 16)) {
             out << text;
             text.clear();

@@ -82,10 +82,10 @@ struct DumpedMap {
     std::string path;
     PhotonMapType type = PhotonMapType::Global;
     DumpOptions options;
-    uint64_t numPhotons = 0;          // in the map
-    double radius = 0;                // sphere radius (scene output)
-    std::array<float, 3> colour{};    // constant colour (unused with -f)
-    std::vector<DumpPoint> points;    // in file (kd-tree) order
+    uint64_t numPhotons = 0;        // in the map
+    double radius = 0;              // sphere radius (scene output)
+    std::array<float, 3> colour{};  // constant colour (unused with -f)
+    std::vector<DumpPoint> points;  // in file (kd-tree) order
 };
 
 // Selects photons with dumpProbability using Rng(seed, RngDomain::Sampling, mapIndex).

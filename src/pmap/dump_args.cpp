@@ -19,9 +19,24 @@ bool setBool(const std::string& opt, bool& var) {
     }
     if (opt.size() != 3) return false;
     switch (opt[2]) {
-        case 'y': case 'Y': case 't': case 'T': case '+': case '1': var = true; return true;
-        case 'n': case 'N': case 'f': case 'F': case '-': case '0': var = false; return true;
-        default: return false;
+        case 'y':
+        case 'Y':
+        case 't':
+        case 'T':
+        case '+':
+        case '1':
+            var = true;
+            return true;
+        case 'n':
+        case 'N':
+        case 'f':
+        case 'F':
+        case '-':
+        case '0':
+            var = false;
+            return true;
+        default:
+            return false;
     }
 }
 
@@ -77,7 +92,8 @@ void parseOption(const std::string& opt, ArgReader& args, DumpOptions& o) {
             if (!bare) break;
             const std::string v = args.value(opt, "a radius scale");
             const auto r = parseReal(v);
-            if (!r || *r <= 0) throw InputError("invalid radius scale '" + v + "' for -r (must be > 0)");
+            if (!r || *r <= 0)
+                throw InputError("invalid radius scale '" + v + "' for -r (must be > 0)");
             o.radScale = *r;
             return;
         }
@@ -118,7 +134,8 @@ std::vector<DumpRequest> parseDumpArgs(int argc, const char* const* argv) {
             pending += pending.empty() ? arg : " " + arg;
             continue;
         }
-        if (arg.empty() || arg == "-") throw InputError("invalid photon map file name '" + arg + "'");
+        if (arg.empty() || arg == "-")
+            throw InputError("invalid photon map file name '" + arg + "'");
         // RADIANCE compat: -c and -f are mutually exclusive (pmapdump.c checks them in
         // command-line order; we check the final group so "-f -f- -c" is fine).
         if (current.fluxColour && current.colour)

@@ -89,7 +89,8 @@ void writeDumpPly(std::ostream& out, std::span<const DumpedMap> maps,
     for (size_t i = 0; i < maps.size(); ++i) {
         for (const DumpPoint& p : maps[i].points) {
             for (float x : p.pos) putFloatLE(text, x);
-            for (uint8_t c : plyColourBytes(p.colour, refs[i])) text.push_back(static_cast<char>(c));
+            for (uint8_t c : plyColourBytes(p.colour, refs[i]))
+                text.push_back(static_cast<char>(c));
             if (text.size() > (1u << 16)) {
                 out.write(text.data(), std::streamsize(text.size()));
                 text.clear();

@@ -22,7 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
 using test::slurp;
 
 // n photons on a fixed lattice filling [0,2]x[0,3]x[0,4] (z = 0 for flat maps), flux
@@ -85,8 +84,8 @@ size_t countLines(const std::string& text, const std::string& prefix) {
 }
 
 TEST(DumpArgs, OptionsApplyToNextMapAndReset) {
-    const auto r = parse({"-a", "-n", "2k", "-r", "0.5", "-c", "1", "0", "0.5", "a.pm", "-f", "b.pm",
-                          "c.pm"});
+    const auto r =
+        parse({"-a", "-n", "2k", "-r", "0.5", "-c", "1", "0", "0.5", "a.pm", "-f", "b.pm", "c.pm"});
     ASSERT_EQ(r.size(), 3u);
     EXPECT_EQ(r[0].path, "a.pm");
     EXPECT_TRUE(r[0].options.ascii);
@@ -113,7 +112,8 @@ TEST(DumpArgs, CountSuffixes) {
     EXPECT_EQ(parse({"-n", "750", "m"})[0].options.num, 750u);
     for (const char* bad : {"0", "-3", "abc", "2x", "k", ""})
         EXPECT_NE(parseError({"-n", bad, "m"}).find("invalid number of points/spheres"),
-                  std::string::npos) << bad;
+                  std::string::npos)
+            << bad;
 }
 
 TEST(DumpArgs, BooleanSwitches) {
@@ -129,9 +129,11 @@ TEST(DumpArgs, BooleanSwitches) {
 }
 
 TEST(DumpArgs, Errors) {
-    EXPECT_EQ(parseError({"-c", "1", "0", "0", "-f", "m.pm"}), "m.pm: -c and -f are mutually exclusive");
-    EXPECT_EQ(parseError({"-f", "-c", "1", "0", "0", "m.pm"}), "m.pm: -c and -f are mutually exclusive");
-    EXPECT_EQ(parse({"-f", "-f", "-c", "1", "0", "0", "m.pm"}).size(), 1u);  // -f toggled off
+    EXPECT_EQ(parseError({"-c", "1", "0", "0", "-f", "m.pm"}),
+              "m.pm: -c and -f are mutually exclusive");
+    EXPECT_EQ(parseError({"-f", "-c", "1", "0", "0", "m.pm"}),
+              "m.pm: -c and -f are mutually exclusive");
+    EXPECT_EQ(parse({"-f", "-f", "-c", "1", "0", "0", "m.pm"}).size(), 1u);    // -f toggled off
     EXPECT_EQ(parse({"-c", "1", "0", "0", "a.pm", "-f", "b.pm"}).size(), 2u);  // separate groups
     EXPECT_EQ(parseError({"-x", "m"}), "unknown option -x");
     EXPECT_EQ(parseError({"-nx", "3", "m"}), "unknown option -nx");
@@ -142,7 +144,8 @@ TEST(DumpArgs, Errors) {
     EXPECT_NE(parseError({"-c", "1", "-1", "0", "m"}).find("invalid RGB colour component '-1'"),
               std::string::npos);
     EXPECT_NE(parseError({"-c", "0", "0", "0", "m"}).find("all components 0"), std::string::npos);
-    EXPECT_EQ(parseError({"a.pm", "-n", "5"}), "options after the last photon map apply to no map: -n");
+    EXPECT_EQ(parseError({"a.pm", "-n", "5"}),
+              "options after the last photon map apply to no map: -n");
     EXPECT_EQ(parseError({}), "no photon map file given");
     EXPECT_NE(parseError({"-P", "a.pm", "b.pm"}).find("b.pm: -P given for other photon maps"),
               std::string::npos);
@@ -356,9 +359,8 @@ TEST(Dump, PlyReadsBack) {
     EXPECT_EQ(ply.header[0], "ply");
     EXPECT_EQ(ply.header[1], "format binary_little_endian 1.0");
     const std::vector<std::string> tail = {
-        "element vertex 620",  "property float x",    "property float y",
-        "property float z",    "property uchar red",  "property uchar green",
-        "property uchar blue", "end_header"};
+        "element vertex 620", "property float x",     "property float y",    "property float z",
+        "property uchar red", "property uchar green", "property uchar blue", "end_header"};
     EXPECT_EQ(std::vector<std::string>(ply.header.end() - 8, ply.header.end()), tail);
     ASSERT_EQ(ply.pos.size(), 620u);
     for (size_t i = 0; i < 500; ++i) {

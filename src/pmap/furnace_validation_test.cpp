@@ -65,9 +65,10 @@ void expectFurnace(const std::string& scene, const Vec3& centre, const std::stri
     }
     // Mean of 20 (mostly non-overlapping) estimates: 4.5 %/sqrt(20) = 1 %; the sensors sit
     // 1 mm inside the wall (boundary bias well below that at this radius). 3 sigma.
-    std::printf("%s: stored flux %.4f W (expected 9.8450), mean indirect irradiance %.5f "
-                "W/m2 vs analytic %.5f (%+.2f %%)\n",
-                label, stored, sum / 20, analytic, 100 * (sum / 20 / analytic - 1));
+    std::printf(
+        "%s: stored flux %.4f W (expected 9.8450), mean indirect irradiance %.5f "
+        "W/m2 vs analytic %.5f (%+.2f %%)\n",
+        label, stored, sum / 20, analytic, 100 * (sum / 20 / analytic - 1));
     EXPECT_NEAR(sum / 20, analytic, 0.03 * analytic);
 }
 

@@ -111,9 +111,9 @@ private:
     // cost a second cache miss per leaf, and a lookup visits about 8 leaves).
     static constexpr size_t kLeafBytesPerSlot = 3 * sizeof(float) + 3;
     BulkVector<unsigned char> leaves_;
-    BulkVector<Colr> flux_;               // RGBE flux, by slot
-    BulkVector<uint8_t> flags_;           // Photon::flags by slot (contribution maps)
-    BulkVector<uint32_t> primary_;        // primary index by slot (contribution maps)
+    BulkVector<Colr> flux_;                   // RGBE flux, by slot
+    BulkVector<uint8_t> flags_;               // Photon::flags by slot (contribution maps)
+    BulkVector<uint32_t> primary_;            // primary index by slot (contribution maps)
     BulkVector<std::array<int8_t, 3>> norm_;  // normal by slot (volume maps)
     float boundsLo_[3] = {0, 0, 0}, boundsHi_[3] = {0, 0, 0};
 };

@@ -153,13 +153,13 @@ struct TreeBuild {
             out.push_back({0, 0, kLeafTag | (count << 2), begin});
             return;
         }
-        while (starts && (*starts)[lo + 1] == (*starts)[lo]) ++lo;   // first non-empty
-        while (starts && (*starts)[hi - 1] == (*starts)[hi]) --hi;   // last non-empty
+        while (starts && (*starts)[lo + 1] == (*starts)[lo]) ++lo;  // first non-empty
+        while (starts && (*starts)[hi - 1] == (*starts)[hi]) --hi;  // last non-empty
         if (!starts || hi - lo == 1) {
             if (level + 1 >= 8) {  // identical codes: split by count
                 out.push_back({0, 0, 0, 0});
-                descend(begin, count / 2, count - count / 2, 8, nullptr, 0, 0, 0, 0, parallel,
-                        id, out);
+                descend(begin, count / 2, count - count / 2, 8, nullptr, 0, 0, 0, 0, parallel, id,
+                        out);
                 return;
             }
             std::array<uint32_t, 257> next;
@@ -266,9 +266,9 @@ void InCoreStore::Build::fillLeaf(InCoreStore& s, uint32_t id, const Photon* rec
     std::sort(ext, ext + 3);
     node.rightMin = count > 1 ? ext[2] * ext[1] / static_cast<float>(count) : 0.f;
     if (common) {
-        const unsigned char b[4] = {
-            static_cast<unsigned char>(p0.norm[0]), static_cast<unsigned char>(p0.norm[1]),
-            static_cast<unsigned char>(p0.norm[2]), kCommonNormalFlag};
+        const unsigned char b[4] = {static_cast<unsigned char>(p0.norm[0]),
+                                    static_cast<unsigned char>(p0.norm[1]),
+                                    static_cast<unsigned char>(p0.norm[2]), kCommonNormalFlag};
         std::memcpy(&node.leftMax, b, 4);
     }
     unsigned char* block = s.leaves_.data() + kLeafBytesPerSlot * size_t{first};
@@ -276,8 +276,7 @@ void InCoreStore::Build::fillLeaf(InCoreStore& s, uint32_t id, const Photon* rec
     std::memcpy(block + 3 * c4 * sizeof(float), nrm, 3 * c4);
 }
 
-InCoreStore::InCoreStore(std::span<Photon> photons, Attributes attrs, bool parallel,
-                         bool consume)
+InCoreStore::InCoreStore(std::span<Photon> photons, Attributes attrs, bool parallel, bool consume)
     : attrs_(attrs) {
     const size_t n = photons.size();
     if (n > kMaxTreePhotons)
@@ -334,8 +333,9 @@ InCoreStore::InCoreStore(std::span<Photon> photons, Attributes attrs, bool paral
                                 bounds[leaves[l]]);
         };
         if (parallel)
-            tbb::parallel_for(tbb::blocked_range<size_t>(l0, l1, 256),
-                              [&](const tbb::blocked_range<size_t>& r) { fill(r.begin(), r.end()); });
+            tbb::parallel_for(
+                tbb::blocked_range<size_t>(l0, l1, 256),
+                [&](const tbb::blocked_range<size_t>& r) { fill(r.begin(), r.end()); });
         else
             fill(l0, l1);
         if (consume) releaseRecords(photons, released, l1 < leaves.size() ? firstPhoton[l1] : n);
@@ -360,8 +360,7 @@ InCoreStore::InCoreStore(std::span<Photon> photons, Attributes attrs, bool paral
     nodes_.shrink_to_fit();
 }
 
-InCoreStore InCoreStore::copyOf(std::span<const Photon> photons, Attributes attrs,
-                                bool parallel) {
+InCoreStore InCoreStore::copyOf(std::span<const Photon> photons, Attributes attrs, bool parallel) {
     BulkVector<Photon> copy(photons.begin(), photons.end());
     return InCoreStore(copy, attrs, parallel, true);
 }

@@ -1,12 +1,12 @@
 // The in-core store's k-nearest search (see incore_store.h; the build is in
 // incore_store_build.cpp).
-#include "pmap/incore_store.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <vector>
+
+#include "pmap/incore_store.h"
 
 namespace rp::pmap {
 
@@ -163,9 +163,8 @@ constexpr float kGuessGrowth = 4.0f;  // squared radius per further pass
 }  // namespace
 
 size_t InCoreStore::memoryBytes() const {
-    return nodes_.capacity() * sizeof(Node) + leaves_.capacity() +
-           flux_.capacity() * sizeof(Colr) + flags_.capacity() +
-           primary_.capacity() * sizeof(uint32_t) + norm_.capacity() * 3;
+    return nodes_.capacity() * sizeof(Node) + leaves_.capacity() + flux_.capacity() * sizeof(Colr) +
+           flags_.capacity() + primary_.capacity() * sizeof(uint32_t) + norm_.capacity() * 3;
 }
 
 // Why the pruning is exact: `off` holds, per axis, |fl(q - bound)| for the nearest bound of

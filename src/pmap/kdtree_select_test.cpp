@@ -139,8 +139,8 @@ TEST(KdTreeSelect, KeyOrdersCoordinatesThenRecord) {
     a.pos[0] = b.pos[0] = 1.0f;
     a.pos[1] = 2.0f;
     b.pos[1] = -3.0f;
-    EXPECT_TRUE(photonKeyLess(b, a, 0));  // x ties, y decides
-    EXPECT_TRUE(photonKeyLess(b, a, 1));  // on y
+    EXPECT_TRUE(photonKeyLess(b, a, 0));   // x ties, y decides
+    EXPECT_TRUE(photonKeyLess(b, a, 1));   // on y
     EXPECT_FALSE(photonKeyLess(a, b, 2));  // z ties, then x ties, then y
     b.pos[1] = 2.0f;
     b.primary = 1;

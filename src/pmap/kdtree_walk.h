@@ -93,7 +93,8 @@ size_t walkKdTree(const Tree& tree, size_t n, const float q[3], const QueryNorma
             const Photon& p = tree.at(node - 1);
             if constexpr (Tree::kCheckOrder)
                 for (int a = 0; a < 3; ++a)
-                    if (!(p.pos[a] >= cell.lo[a] && p.pos[a] <= cell.hi[a])) tree.misplaced(node - 1);
+                    if (!(p.pos[a] >= cell.lo[a] && p.pos[a] <= cell.hi[a]))
+                        tree.misplaced(node - 1);
             const int axis = p.discr();
             const float d = q[axis] - p.pos[axis];
             const size_t nearChild = 2 * node + (d >= 0 ? 1 : 0);
@@ -134,7 +135,8 @@ size_t findNearestInKdTree(const Tree& tree, size_t n, const Vec3& pos, const Ve
     if (out.empty() || n == 0) return 0;
     const float q[3] = {static_cast<float>(pos.x), static_cast<float>(pos.y),
                         static_cast<float>(pos.z)};
-    if (!normal) return walkKdTree<false>(tree, n, q, QueryNormal{}, maxDist2, out.data(), out.size());
+    if (!normal)
+        return walkKdTree<false>(tree, n, q, QueryNormal{}, maxDist2, out.data(), out.size());
     const QueryNormal qn{{static_cast<float>(normal->x), static_cast<float>(normal->y),
                           static_cast<float>(normal->z)}};
     return walkKdTree<true>(tree, n, q, qn, maxDist2, out.data(), out.size());

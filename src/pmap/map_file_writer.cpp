@@ -1,11 +1,11 @@
 // Photon map files written by heap node (see map_file_writer.h).
 #include "pmap/map_file_writer.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <vector>
-
-#include <tbb/parallel_for.h>
 
 #include "pmap/photon_records.h"
 #include "pmap/record_checksums.h"

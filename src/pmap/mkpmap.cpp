@@ -2,6 +2,9 @@
 // savePmaps), see mkpmap.h.
 #include "pmap/mkpmap.h"
 
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -11,14 +14,11 @@
 #include <ostream>
 #include <set>
 
-#include <tbb/task_arena.h>
-#include <tbb/task_group.h>
-
+#include "calc/search_path.h"
 #include "geometry/scene_geometry.h"
 #include "light/emitter.h"
 #include "light/light_sources.h"
 #include "light/pattern_emission.h"
-#include "calc/search_path.h"
 #include "material/material_calc.h"
 #include "material/surface_chain.h"
 #include "pmap/contrib.h"
@@ -82,8 +82,8 @@ MkpmapOptions withoutIgnoredMaps(const MkpmapOptions& in) {
     if (!o.wants(PhotonMapType::Contrib)) return o;
     for (size_t t = 0; t < o.maps.size(); ++t) {
         if (!o.maps[t] || PhotonMapType(t) == PhotonMapType::Contrib) continue;
-        warn(std::string("ignoring ") + photonMapTypeName(PhotonMapType(t)) +
-             " photon map " + o.maps[t]->file + " with contribution photon map (-apC)");
+        warn(std::string("ignoring ") + photonMapTypeName(PhotonMapType(t)) + " photon map " +
+             o.maps[t]->file + " with contribution photon map (-apC)");
         o.maps[t].reset();
     }
     return o;
@@ -111,8 +111,8 @@ std::vector<Photon> precompute(const MkpmapOptions& o, size_t t, MapPhotons& m,
     std::vector<Photon> pre = precomputeGlobal(std::move(m.inMemory), ps);
     if (pre.empty())
         throw InputError("no precomputed global photons (-apP " +
-                         std::to_string(o.precompFraction) + " of " +
-                         std::to_string(globalCount) + " global photons)");
+                         std::to_string(o.precompFraction) + " of " + std::to_string(globalCount) +
+                         " global photons)");
     return pre;
 }
 
@@ -280,10 +280,8 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         if (PhotonMapType(t) == PhotonMapType::PreComp)
             std::snprintf(frac, sizeof frac, " x -apP %g", o.precompFraction);
         std::snprintf(line, sizeof line, "%llu %s photons stored in %s (target %llu%s)\n",
-                      (unsigned long long)report.stored[t],
-                      photonMapTypeName(PhotonMapType(t)), o.maps[t]->file.c_str(),
-                      (unsigned long long)o.maps[t]->target,
-                      frac);
+                      (unsigned long long)report.stored[t], photonMapTypeName(PhotonMapType(t)),
+                      o.maps[t]->file.c_str(), (unsigned long long)o.maps[t]->target, frac);
         diag << line;
     }
     std::snprintf(line, sizeof line,

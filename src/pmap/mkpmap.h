@@ -22,8 +22,8 @@ struct MkpmapReport {
     uint64_t prepassEmitted = 0;
     int prepasses = 0;
     long runaways = 0;
-    double traceSeconds = 0;  // prepass + main pass
-    double buildSeconds = 0;  // kd-trees and files of all maps (wall time)
+    double traceSeconds = 0;    // prepass + main pass
+    double buildSeconds = 0;    // kd-trees and files of all maps (wall time)
     double storingSeconds = 0;  // of traceSeconds, storing on the root (distribute.h)
 };
 
@@ -39,7 +39,7 @@ struct MkpmapReport {
 // builds and writes the maps, which are the same bit for bit for any number of ranks,
 // and reports. The other ranks return an empty report.
 MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
-                       std::ostream& diag,
-                       const LoadOptions& load = {}, Cluster* cluster = nullptr);
+                       std::ostream& diag, const LoadOptions& load = {},
+                       Cluster* cluster = nullptr);
 
 }  // namespace rp::pmap

@@ -23,10 +23,14 @@ std::optional<uint64_t> parsePhotonCount(const std::string& s) {
     double v = std::strtod(s.c_str(), &end);
     if (end == s.c_str() || errno != 0) return std::nullopt;
     std::string rest(end);
-    if (rest == "k" || rest == "K") v *= 1e3;
-    else if (rest == "m" || rest == "M") v *= 1e6;
-    else if (rest == "g" || rest == "G") v *= 1e9;
-    else if (!rest.empty()) return std::nullopt;
+    if (rest == "k" || rest == "K")
+        v *= 1e3;
+    else if (rest == "m" || rest == "M")
+        v *= 1e6;
+    else if (rest == "g" || rest == "G")
+        v *= 1e9;
+    else if (!rest.empty())
+        return std::nullopt;
     if (!(v >= 1) || v > 1e15) return std::nullopt;
     return uint64_t(std::llround(v));
 }
@@ -132,15 +136,19 @@ MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
             (opt == "-version" ? o.printVersion : o.printDefaults) = true;
             return o;
         }
-        if (opt == "-apg") mapOpt(opt, PhotonMapType::Global, false);
-        else if (opt == "-apc") mapOpt(opt, PhotonMapType::Caustic, false);
-        else if (opt == "-apv") mapOpt(opt, PhotonMapType::Volume, false);
-        else if (opt == "-apd") mapOpt(opt, PhotonMapType::Direct, false);
+        if (opt == "-apg")
+            mapOpt(opt, PhotonMapType::Global, false);
+        else if (opt == "-apc")
+            mapOpt(opt, PhotonMapType::Caustic, false);
+        else if (opt == "-apv")
+            mapOpt(opt, PhotonMapType::Volume, false);
+        else if (opt == "-apd")
+            mapOpt(opt, PhotonMapType::Direct, false);
         else if (opt == "-apC" || opt == "-apCPD") {
             mapOpt(opt, PhotonMapType::Contrib, false);
             o.maps[size_t(PhotonMapType::Contrib)]->primaryRays = opt == "-apCPD";
-        }
-        else if (opt == "-app") mapOpt(opt, PhotonMapType::PreComp, true);
+        } else if (opt == "-app")
+            mapOpt(opt, PhotonMapType::PreComp, true);
         else if (opt == "-aC") {
             const std::string n = a.value(opt);
             const auto count = parsePhotonCount(n);
@@ -155,7 +163,8 @@ MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
             o.precompFraction = a.real(opt);
             if (!(o.precompFraction > 0 && o.precompFraction <= 1))
                 throw InputError("global photon precomputation factor must be in range ]0, 1]");
-        } else if (opt == "-apr") o.seed = a.integer(opt);
+        } else if (opt == "-apr")
+            o.seed = a.integer(opt);
         else if (opt == "-api") {
             RegionOfInterest r;
             for (int k = 0; k < 3; ++k) r.min[k] = a.real(opt);
@@ -178,22 +187,30 @@ MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
             o.sensors.push_back(a.value(opt));
         else if (opt == "-apS")
             append(o.sensors, readWordFile(a.value(opt), "antimatter sensor"));
-        else if (opt == "-ai") o.include.push_back(a.value(opt));
+        else if (opt == "-ai")
+            o.include.push_back(a.value(opt));
         else if (opt == "-aI" || opt == "-al")
             append(o.include, readWordFile(a.value(opt), "ambient include"));
-        else if (opt == "-ae") o.exclude.push_back(a.value(opt));
-        else if (opt == "-aE") append(o.exclude, readWordFile(a.value(opt), "ambient exclude"));
-        else if (opt.rfind("-bv", 0) == 0) o.backVisible = boolSuffix(opt, 3, o.backVisible);
-        else if (opt.rfind("-fo", 0) == 0) o.overwrite = boolSuffix(opt, 3, o.overwrite);
-        else if (opt == "-dp") o.pdfSamples = positive(a.real(opt), "PDF samples must be > 0");
+        else if (opt == "-ae")
+            o.exclude.push_back(a.value(opt));
+        else if (opt == "-aE")
+            append(o.exclude, readWordFile(a.value(opt), "ambient exclude"));
+        else if (opt.rfind("-bv", 0) == 0)
+            o.backVisible = boolSuffix(opt, 3, o.backVisible);
+        else if (opt.rfind("-fo", 0) == 0)
+            o.overwrite = boolSuffix(opt, 3, o.overwrite);
+        else if (opt == "-dp")
+            o.pdfSamples = positive(a.real(opt), "PDF samples must be > 0");
         else if (opt == "-ds")
             o.partitionSize = positive(a.real(opt), "source partition size ratio must be > 0");
-        else if (opt == "-e") o.diagnosticsFile = a.value(opt);
+        else if (opt == "-e")
+            o.diagnosticsFile = a.value(opt);
         else if (opt == "-ma" || opt == "-me") {
             Color c;
             for (int k = 0; k < 3; ++k) c[k] = a.real(opt);
             (opt == "-ma" ? o.mediumAlbedo : o.mediumExtinction) = c;
-        } else if (opt == "-mg") o.mediumEccentricity = a.real(opt);
+        } else if (opt == "-mg")
+            o.mediumEccentricity = a.real(opt);
         else if (opt == "-n") {
             long n = a.integer(opt);
             if (n <= 0) throw InputError("number of processes must be > 0");

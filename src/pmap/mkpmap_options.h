@@ -30,8 +30,8 @@ struct MapRequest {
 struct RegionOfInterest {
     Vec3 min, max;
     bool contains(const Vec3& p) const {
-        return p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y &&
-               p.z >= min.z && p.z <= max.z;
+        return p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y && p.z >= min.z &&
+               p.z <= max.z;
     }
 };
 
@@ -43,27 +43,27 @@ struct MkpmapOptions {
     // instance of the same type replaces an earlier one.
     std::array<std::optional<MapRequest>, kNumPhotonMapTypes> maps;
 
-    double preDistrib = 0.25;     // -apD
-    int maxPrepass = 4;           // -apM
-    double precompFraction = 0.25;  // -apP
-    int64_t seed = 0;             // -apr
-    std::vector<RegionOfInterest> rois;  // -api (cumulative)
-    long maxBounce = 5000;        // -lr / -apm (RADIANCE's PMAP_MAXBOUNCE)
-    double maxDistance = 0;       // -ld, 0 = unlimited
+    double preDistrib = 0.25;                // -apD
+    int maxPrepass = 4;                      // -apM
+    double precompFraction = 0.25;           // -apP
+    int64_t seed = 0;                        // -apr
+    std::vector<RegionOfInterest> rois;      // -api (cumulative)
+    long maxBounce = 5000;                   // -lr / -apm (RADIANCE's PMAP_MAXBOUNCE)
+    double maxDistance = 0;                  // -ld, 0 = unlimited
     std::vector<light::PortSpec> portSpecs;  // -apo[+|-|0] mod, -apO[+|-|0] file contents
-    std::vector<std::string> sensors;      // -aps, -apS file contents
+    std::vector<std::string> sensors;        // -aps, -apS file contents
     // Ambient include (-ai/-aI/-al) or exclude (-ae/-aE) modifiers; mutually exclusive.
     std::vector<std::string> include, exclude;
-    bool backVisible = true;      // -bv: RADIANCE's mkpmap default is on (backvis = 1)
-    double pdfSamples = 1000;     // -dp
-    double partitionSize = 0.01;  // -ds
-    std::string diagnosticsFile;  // -e
-    bool overwrite = false;       // -fo
-    Color mediumAlbedo;           // -ma
-    Color mediumExtinction;       // -me
+    bool backVisible = true;        // -bv: RADIANCE's mkpmap default is on (backvis = 1)
+    double pdfSamples = 1000;       // -dp
+    double partitionSize = 0.01;    // -ds
+    std::string diagnosticsFile;    // -e
+    bool overwrite = false;         // -fo
+    Color mediumAlbedo;             // -ma
+    Color mediumExtinction;         // -me
     double mediumEccentricity = 0;  // -mg
-    int nproc = 1;                // -n
-    int reportSeconds = 0;        // -t
+    int nproc = 1;                  // -n
+    int reportSeconds = 0;          // -t
     // -aC N (a radphoton extension; RADIANCE's rtrace -aC sizes its out-of-core cache):
     // hold about N photons in memory at most while building, all maps together (prepass
     // deposits, collected photons, kd-tree parts). Photons beyond it go to temporary files

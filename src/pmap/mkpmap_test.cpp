@@ -1,12 +1,13 @@
 // mkpmap's command line and run: option parsing, one test per kind of bad input, files
 // written with RADIANCE's header, and bit-identical files for -n 1 and -n 2.
+#include "pmap/mkpmap.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "pmap/mkpmap.h"
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon_map.h"
 #include "pmap/pmap_test_util.h"
@@ -33,11 +34,11 @@ std::string parseError(std::vector<std::string> args) {
 }
 
 TEST(MkpmapOptions, ParsesRadianceCommandLine) {
-    MkpmapOptions o = parse({"-apg", "g.pm", "500k", "-apc", "c.pm", "1m", "-apd", "d.pm", "2.5K",
-                             "-apD", "0.5", "-apM", "6", "-apr", "3", "-api", "0", "0", "0", "1", "2",
-                             "3", "-lr", "100", "-ld", "7.5", "-apo+", "win", "-aps", "sens",
-                             "-ae", "x", "-bv-", "-dp", "500", "-ds", ".02", "-fo+", "-n", "2",
-                             "-t", "10", "a.rad", "b.rad"});
+    MkpmapOptions o = parse(
+        {"-apg", "g.pm", "500k", "-apc", "c.pm",  "1m",  "-apd", "d.pm", "2.5K", "-apD",  "0.5",
+         "-apM", "6",    "-apr", "3",    "-api",  "0",   "0",    "0",    "1",    "2",     "3",
+         "-lr",  "100",  "-ld",  "7.5",  "-apo+", "win", "-aps", "sens", "-ae",  "x",     "-bv-",
+         "-dp",  "500",  "-ds",  ".02",  "-fo+",  "-n",  "2",    "-t",   "10",   "a.rad", "b.rad"});
     EXPECT_EQ(o.maps[size_t(PhotonMapType::Global)]->target, 500000u);
     EXPECT_EQ(o.maps[size_t(PhotonMapType::Global)]->file, "g.pm");
     EXPECT_EQ(o.maps[size_t(PhotonMapType::Caustic)]->target, 1000000u);
@@ -71,13 +72,16 @@ TEST(MkpmapOptions, PortOrientationIsTheOptionsSuffix) {
         std::ofstream f(file);
         f << "skylight_45_59c8c160 win-\n  sky2\n";
     }
-    MkpmapOptions o = parse({"-apo", "win0", "-apo-", "glass+", "-apo0", "a", "-apo+", "b",
-                             "-apO-", file, "-apg", "g.pm", "1k", "x.oct"});
+    MkpmapOptions o = parse({"-apo", "win0", "-apo-", "glass+", "-apo0", "a", "-apo+", "b", "-apO-",
+                             file, "-apg", "g.pm", "1k", "x.oct"});
     using light::PortDirection;
     const std::vector<std::pair<std::string, PortDirection>> want{
-        {"win0", PortDirection::Forward},      {"glass+", PortDirection::Backward},
-        {"a", PortDirection::Bidirectional},   {"b", PortDirection::Forward},
-        {"skylight_45_59c8c160", PortDirection::Backward}, {"win-", PortDirection::Backward},
+        {"win0", PortDirection::Forward},
+        {"glass+", PortDirection::Backward},
+        {"a", PortDirection::Bidirectional},
+        {"b", PortDirection::Forward},
+        {"skylight_45_59c8c160", PortDirection::Backward},
+        {"win-", PortDirection::Backward},
         {"sky2", PortDirection::Backward}};
     ASSERT_EQ(o.portSpecs.size(), want.size());
     for (size_t i = 0; i < want.size(); ++i) {
@@ -124,12 +128,14 @@ TEST(MkpmapOptions, Errors) {
     EXPECT_EQ(parseError({"-apg", "g", "lots", "x"}), "bad photon count 'lots' for option '-apg'");
     EXPECT_EQ(parseError({"-n", "2", "x.oct"}), "no photon maps specified");
     EXPECT_EQ(parseError({"-apg", "g", "1k"}), "missing octree argument");
-    EXPECT_NE(parseError({"-ai", "a", "-ae", "b", "-apg", "g", "1", "x"}).find("mutually exclusive"),
-              std::string::npos);
+    EXPECT_NE(
+        parseError({"-ai", "a", "-ae", "b", "-apg", "g", "1", "x"}).find("mutually exclusive"),
+        std::string::npos);
     EXPECT_NE(parseError({"-api", "1", "0", "0", "0", "1", "1", "-apg", "g", "1", "x"})
                   .find("invalid region of interest"),
               std::string::npos);
-    EXPECT_EQ(parseError({"-ds", "abc", "-apg", "g", "1", "x"}), "bad value 'abc' for option '-ds'");
+    EXPECT_EQ(parseError({"-ds", "abc", "-apg", "g", "1", "x"}),
+              "bad value 'abc' for option '-ds'");
     EXPECT_NE(parseError({"-apO", "/nonexistent/ports", "-apg", "g", "1", "x"}).find("cannot open"),
               std::string::npos);
 }
@@ -156,9 +162,10 @@ using test::slurp;
 TEST_F(MkpmapRun, SameFilesForOneAndTwoThreads) {
     std::ostringstream diag;
     for (const char* n : {"1", "2"})
-        runMkpmap(parse({"-apg", path(std::string("g") + n + ".pm"), "20k", "-apc",
-                         path(std::string("c") + n + ".pm"), "20k", "-apr", "5", "-n", n, cornell()}),
-                  "mkpmap -apg g.pm 20k -apc c.pm 20k", diag);
+        runMkpmap(
+            parse({"-apg", path(std::string("g") + n + ".pm"), "20k", "-apc",
+                   path(std::string("c") + n + ".pm"), "20k", "-apr", "5", "-n", n, cornell()}),
+            "mkpmap -apg g.pm 20k -apc c.pm 20k", diag);
     EXPECT_EQ(slurp(path("g1.pm")), slurp(path("g2.pm")));
     EXPECT_EQ(slurp(path("c1.pm")), slurp(path("c2.pm")));
     PhotonMap g = PhotonMap::load(path("g1.pm"));
@@ -189,8 +196,9 @@ TEST_F(MkpmapRun, ErrorsOnePerKind) {
     EXPECT_NE(runError({"-apg", path("a.pm"), "1k", "-apc", path("a.pm"), "1k", cornell()})
                   .find("more than once"),
               std::string::npos);
-    EXPECT_NE(runError({"-apg", path("g.pm"), "1k", "-aps", "white", cornell()}).find("not antimatter"),
-              std::string::npos);
+    EXPECT_NE(
+        runError({"-apg", path("g.pm"), "1k", "-aps", "white", cornell()}).find("not antimatter"),
+        std::string::npos);
     std::ofstream(path("dark.rad")) << "void plastic p 0 0 5 .5 .5 .5 0 0\n"
                                        "p sphere s 0 0 4 0 0 0 1\n";
     EXPECT_EQ(runError({"-apg", path("g.pm"), "1k", path("dark.rad")}), "no light sources found");
@@ -211,11 +219,11 @@ std::string binaryPart(const std::string& file) {
 // temporary file is left in the maps' folder.
 TEST_F(MkpmapRun, SmallMemoryBudgetGivesTheSameMaps) {
     std::ostringstream diag;
-    runMkpmap(parse({"-apg", path("g.pm"), "20k", "-apc", path("c.pm"), "5k", "-apd",
-                     path("d.pm"), "3k", "-apr", "2", "-n", "2", cornell()}),
+    runMkpmap(parse({"-apg", path("g.pm"), "20k", "-apc", path("c.pm"), "5k", "-apd", path("d.pm"),
+                     "3k", "-apr", "2", "-n", "2", cornell()}),
               "mkpmap", diag);
-    runMkpmap(parse({"-aC", "1k", "-apg", path("gs.pm"), "20k", "-apc", path("cs.pm"), "5k",
-                     "-apd", path("ds.pm"), "3k", "-apr", "2", "-n", "2", cornell()}),
+    runMkpmap(parse({"-aC", "1k", "-apg", path("gs.pm"), "20k", "-apc", path("cs.pm"), "5k", "-apd",
+                     path("ds.pm"), "3k", "-apr", "2", "-n", "2", cornell()}),
               "mkpmap", diag);
     for (const char* m : {"g", "c", "d"}) {
         const std::string a = path(std::string(m) + ".pm"), b = path(std::string(m) + "s.pm");
@@ -232,8 +240,8 @@ TEST_F(MkpmapRun, SmallMemoryBudgetGivesTheSameMaps) {
 // its file cannot be named when complete) leaves no temporary file behind.
 TEST_F(MkpmapRun, NoSpillFileLeftAfterAnError) {
     std::filesystem::create_directory(path("g.pm"));
-    EXPECT_NE(runError({"-fo", "-aC", "1k", "-apg", path("g.pm"), "5k", "-apc", path("c.pm"),
-                        "5k", cornell()}),
+    EXPECT_NE(runError({"-fo", "-aC", "1k", "-apg", path("g.pm"), "5k", "-apc", path("c.pm"), "5k",
+                        cornell()}),
               "(no error)");
     EXPECT_EQ(dir_.count(), 1u);  // the folder g.pm, nothing else
     EXPECT_FALSE(std::filesystem::exists(path("c.pm")));

@@ -17,8 +17,8 @@
 // instead of a SIGBUS.
 #pragma once
 
-#include <cstdint>
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>

@@ -29,7 +29,8 @@ PhotonMap randomMap(size_t n, uint32_t seed) {
     std::uniform_real_distribution<double> u(-3, 3);
     std::vector<Photon> v;
     for (size_t i = 0; i < n; ++i)
-        v.push_back(makePhoton(Vec3(u(rng), u(rng), 0.1 * u(rng)), normalize(Vec3(u(rng), u(rng), 4)),
+        v.push_back(makePhoton(Vec3(u(rng), u(rng), 0.1 * u(rng)),
+                               normalize(Vec3(u(rng), u(rng), 4)),
                                {std::abs(u(rng)) * 1e-3, 1e-3, 1e-4}, true));
     return PhotonMap(PhotonMapType::Caustic, std::move(v));
 }
@@ -110,8 +111,9 @@ TEST_F(OutOfCoreBadFile, InCoreOpeningRefusesWhatOutOfCoreSearchesRefuse) {
     swapRecords(300, 600);
     data_[records_ + 500 * 27 + 26] = 3;
     write();
-    EXPECT_NE(errorOf([&] { PhotonMap::open(f_, StoreOptions{}); }).find("photon 500 has split axis 3"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf([&] { PhotonMap::open(f_, StoreOptions{}); }).find("photon 500 has split axis 3"),
+        std::string::npos);
 }
 
 TEST_F(OutOfCoreBadFile, BadRecordsFailAtOpeningOrInTheSearch) {

@@ -4,13 +4,13 @@
 #include <limits>
 
 #include "pmap/incore_store.h"
-#include "util/portable_io.h"
 #include "util/error.h"
+#include "util/portable_io.h"
 
 namespace rp::pmap {
 
-using portable::putFlt;
 using portable::getFlt;
+using portable::putFlt;
 
 namespace {
 // The value a double becomes after putflt/getflt, so that in-memory == on-disk.
@@ -108,8 +108,8 @@ PhotonMap PhotonMap::searchableFrom(PhotonMapType type, std::vector<Photon> phot
     PhotonMap map;
     map.type_ = type;
     map.stats_ = computeStats(photons);
-    map.store_ = std::make_shared<InCoreStore>(photons, InCoreStore::attributesFor(type),
-                                               parallel, /*consume=*/true);
+    map.store_ = std::make_shared<InCoreStore>(photons, InCoreStore::attributesFor(type), parallel,
+                                               /*consume=*/true);
     return map;
 }
 

@@ -24,22 +24,22 @@
 #include <sstream>
 
 #include "pmap/photon_map.h"
-#include "pmap/record_checksums.h"
 #include "pmap/photon_records.h"
+#include "pmap/record_checksums.h"
 #include "util/bulk_memory.h"
 #include "util/error.h"
 #include "util/file_write.h"
 
 namespace rp::pmap {
 
-using portable::putInt;
-using portable::putFlt;
-using portable::putStr;
-using portable::getInt32;
-using portable::getInt;
-using portable::getFlt;
 using portable::ByteReader;
+using portable::getFlt;
+using portable::getInt;
+using portable::getInt32;
 using portable::kPortableFloatSize;
+using portable::putFlt;
+using portable::putInt;
+using portable::putStr;
 
 namespace {
 
@@ -48,7 +48,7 @@ constexpr size_t kPrimaryRayRecordSize = 2 + 4 + 3 * kPortableFloatSize;  // 3.1
 // Bytes after the version string up to and including numPrimary.
 constexpr size_t kFixedBinarySize = 8 + (3 + 6 + 3 + 1) * kPortableFloatSize + 4;  // 77
 constexpr size_t kMaxVersionLength = 32;
-constexpr size_t kChunkPhotons = size_t{1} << 16;      // photons decoded per task (/ 4)
+constexpr size_t kChunkPhotons = size_t{1} << 16;  // photons decoded per task (/ 4)
 // Photons encoded per write buffer: 442 kB, so the four buffers of a save come from the
 // heap, reused from one save to the next. At 2^16 photons each buffer was a fresh 2 MB
 // huge page, 16 MB zero-filled by the kernel per mkpmap run (~0.6 % of a Cornell run).
@@ -150,8 +150,7 @@ Header photonMapFileHeader(const PhotonMapFileInfo& info, const std::string& com
     // RADIANCE compat: labelled MaxDist^2 but the value is CoGdist.
     h.lines.push_back(cFormat("MaxDist^2\t= %.3f", double(s.cogDist2)));
     if (!info.primaries.empty())
-        h.lines.push_back(
-            cFormat("%u primary rays", static_cast<unsigned>(info.primaries.size())));
+        h.lines.push_back(cFormat("%u primary rays", static_cast<unsigned>(info.primaries.size())));
     h.lines.push_back("FORMAT=" + photonMapFormat(info.type));
     h.lines.push_back(std::string("VERSION=") + info.fileVersion());
     if (info.checksumBlock)
@@ -343,11 +342,11 @@ PhotonMap PhotonMap::readPrologue(std::istream& in, const std::string& what) {
     const uint64_t primaryBytes = numPrimary * recordSize;
     // The checksums after the records (record_checksums.h), when the header announces them.
     const uint64_t trailer =
-        map.checksumBlock_ ? 4 * checksumBlocks(static_cast<uint64_t>(std::max<int64_t>(numPhotons, 0)),
-                                                map.checksumBlock_)
-                           : 0;
-    if (trailer > remaining)
-        throw InputError(loc, "truncated photon map (checksums incomplete)");
+        map.checksumBlock_
+            ? 4 * checksumBlocks(static_cast<uint64_t>(std::max<int64_t>(numPhotons, 0)),
+                                 map.checksumBlock_)
+            : 0;
+    if (trailer > remaining) throw InputError(loc, "truncated photon map (checksums incomplete)");
     remaining -= trailer;
     const bool sizeOk = primaryBytes <= remaining &&
                         s.numPhotons == (remaining - primaryBytes) / kPhotonRecordSize &&
@@ -403,8 +402,8 @@ void PhotonMap::readPhotons(std::istream& in, const std::string& what, TreeOrder
     // With checksums, each block's is computed as it is read: a chunk is whole blocks
     // (one block when a block is larger than a chunk).
     const uint64_t block = checksumBlock_;
-    const size_t step = block ? std::max<size_t>(block, kReadChunkPhotons / block * block)
-                              : kReadChunkPhotons;
+    const size_t step =
+        block ? std::max<size_t>(block, kReadChunkPhotons / block * block) : kReadChunkPhotons;
     BulkVector<unsigned char> raw(std::max<size_t>(std::min<size_t>(step, s.numPhotons), 1) *
                                   kPhotonRecordSize);
     std::vector<uint32_t> computed;
@@ -437,7 +436,8 @@ void PhotonMap::checkChecksums(std::istream& in, const std::string& what,
     if (!readBytes(in, bytes.data(), bytes.size()))
         throw InputError(SourceLoc{what, 0}, "truncated photon map (checksums incomplete)");
     stored.decode(bytes.data(), computed.size());
-    for (size_t b = 0; b < computed.size(); ++b) stored.check(what, b, computed[b], stats_.numPhotons);
+    for (size_t b = 0; b < computed.size(); ++b)
+        stored.check(what, b, computed[b], stats_.numPhotons);
 }
 
 PhotonMap PhotonMap::load(const std::string& path, TreeOrder order) {

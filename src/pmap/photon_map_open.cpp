@@ -53,10 +53,10 @@ Placement placeStore(const std::string& path, uint64_t n, const StoreOptions& o)
     p.outOfCore = true;
     const uint64_t shares = uint64_t(std::max(o.threads, 1)) + 1;
     p.cachePhotons = std::max(kDefaultCachePhotons, budget / (sizeof(Photon) * shares));
-    warn(fmt::format("{}: {} photons need {:.1f} GB in memory, more than the budget of "
-                     "{:.1f} GB; searching the map out of core (-aC {})",
-                     path, n, double(n * kInCoreBytesPerPhoton) / 1e9, double(budget) / 1e9,
-                     p.cachePhotons));
+    warn(fmt::format(
+        "{}: {} photons need {:.1f} GB in memory, more than the budget of "
+        "{:.1f} GB; searching the map out of core (-aC {})",
+        path, n, double(n * kInCoreBytesPerPhoton) / 1e9, double(budget) / 1e9, p.cachePhotons));
     return p;
 }
 
@@ -110,8 +110,8 @@ PhotonMap PhotonMap::open(const std::string& path, const StoreOptions& options,
             if (keep(p)) records[kept++] = p;
         records.resize(kept);
     }
-    map.store_ = std::make_shared<InCoreStore>(records, InCoreStore::attributesFor(map.type_),
-                                               true, /*consume=*/true);
+    map.store_ = std::make_shared<InCoreStore>(records, InCoreStore::attributesFor(map.type_), true,
+                                               /*consume=*/true);
     return map;
 }
 

@@ -22,14 +22,13 @@
 
 namespace rp::pmap {
 
-using portable::putInt;
 using portable::putFlt;
+using portable::putInt;
 namespace {
 
 namespace fs = std::filesystem;
 using test::errorOf;
 using test::slurp;
-
 
 void spit(const std::string& path, const std::string& data) {
     std::ofstream(path, std::ios::binary) << data;
@@ -50,7 +49,6 @@ PhotonMap randomMap(PhotonMapType type, size_t n, uint32_t seed, size_t numPrima
     for (size_t i = 0; i < numPrimaries; ++i) prims[i].srcIdx = static_cast<int16_t>(i % 7 - 1);
     return PhotonMap(type, std::move(v), std::move(prims));
 }
-
 
 TEST(PhotonMap, TypeNamesAndFormats) {
     EXPECT_STREQ(photonMapTypeName(PhotonMapType::PreComp), "PreComp");
@@ -164,8 +162,8 @@ TEST(PhotonMap, ExactFileBytes) {
     EXPECT_EQ(b.size(), 5u + 8 + 15 + 30 + 15 + 5 + 4 + 27);
     EXPECT_EQ(b, want);
     // Then the one block's CRC-32, most significant byte first.
-    const uint32_t crc = recordsChecksum(
-        reinterpret_cast<const unsigned char*>(want.data() + want.size() - 27), 27);
+    const uint32_t crc =
+        recordsChecksum(reinterpret_cast<const unsigned char*>(want.data() + want.size() - 27), 27);
     const std::string tail = withCrc.substr(withCrc.size() - 4);
     EXPECT_EQ(uint32_t(uint8_t(tail[0])) << 24 | uint32_t(uint8_t(tail[1])) << 16 |
                   uint32_t(uint8_t(tail[2])) << 8 | uint8_t(tail[3]),

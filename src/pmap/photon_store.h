@@ -24,10 +24,10 @@ namespace rp::pmap {
 // need of it (16 bytes, copied out so that no store has to keep anything alive).
 struct FoundPhoton {
     float dist2 = 0;
-    Colr flux = {0, 0, 0, 0};  // RGBE, as stored
+    Colr flux = {0, 0, 0, 0};    // RGBE, as stored
     int8_t norm[3] = {0, 0, 0};  // surface normal (incident direction for volume photons) x 127
-    uint8_t flags = 0;         // Photon::flags (caustic bit)
-    uint32_t primary = 0;      // index into the map's primaries (contribution maps)
+    uint8_t flags = 0;           // Photon::flags (caustic bit)
+    uint32_t primary = 0;        // index into the map's primaries (contribution maps)
 
     std::array<float, 3> fluxRgb() const { return colrToRgb(flux); }
     bool caustic() const { return (flags & Photon::kCausticBit) != 0; }
@@ -73,11 +73,11 @@ public:
 // options, manual 3.2). A map is searched out of core when its in-core store would not fit
 // memoryBudget bytes, or when cachePhotons is set and the map holds more photons than that.
 struct StoreOptions {
-    uint64_t cachePhotons = 0;     // -aC: photons cached per thread (and resident); 0 = unset
-    double pageSize = 4;           // -ac: page size as a multiple of the bandwidth
-    int bandwidth = 50;            // the largest bandwidth the map is looked up with
-    int threads = 1;               // threads that will search (one page cache each)
-    uint64_t memoryBudget = 0;     // bytes; 0 = half the physical memory
+    uint64_t cachePhotons = 0;  // -aC: photons cached per thread (and resident); 0 = unset
+    double pageSize = 4;        // -ac: page size as a multiple of the bandwidth
+    int bandwidth = 50;         // the largest bandwidth the map is looked up with
+    int threads = 1;            // threads that will search (one page cache each)
+    uint64_t memoryBudget = 0;  // bytes; 0 = half the physical memory
 };
 
 // RADIANCE compat (pmapparm.c): -aC's default, 1M photons.

@@ -152,7 +152,8 @@ TEST(PhotonStore, EveryStoreEqualsBruteForce) {
             const auto photons = makePhotons(layout, n, 10 + uint32_t(n));
             const Stores stores(photons, dir);
             if (n > 64) {
-                ASSERT_NE(stores.outOfCore.store().describe().find("out of core"), std::string::npos);
+                ASSERT_NE(stores.outOfCore.store().describe().find("out of core"),
+                          std::string::npos);
             }
             std::mt19937 rng(5);
             std::uniform_real_distribution<double> u(-1.1, 1.1);
@@ -169,10 +170,10 @@ TEST(PhotonStore, EveryStoreEqualsBruteForce) {
                             const Vec3 nrm = normalize(Vec3(u(rng), u(rng), u(rng)));
                             const PhotonQuery query{q, trial % 4 < 2 ? &nrm : nullptr,
                                                     trial % 8 >= 6, r2, k};
-                            const std::string what =
-                                store.describe() + " layout " + std::to_string(int(layout)) +
-                                " n " + std::to_string(n) + " k " + std::to_string(k) +
-                                " trial " + std::to_string(trial);
+                            const std::string what = store.describe() + " layout " +
+                                                     std::to_string(int(layout)) + " n " +
+                                                     std::to_string(n) + " k " + std::to_string(k) +
+                                                     " trial " + std::to_string(trial);
                             const size_t found = store.findNearest(*cursor, query, out);
                             expectSameUpToTies(checked({out.data(), found}, photons),
                                                bruteForce(photons, query), what);
@@ -220,12 +221,13 @@ TEST(PhotonStore, PlanarSetsEqualBruteForce) {
             c[(flat + 1) % 3] = st[0];
             c[(flat + 2) % 3] = st[1];
             nn[flat] = 1;
-            photons.push_back(makePhoton({c[0], c[1], c[2]}, {nn[0], nn[1], nn[2]}, {1e-4, 1e-4, 1e-4}));
+            photons.push_back(
+                makePhoton({c[0], c[1], c[2]}, {nn[0], nn[1], nn[2]}, {1e-4, 1e-4, 1e-4}));
         }
         std::vector<Vec3> queries;
         for (int t = 0; t < 30; ++t) {
             const Photon& p = photons[rng() % photons.size()];
-            Vec3 q = t % 3 == 0 ? p.position()
+            Vec3 q = t % 3 == 0   ? p.position()
                      : t % 3 == 1 ? Vec3(0.5, 0.5, 0.5)
                                   : Vec3(p.pos[0], 0.5, u(rng));
             if (t % 2 == 0) {  // on the plane, as surface lookups are
@@ -248,17 +250,18 @@ TEST(PhotonStore, StackedAndTinyClustersEqualBruteForce) {
     std::mt19937 rng(77);
     std::uniform_real_distribution<double> u(0, 1);
     const Vec3 stacks[3] = {Vec3(0.1, 0.2, 0), Vec3(0.1, 0.2000001, 0), Vec3(0.9, 0.9, 0)};
-    for (int i = 0; i < 3000; ++i) photons.push_back(makePhoton(stacks[i % 3], {0, 0, 1}, {1, 1, 1}));
+    for (int i = 0; i < 3000; ++i)
+        photons.push_back(makePhoton(stacks[i % 3], {0, 0, 1}, {1, 1, 1}));
     for (int i = 0; i < 3000; ++i)
         photons.push_back(
             makePhoton(Vec3(0.5 + 1e-6 * u(rng), 0.5 + 1e-6 * u(rng), 0), {0, 0, 1}, {1, 1, 1}));
     for (int i = 0; i < 2000; ++i)
         photons.push_back(makePhoton(Vec3(u(rng), u(rng), 0), {0, 0, 1}, {1, 1, 1}));
     const Vec3 up(0, 0, 1);
-    expectInCoreMatches(photons,
-                        {stacks[0], stacks[2], Vec3(0.5, 0.5, 0), Vec3(0.5000005, 0.5, 0),
-                         Vec3(0.3, 0.3, 0)},
-                        &up, {1, 51, 999, 1001, 2500, 9000}, {10.f}, "stacks");
+    expectInCoreMatches(
+        photons,
+        {stacks[0], stacks[2], Vec3(0.5, 0.5, 0), Vec3(0.5000005, 0.5, 0), Vec3(0.3, 0.3, 0)}, &up,
+        {1, 51, 999, 1001, 2500, 9000}, {10.f}, "stacks");
 }
 
 // Sets where the radius guessed from a leaf's box is far off: photons on a line, on two
@@ -276,9 +279,9 @@ TEST(PhotonStore, GuessUnfriendlySetsEqualBruteForce) {
                 photons.push_back(i % 2 ? makePhoton(Vec3(s, 0, t), {0, 1, 0}, {1, 1, 1})
                                         : makePhoton(Vec3(s, t, 0), {0, 0, 1}, {1, 1, 1}));
             else
-                photons.push_back(makePhoton(
-                    i % 4 ? Vec3(0.5 + 0.01 * s, 0.5 + 0.01 * t, 0) : Vec3(s, t, 0), {0, 0, 1},
-                    {1, 1, 1}));
+                photons.push_back(
+                    makePhoton(i % 4 ? Vec3(0.5 + 0.01 * s, 0.5 + 0.01 * t, 0) : Vec3(s, t, 0),
+                               {0, 0, 1}, {1, 1, 1}));
         }
         std::vector<Vec3> queries;
         for (int t = 0; t < 20; ++t) {

@@ -2,6 +2,11 @@
 // (precomp.h).
 #include "pmap/precomp.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -9,11 +14,6 @@
 #include <cstdio>
 #include <mutex>
 #include <ostream>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-#include <tbb/task_arena.h>
 
 #include "pmap/density.h"
 #include "pmap/photon_map.h"

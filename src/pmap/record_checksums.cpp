@@ -1,10 +1,10 @@
 // Per-block checksums of photon records (record_checksums.h), with zlib's CRC-32.
 #include "pmap/record_checksums.h"
 
-#include <algorithm>
-
 #include <fmt/format.h>
 #include <zlib.h>
+
+#include <algorithm>
 
 #include "util/error.h"
 

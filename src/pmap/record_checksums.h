@@ -15,7 +15,7 @@
 
 namespace rp::pmap {
 
-constexpr uint32_t kChecksumBlock = 4096;   // records per checksum
+constexpr uint32_t kChecksumBlock = 4096;  // records per checksum
 inline constexpr const char* kChecksumKey = "RP_CRC32";
 
 // Blocks of `block` records in n records (the last may be short).
@@ -36,8 +36,7 @@ struct RecordChecksums {
     void decode(const unsigned char* bytes, size_t blocks);
     // Throws InputError naming `what` and the photons of block b (of a map of
     // `numPhotons`) when `computed`, its records' checksum, is not the stored one.
-    void check(const std::string& what, uint64_t b, uint32_t computed,
-               uint64_t numPhotons) const;
+    void check(const std::string& what, uint64_t b, uint32_t computed, uint64_t numPhotons) const;
 };
 
 }  // namespace rp::pmap

@@ -35,7 +35,8 @@ TEST(RecordChecksums, TrailerRoundTripAndMismatch) {
         b.check("m.pm", 2, 7u, 25);
         FAIL() << "no error";
     } catch (const InputError& e) {
-        EXPECT_STREQ(e.what(), "m.pm: damaged photon map: photons 20 to 24 do not match their checksum");
+        EXPECT_STREQ(e.what(),
+                     "m.pm: damaged photon map: photons 20 to 24 do not match their checksum");
     }
 }
 

@@ -43,10 +43,14 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
                            const light::EmissionPlan& plan, TraceSettings settings,
                            const material::SurfaceChains& chains,
                            const material::MaterialCalc* materialCalc)
-    : scene_(scene), geometry_(geometry), cube_(geometry.sceneCube()), chains_(chains),
+    : scene_(scene),
+      geometry_(geometry),
+      cube_(geometry.sceneCube()),
+      chains_(chains),
       materials_(chains.materials()),
       materialCalc_(materialCalc),
-      plan_(plan), settings_(std::move(settings)) {
+      plan_(plan),
+      settings_(std::move(settings)) {
     const auto& prims = scene.prims;
     surfaces_.resize(prims.size());
     roles_.assign(prims.size(), 0);
@@ -79,7 +83,8 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
         if (info.resolved) continue;
         info.resolved = true;
         const Primitive& mod = prims[size_t(surf.modifier)];
-        info.storeAllowed = include.empty() ? !exclude.count(mod.name) : include.count(mod.name) > 0;
+        info.storeAllowed =
+            include.empty() ? !exclude.count(mod.name) : include.count(mod.name) > 0;
         info.plain = chains_.isPlain(surf.modifier);
         if (info.plain) {
             info.material = chains_.plainMaterial(surf.modifier);
@@ -89,8 +94,7 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
         chains_.checkChain(surf.modifier);
         info.material = chainMaterial(scene, surf.modifier);  // for the port test
     }
-    for (const light::LightSource& s : plan_.sources())
-        sourceMaxDistance_.push_back(s.maxDistance);
+    for (const light::LightSource& s : plan_.sources()) sourceMaxDistance_.push_back(s.maxDistance);
     findSourceMedia();
 }
 
@@ -106,13 +110,20 @@ void PhotonTracer::findSourceMedia() {
         const size_t i = size_t(src.shapeIndex);
         Vec3 centre;
         switch (src.shape) {
-        case light::EmitterShape::Sphere: centre = shapes.spheres[i].center; break;
-        case light::EmitterShape::Ring: centre = shapes.rings[i].centre; break;
-        case light::EmitterShape::Polygon: centre = shapes.polygons[i].vertexMean; break;
-        case light::EmitterShape::Cone:
-            centre = shapes.cones[i].p0 + shapes.cones[i].axis * (0.5 * shapes.cones[i].length);
-            break;
-        case light::EmitterShape::Distant: continue;  // from outside the scene
+            case light::EmitterShape::Sphere:
+                centre = shapes.spheres[i].center;
+                break;
+            case light::EmitterShape::Ring:
+                centre = shapes.rings[i].centre;
+                break;
+            case light::EmitterShape::Polygon:
+                centre = shapes.polygons[i].vertexMean;
+                break;
+            case light::EmitterShape::Cone:
+                centre = shapes.cones[i].p0 + shapes.cones[i].axis * (0.5 * shapes.cones[i].length);
+                break;
+            case light::EmitterShape::Distant:
+                continue;  // from outside the scene
         }
         sourceMedium_[s] =
             material::mediumWithin(material::enclosingMists(geometry_, chains_, centre, rng),
@@ -126,14 +137,15 @@ const material::MaterialRecord& PhotonTracer::scatterer(int32_t m) const {
     // its default, an error); we say so at the material's line.
     if (std::holds_alternative<material::PrismParams>(*r.params)) {
         const Primitive& p = scene_.prims[size_t(m)];
-        throw notSupportedYet(p.loc, std::string(primTypeName(p.type)) + " material in photon maps");
+        throw notSupportedYet(p.loc,
+                              std::string(primTypeName(p.type)) + " material in photon maps");
     }
     return r;
 }
 
 int32_t PhotonTracer::resolveChain(int32_t modifier, const Hit& hit, const Vec3& dir,
-                                   std::optional<material::SurfaceChainEvaluator>& eval,
-                                   Rng& rng, Color& pattern, Vec3& perturbation) const {
+                                   std::optional<material::SurfaceChainEvaluator>& eval, Rng& rng,
+                                   Color& pattern, Vec3& perturbation) const {
     if (!eval) eval.emplace(chains_);
     const auto at = material::PatternPoint::atHit(dir, hit);
     material::ChainResult c = eval->resolve(modifier, at, rng);
@@ -203,9 +215,8 @@ void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool i
 }
 
 PhotonTracer::MediumStep PhotonTracer::travelMedium(
-    Ray& ray, const Hit* hit, const material::Medium& m, Color& flux, double& travelled,
-    Rng& rng, Rng& storeRng, const std::array<double, kNumPhotonMapTypes>& prob,
-    PhotonBins& out) const {
+    Ray& ray, const Hit* hit, const material::Medium& m, Color& flux, double& travelled, Rng& rng,
+    Rng& storeRng, const std::array<double, kNumPhotonMapTypes>& prob, PhotonBins& out) const {
     // The free path is drawn from the mean extinction, as RADIANCE does; the flux is
     // weighted per channel by the ratio of the true probabilities to the drawn one (1 in
     // a grey medium), which keeps coloured media unbiased where RADIANCE only renormalises
@@ -222,7 +233,8 @@ PhotonTracer::MediumStep PhotonTracer::travelMedium(
     // Past the path limit (-ld), or scattered outside the scene's cube: leaked.
     if (!(d <= ray.tmax)) return MediumStep::Lost;
     for (int k = 0; k < 3; ++k)
-        if (!(p[k] >= cube_.origin[k] && p[k] <= cube_.origin[k] + cube_.size)) return MediumStep::Lost;
+        if (!(p[k] >= cube_.origin[k] && p[k] <= cube_.origin[k] + cube_.size))
+            return MediumStep::Lost;
     travelled += d;
     for (int k = 0; k < 3; ++k)
         flux[k] *= m.extinction[k] / mean * std::exp((mean - m.extinction[k]) * d);
@@ -243,11 +255,13 @@ PhotonTracer::MediumStep PhotonTracer::travelMedium(
     return MediumStep::Scattered;
 }
 
-PhotonTracer::MediumStep PhotonTracer::crossMist(
-    const material::MistParams& mist, int32_t matIndex, const Hit& hit, const Color& pattern,
-    Ray& ray, material::Medium& medium, material::MistSet& mists, Color& flux,
-    double& travelled, Rng& rng, Rng& storeRng,
-    const std::array<double, kNumPhotonMapTypes>& prob, PhotonBins& out) const {
+PhotonTracer::MediumStep PhotonTracer::crossMist(const material::MistParams& mist, int32_t matIndex,
+                                                 const Hit& hit, const Color& pattern, Ray& ray,
+                                                 material::Medium& medium, material::MistSet& mists,
+                                                 Color& flux, double& travelled, Rng& rng,
+                                                 Rng& storeRng,
+                                                 const std::array<double, kNumPhotonMapTypes>& prob,
+                                                 PhotonBins& out) const {
     const material::MediumChange crossing = material::mistCrossing(mist, hit.front, pattern);
     if (hit.front) {
         mists.enter(matIndex);
@@ -257,7 +271,8 @@ PhotonTracer::MediumStep PhotonTracer::crossMist(
         // the medium's already travelled, may stop it on the way here.
         material::MediumChange enter = crossing;
         enter.kind = material::MediumChange::Kind::EnterMist;
-        const material::Medium inside = material::changeMedium(medium, enter, settings_.medium, &mist);
+        const material::Medium inside =
+            material::changeMedium(medium, enter, settings_.medium, &mist);
         const material::Medium extra{inside.extinction - medium.extinction, inside.albedo,
                                      inside.eccentricity};
         medium = inside;
@@ -323,11 +338,9 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     // One per path, set at each hit (setSurfaceHit, pattern, normal, and prepareHit for
     // what a material's functions give); its other fields keep their defaults.
     material::SurfacePoint sp;
-    std::optional<material::MaterialCalcEvaluator> calcEval;  // made at the first use
+    std::optional<material::MaterialCalcEvaluator> calcEval;   // made at the first use
     std::optional<material::SurfaceChainEvaluator> chainEval;  // idem
-    auto causticNow = [&] {
-        return scatters > 0 && lastSpecular;
-    };
+    auto causticNow = [&] { return scatters > 0 && lastSpecular; };
 
     for (;;) {
         if (scatters > settings_.maxBounce || passes > 4 * settings_.maxBounce + 1000) {
@@ -338,8 +351,8 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         if (!(ray.tmax > 0)) return;
         std::optional<Hit> hit = geometry_.closestHit(ray);
         if (medium.active()) {
-            MediumStep step = travelMedium(ray, hit ? &*hit : nullptr, medium, flux, travelled,
-                                           rng, storeRng, prob, out);
+            MediumStep step = travelMedium(ray, hit ? &*hit : nullptr, medium, flux, travelled, rng,
+                                           storeRng, prob, out);
             if (step == MediumStep::Lost) return;
             if (step == MediumStep::Scattered) {
                 // Surface photons after this are indirect (global), never caustic.
@@ -378,9 +391,9 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
         // normal (the stored photon keeps the surface's own), a mixture picks a material.
         Color pattern{1, 1, 1};
         Vec3 perturbation;
-        const int32_t matIndex =
-            surf->plain ? surf->material
-                        : resolveChain(modIndex, *hit, ray.dir, chainEval, rng, pattern, perturbation);
+        const int32_t matIndex = surf->plain ? surf->material
+                                             : resolveChain(modIndex, *hit, ray.dir, chainEval, rng,
+                                                            pattern, perturbation);
         perturbation += hit->perturbation;  // a mesh's vertex normals (RADIANCE o_mesh.c)
         if (matIndex == kVoid) {
             ray = spawnRay(*hit, ray.dir);
@@ -435,8 +448,8 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
             if (!calcEval) calcEval.emplace(*materialCalc_);
             if (!chainEval) chainEval.emplace(chains_);
             wgmd = material::wgmdHitInputs(*materialCalc_, *calcEval, *chainEval, matIndex,
-                                           *wgmdParams, material::PatternPoint::atHit(ray.dir, *hit),
-                                           sp, rng);
+                                           *wgmdParams,
+                                           material::PatternPoint::atHit(ray.dir, *hit), sp, rng);
             sp.wgmd = &wgmd;
         }
         material::PhotonScatter s = material::scatterPhoton(*mi.params, sp, rng);

@@ -39,14 +39,14 @@ struct TraceSettings {
     // Which map types collect photons. PreComp collects global photons (precomp.h);
     // contribution maps are distributed by contrib.h through the Global slot.
     std::array<bool, kNumPhotonMapTypes> maps{};
-    bool backVisible = true;  // -bv
-    long maxBounce = 5000;    // -lr / -apm
-    double maxDistance = 0;   // -ld, 0 = unlimited
+    bool backVisible = true;             // -bv
+    long maxBounce = 5000;               // -lr / -apm
+    double maxDistance = 0;              // -ld, 0 = unlimited
     std::vector<RegionOfInterest> rois;  // -api
     std::vector<std::string> sensors;    // -aps / -apS modifier names
     std::vector<std::string> include;    // -ai: store only on these modifiers
     std::vector<std::string> exclude;    // -ae: never store on these modifiers
-    material::Medium medium;  // -me -ma -mg: the global medium photons start in
+    material::Medium medium;             // -me -ma -mg: the global medium photons start in
 };
 
 // Photons deposited by a range of traced photons, one list per map type.
@@ -66,9 +66,8 @@ public:
     // (may be null when the scene has no function-driven materials) evaluates BRTDfunc's
     // specular colour expressions, as pmapmat.c brdfPhotonScatter does. Both must
     // outlive the tracer.
-    PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
-                 const light::EmissionPlan& plan, TraceSettings settings,
-                 const material::SurfaceChains& chains,
+    PhotonTracer(const Scene& scene, const SceneGeometry& geometry, const light::EmissionPlan& plan,
+                 TraceSettings settings, const material::SurfaceChains& chains,
                  const material::MaterialCalc* materialCalc = nullptr);
 
     // Emits photon `index` of the run keyed by `seed` and traces it. A deposit for map
@@ -85,10 +84,10 @@ private:
     // materials themselves are the chains' (chains_.materials()).
     struct SurfaceModifier {
         bool resolved = false;
-        bool plain = true;          // no pattern, texture or mixture on the chain
-        int32_t material = kVoid;   // the material reached (RADIANCE findmaterial; for a
-                                    // chain with a mixture: the mixture, for port tests)
-        bool storeAllowed = true;   // include/exclude sets
+        bool plain = true;         // no pattern, texture or mixture on the chain
+        int32_t material = kVoid;  // the material reached (RADIANCE findmaterial; for a
+                                   // chain with a mixture: the mixture, for port tests)
+        bool storeAllowed = true;  // include/exclude sets
     };
     // What this run's settings make of a material: a photon sensor (-aps), a BRTDfunc
     // whose specular colours are expressions (materialCalc_).
@@ -105,9 +104,9 @@ private:
     // error, or "not supported yet" for prisms.
     const material::MaterialRecord& scatterer(int32_t m) const;
 
-    void deposit(const Hit& hit, bool front, const Color& flux, bool indirect,
-                 bool caustic, const std::array<double, kNumPhotonMapTypes>& prob,
-                 Rng& storeRng, PhotonBins& out) const;
+    void deposit(const Hit& hit, bool front, const Color& flux, bool indirect, bool caustic,
+                 const std::array<double, kNumPhotonMapTypes>& prob, Rng& storeRng,
+                 PhotonBins& out) const;
     bool inRegions(const Vec3& p) const;
 
     // The photon's way through the medium `m` it travels in, up to `hit` (null: it

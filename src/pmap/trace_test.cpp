@@ -147,8 +147,10 @@ TEST(TraceStorage, ExcludeSetStoresEverywhereElse) {
 // (travelling down) only, and lets them pass: the floor below still gets direct light.
 std::string sensorPlane(bool up) {
     return std::string("void antimatter sensor_mat 1 void 0 0\n") +
-           (up ? "sensor_mat polygon sensor 0 0 12 0.01 0.01 1 3.99 0.01 1 3.99 3.99 1 0.01 3.99 1\n"
-               : "sensor_mat polygon sensor 0 0 12 0.01 0.01 1 0.01 3.99 1 3.99 3.99 1 3.99 0.01 1\n");
+           (up ? "sensor_mat polygon sensor 0 0 12 0.01 0.01 1 3.99 0.01 1 3.99 3.99 1 0.01 3.99 "
+                 "1\n"
+               : "sensor_mat polygon sensor 0 0 12 0.01 0.01 1 0.01 3.99 1 3.99 3.99 1 3.99 0.01 "
+                 "1\n");
 }
 
 TEST(TraceStorage, SensorStoresFrontSideOnlyAndPassesPhotons) {
@@ -280,7 +282,8 @@ void light solar 0 0 3 1000 1000 1000
 solar source sun 0 0 4 0 0 1 0.5
 floormat polygon floor 0 0 12  0 0 0  4 0 0  4 4 0  0 4 0
 void BRTDfunc pane
-10 0 0 0 )" + trans + " " + trans + " " + trans + R"( 0 0 0 .
+10 0 0 0 )" + trans + " " + trans +
+                             " " + trans + R"( 0 0 0 .
 0
 9 0 0 0 0 0 0 0 0 0
 pane polygon glazing 0 0 12  -1 -1 2  5 -1 2  5 5 2  -1 5 2
@@ -329,22 +332,22 @@ std::array<double, 3> storedFlux(const DistributionResult& r) {
 // uniform in x, and sin is odd: mean 1), green 0.5, blue 1.2, on plastic 0.5. 40k
 // photons: ~1 % standard error per channel (as the plain furnace test); tolerance 3 %.
 TEST(TraceChains, PatternColoursTheFurnaceAlbedo) {
-    auto run = makeRun(sceneFromText(furnaceWith(
-                           "void colorfunc paint 4 if(sin(20*Px),1.6,0.4) 0.5 1.2 . 0 0\n"
-                           "paint plastic wall 0 0 5 0.5 0.5 0.5 0 0\n")),
-                       mapsFor(true, false, false), {}, true);
+    auto run = makeRun(
+        sceneFromText(furnaceWith("void colorfunc paint 4 if(sin(20*Px),1.6,0.4) 0.5 1.2 . 0 0\n"
+                                  "paint plastic wall 0 0 5 0.5 0.5 0.5 0 0\n")),
+        mapsFor(true, false, false), {}, true);
     auto f = storedFlux(distribute(*run, 40000, 0, 0));
     const double rho[3] = {0.5, 0.25, 0.6};
     for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(f[size_t(c)], furnaceFlux(rho[c]), 0.03 * furnaceFlux(rho[c])) << "channel " << c;
+        EXPECT_NEAR(f[size_t(c)], furnaceFlux(rho[c]), 0.03 * furnaceFlux(rho[c]))
+            << "channel " << c;
 }
 
 // mixfunc: 30 % of a 0.8 plastic, 70 % of a 0.2 one: the blended albedo 0.38.
 TEST(TraceChains, MixtureStoresTheBlendedAlbedo) {
-    auto run = makeRun(sceneFromText(furnaceWith(
-                           "void plastic bright 0 0 5 0.8 0.8 0.8 0 0\n"
-                           "void plastic dark 0 0 5 0.2 0.2 0.2 0 0\n"
-                           "void mixfunc wall 4 bright dark 0.3 . 0 0\n")),
+    auto run = makeRun(sceneFromText(furnaceWith("void plastic bright 0 0 5 0.8 0.8 0.8 0 0\n"
+                                                 "void plastic dark 0 0 5 0.2 0.2 0.2 0 0\n"
+                                                 "void mixfunc wall 4 bright dark 0.3 . 0 0\n")),
                        mapsFor(true, false, false), {}, true);
     auto f = storedFlux(distribute(*run, 40000, 0, 0));
     EXPECT_NEAR(f[0], furnaceFlux(0.38), 0.03 * furnaceFlux(0.38));
@@ -353,11 +356,12 @@ TEST(TraceChains, MixtureStoresTheBlendedAlbedo) {
 // A bumpy wall (texfunc: normals tilted by up to ~6 degrees with noise) reflects as much
 // as a smooth one: the furnace stores the same flux within the 3 % of the plain test.
 TEST(TraceChains, TextureKeepsTheFurnaceFlux) {
-    auto run = makeRun(sceneFromText(furnaceWith(
-                           "void texfunc bumps 4 .1*noise3(7*Px,7*Py,7*Pz) .1*noise3(7*Py,7*Pz,7*Px) "
-                           ".1*noise3(7*Pz,7*Px,7*Py) . 0 0\n"
-                           "bumps plastic wall 0 0 5 0.5 0.5 0.5 0 0\n")),
-                       mapsFor(true, false, false), {}, true);
+    auto run =
+        makeRun(sceneFromText(furnaceWith(
+                    "void texfunc bumps 4 .1*noise3(7*Px,7*Py,7*Pz) .1*noise3(7*Py,7*Pz,7*Px) "
+                    ".1*noise3(7*Pz,7*Px,7*Py) . 0 0\n"
+                    "bumps plastic wall 0 0 5 0.5 0.5 0.5 0 0\n")),
+                mapsFor(true, false, false), {}, true);
     auto f = storedFlux(distribute(*run, 40000, 0, 0));
     EXPECT_NEAR(f[0], furnaceFlux(0.5), 0.03 * furnaceFlux(0.5));
 }

@@ -100,7 +100,8 @@ inline std::string boxRoom(const std::string& extra = "") {
 void plastic wallmat 0 0 5 0.5 0.5 0.5 0 0
 void plastic floormat 0 0 5 0.5 0.5 0.5 0 0
 void light lamp 0 0 3 10 10 10
-)" + boxRoomSurfaces() + extra;
+)" + boxRoomSurfaces() +
+           extra;
 }
 
 }  // namespace rp::pmap::testing

@@ -161,8 +161,8 @@ constexpr double kCurvatureShare = 0.5;
 // against RADIANCE; with them 1.9 %), records near the window reaching far past it.
 constexpr double kSplitSphereCurvature = 2.0;
 
-double Ambient::Impl::recordRadius(const HemisphereEstimate& est, double brightness,
-                                   double wt, Vec3& gradPosition) const {
+double Ambient::Impl::recordRadius(const HemisphereEstimate& est, double brightness, double wt,
+                                   Vec3& gradPosition) const {
     // The reach of a record (how far lookups may use it) follows from its second-order
     // error, as in RADIANCE 5's Hessian-based records, though by our own derivation:
     // extrapolation with the gradients leaves the curvature term 1/2 k x^2 (k: largest

@@ -24,9 +24,9 @@ class HemisphereTracer {
 public:
     virtual ~HemisphereTracer() = default;
     struct Sample {
-        Color radiance;           // radiance arriving back along the ray
-        double distance = 1e10;   // distance to the surface hit (1e10 if none)
-        Vec3 normal;              // geometric normal there, either sign (zero: unknown)
+        Color radiance;          // radiance arriving back along the ray
+        double distance = 1e10;  // distance to the surface hit (1e10 if none)
+        Vec3 normal;             // geometric normal there, either sign (zero: unknown)
     };
     // `ambientLevel` is the level of the new ray (1 for rays from a primary hit);
     // `weight` its RADIANCE ray weight (for -lw and the division count at deeper levels);
@@ -39,11 +39,11 @@ public:
 // The surface point needing indirect irradiance.
 struct AmbientPoint {
     Vec3 point;
-    Vec3 normal;          // shading normal on the side the light is wanted from
-    Vec3 offsetOrigin;    // point moved off the surface on that side (sample ray origin)
-    int32_t modifier = -1;   // for -ae/-ai
-    int ambientLevel = 0;    // bounces already made by the ray that hit this point
-    double weight = 1;       // the hitting ray's weight
+    Vec3 normal;            // shading normal on the side the light is wanted from
+    Vec3 offsetOrigin;      // point moved off the surface on that side (sample ray origin)
+    int32_t modifier = -1;  // for -ae/-ai
+    int ambientLevel = 0;   // bounces already made by the ray that hit this point
+    double weight = 1;      // the hitting ray's weight
     // The largest component of the material's ambient coefficient (RADIANCE intens of
     // the ambient colour; pi for rtrace -I's white receiver): without the cache the
     // division count and the samples' weights follow it.

@@ -71,9 +71,9 @@ Header checkHeader(std::istream& in, const std::string& path, size_t& bytes) {
     Header h = readHeader(in, path);
     SourceLoc loc{path, 0};
     if (h.format() != kAmbientFormat)
-        throw InputError(loc, fmt::format("not an ambient file (FORMAT={}, expected {})",
-                                          h.format().empty() ? "none" : h.format(),
-                                          kAmbientFormat));
+        throw InputError(loc,
+                         fmt::format("not an ambient file (FORMAT={}, expected {})",
+                                     h.format().empty() ? "none" : h.format(), kAmbientFormat));
     const std::string size = h.value("RECORD_BYTES");
     if (size == std::to_string(kAmbientRecordBytes))
         bytes = kAmbientRecordBytes;
@@ -90,8 +90,8 @@ Header checkHeader(std::istream& in, const std::string& path, size_t& bytes) {
 }  // namespace
 
 std::string ambientFileOptions(const AmbientOptions& o) {
-    return fmt::format("-aa {} -ar {} -ad {} -as {} -ab {}", o.accuracy, o.resolution,
-                       o.divisions, o.supersamples, o.bounces);
+    return fmt::format("-aa {} -ar {} -ad {} -as {} -ab {}", o.accuracy, o.resolution, o.divisions,
+                       o.supersamples, o.bounces);
 }
 
 void encodeAmbientRecord(const AmbientRecord& r, unsigned char* out, size_t bytes) {
@@ -143,10 +143,9 @@ AmbientFileContents readAmbientFile(const std::string& path) {
         AmbientRecord r = decodeAmbientRecord(data.data() + i * bytes, bytes);
         double nl = length(r.normal);
         bool ok = finite(r.position) && finite(r.normal) && finite(r.gradPosition) &&
-                  finite(r.gradDirection) && std::isfinite(r.value.r) &&
-                  std::isfinite(r.value.g) && std::isfinite(r.value.b) &&
-                  std::isfinite(r.radius) && r.radius > 0 && std::isfinite(r.weight) &&
-                  r.level >= 0 && std::fabs(nl - 1) < 1e-3;
+                  finite(r.gradDirection) && std::isfinite(r.value.r) && std::isfinite(r.value.g) &&
+                  std::isfinite(r.value.b) && std::isfinite(r.radius) && r.radius > 0 &&
+                  std::isfinite(r.weight) && r.level >= 0 && std::fabs(nl - 1) < 1e-3;
         if (!ok)
             throw InputError(SourceLoc{path, 0},
                              fmt::format("corrupt ambient record {} of {}", i + 1, n));

@@ -9,10 +9,10 @@ namespace rp::render {
 namespace {
 
 struct Division {
-    Color sum;                 // sum of sample radiances
-    double sumB = 0;           // brightness sum (for the neighbours' spread)
-    double prior = 0;          // variance around it, from its neighbours (super-sampling)
-    double minDistance = 1e10; // nearest surface seen through this division
+    Color sum;                      // sum of sample radiances
+    double sumB = 0;                // brightness sum (for the neighbours' spread)
+    double prior = 0;               // variance around it, from its neighbours (super-sampling)
+    double minDistance = 1e10;      // nearest surface seen through this division
     double hessian[3] = {0, 0, 0};  // sum over samples of their Hessian terms (see below)
     int n = 0;
 };
@@ -57,8 +57,7 @@ void tangentFrame(const Vec3& n, Vec3& u, Vec3& v) {
     v = Vec3(b, sign + n.y * n.y * a, -n.y);
 }
 
-HemisphereParams hemisphereDivisions(int divisions, int supersamples, double weight,
-                                     int minTheta) {
+HemisphereParams hemisphereDivisions(int divisions, int supersamples, double weight, int minTheta) {
     // RADIANCE compat (ambcomp.c inithemi, RADIANCE 3): theta rows from ad*wt/pi, phi
     // columns pi times as many, so divisions are roughly square in solid angle.
     HemisphereParams p;
@@ -87,8 +86,8 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
         double sin2 = (j + rng.uniform()) / M;
         double phi = 2 * kPi * (k + rng.uniform()) / N;
         double sinT = std::sqrt(sin2), cosT = std::sqrt(std::max(0.0, 1 - sin2));
-        Vec3 dir = normalize(ux * (std::cos(phi) * sinT) + uy * (std::sin(phi) * sinT) +
-                             normal * cosT);
+        Vec3 dir =
+            normalize(ux * (std::cos(phi) * sinT) + uy * (std::sin(phi) * sinT) + normal * cosT);
         HemisphereTracer::Sample s =
             tracer.trace(origin, dir, params.sampleLevel, params.sampleWeight, share);
         Division& d = div[size_t(j) * N + k];
@@ -148,7 +147,9 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
             for (int k = 0; k < N; ++k) {
                 double b[4];
                 int count = 0;
-                auto add = [&](int jj, int kk) { b[count++] = meanBrightness(div[size_t(jj) * N + kk]); };
+                auto add = [&](int jj, int kk) {
+                    b[count++] = meanBrightness(div[size_t(jj) * N + kk]);
+                };
                 if (j > 0) add(j - 1, k);
                 if (j + 1 < M) add(j + 1, k);
                 if (N > 1) {
@@ -198,8 +199,8 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
         double rowSum = 0;
         for (int j = 0; j < M; ++j) {
             double t0 = thetaBound(j), t1 = thetaBound(j + 1);
-            double tanAvg = M * ((t1 - std::sin(t1) * std::cos(t1)) -
-                                 (t0 - std::sin(t0) * std::cos(t0)));
+            double tanAvg =
+                M * ((t1 - std::sin(t1) * std::cos(t1)) - (t0 - std::sin(t0) * std::cos(t0)));
             rowSum += L(j, k) * tanAvg;
         }
         gr += vk * (rowSum * sincPhi);

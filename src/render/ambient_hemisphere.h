@@ -31,17 +31,16 @@ struct HemisphereParams {
 // count as*wt + .5. With minTheta 1 (no cache) a single row has the samples ad*wt asks
 // for, at least one and at most N: RADIANCE 5 (ambcomp.c samp_hemi) goes down to one
 // sample for rays of little weight.
-HemisphereParams hemisphereDivisions(int divisions, int supersamples, double weight,
-                                     int minTheta);
+HemisphereParams hemisphereDivisions(int divisions, int supersamples, double weight, int minTheta);
 
 struct HemisphereEstimate {
-    Color value;            // mean radiance over the cosine-weighted hemisphere (E / pi)
+    Color value;                    // mean radiance over the cosine-weighted hemisphere (E / pi)
     double sumInverseDistance = 0;  // sum of 1/distance over every sample (radius: harmonic mean)
-    int samples = 0;        // rays traced
-    int hits = 0;           // of which met a surface (the others escaped to sources/sky)
+    int samples = 0;                // rays traced
+    int hits = 0;                   // of which met a surface (the others escaped to sources/sky)
     // Gradients of brightness(value) (Color::brightness), not yet normalised:
-    Vec3 gradPosition;      // d value / d position (tangent plane), per unit length
-    Vec3 gradDirection;     // rotation vector gradient: value(N') ~ value + g . (N x N')
+    Vec3 gradPosition;   // d value / d position (tangent plane), per unit length
+    Vec3 gradDirection;  // rotation vector gradient: value(N') ~ value + g . (N x N')
     // Hessian of value under translation in the tangent plane, in the (u, v) frame of
     // tangentFrame(normal): xx, xy, yy (per unit length squared; see sampleHemisphere).
     double hessian[3] = {0, 0, 0};

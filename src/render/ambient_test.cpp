@@ -136,8 +136,7 @@ TEST(AmbientTest, PastLastBounceReturnsAmbientValue) {
     Ambient none(options(0, 0.1), 10, scene);
     FunctionTracer tracer(constantRadiance(Color::grey(5)));
     Rng rng(3, RngDomain::Test, 0);
-    EXPECT_EQ(none.indirect(pointAt({0, 0, 0}, {0, 0, 1}), tracer, rng),
-              (Color{0.01, 0.02, 0.03}));
+    EXPECT_EQ(none.indirect(pointAt({0, 0, 0}, {0, 0, 1}), tracer, rng), (Color{0.01, 0.02, 0.03}));
     EXPECT_EQ(tracer.calls, 0);
 }
 

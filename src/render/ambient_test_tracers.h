@@ -21,7 +21,7 @@ public:
         return fn_(origin, dir);
     }
     std::atomic<long> calls{0};
-    std::atomic<int> lastLevel{-1};       // atomics: the tracer is shared by threads
+    std::atomic<int> lastLevel{-1};  // atomics: the tracer is shared by threads
     std::atomic<double> lastWeight{0};
 
 private:

@@ -38,9 +38,8 @@ std::vector<std::string> splitWords(const std::string& text) {
 }
 
 void expandArgAt(std::vector<std::string>& args, size_t i) {
-    for (int depth = 0; i < args.size() && !args[i].empty() &&
-                        (args[i][0] == '@' || args[i][0] == '$');
-         ++depth) {
+    for (int depth = 0;
+         i < args.size() && !args[i].empty() && (args[i][0] == '@' || args[i][0] == '$'); ++depth) {
         const std::string arg = args[i];
         if (depth >= 64) throw InputError("cannot expand '" + arg + "' (nested too deeply)");
         std::string text;

@@ -16,19 +16,19 @@ namespace {
 
 // One source sample that may contribute: RADIANCE's CONTRIB record.
 struct Candidate {
-    int32_t source = -1;  // index into SourceList::sources
-    SourceSample sample;  // toward the real source, from the apparent origin
-    Vec3 toLight;         // unit direction leaving the shaded point
-    Color coef;           // coefficient(toLight, omega) * omega
-    Color estimate;       // coef * unoccluded radiance (relays included)
-    double brt = 0;       // brightness of estimate (sort key)
+    int32_t source = -1;     // index into SourceList::sources
+    SourceSample sample;     // toward the real source, from the apparent origin
+    Vec3 toLight;            // unit direction leaving the shaded point
+    Color coef;              // coefficient(toLight, omega) * omega
+    Color estimate;          // coef * unoccluded radiance (relays included)
+    double brt = 0;          // brightness of estimate (sort key)
     uint32_t crossings = 0;  // first index into the relay crossing points
 };
 
 // Where a shadow path that reached its source ended, for contributions.
 struct ShadowEnd {
-    Color through;   // what the path transmits (glass, mirrors, prisms, medium)
-    Color radiance;  // the source's radiance toward the point
+    Color through;          // what the path transmits (glass, mirrors, prisms, medium)
+    Color radiance;         // the source's radiance toward the point
     int32_t modifier = -1;  // of the source surface (distant: of the `source`)
     Vec3 point, dir;        // where it met the source, travelling dir
 };
@@ -55,8 +55,7 @@ DirectLighting::DirectLighting(const Scene& scene, const SceneGeometry& geometry
                                const RedirectFunction& redirect,
                                const material::Medium& globalMedium)
     : impl_(std::make_unique<Impl>(Impl{
-          geometry, options,
-          buildSourceList(scene, geometry, options, virtualSources, redirect),
+          geometry, options, buildSourceList(scene, geometry, options, virtualSources, redirect),
           globalMedium})) {}
 
 DirectLighting::~DirectLighting() = default;
@@ -90,15 +89,14 @@ bool DirectLighting::isDistantSource(int32_t source) const {
 namespace {
 bool passesIllum(const DirectSource& src, const Hit& hit) {
     const auto kind = src.light.params.kind;
-    const bool weak = kind == material::LightParams::Kind::Illum ||
-                      kind == material::LightParams::Kind::Glow;
+    const bool weak =
+        kind == material::LightParams::Kind::Illum || kind == material::LightParams::Kind::Glow;
     return !src.relays.empty() || !weak || !hit.front;
 }
 }  // namespace
 
-Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c,
-                                  const Vec3* crossings, ShadowOracle& oracle,
-                                  ShadowEnd* end) const {
+Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c, const Vec3* crossings,
+                                  ShadowOracle& oracle, ShadowEnd* end) const {
     const DirectSource& src = list.sources[size_t(c.source)];
     const size_t legs = src.relays.size() + 1;
     Vec3 dir = c.toLight;
@@ -248,8 +246,7 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
         Vec3 from = at.point;
         if (src.isVirtual()) {
             const RelayPlane& m1 = list.relays[size_t(src.relays.front().relay)];
-            if (src.mirrorSide != 0 &&
-                m1.region.signedDistance(at.point) * src.mirrorSide <= 0)
+            if (src.mirrorSide != 0 && m1.region.signedDistance(at.point) * src.mirrorSide <= 0)
                 continue;
             for (const RelayStep& st : src.relays)
                 from = st.unproject(list.relays[size_t(st.relay)].region, from);
@@ -392,8 +389,8 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
         // RADIANCE compat (source.c direct, rcontrib.c trace_contrib): the shadow ray that
         // reached its source tells rcontrib its coefficient and the source's radiance.
         if (at.contrib && end.modifier >= 0 && at.contrib->tracks(end.modifier))
-            at.contrib->add(end.modifier, end.point, end.dir,
-                            at.contribCoef * c.coef * end.through, end.radiance);
+            at.contrib->add(end.modifier, end.point, end.dir, at.contribCoef * c.coef * end.through,
+                            end.radiance);
         total += value;
         testedEstimate += c.brt;
         testedFound += value.brightness();

@@ -69,9 +69,9 @@ public:
 
 // The point being shaded.
 struct DirectPoint {
-    Vec3 point;       // hit point
-    Vec3 normal;      // shading normal on the side the ray came from
-    Vec3 geomNormal;  // geometric normal on that side (for spawn offsets)
+    Vec3 point;                // hit point
+    Vec3 normal;               // shading normal on the side the ray came from
+    Vec3 geomNormal;           // geometric normal on that side (for spawn offsets)
     const Hit* hit = nullptr;  // the hit (spawnRay/spawnSegment offsets)
     bool transmits = false;    // the material transmits: sources behind count too
     // The ray's weight (RADIANCE r->rweight): -dt is relative to it (threshold dt/weight)
@@ -125,17 +125,16 @@ public:
     // unless `virtualSources` is false (photon-map mode switches them off).
     // `globalMedium` (-me -ma -mg) is what shadow rays leaving a dielectric or a mist
     // travel in.
-    DirectLighting(const Scene& scene, const SceneGeometry& geometry,
-                   const DirectOptions& options, bool virtualSources = true,
-                   const RedirectFunction& redirect = {},
+    DirectLighting(const Scene& scene, const SceneGeometry& geometry, const DirectOptions& options,
+                   bool virtualSources = true, const RedirectFunction& redirect = {},
                    const material::Medium& globalMedium = {});
     ~DirectLighting();
 
     // Direct contribution at `at`: sum over sources and their samples of
     // coefficient(toLight, omega) * radiance arriving along the shadow ray, honouring
     // -dt/-dc (untested sources estimated as RADIANCE does) and -dj.
-    Color compute(const DirectPoint& at, const DirectCoefficient& coefficient,
-                  ShadowOracle& oracle, Rng& rng) const;
+    Color compute(const DirectPoint& at, const DirectCoefficient& coefficient, ShadowOracle& oracle,
+                  Rng& rng) const;
 
     // One sample of real source `source` as a whole (no subdivision) seen from `at.point`
     // in a medium (RADIANCE srcscatter: nopart, srcray with no parent surface): the

@@ -30,14 +30,17 @@ public:
         if (mat == kVoid) return {};
         const Primitive& m = scene_.prims[size_t(mat)];
         switch (m.type) {
-        case PrimType::Light:
-        case PrimType::Spotlight:
-        case PrimType::Glow:
-        case PrimType::Illum:
-            return {ShadowEvent::Kind::Emit, {m.rargs[0], m.rargs[1], m.rargs[2]}, {}, {}};
-        case PrimType::Glass: return {ShadowEvent::Kind::Transmit, Color::grey(0.9), {}, {}};
-        case PrimType::Mirror: return {ShadowEvent::Kind::Reflect, Color::grey(0.9), {}, {}};
-        default: return {};
+            case PrimType::Light:
+            case PrimType::Spotlight:
+            case PrimType::Glow:
+            case PrimType::Illum:
+                return {ShadowEvent::Kind::Emit, {m.rargs[0], m.rargs[1], m.rargs[2]}, {}, {}};
+            case PrimType::Glass:
+                return {ShadowEvent::Kind::Transmit, Color::grey(0.9), {}, {}};
+            case PrimType::Mirror:
+                return {ShadowEvent::Kind::Reflect, Color::grey(0.9), {}, {}};
+            default:
+                return {};
         }
     }
     Color distantRadiance(int32_t source, const Vec3&) override {
@@ -129,10 +132,11 @@ TEST(DirectPolygon, NearLuminaireAsRadiance) {
     // balls under it read 20 % low until we did the same. RADIANCE 5.4,
     // `echo -3.95 2.08 2.388 0.1236 0.2047 0.971 | rtrace -h -I -ab 0 -dj 0 -ds D`:
     // 17.02549 (D = 0) and 13.00642 (D = 0.2), measured 1e-4 off the point (5e-4 tolerance).
-    Fixture f("void light bright 0 0 3 20 20 20\n"
-              "bright polygon luminaire 0 0 12 -3.42215031167 2.22695014727 2.999"
-              " -4.57784968833 2.22695014728 2.999 -4.57784968833 2.77304985273 2.999"
-              " -3.42215031167 2.77304985272 2.999\n");
+    Fixture f(
+        "void light bright 0 0 3 20 20 20\n"
+        "bright polygon luminaire 0 0 12 -3.42215031167 2.22695014727 2.999"
+        " -4.57784968833 2.22695014728 2.999 -4.57784968833 2.77304985273 2.999"
+        " -3.42215031167 2.77304985272 2.999\n");
     const Vec3 p{-3.95, 2.08, 2.388}, n = normalize(Vec3{0.1236, 0.2047, 0.971});
     DirectOptions opt;
     opt.sampling = 0;
@@ -154,16 +158,16 @@ TEST(DirectSquare, ConcavePolygonCellsCoverItsArea) {
     // An L-shaped light: three unit-ish squares; the areas of the cells (clipped exactly)
     // must sum to the L's, their solid angles nearly to the L's, and irradiance must
     // equal the sum over its three squares.
-    std::string text = kLight +
-                       "bright polygon ell 0 0 18  0 0 1  0 1 1  0.5 1 1  0.5 0.5 1  1 0.5 1  1 0 1\n";
+    std::string text =
+        kLight + "bright polygon ell 0 0 18  0 0 1  0 1 1  0.5 1 1  0.5 0.5 1  1 0.5 1  1 0 1\n";
     Fixture f(text);
     double exact = rectIrradiance(100, 0, 0.5, 0, 1, 1) + rectIrradiance(100, 0.5, 1, 0, 0.5, 1);
     DirectOptions opt;
     opt.sampling = 0.01;
-    EXPECT_NEAR(f.irradiance(opt, {0.1, 0.1, 0}, {0, 0, 1}).r,
-                rectIrradiance(100, -0.1, 0.4, -0.1, 0.9, 1) +
-                    rectIrradiance(100, 0.4, 0.9, -0.1, 0.4, 1),
-                0.005 * exact);
+    EXPECT_NEAR(
+        f.irradiance(opt, {0.1, 0.1, 0}, {0, 0, 1}).r,
+        rectIrradiance(100, -0.1, 0.4, -0.1, 0.9, 1) + rectIrradiance(100, 0.4, 0.9, -0.1, 0.4, 1),
+        0.005 * exact);
     // Sum of sample solid angles = exact solid angle of the L (triangles from the point).
     DirectLighting direct(f.scene, f.geo, opt);
     std::vector<SourceSample> samples;
@@ -179,17 +183,17 @@ TEST(DirectSquare, ConcavePolygonCellsCoverItsArea) {
     }
     EXPECT_NEAR(area, 0.75, 1e-9);
     auto tri = [&](Vec3 a, Vec3 b, Vec3 c) { return triangleSolidAngle(from, a, b, c); };
-    double omega = tri({0, 0, 1}, {0, 1, 1}, {0.5, 1, 1}) + tri({0, 0, 1}, {0.5, 1, 1}, {0.5, 0, 1}) +
-                   tri({0.5, 0, 1}, {0.5, 0.5, 1}, {1, 0.5, 1}) +
-                   tri({0.5, 0, 1}, {1, 0.5, 1}, {1, 0, 1});
+    double omega =
+        tri({0, 0, 1}, {0, 1, 1}, {0.5, 1, 1}) + tri({0, 0, 1}, {0.5, 1, 1}, {0.5, 0, 1}) +
+        tri({0.5, 0, 1}, {0.5, 0.5, 1}, {1, 0.5, 1}) + tri({0.5, 0, 1}, {1, 0.5, 1}, {1, 0, 1});
     // 64 cells of about 1/8 m at 1 m: area cos / d^2 per cell is within 1.5 % of exact.
     EXPECT_NEAR(sum, omega, 0.015 * omega);
     for (const auto& s : samples) {
         // Jittered samples stay on the L.
         bool inLeft = s.target.x >= -1e-9 && s.target.x <= 0.5 + 1e-9 && s.target.y >= -1e-9 &&
                       s.target.y <= 1 + 1e-9;
-        bool inRight = s.target.x >= 0.5 - 1e-9 && s.target.x <= 1 + 1e-9 &&
-                       s.target.y >= -1e-9 && s.target.y <= 0.5 + 1e-9;
+        bool inRight = s.target.x >= 0.5 - 1e-9 && s.target.x <= 1 + 1e-9 && s.target.y >= -1e-9 &&
+                       s.target.y <= 0.5 + 1e-9;
         EXPECT_TRUE(inLeft || inRight) << s.target.x << " " << s.target.y;
     }
 }
@@ -229,9 +233,10 @@ TEST(DirectCylinder, FarAwayLooksLikeItsProjection) {
 }
 
 TEST(DirectDistant, OmegaTimesCosine) {
-    Fixture f("void light sun 0 0 3 1000 1000 1000\n"
-              "sun source s 0 0 4 0 1 1 0.5\n"
-              "void glow sky 0 0 4 1 1 1 0\nsky source skydome 0 0 4 0 0 1 180\n");
+    Fixture f(
+        "void light sun 0 0 3 1000 1000 1000\n"
+        "sun source s 0 0 4 0 1 1 0.5\n"
+        "void glow sky 0 0 4 1 1 1 0\nsky source skydome 0 0 4 0 0 1 180\n");
     double omega = 2 * kPi * (1 - std::cos(0.25 * kPi / 180));
     double exact = 1000 * omega * std::cos(kPi / 4);
     DirectOptions opt;
@@ -317,17 +322,17 @@ TEST(DirectShadow, OccluderGlassAndBackSide) {
     opt.sampling = 0.01;
     double open = Fixture(lamp).irradiance(opt, {0, 0, 0}, {0, 0, 1}).r;
     ASSERT_GT(open, 0);
-    std::string board = "void plastic grey 0 0 5 .5 .5 .5 0 0\n" +
-                        squareDown("grey", "board", 0, 0, 2, 0.5);
+    std::string board =
+        "void plastic grey 0 0 5 .5 .5 .5 0 0\n" + squareDown("grey", "board", 0, 0, 2, 0.5);
     EXPECT_EQ(Fixture(lamp + board).irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, 0);
-    std::string pane = "void glass clear 0 0 3 .96 .96 .96\n" +
-                       squareDown("clear", "pane", 0, 0, 2, 0.5);
+    std::string pane =
+        "void glass clear 0 0 3 .96 .96 .96\n" + squareDown("clear", "pane", 0, 0, 2, 0.5);
     EXPECT_NEAR(Fixture(lamp + pane).irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, 0.9 * open,
                 1e-9 * open);
     // Two panes: 0.81.
     std::string pane2 = squareDown("clear", "pane2", 0, 0, 2, 0.7);
-    EXPECT_NEAR(Fixture(lamp + pane + pane2).irradiance(opt, {0, 0, 0}, {0, 0, 1}).r,
-                0.81 * open, 1e-9 * open);
+    EXPECT_NEAR(Fixture(lamp + pane + pane2).irradiance(opt, {0, 0, 0}, {0, 0, 1}).r, 0.81 * open,
+                1e-9 * open);
     // Above the lamp, looking down at its back: nothing.
     EXPECT_EQ(Fixture(lamp).irradiance(opt, {0, 0, 2}, {0, 0, -1}).r, 0);
     // Another light in between blocks (it is not the source being sampled). With -dt 0:
@@ -368,8 +373,9 @@ TEST(DirectGlow, OnlyWithinItsRadius) {
 }
 
 std::string severalLights() {
-    std::string t = "void light a 0 0 3 100 100 100\nvoid light b 0 0 3 5 5 5\n"
-                    "void light c 0 0 3 1 1 1\nvoid plastic grey 0 0 5 .5 .5 .5 0 0\n";
+    std::string t =
+        "void light a 0 0 3 100 100 100\nvoid light b 0 0 3 5 5 5\n"
+        "void light c 0 0 3 1 1 1\nvoid plastic grey 0 0 5 .5 .5 .5 0 0\n";
     t += squareDown("a", "la", 0, 0, 0.3, 1.5);
     t += squareDown("b", "lb", 1, 0, 0.3, 1.5);
     t += squareDown("b", "lb2", -1, 1, 0.3, 1.2);
@@ -448,9 +454,10 @@ TEST(DirectVirtual, SmallMirrorOnlyWhereItIs) {
 }
 
 TEST(DirectVirtual, DistantSourceInAMirror) {
-    Fixture f("void light sun 0 0 3 1000 1000 1000\nsun source s 0 0 4 0 1 1 0.5\n"
-              "void mirror silver 0 0 3 .9 .9 .9\n"
-              "silver polygon floor 0 0 12 -50 -50 0 50 -50 0 50 50 0 -50 50 0\n");
+    Fixture f(
+        "void light sun 0 0 3 1000 1000 1000\nsun source s 0 0 4 0 1 1 0.5\n"
+        "void mirror silver 0 0 3 .9 .9 .9\n"
+        "silver polygon floor 0 0 12 -50 -50 0 50 -50 0 50 50 0 -50 50 0\n");
     double omega = 2 * kPi * (1 - std::cos(0.25 * kPi / 180));
     double exact = 0.9 * 1000 * omega * std::cos(kPi / 4);
     DirectOptions opt;

@@ -14,8 +14,8 @@
 // more per find than a flat table. Ours is open addressing with linear probing; readers
 // take no lock: a slot's cell pointer is stored before its key (release), and a full
 // table is replaced by a doubled copy published through an atomic pointer, the old one
-// kept alive until the cache dies so that readers still probing it stay safe. Inserts take a mutex: each
-// follows a hemisphere of hundreds of rays, so they are rare.
+// kept alive until the cache dies so that readers still probing it stay safe. Inserts take a mutex:
+// each follows a hemisphere of hundreds of rays, so they are rare.
 #include "render/irradiance_cache.h"
 
 #include <algorithm>
@@ -98,8 +98,7 @@ struct IrradianceCache::Cells {
         std::atomic<const Node*> head{nullptr};
     };
     struct Table {
-        explicit Table(size_t capacity)
-            : mask(capacity - 1), keys(capacity), cells(capacity) {}
+        explicit Table(size_t capacity) : mask(capacity - 1), keys(capacity), cells(capacity) {}
         size_t mask;
         std::vector<std::atomic<uint64_t>> keys;  // 0: empty slot
         std::vector<std::atomic<Cell*>> cells;
@@ -213,8 +212,7 @@ bool IrradianceCache::lookup(const CacheQuery& q, Rng* jitter, Color& out) const
             cells_->find(cellKey(level, cellIndex(q.point.x / cell), cellIndex(q.point.y / cell),
                                  cellIndex(q.point.z / cell)));
         if (!c) continue;
-        for (const Node* n = c->head.load(std::memory_order_acquire); n; n = n->next)
-            consider(*n);
+        for (const Node* n = c->head.load(std::memory_order_acquire); n; n = n->next) consider(*n);
     }
     if (weightSum <= 1e-6) return false;
     out = sum / weightSum;

@@ -22,13 +22,13 @@ namespace rp::render {
 // one cache line.
 struct AmbientRecord {
     Vec3 position;
-    double radius = 0;    // validity radius R_i of Ward's error estimate
-    int level = 0;        // ambient level of the ray that made it
-    double weight = 1;    // RADIANCE's record weight (AVGREFL^level, or from the ray)
-    Vec3 normal;          // unit
-    Color value;          // mean radiance of the hemisphere (irradiance / pi)
-    Vec3 gradPosition;    // translational gradient of brightness(value), relative (1/length)
-    Vec3 gradDirection;   // rotational gradient, relative: factor 1 + g . (N_i x N)
+    double radius = 0;   // validity radius R_i of Ward's error estimate
+    int level = 0;       // ambient level of the ray that made it
+    double weight = 1;   // RADIANCE's record weight (AVGREFL^level, or from the ray)
+    Vec3 normal;         // unit
+    Color value;         // mean radiance of the hemisphere (irradiance / pi)
+    Vec3 gradPosition;   // translational gradient of brightness(value), relative (1/length)
+    Vec3 gradDirection;  // rotational gradient, relative: factor 1 + g . (N_i x N)
     // RADIANCE's corral (ambcomp.c ambcorral): bit s set where a surface near the horizon
     // lies within the record's reach in azimuth sector s (32 sectors of pi/16 about the
     // normal, from tangentFrame's u axis). A query in such a sector may be behind that
@@ -51,8 +51,8 @@ struct CacheQuery {
     Vec3 point;
     Vec3 normal;
     int level = 0;
-    double weight = 1;   // the ray's weight (scales the normal error, as RADIANCE)
-    Vec3 origin;         // point moved off its surface, where leak tests start
+    double weight = 1;          // the ray's weight (scales the normal error, as RADIANCE)
+    Vec3 origin;                // point moved off its surface, where leak tests start
     LeakTest* leaks = nullptr;  // null: records are not tested for leaks
 };
 
@@ -89,7 +89,7 @@ private:
     struct Cells;
     double accuracy_;
     double minRadius_;
-    double cell0_;       // edge of the finest grid cells
+    double cell0_;  // edge of the finest grid cells
     bool useGradients_ = true;
     std::unique_ptr<Cells> cells_;
     std::atomic<uint64_t> levelsUsed_{0};  // bit l: some record lives in grid level l

@@ -56,8 +56,7 @@ Color Renderer::Context::volumeScatter(const Ray& ray, double t, const RayState&
         const Color toPoint = m.transmittance(tj);
         if (toPoint.brightness() <= kFtiny) break;
         const Vec3 p = ray.origin + ray.dir * tj;
-        total += impl.photons.volumeDensity(*photonLookups, p, -ray.dir, m.eccentricity) *
-                 toPoint;
+        total += impl.photons.volumeDensity(*photonLookups, p, -ray.dir, m.eccentricity) * toPoint;
     }
     return total * m.albedo * (t / n);
 }
@@ -96,7 +95,8 @@ Color Renderer::Context::sourceScatter(const Ray& ray, double t, const RayState&
     return total;
 }
 
-void Renderer::Context::cross(MediaState& state, const Passage& passage, MediaState& segment) const {
+void Renderer::Context::cross(MediaState& state, const Passage& passage,
+                              MediaState& segment) const {
     using K = material::MediumChange::Kind;
     const material::MediumChange& c = passage.crossing;
     const std::vector<int32_t>& mine = impl.mistSources.at(passage.mist);

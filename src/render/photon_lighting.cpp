@@ -215,8 +215,7 @@ Color PhotonLighting::contribDensity(Lookups& l, const Vec3& pos, const Vec3& no
     return Color{d[0], d[1], d[2]};
 }
 
-Color PhotonLighting::volumeDensity(Lookups& l, const Vec3& pos, const Vec3& out,
-                                   double g) const {
+Color PhotonLighting::volumeDensity(Lookups& l, const Vec3& pos, const Vec3& out, double g) const {
     if (volume_ < 0) return {};
     auto d = l.lookups[size_t(volume_)].volumeDensity(pos, out, g, &henyeyGreenstein4Pi);
     return Color{d[0], d[1], d[2]};

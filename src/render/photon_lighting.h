@@ -11,8 +11,8 @@
 #include <atomic>
 #include <memory>
 #include <mutex>
-#include <string>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "pmap/bias_comp.h"
@@ -47,7 +47,7 @@ public:
     ~PhotonLighting();
 
     bool active() const { return !maps_.empty(); }
-    bool hasGlobal() const { return global_ >= 0; }   // global or precomputed global
+    bool hasGlobal() const { return global_ >= 0; }  // global or precomputed global
     bool hasCaustic() const { return caustic_ >= 0; }
     bool hasDirect() const { return direct_ >= 0; }
     bool hasVolume() const { return volume_ >= 0; }

@@ -19,8 +19,8 @@ namespace {
 
 // A map of n photons uniform on the unit square z = 0 (normal +z), total flux `total`
 // per channel: irradiance = total (W/m^2), so the density estimate is total / pi.
-std::string writeMap(const std::filesystem::path& dirPath, const std::string& name, pmap::PhotonMapType type,
-                     int n, double total) {
+std::string writeMap(const std::filesystem::path& dirPath, const std::string& name,
+                     pmap::PhotonMapType type, int n, double total) {
     std::vector<pmap::Photon> photons;
     Rng rng(7, RngDomain::Test, 0);
     for (int i = 0; i < n; ++i)

@@ -26,11 +26,19 @@ Pixel previewColour(const Scene& scene, int32_t modifier) {
             float mx = std::max({r, g, b});
             return mx > 0 ? Pixel{r / mx, g / mx, b / mx} : grey;
         }
-        case PrimType::Plastic: case PrimType::Metal: case PrimType::Trans:
-        case PrimType::Plastic2: case PrimType::Metal2: case PrimType::Trans2:
+        case PrimType::Plastic:
+        case PrimType::Metal:
+        case PrimType::Trans:
+        case PrimType::Plastic2:
+        case PrimType::Metal2:
+        case PrimType::Trans2:
         case PrimType::Ashik2:
-        case PrimType::Mirror: case PrimType::Glass: case PrimType::Dielectric:
-        case PrimType::Interface: case PrimType::Plasfunc: case PrimType::Metfunc:
+        case PrimType::Mirror:
+        case PrimType::Glass:
+        case PrimType::Dielectric:
+        case PrimType::Interface:
+        case PrimType::Plasfunc:
+        case PrimType::Metfunc:
         case PrimType::Transfunc:
             return c;
         default:

@@ -28,8 +28,10 @@ calc::Builder definitionsBuilder(const std::vector<CalcDefinition>& defs) {
     calc::Builder b(calc::defaultSearchPath(projectLibDir()));
     b.loadFile("rayinit.cal");
     for (const CalcDefinition& d : defs) {
-        if (d.file) b.loadFile(d.text);
-        else b.loadString(d.text);
+        if (d.file)
+            b.loadFile(d.text);
+        else
+            b.loadString(d.text);
     }
     return b;
 }
@@ -183,8 +185,9 @@ void ContribTally::addPhotons(int32_t source, const PhotonOrigin* origin, const 
             // no source, except a full-sky one, whose photons all land in the bin of
             // D = 0. We drop those too.
             if (!warnedPhotonBins.exchange(true)) {
-                warn("no photon primary hitpoints for bin evaluation; using dummy (0,0,0)!"
-                     " (make the map with mkpmap -apCPD)");
+                warn(
+                    "no photon primary hitpoints for bin evaluation; using dummy (0,0,0)!"
+                    " (make the map with mkpmap -apCPD)");
                 warn("no photon primary directions for bin evaluation; using dummy (0,0,0)!");
             }
             return;

@@ -57,9 +57,12 @@ public:
         return prim >= 0 && size_t(prim) < byModifier_.size() ? byModifier_[size_t(prim)] : nullptr;
     }
     const Target* targetOfSource(int32_t source) const {
-        return source >= 0 && size_t(source) < bySource_.size() ? bySource_[size_t(source)] : nullptr;
+        return source >= 0 && size_t(source) < bySource_.size() ? bySource_[size_t(source)]
+                                                                : nullptr;
     }
-    const PhotonSource& photonSource(int32_t source) const { return photonSources_[size_t(source)]; }
+    const PhotonSource& photonSource(int32_t source) const {
+        return photonSources_[size_t(source)];
+    }
     const std::vector<std::shared_ptr<const calc::Program>>& programs() const { return programs_; }
     bool contributions() const { return contributions_; }
 

@@ -56,9 +56,9 @@ int binCount(const std::string& text, const RcontribOptions& o, BinCountEval eva
     return int(v + 0.5);
 }
 
-void addModifier(RcontribOptions& o, std::unordered_set<std::string>& seen,
-                 const std::string& name, const std::string& out, const std::string& params,
-                 const std::string& binExpr, int bins) {
+void addModifier(RcontribOptions& o, std::unordered_set<std::string>& seen, const std::string& name,
+                 const std::string& out, const std::string& params, const std::string& binExpr,
+                 int bins) {
     // RADIANCE compat (rcontrib.c addmodifier): messages and the constant-bin rule.
     if (!seen.insert(name).second) throw InputError("duplicate modifier '" + name + "'");
     if (name == "void") throw InputError("cannot track 'void' modifier");
@@ -89,7 +89,8 @@ void addModifierFile(RcontribOptions& o, std::unordered_set<std::string>& seen,
     if (!in) throw InputError("cannot load modifier file '" + *path + "'");
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     // RADIANCE fgetword: white-space separated words, quotes allowed.
-    for (const std::string& w : splitWords(text)) addModifier(o, seen, w, out, params, binExpr, bins);
+    for (const std::string& w : splitWords(text))
+        addModifier(o, seen, w, out, params, binExpr, bins);
 }
 
 }  // namespace
@@ -137,28 +138,48 @@ RcontribOptions parseRcontribArgs(std::vector<std::string> args, BinCountEval ev
             break;
         }
         // rcontrib's own first: -e, -f, -o, -t, -x, -y mean other things to rtrace.
-        if (opt == "-e") o.definitions.push_back({false, value(args, i)});
-        else if (opt == "-f") o.definitions.push_back({true, value(args, i)});
-        else if (opt.rfind("-fo", 0) == 0) o.force = boolSuffix(opt, 3, o.force);
-        else if (opt.rfind("-f", 0) == 0) parseFormat(opt, o);
-        else if (opt == "-o") out = value(args, i);
-        else if (opt == "-p") params = value(args, i);
-        else if (opt == "-b") binExpr = value(args, i);
-        else if (opt == "-bn") bins = binCount(value(args, i), o, evalCount);
-        else if (opt == "-m") addModifier(o, seen, value(args, i), out, params, binExpr, bins);
-        else if (opt == "-M") addModifierFile(o, seen, value(args, i), out, params, binExpr, bins);
+        if (opt == "-e")
+            o.definitions.push_back({false, value(args, i)});
+        else if (opt == "-f")
+            o.definitions.push_back({true, value(args, i)});
+        else if (opt.rfind("-fo", 0) == 0)
+            o.force = boolSuffix(opt, 3, o.force);
+        else if (opt.rfind("-f", 0) == 0)
+            parseFormat(opt, o);
+        else if (opt == "-o")
+            out = value(args, i);
+        else if (opt == "-p")
+            params = value(args, i);
+        else if (opt == "-b")
+            binExpr = value(args, i);
+        else if (opt == "-bn")
+            bins = binCount(value(args, i), o, evalCount);
+        else if (opt == "-m")
+            addModifier(o, seen, value(args, i), out, params, binExpr, bins);
+        else if (opt == "-M")
+            addModifierFile(o, seen, value(args, i), out, params, binExpr, bins);
         else if (opt == "-c") {
             o.accumulate = intValue(args, i);
-        } else if (opt == "-x") o.xres = intValue(args, i);
-        else if (opt == "-y") o.yres = intValue(args, i);
-        else if (opt == "-t") o.reportSeconds = intValue(args, i);
-        else if (opt.rfind("-V", 0) == 0 && opt.size() <= 3) o.contributions = boolSuffix(opt, 2, o.contributions);
-        else if (opt.rfind("-r", 0) == 0 && opt.size() <= 3) o.recover = boolSuffix(opt, 2, o.recover);
-        else if (opt.rfind("-h", 0) == 0 && opt.size() <= 3) o.header = boolSuffix(opt, 2, o.header);
-        else if (opt.rfind("-I", 0) == 0 && opt.size() <= 3) o.immediateIrradiance = boolSuffix(opt, 2, o.immediateIrradiance);
-        else if (opt.rfind("-ld", 0) == 0 && opt.size() <= 4) o.limitDistance = boolSuffix(opt, 3, o.limitDistance);
-        else if (parseRenderOption(args, i, o.render)) --i;  // it moved past the option
-        else throw InputError("command line error at '" + opt + "'");
+        } else if (opt == "-x")
+            o.xres = intValue(args, i);
+        else if (opt == "-y")
+            o.yres = intValue(args, i);
+        else if (opt == "-t")
+            o.reportSeconds = intValue(args, i);
+        else if (opt.rfind("-V", 0) == 0 && opt.size() <= 3)
+            o.contributions = boolSuffix(opt, 2, o.contributions);
+        else if (opt.rfind("-r", 0) == 0 && opt.size() <= 3)
+            o.recover = boolSuffix(opt, 2, o.recover);
+        else if (opt.rfind("-h", 0) == 0 && opt.size() <= 3)
+            o.header = boolSuffix(opt, 2, o.header);
+        else if (opt.rfind("-I", 0) == 0 && opt.size() <= 3)
+            o.immediateIrradiance = boolSuffix(opt, 2, o.immediateIrradiance);
+        else if (opt.rfind("-ld", 0) == 0 && opt.size() <= 4)
+            o.limitDistance = boolSuffix(opt, 3, o.limitDistance);
+        else if (parseRenderOption(args, i, o.render))
+            --i;  // it moved past the option
+        else
+            throw InputError("command line error at '" + opt + "'");
     }
     o.optionCount = std::min(i, args.size());
     // RADIANCE compat (rcmain.c override_options): no shadow threshold, no irradiance
@@ -192,7 +213,8 @@ std::string formatRcontribDefaults(const RcontribOptions& o) {
     if (o.immediateIrradiance) out += "-I+\t\t\t\t# immediate irradiance on\n";
     out += formatRayDefaults(o.render.threads, o.xres, o.yres, o.limitDistance, o.header,
                              o.inputFormat, o.outputFormat);
-    out += o.render.warnings ? "-w+\t\t\t\t# warning messages on\n" : "-w-\t\t\t\t# warning messages off\n";
+    out += o.render.warnings ? "-w+\t\t\t\t# warning messages on\n"
+                             : "-w-\t\t\t\t# warning messages off\n";
     out += formatRenderDefaults(o.render);
     return out;
 }

@@ -15,10 +15,10 @@ namespace rp::render {
 // -b and -bn to its left.
 struct ContribModifier {
     std::string name;
-    std::string outSpec;   // -o: "" = standard output
-    std::string params;    // -p "a=1,b=2" ("" = none)
+    std::string outSpec;        // -o: "" = standard output
+    std::string params;         // -p "a=1,b=2" ("" = none)
     std::string binExpr = "0";  // -b (RADIANCE: "0", a single bin, unless given)
-    int bins = 1;          // -bn, or 1 for a constant bin expression
+    int bins = 1;               // -bn, or 1 for a constant bin expression
 };
 
 // A -e expression or -f file, in command-line order.
@@ -40,10 +40,10 @@ struct RcontribOptions {
     char inputFormat = 'a';      // -f[io]
     char outputFormat = 'a';
     bool immediateIrradiance = false;  // -I
-    bool limitDistance = false;  // -ld
-    int reportSeconds = 0;       // -t
-    bool printDefaults = false;  // -defaults / -help
-    bool printVersion = false;   // -version
+    bool limitDistance = false;        // -ld
+    int reportSeconds = 0;             // -t
+    bool printDefaults = false;        // -defaults / -help
+    bool printVersion = false;         // -version
     std::string sceneFile;
     std::vector<std::string> args;  // after @file/$EVAR expansion, argv[0] first
     size_t optionCount = 0;         // args[0..optionCount) are program and options
@@ -64,10 +64,8 @@ RcontribOptions rcontribDefaults();
 // track 'void' modifier", "unspecified or illegal bin count for modifier 'x'", "illegal
 // non-zero constant for bin (e)", "cannot find modifier file 'f'", unknown options,
 // "missing octree argument". -aa, -as and -dt are overridden after parsing, as RADIANCE's.
-using BinCountEval =
-    double (*)(const std::vector<CalcDefinition>& defs, const std::string& expr);
-RcontribOptions parseRcontribArgs(std::vector<std::string> args,
-                                  BinCountEval evalCount = nullptr);
+using BinCountEval = double (*)(const std::vector<CalcDefinition>& defs, const std::string& expr);
+RcontribOptions parseRcontribArgs(std::vector<std::string> args, BinCountEval evalCount = nullptr);
 
 // Whether a -b expression is a plain number (one bin, no evaluation per ray).
 bool isConstantBin(const std::string& expr);

@@ -43,9 +43,9 @@ TEST(RcontribOptions, DefaultsAreRadiancesAndOverridesApply) {
 }
 
 TEST(RcontribOptions, EachModifierTakesTheSettingsToItsLeft) {
-    RcontribOptions o = parse({"-o", "a_%s.txt", "-m", "sun", "-p", "MF=2", "-b", "rbin", "-bn",
-                               "578", "-o", "sky.dat", "-m", "sky", "-b", "0", "-m", "ground",
-                               "-V+", "-c", "3", "-faf", "s.oct"});
+    RcontribOptions o = parse({"-o",  "a_%s.txt", "-m",  "sun",     "-p", "MF=2", "-b",   "rbin",
+                               "-bn", "578",      "-o",  "sky.dat", "-m", "sky",  "-b",   "0",
+                               "-m",  "ground",   "-V+", "-c",      "3",  "-faf", "s.oct"});
     ASSERT_EQ(o.modifiers.size(), 3u);
     EXPECT_EQ(o.modifiers[0].outSpec, "a_%s.txt");
     EXPECT_EQ(o.modifiers[0].binExpr, "0");
@@ -71,7 +71,8 @@ TEST(RcontribOptions, BinCountMayNameADefinition) {
         EXPECT_EQ(e, "N");
         return 146.0;
     };
-    RcontribOptions o = parse({"-e", "N=146", "-bn", "N", "-b", "tbin", "-m", "sky", "s.oct"}, eval);
+    RcontribOptions o =
+        parse({"-e", "N=146", "-bn", "N", "-b", "tbin", "-m", "sky", "s.oct"}, eval);
     EXPECT_EQ(o.modifiers[0].bins, 146);
 }
 
@@ -116,12 +117,11 @@ TEST(RcontribOptions, DefaultsTextMatchesRadiance) {
     // The first lines of RADIANCE 5.4's `rcontrib -defaults`, and its render values.
     EXPECT_EQ(text.substr(0, text.find("-n ")),
               "-c 1    \t\t\t# accumulated rays per record\n-V-\t\t\t\t# output coefficients\n");
-    for (const char* line : {"-dt 0.000000\t\t\t# direct threshold\n",
-                             "-dj 0.900000\t\t\t# direct jitter\n",
-                             "-ab 1        \t\t\t# ambient bounces\n",
-                             "-ad 350      \t\t\t# ambient divisions\n",
-                             "-as 0        \t\t\t# ambient super-samples\n",
-                             "-st 0.020000\t\t\t# specular threshold\n"})
+    for (const char* line :
+         {"-dt 0.000000\t\t\t# direct threshold\n", "-dj 0.900000\t\t\t# direct jitter\n",
+          "-ab 1        \t\t\t# ambient bounces\n", "-ad 350      \t\t\t# ambient divisions\n",
+          "-as 0        \t\t\t# ambient super-samples\n",
+          "-st 0.020000\t\t\t# specular threshold\n"})
         EXPECT_NE(text.find(line), std::string::npos) << line;
 }
 

@@ -1,6 +1,9 @@
 // rcontrib's outputs (see rcontrib_output.h).
 #include "render/rcontrib_output.h"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <bit>
 #include <cctype>
 #include <cerrno>
@@ -10,8 +13,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <unistd.h>
-#include <sys/wait.h>
 
 #include "render/rtrace_io.h"
 #include "render/rtrace_options.h"
@@ -26,10 +27,14 @@ namespace {
 
 size_t valueSize(char format) {
     switch (format) {
-    case 'f': return 3 * sizeof(float);
-    case 'd': return 3 * sizeof(double);
-    case 'c': return 4;
-    default: return 0;
+        case 'f':
+            return 3 * sizeof(float);
+        case 'd':
+            return 3 * sizeof(double);
+        case 'c':
+            return 4;
+        default:
+            return 0;
     }
 }
 
@@ -89,7 +94,7 @@ bool contribOutputName(const std::string& spec, const std::string& modifier, int
 }
 
 struct ContribOutput::Stream {
-    std::string name;     // "" for standard output
+    std::string name;  // "" for standard output
     bool pipe = false;
     bool hasModifier = false, hasBin = false;
     std::string modifier;  // of its first value (MODIFIER= line)
@@ -97,7 +102,7 @@ struct ContribOutput::Stream {
     int reclen = 0;        // values per record
     FILE* file = nullptr;  // files and pipes
     bool opened = false;
-    std::string buffer;    // pending bytes
+    std::string buffer;  // pending bytes
 
     void write(std::ostream& out) {
         if (buffer.empty()) return;
@@ -197,8 +202,7 @@ ContribOutput::Stream& ContribOutput::open(size_t index) {
         h += std::string("FORMAT=") + formatName(o_.outputFormat) + "\n\n";
         s.buffer += h;
     }
-    if (s.reclen == 1 && o_.xres > 0 && o_.yres > 0)
-        s.buffer += resolutionLine(o_.xres, o_.yres);
+    if (s.reclen == 1 && o_.xres > 0 && o_.yres > 0) s.buffer += resolutionLine(o_.xres, o_.yres);
     return s;
 }
 
@@ -276,7 +280,8 @@ std::vector<Color> ContribOutput::reload() {
                     missing[si] = true;
                 } else {
                     Header h;
-                    if (o_.header && (!tryReadHeader(in, h) || h.format() != formatName(o_.outputFormat)))
+                    if (o_.header &&
+                        (!tryReadHeader(in, h) || h.format() != formatName(o_.outputFormat)))
                         throw InputError("format mismatch for '" + s.name + "'");
                     std::string line;
                     if (s.reclen == 1 && o_.xres > 0 && o_.yres > 0 && !std::getline(in, line))
@@ -293,23 +298,25 @@ std::vector<Color> ContribOutput::reload() {
 
 bool ContribOutput::readValue(std::istream& in, Color& v) const {
     switch (o_.outputFormat) {
-    case 'a': return bool(in >> v.r >> v.g >> v.b);
-    case 'f': {
-        float f[3];
-        if (!in.read(reinterpret_cast<char*>(f), sizeof f)) return false;
-        v = Color{f[0], f[1], f[2]};
-        return true;
-    }
-    case 'd': return bool(in.read(reinterpret_cast<char*>(&v.r), sizeof(double)) &&
-                          in.read(reinterpret_cast<char*>(&v.g), sizeof(double)) &&
-                          in.read(reinterpret_cast<char*>(&v.b), sizeof(double)));
-    default: {
-        Colr c;
-        if (!in.read(reinterpret_cast<char*>(c.data()), 4)) return false;
-        const auto rgb = colrToRgb(c);
-        v = Color{rgb[0], rgb[1], rgb[2]};
-        return true;
-    }
+        case 'a':
+            return bool(in >> v.r >> v.g >> v.b);
+        case 'f': {
+            float f[3];
+            if (!in.read(reinterpret_cast<char*>(f), sizeof f)) return false;
+            v = Color{f[0], f[1], f[2]};
+            return true;
+        }
+        case 'd':
+            return bool(in.read(reinterpret_cast<char*>(&v.r), sizeof(double)) &&
+                        in.read(reinterpret_cast<char*>(&v.g), sizeof(double)) &&
+                        in.read(reinterpret_cast<char*>(&v.b), sizeof(double)));
+        default: {
+            Colr c;
+            if (!in.read(reinterpret_cast<char*>(c.data()), 4)) return false;
+            const auto rgb = colrToRgb(c);
+            v = Color{rgb[0], rgb[1], rgb[2]};
+            return true;
+        }
     }
 }
 
@@ -321,25 +328,25 @@ void ContribOutput::writeRecord(const std::vector<Color>& values, double scale, 
             Stream& s = open(streamOf_[m][j]);
             const Color v = values[k] * scale;
             switch (o_.outputFormat) {
-            case 'a': {
-                int n = std::snprintf(buf, sizeof buf, "%.6e\t%.6e\t%.6e\t", v.r, v.g, v.b);
-                s.buffer.append(buf, size_t(n));
-                break;
-            }
-            case 'f': {
-                float f[3] = {float(v.r), float(v.g), float(v.b)};
-                s.buffer.append(reinterpret_cast<const char*>(f), sizeof f);
-                break;
-            }
-            case 'd': {
-                double d[3] = {v.r, v.g, v.b};
-                s.buffer.append(reinterpret_cast<const char*>(d), sizeof d);
-                break;
-            }
-            default: {
-                const Colr c = toColr(v.r, v.g, v.b);
-                s.buffer.append(reinterpret_cast<const char*>(c.data()), c.size());
-            }
+                case 'a': {
+                    int n = std::snprintf(buf, sizeof buf, "%.6e\t%.6e\t%.6e\t", v.r, v.g, v.b);
+                    s.buffer.append(buf, size_t(n));
+                    break;
+                }
+                case 'f': {
+                    float f[3] = {float(v.r), float(v.g), float(v.b)};
+                    s.buffer.append(reinterpret_cast<const char*>(f), sizeof f);
+                    break;
+                }
+                case 'd': {
+                    double d[3] = {v.r, v.g, v.b};
+                    s.buffer.append(reinterpret_cast<const char*>(d), sizeof d);
+                    break;
+                }
+                default: {
+                    const Colr c = toColr(v.r, v.g, v.b);
+                    s.buffer.append(reinterpret_cast<const char*>(c.data()), c.size());
+                }
             }
         }
     }
@@ -349,8 +356,10 @@ void ContribOutput::writeRecord(const std::vector<Color>& values, double scale, 
         // Small records collect until a block is worth writing, or a flush is due.
         if (flush || s->buffer.size() >= 1 << 16) s->write(stdout_);
         if (flush) {
-            if (s->file) std::fflush(s->file);
-            else if (s->name.empty()) stdout_.flush();
+            if (s->file)
+                std::fflush(s->file);
+            else if (s->name.empty())
+                stdout_.flush();
         }
     }
 }

@@ -135,9 +135,8 @@ TEST(ContribOutput, PicturesOfSeveralModifiersTakeTheirOwnBinNumbers) {
     // rcontrib.c addmodifier: with -fc -x -y, "img_%d.hdr" shared by two modifiers gives
     // the second bins 1.. instead of writing both into img_0.hdr.
     TempDir dir;
-    RcontribOptions o = options({mod("a", 1, dir.file("img_%d.hdr")),
-                                 mod("b", 2, dir.file("img_%d.hdr"))},
-                                'c');
+    RcontribOptions o =
+        options({mod("a", 1, dir.file("img_%d.hdr")), mod("b", 2, dir.file("img_%d.hdr"))}, 'c');
     o.xres = 1;
     o.yres = 1;
     std::ostringstream out;

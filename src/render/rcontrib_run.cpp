@@ -1,15 +1,15 @@
 // rcontrib's batch loop (see rcontrib_run.h).
 #include "render/rcontrib_run.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
-
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include "render/cluster_batch.h"
 #include "render/rtrace_io.h"
@@ -59,16 +59,20 @@ private:
 class RayInput {
 public:
     RayInput(const RcontribRunSettings& s, std::istream& in)
-        : s_(s), reader_(in, s.inputFormat), perRecord_(s.accumulate > 1 ? uint64_t(s.accumulate) : 1) {
+        : s_(s),
+          reader_(in, s.inputFormat),
+          perRecord_(s.accumulate > 1 ? uint64_t(s.accumulate) : 1) {
         // RADIANCE compat (rcontrib.c rcinit): with -y the input holds x*y (or y) records
         // of -c rays each.
-        remaining_ = s.yres > 0 ? uint64_t(s.yres) * uint64_t(s.xres > 0 ? s.xres : 1) * perRecord_ : 0;
+        remaining_ =
+            s.yres > 0 ? uint64_t(s.yres) * uint64_t(s.xres > 0 ? s.xres : 1) * perRecord_ : 0;
         counted_ = remaining_ > 0;
         total_ = remaining_;
         // -r: the records the outputs hold already are not traced again.
         for (uint64_t k = 0; k < s.skipRecords * perRecord_; ++k) {
             InputRay r;
-            if (reader_.next(r) != RayReader::Status::Ok) throw InputError("unexpected EOF on input");
+            if (reader_.next(r) != RayReader::Status::Ok)
+                throw InputError("unexpected EOF on input");
             if (counted_) --remaining_;
         }
         index_ = s.skipRecords * perRecord_;
@@ -94,7 +98,8 @@ public:
             r.origin = in.origin;
             const double len = length(in.direction);
             if (!finite(in.origin) || !std::isfinite(len))
-                throw InputError("non-finite ray input (record " + std::to_string(r.index + 1) + ")");
+                throw InputError("non-finite ray input (record " + std::to_string(r.index + 1) +
+                                 ")");
             r.dummy = len == 0;
             if (r.dummy && s_.accumulate <= 0) {
                 // RADIANCE compat (rcontrib.c): no flushing while summing everything.
@@ -132,8 +137,13 @@ private:
 class Records {
 public:
     Records(const RcontribRunSettings& s, ContribOutput& out, RcontribRunStats& stats)
-        : s_(s), out_(out), stats_(stats), sum_(s.values), account_(s.accumulate),
-          flushEvery_(s.yres > 0 && s.xres > 1 ? 0 : s.xres), untilFlush_(flushEvery_) {
+        : s_(s),
+          out_(out),
+          stats_(stats),
+          sum_(s.values),
+          account_(s.accumulate),
+          flushEvery_(s.yres > 0 && s.xres > 1 ? 0 : s.xres),
+          untilFlush_(flushEvery_) {
         if (s.accumulate <= 0 && s.totals.size() == s.values) sum_ = s.totals;
     }
 

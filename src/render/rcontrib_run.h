@@ -20,9 +20,9 @@ namespace rp::render {
 // Traces input ray `rayIndex` (0-based position in the input) from `origin` in unit
 // `direction` and adds its contributions to `values` (zeroed, one per bin of every
 // modifier). `maxDistance`: -ld length, else infinite. Called concurrently.
-using ContribTraceFn = std::function<void(const Vec3& origin, const Vec3& direction,
-                                          uint64_t rayIndex, double maxDistance,
-                                          std::vector<Color>& values)>;
+using ContribTraceFn =
+    std::function<void(const Vec3& origin, const Vec3& direction, uint64_t rayIndex,
+                       double maxDistance, std::vector<Color>& values)>;
 
 struct RcontribRunSettings {
     char inputFormat = 'a';
@@ -32,10 +32,10 @@ struct RcontribRunSettings {
     bool limitDistance = false;  // -ld
     int reportSeconds = 0;       // -t (with -y: progress on `progress`)
     std::ostream* progress = nullptr;
-    size_t values = 0;           // bins over all modifiers
-    uint64_t skipRecords = 0;    // -r: records the outputs hold already
-    std::vector<Color> totals;   // -r with -c 0: what the outputs hold, added to
-    size_t batchSize = 0;        // rays per batch; 0: 64 per thread and rank
+    size_t values = 0;          // bins over all modifiers
+    uint64_t skipRecords = 0;   // -r: records the outputs hold already
+    std::vector<Color> totals;  // -r with -c 0: what the outputs hold, added to
+    size_t batchSize = 0;       // rays per batch; 0: 64 per thread and rank
     // The ranks of an MPI run (null: this process alone). The root reads the input and
     // adds and writes the records; every rank traces a contiguous slice of each batch and
     // sends its rays' values back, so the records are the same as one process's.

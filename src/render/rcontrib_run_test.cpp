@@ -16,8 +16,7 @@ void byIndex(const Vec3&, const Vec3&, uint64_t i, double, std::vector<Color>& v
     v[1] = Color::grey(1);
 }
 
-std::vector<std::string> run(RcontribRunSettings s, const std::string& input,
-                             int threads = 1) {
+std::vector<std::string> run(RcontribRunSettings s, const std::string& input, int threads = 1) {
     RcontribOptions o = rcontribDefaults();
     ContribModifier m;
     m.name = "lamp";
@@ -41,9 +40,8 @@ std::vector<std::string> run(RcontribRunSettings s, const std::string& input,
 const std::string kFourRays = "0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n";
 
 TEST(RcontribRun, OneRecordPerRayInInputOrder) {
-    EXPECT_EQ(run({}, kFourRays, 2),
-              (std::vector<std::string>{"1.000000e+00", "2.000000e+00", "3.000000e+00",
-                                        "4.000000e+00"}));
+    EXPECT_EQ(run({}, kFourRays, 2), (std::vector<std::string>{"1.000000e+00", "2.000000e+00",
+                                                               "3.000000e+00", "4.000000e+00"}));
 }
 
 TEST(RcontribRun, AccumulationAveragesAndAShortLastRecordWarns) {

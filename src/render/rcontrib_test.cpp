@@ -62,7 +62,8 @@ TEST(ContribTally, BinsRoundNegativesDropAndTooLargeAreCounted) {
     ContribTally tally(t);
     for (double dx : {0.0, 0.3, 0.4, 0.74, -0.1, -0.2, 0.9})
         tally.add(sky, Vec3{}, Vec3{dx, 0, 1}, Color{1, 1, 1}, Color{});
-    // 0 -> 0, 1.2 -> 1, 1.6 -> 2, 2.96 -> 3, -0.4 -> 0 (rounds to 0), -0.8 dropped, 3.6 -> 4 dropped.
+    // 0 -> 0, 1.2 -> 1, 1.6 -> 2, 2.96 -> 3, -0.4 -> 0 (rounds to 0), -0.8 dropped, 3.6 -> 4
+    // dropped.
     EXPECT_EQ(tally.values()[0], Color(2, 2, 2));
     EXPECT_EQ(tally.values()[1], Color(1, 1, 1));
     EXPECT_EQ(tally.values()[2], Color(1, 1, 1));

@@ -3,8 +3,6 @@
 // error messages are ours, one line each.
 #include "render/render_options.h"
 
-#include "pmap/mkpmap_options.h"
-
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "pmap/mkpmap_options.h"
 #include "util/bool_option.h"
 #include "util/error.h"
 
@@ -22,7 +21,8 @@ namespace {
 // Reads the values that follow the option at args[i].
 class Values {
 public:
-    Values(const std::vector<std::string>& args, size_t i) : args_(args), opt_(args[i]), at_(i + 1) {}
+    Values(const std::vector<std::string>& args, size_t i)
+        : args_(args), opt_(args[i]), at_(i + 1) {}
 
     const std::string& word() {
         if (at_ >= args_.size()) throw InputError("missing value for option '" + opt_ + "'");
@@ -97,47 +97,99 @@ bool parseRenderOption(const std::vector<std::string>& args, size_t& i, RenderOp
     const std::string& o = args[i];
     if (o.size() < 2 || o[0] != '-') return false;
     Values v(args, i);
-    auto done = [&] { i = v.end(); return true; };
+    auto done = [&] {
+        i = v.end();
+        return true;
+    };
 
     // Booleans (value-less).
-    if (startsWith(o, "-bv")) { opt.backVisible = boolSuffix(o, 3, opt.backVisible); return done(); }
-    if (startsWith(o, "-dv")) { opt.direct.visibility = boolSuffix(o, 3, opt.direct.visibility); return done(); }
-    if (o.size() <= 3 && o[1] == 'i') { opt.irradiance = boolSuffix(o, 2, opt.irradiance); return done(); }
-    if (o.size() <= 3 && o[1] == 'u') { opt.uncorrelated = boolSuffix(o, 2, opt.uncorrelated); return done(); }
-    if (o.size() <= 3 && o[1] == 'w') { opt.warnings = boolSuffix(o, 2, opt.warnings); return done(); }
+    if (startsWith(o, "-bv")) {
+        opt.backVisible = boolSuffix(o, 3, opt.backVisible);
+        return done();
+    }
+    if (startsWith(o, "-dv")) {
+        opt.direct.visibility = boolSuffix(o, 3, opt.direct.visibility);
+        return done();
+    }
+    if (o.size() <= 3 && o[1] == 'i') {
+        opt.irradiance = boolSuffix(o, 2, opt.irradiance);
+        return done();
+    }
+    if (o.size() <= 3 && o[1] == 'u') {
+        opt.uncorrelated = boolSuffix(o, 2, opt.uncorrelated);
+        return done();
+    }
+    if (o.size() <= 3 && o[1] == 'w') {
+        opt.warnings = boolSuffix(o, 2, opt.warnings);
+        return done();
+    }
 
     DirectOptions& d = opt.direct;
     AmbientOptions& a = opt.ambient;
-    if (o == "-dt") { d.threshold = v.real(); v.require(d.threshold >= 0, "must be >= 0"); }
-    else if (o == "-dc") { d.certainty = v.real(); v.require(d.certainty >= 0 && d.certainty <= 1, "must be in [0, 1]"); }
-    else if (o == "-dj") { d.jitter = v.real(); v.require(d.jitter >= 0 && d.jitter <= 1, "must be in [0, 1]"); }
-    else if (o == "-ds") { d.sampling = v.real(); v.require(d.sampling >= 0, "must be >= 0"); }
-    else if (o == "-dr") { d.relays = v.integer(); v.require(d.relays >= 0, "must be >= 0"); }
-    else if (o == "-dp") { d.pretest = v.integer(); v.require(d.pretest >= 0, "must be >= 0"); }
-    else if (o == "-ss") { opt.specular.sampling = v.real(); v.require(opt.specular.sampling >= 0, "must be >= 0"); }
-    else if (o == "-st") { opt.specular.threshold = v.real(); v.require(opt.specular.threshold >= 0, "must be >= 0"); }
-    else if (o == "-lr") opt.limits.maxDepth = v.integer();
-    else if (o == "-lw") { opt.limits.minWeight = v.real(); v.require(opt.limits.minWeight >= 0, "must be >= 0"); }
-    else if (o == "-av") a.value = readColor(v);
-    else if (o == "-aw") { a.valueWeight = v.integer(); v.require(a.valueWeight >= 0, "must be >= 0"); }
+    if (o == "-dt") {
+        d.threshold = v.real();
+        v.require(d.threshold >= 0, "must be >= 0");
+    } else if (o == "-dc") {
+        d.certainty = v.real();
+        v.require(d.certainty >= 0 && d.certainty <= 1, "must be in [0, 1]");
+    } else if (o == "-dj") {
+        d.jitter = v.real();
+        v.require(d.jitter >= 0 && d.jitter <= 1, "must be in [0, 1]");
+    } else if (o == "-ds") {
+        d.sampling = v.real();
+        v.require(d.sampling >= 0, "must be >= 0");
+    } else if (o == "-dr") {
+        d.relays = v.integer();
+        v.require(d.relays >= 0, "must be >= 0");
+    } else if (o == "-dp") {
+        d.pretest = v.integer();
+        v.require(d.pretest >= 0, "must be >= 0");
+    } else if (o == "-ss") {
+        opt.specular.sampling = v.real();
+        v.require(opt.specular.sampling >= 0, "must be >= 0");
+    } else if (o == "-st") {
+        opt.specular.threshold = v.real();
+        v.require(opt.specular.threshold >= 0, "must be >= 0");
+    } else if (o == "-lr")
+        opt.limits.maxDepth = v.integer();
+    else if (o == "-lw") {
+        opt.limits.minWeight = v.real();
+        v.require(opt.limits.minWeight >= 0, "must be >= 0");
+    } else if (o == "-av")
+        a.value = readColor(v);
+    else if (o == "-aw") {
+        a.valueWeight = v.integer();
+        v.require(a.valueWeight >= 0, "must be >= 0");
+    }
     // RADIANCE allows a negative -ab (rtrace.1: use the ambient file without new records);
     // the renderer decides what it means.
-    else if (o == "-ab") a.bounces = v.integer();
-    else if (o == "-aa") { a.accuracy = v.real(); v.require(a.accuracy >= 0, "must be >= 0"); }
-    else if (o == "-ar") { a.resolution = v.integer(); v.require(a.resolution >= 0, "must be >= 0"); }
-    else if (o == "-ad") {
+    else if (o == "-ab")
+        a.bounces = v.integer();
+    else if (o == "-aa") {
+        a.accuracy = v.real();
+        v.require(a.accuracy >= 0, "must be >= 0");
+    } else if (o == "-ar") {
+        a.resolution = v.integer();
+        v.require(a.resolution >= 0, "must be >= 0");
+    } else if (o == "-ad") {
         // Each hemisphere holds its divisions in memory (about 90 bytes each): beyond 1e8
         // the request is an error here, not an allocation that fails (issue 43).
         a.divisions = v.integer();
         v.require(a.divisions >= 0 && a.divisions <= kMaxAmbientDivisions,
                   "must be in [0, " + std::to_string(kMaxAmbientDivisions) + "]");
-    }
-    else if (o == "-as") { a.supersamples = v.integer(); v.require(a.supersamples >= 0, "must be >= 0"); }
-    else if (o == "-af") a.file = v.word();
-    else if (o == "-ai") modifierList(a, true, {v.word()});
-    else if (o == "-ae") modifierList(a, false, {v.word()});
-    else if (o == "-aI") modifierList(a, true, readWordFile(v.word(), "include"));
-    else if (o == "-aE") modifierList(a, false, readWordFile(v.word(), "exclude"));
+    } else if (o == "-as") {
+        a.supersamples = v.integer();
+        v.require(a.supersamples >= 0, "must be >= 0");
+    } else if (o == "-af")
+        a.file = v.word();
+    else if (o == "-ai")
+        modifierList(a, true, {v.word()});
+    else if (o == "-ae")
+        modifierList(a, false, {v.word()});
+    else if (o == "-aI")
+        modifierList(a, true, readWordFile(v.word(), "include"));
+    else if (o == "-aE")
+        modifierList(a, false, readWordFile(v.word(), "exclude"));
     else if (o == "-ap") {
         PhotonMapUse use;
         use.file = v.word();
@@ -164,13 +216,21 @@ bool parseRenderOption(const std::vector<std::string>& args, size_t& i, RenderOp
         const std::optional<uint64_t> n = pmap::parsePhotonCount(v.word());
         v.require(n && *n > 0, "invalid photon cache size");
         opt.photonCache = *n;
-    } else if (o == "-me") opt.mist.extinction = readColor(v);
-    else if (o == "-ma") opt.mist.albedo = readColor(v);
-    else if (o == "-mg") opt.mist.eccentricity = v.real();
-    else if (o == "-ms") opt.mist.samplingDistance = v.real();
-    else if (o == "-n") { opt.threads = v.integer(); v.require(opt.threads >= 1, "bad number of processes"); }
-    else if (o == "-e") opt.errorFile = v.word();
-    else return false;
+    } else if (o == "-me")
+        opt.mist.extinction = readColor(v);
+    else if (o == "-ma")
+        opt.mist.albedo = readColor(v);
+    else if (o == "-mg")
+        opt.mist.eccentricity = v.real();
+    else if (o == "-ms")
+        opt.mist.samplingDistance = v.real();
+    else if (o == "-n") {
+        opt.threads = v.integer();
+        v.require(opt.threads >= 1, "bad number of processes");
+    } else if (o == "-e")
+        opt.errorFile = v.word();
+    else
+        return false;
     return done();
 }
 

@@ -4,10 +4,10 @@
 // -o/-f/-h/-x/-y, rpict's -x/-y/-p/-v/-o) are parsed by each tool; what is common lives here.
 #pragma once
 
+#include <tbb/global_control.h>
+
 #include <string>
 #include <vector>
-
-#include <tbb/global_control.h>
 
 #include "util/bool_option.h"  // boolSuffix, used by the rtrace/rpict parsers
 #include "util/color.h"
@@ -38,14 +38,14 @@ struct LimitOptions {
 constexpr int kMaxAmbientDivisions = 100'000'000;
 
 struct AmbientOptions {
-    Color value;               // -av: ambient value for rays past the last bounce
-    int valueWeight = 0;       // -aw: weight of -av in the running average (0 = fixed)
-    int bounces = 0;           // -ab
-    double accuracy = 0.1;     // -aa: 0 turns the irradiance cache off
-    int resolution = 256;      // -ar: scene size / ar = minimum record spacing
-    int divisions = 1024;      // -ad: hemisphere samples per irradiance computation
-    int supersamples = 512;    // -as: extra samples where the divisions vary most
-    std::string file;          // -af: ambient file (records kept across runs)
+    Color value;             // -av: ambient value for rays past the last bounce
+    int valueWeight = 0;     // -aw: weight of -av in the running average (0 = fixed)
+    int bounces = 0;         // -ab
+    double accuracy = 0.1;   // -aa: 0 turns the irradiance cache off
+    int resolution = 256;    // -ar: scene size / ar = minimum record spacing
+    int divisions = 1024;    // -ad: hemisphere samples per irradiance computation
+    int supersamples = 512;  // -as: extra samples where the divisions vary most
+    std::string file;        // -af: ambient file (records kept across runs)
     // -ae/-ai (and -aE/-aI from files): modifiers excluded from / the only ones included
     // in the cache (others get -av). Order matters as in RADIANCE: the last of -ae/-ai
     // decides the mode; the list accumulates.
@@ -63,10 +63,10 @@ struct PhotonMapUse {
 // -me/-ma/-mg/-ms: the global participating medium and the sampling distance of light
 // scattered into rays (RADIANCE's mist options).
 struct MistOptions {
-    Color extinction;            // -me: extinction coefficient per unit length
-    Color albedo;                // -ma: scattering albedo
-    double eccentricity = 0;     // -mg: Henyey-Greenstein g
-    double samplingDistance = 0; // -ms
+    Color extinction;             // -me: extinction coefficient per unit length
+    Color albedo;                 // -ma: scattering albedo
+    double eccentricity = 0;      // -mg: Henyey-Greenstein g
+    double samplingDistance = 0;  // -ms
     bool any() const {
         return !extinction.isBlack() || !albedo.isBlack() || eccentricity != 0 ||
                samplingDistance != 0;
@@ -82,16 +82,16 @@ struct RenderOptions {
     std::vector<PhotonMapUse> photonMaps;  // -ap (repeatable)
     double photonMaxRadius = 0;            // -am: fixed maximum search radius, 0 = automatic
     // Out-of-core photon maps (RADIANCE's OOC build, manual 3.2; pmap/photon_store.h):
-    double photonPageSize = 4;             // -ac: cache page size, x the bandwidth
-    uint64_t photonCache = 0;              // -aC: photons cached per thread; 0 = by memory
-    bool backVisible = true;               // -bv
-    bool irradiance = false;               // -i: compute irradiance at surfaces hit
+    double photonPageSize = 4;  // -ac: cache page size, x the bandwidth
+    uint64_t photonCache = 0;   // -aC: photons cached per thread; 0 = by memory
+    bool backVisible = true;    // -bv
+    bool irradiance = false;    // -i: compute irradiance at surfaces hit
     // -u: uncorrelated (random) sampling. RADIANCE compat: rpict's default is off; rtrace
     // (rtmain.c) turns it on before parsing, and so does our rtrace (rtrace_options.cpp).
     bool uncorrelated = false;
-    int threads = 1;                       // -n
-    std::string errorFile;                 // -e: diagnostics go here instead of stderr
-    bool warnings = true;                  // -w
+    int threads = 1;        // -n
+    std::string errorFile;  // -e: diagnostics go here instead of stderr
+    bool warnings = true;   // -w
     // rcontrib: -ap maps must be contribution maps (PhotonLighting), not other types, and
     // their lookups only see photons of sources whose light material is one of
     // `contribModifiers` (RADIANCE pmapkdt.c: the tracked modifiers).

@@ -2,10 +2,10 @@
 // $EVAR expansion (command_args.h).
 #include "render/render_options.h"
 
+#include <gtest/gtest.h>
+
 #include <cstdlib>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 #include "render/command_args.h"
 #include "util/error.h"
@@ -29,7 +29,8 @@ std::string errorOf(std::vector<std::string> args) {
     RenderOptions o;
     size_t i = 0;
     try {
-        while (i < args.size() && parseRenderOption(args, i, o)) {}
+        while (i < args.size() && parseRenderOption(args, i, o)) {
+        }
     } catch (const InputError& e) {
         return e.what();
     }
@@ -38,7 +39,7 @@ std::string errorOf(std::vector<std::string> args) {
 
 TEST(RenderOptions, DirectSpecularLimits) {
     RenderOptions o = parse({"-dt", "0.1", "-dc", "0.9", "-dj", "0.5", "-ds", "0", "-dr", "3",
-                             "-dp", "64", "-ss", "2", "-st", "0.5", "-lr", "8", "-lw", "1e-3"});
+                             "-dp", "64",  "-ss", "2",   "-st", "0.5", "-lr", "8", "-lw", "1e-3"});
     EXPECT_DOUBLE_EQ(o.direct.threshold, 0.1);
     EXPECT_DOUBLE_EQ(o.direct.certainty, 0.9);
     EXPECT_DOUBLE_EQ(o.direct.jitter, 0.5);
@@ -105,8 +106,8 @@ TEST(RenderOptions, Booleans) {
 }
 
 TEST(RenderOptions, PhotonMaps) {
-    RenderOptions o = parse({"-ap", "g.pm", "-ap", "c.pm", "50", "-ap", "b.pm", "50", "200",
-                             "-am", "0.5"});
+    RenderOptions o =
+        parse({"-ap", "g.pm", "-ap", "c.pm", "50", "-ap", "b.pm", "50", "200", "-am", "0.5"});
     ASSERT_EQ(o.photonMaps.size(), 3u);
     EXPECT_EQ(o.photonMaps[0].file, "g.pm");
     EXPECT_EQ(o.photonMaps[0].bandwidth, 0);
@@ -162,8 +163,8 @@ TEST(RenderOptions, ThreadLimitBoundsParallelism) {
 }
 
 TEST(RenderOptions, ThreadsErrorFileMist) {
-    RenderOptions o = parse({"-n", "4", "-e", "err.txt", "-me", "0.1", "0.1", "0.1", "-ma",
-                             "0.5", "0.5", "0.5", "-mg", "0.3", "-ms", "0.2"});
+    RenderOptions o = parse({"-n", "4", "-e", "err.txt", "-me", "0.1", "0.1", "0.1", "-ma", "0.5",
+                             "0.5", "0.5", "-mg", "0.3", "-ms", "0.2"});
     EXPECT_EQ(o.threads, 4);
     EXPECT_EQ(o.errorFile, "err.txt");
     EXPECT_TRUE(o.mist.any());

@@ -101,12 +101,13 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
       ambientOptions(photonAmbientOptions(o, photons)),
       // RADIANCE compat (source.c): in photon-map mode virtual sources are not made;
       // light from mirrors (and prisms) then arrives through caustic photons.
-      direct(s, g, o.direct, o.photonMaps.empty(),
-             [this](const Hit& hit, const Vec3& dir, int projection, const Vec3& toSource) {
-                 material::MaterialCalcEvaluator ev(materialCalc);
-                 return evalRedirect(scene, materialCalc, ev, hit, dir, projection, toSource);
-             },
-             globalMediumOf(o.mist)),
+      direct(
+          s, g, o.direct, o.photonMaps.empty(),
+          [this](const Hit& hit, const Vec3& dir, int projection, const Vec3& toSource) {
+              material::MaterialCalcEvaluator ev(materialCalc);
+              return evalRedirect(scene, materialCalc, ev, hit, dir, projection, toSource);
+          },
+          globalMediumOf(o.mist)),
       ambient(ambientOptions, g.sceneCube().size, s, o.limits.minWeight),
       antimatter(s, true),
       globalMedium(globalMediumOf(o.mist)),
@@ -123,8 +124,8 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
     shadeOptions.backVisible = o.backVisible;
 }
 
-Renderer::Renderer(const Scene& scene, const SceneGeometry& geometry,
-                   const RenderOptions& options, std::vector<std::string> searchPath)
+Renderer::Renderer(const Scene& scene, const SceneGeometry& geometry, const RenderOptions& options,
+                   std::vector<std::string> searchPath)
     : scene_(scene), geometry_(geometry), options_(options) {
     impl_ = std::make_unique<Impl>(scene_, geometry_, options_, std::move(searchPath));
 }
@@ -141,9 +142,9 @@ void Renderer::ContextDeleter::operator()(Context* c) const { delete c; }
 
 const PhotonLighting& Renderer::photons() const { return impl_->photons; }
 
-RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir,
-                          uint64_t rayIndex, std::vector<TracedRay>* tree,
-                          double maxDistance, ContributionSink* contrib) const {
+RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir, uint64_t rayIndex,
+                          std::vector<TracedRay>* tree, double maxDistance,
+                          ContributionSink* contrib) const {
     ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);
     if (ctx.photonLookups) ctx.photonLookups->startRay();  // like the random numbers
     ctx.tree = tree;

@@ -22,25 +22,25 @@ namespace rp::render {
 
 // What rtrace's -o specifiers report about one traced ray (RADIANCE rtrace.c oputs).
 struct RayResult {
-    Vec3 origin, direction;   // o d: as traced (direction unit)
-    Color value;              // v: radiance along the ray (irradiance with -i / -I)
+    Vec3 origin, direction;      // o d: as traced (direction unit)
+    Color value;                 // v: radiance along the ray (irradiance with -i / -I)
     Color coefficient{1, 1, 1};  // W: the ray's colour coefficient (1 for input rays)
-    double weight = 1;        // w: the ray's weight (1 for input rays)
-    bool hit = false;         // false: the ray left the scene
+    double weight = 1;           // w: the ray's weight (1 for input rays)
+    bool hit = false;            // false: the ray left the scene
     // It left the scene through a distant source (RADIANCE sourcehit sets ro to it): s m M
     // name the source, n and N are -d, p is the origin (hit stays false).
     bool distantSource = false;
-    double distance = 1e10;   // L: distance to the first intersection (RADIANCE FHUGE if none)
-    double effectiveLength = 1e10;  // l: effective distance (through mirrors: apparent)
-    Vec3 point;               // p: first intersection
-    Vec3 normal;              // n: perturbed surface normal (RADIANCE's ron + pert)
-    Vec3 unperturbedNormal;   // N
-    double u = 0, v = 0;      // c: local surface coordinates (geometry/ray.h Hit::u, v)
-    int32_t prim = -1;        // s: surface hit (index into Scene::prims; -1 none)
-    int32_t modifier = -1;    // m: its modifier
-    int32_t material = -1;    // M: its material after patterns/textures/aliases
-    Color mirrored;           // r: value contribution of pure specular reflection
-    Color unmirrored;         // x: value minus the mirrored part
+    double distance = 1e10;  // L: distance to the first intersection (RADIANCE FHUGE if none)
+    double effectiveLength = 1e10;   // l: effective distance (through mirrors: apparent)
+    Vec3 point;                      // p: first intersection
+    Vec3 normal;                     // n: perturbed surface normal (RADIANCE's ron + pert)
+    Vec3 unperturbedNormal;          // N
+    double u = 0, v = 0;             // c: local surface coordinates (geometry/ray.h Hit::u, v)
+    int32_t prim = -1;               // s: surface hit (index into Scene::prims; -1 none)
+    int32_t modifier = -1;           // m: its modifier
+    int32_t material = -1;           // M: its material after patterns/textures/aliases
+    Color mirrored;                  // r: value contribution of pure specular reflection
+    Color unmirrored;                // x: value minus the mirrored part
     double mirroredLength = 1e10;    // R: effective length of the mirrored ray
     double unmirroredLength = 1e10;  // X: effective length of the unmirrored part
 };
@@ -124,8 +124,8 @@ public:
     // with a ray starting just off the point: the surface is taken kIrradianceOffset
     // in front of `point`, as RADIANCE's rtrace does.
     static constexpr double kIrradianceOffset = 1e-4;
-    RayResult irradiance(Context& ctx, const Vec3& point, const Vec3& normal,
-                         uint64_t rayIndex, ContributionSink* contrib = nullptr) const;
+    RayResult irradiance(Context& ctx, const Vec3& point, const Vec3& normal, uint64_t rayIndex,
+                         ContributionSink* contrib = nullptr) const;
 
     const Scene& scene() const { return scene_; }
     const SceneGeometry& geometry() const { return geometry_; }

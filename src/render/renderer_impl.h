@@ -5,10 +5,10 @@
 
 #include <array>
 #include <atomic>
-#include <unordered_map>
 #include <functional>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "material/material.h"
@@ -50,13 +50,13 @@ struct MediaState {
 // descends from an ambient sample or a sampled (rough) specular ray must not see the
 // emission of surfaces the direct calculation already counts.
 struct RayState {
-    int depth = 0;             // reflections so far (RADIANCE rlvl)
-    double weight = 1;         // estimated contribution to the result (rweight)
-    int ambientLevel = 0;      // ambient bounces so far
-    bool indirect = false;     // descended from an ambient or sampled specular ray
-    bool primary = true;       // the input ray itself
+    int depth = 0;               // reflections so far (RADIANCE rlvl)
+    double weight = 1;           // estimated contribution to the result (rweight)
+    int ambientLevel = 0;        // ambient bounces so far
+    bool indirect = false;       // descended from an ambient or sampled specular ray
+    bool primary = true;         // the input ray itself
     bool irradianceHit = false;  // -i: shade the first surface as white Lambertian
-    ClipSet clip;              // what antimatter hides from the ray (RADIANCE clipset)
+    ClipSet clip;                // what antimatter hides from the ray (RADIANCE clipset)
     // What it travels in; null: the global medium (-me -ma -mg), in no mist. Points to
     // the storage of whoever changed it, which outlives the ray (rays are traced depth
     // first), so that rays outside media copy no more than a pointer.
@@ -79,12 +79,12 @@ struct Renderer::Impl {
     const SceneGeometry& geometry;
     const RenderOptions& options;
     material::SurfaceChains chains;
-    material::MaterialCalc materialCalc;   // .cal functions of function-driven materials
+    material::MaterialCalc materialCalc;  // .cal functions of function-driven materials
     // rcontrib: per light source (light::findLightSources), whether -m tracks its
     // material; empty otherwise.
     std::vector<bool> trackedSources;
-    PhotonLighting photons;                // -ap maps (inactive without)
-    AmbientOptions ambientOptions;         // -a options as used (photon mode adjusts -ab)
+    PhotonLighting photons;         // -ap maps (inactive without)
+    AmbientOptions ambientOptions;  // -a options as used (photon mode adjusts -ab)
     DirectLighting direct;
     Ambient ambient;
     material::ShadeOptions shadeOptions;
@@ -96,7 +96,7 @@ struct Renderer::Impl {
         return chains.materials().at(index);
     }
 
-    AntimatterTable antimatter;  // what each antimatter clips (clip_set.h)
+    AntimatterTable antimatter;     // what each antimatter clips (clip_set.h)
     material::Medium globalMedium;  // -me -ma -mg
     // Per mist material: its string arguments as direct source indices (m_mist.c).
     std::unordered_map<int32_t, std::vector<int32_t>> mistSources;
@@ -158,12 +158,11 @@ private:
     Color shadeHit(const Ray& ray, const Hit& hit, const RayState& state, RayResult* first,
                    Color& passWeight, Passage& passage);
     Color shadeLayer(const Ray& ray, const Hit& hit, const RayState& state,
-                     const material::ShadingLayer& layer, RayResult* first,
-                     bool& passThrough, Passage& passage);
+                     const material::ShadingLayer& layer, RayResult* first, bool& passThrough,
+                     Passage& passage);
     // Shades with a mirror's or illum's alternate material (its whole modifier chain).
-    Color shadeAlternate(const Ray& ray, const Hit& hit, const RayState& state,
-                         int32_t alternate, RayResult* first, bool& passThrough,
-                         Passage& passage);
+    Color shadeAlternate(const Ray& ray, const Hit& hit, const RayState& state, int32_t alternate,
+                         RayResult* first, bool& passThrough, Passage& passage);
     // The medium along a ray segment of length `t` (HUGE_VAL: the ray left the scene):
     // returns the light scattered into the ray and sets `transmit` to the segment's
     // transmittance (RADIANCE rayparticipate, srcscatter).
@@ -191,8 +190,8 @@ private:
                    bool behindOnly = false);
     // The ambient term at `hit`, which the caller multiplies by `coef` (the material's
     // ambient coefficient; for contributions).
-    Color ambientAt(const Hit& hit, const Vec3& normal, int32_t modifier,
-                    const RayState& state, const Color& coef);
+    Color ambientAt(const Hit& hit, const Vec3& normal, int32_t modifier, const RayState& state,
+                    const Color& coef);
     material::ChainResult resolve(int32_t modifier, const Hit& hit, const Vec3& dir);
     // Radiance of a light material reached through `modifier` (patterns applied) seen
     // along `dir`; `isGlow`/`isLight` say what it was (both false: not a light).

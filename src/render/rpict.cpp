@@ -36,8 +36,7 @@
 namespace rp::render {
 
 std::string formatProgress(long rays, double percentDone, double seconds) {
-    return fmt::format("{} rays, {:4.2f}% after {:.4f} hours", rays, percentDone,
-                       seconds / 3600.0);
+    return fmt::format("{} rays, {:4.2f}% after {:.4f} hours", rays, percentDone, seconds / 3600.0);
 }
 
 namespace {
@@ -49,8 +48,13 @@ class Progress {
 public:
     Progress(const ProgressCallback& cb, int interval, int rows, int done,
              const std::atomic<long>& rays)
-        : cb_(cb), interval_(interval), rows_(rows), rays_(rays), done_(done),
-          start_(Clock::now()), last_(start_) {}
+        : cb_(cb),
+          interval_(interval),
+          rows_(rows),
+          rays_(rays),
+          done_(done),
+          start_(Clock::now()),
+          last_(start_) {}
 
     void start() { report(true); }
     void advance(int rows) {
@@ -97,8 +101,8 @@ struct Sampler {
 
     void trace(PixelTracer& tracer, int x, int row) {
         const size_t i = at(x, row);
-        if (tracePixel(tracer, rays, previous ? &*previous : nullptr, params, x, row, xres,
-                       yres, pixels[i], z[i]))
+        if (tracePixel(tracer, rays, previous ? &*previous : nullptr, params, x, row, xres, yres,
+                       pixels[i], z[i]))
             traced.fetch_add(1, std::memory_order_relaxed);
     }
 
@@ -126,8 +130,8 @@ struct Sampler {
             // (b - a) * k / len keeps values that are linear in position exact.
             const size_t i = pos(k);
             for (int c = 0; c < 3; ++c)
-                pixels[i][c] = float(pixels[a][c] + (double(pixels[b][c]) - pixels[a][c]) *
-                                                        (k - k0) / len);
+                pixels[i][c] =
+                    float(pixels[a][c] + (double(pixels[b][c]) - pixels[a][c]) * (k - k0) / len);
             z[i] = float(z[a] + (double(z[b]) - z[a]) * (k - k0) / len);
         }
     }
@@ -207,11 +211,13 @@ void shareRows(Cluster& cluster, Picture& pic, std::vector<float>& z, size_t k0,
     for (size_t k = k0; k < k1; ++k) {
         if (k % ranks != size_t(cluster.rank())) continue;
         const auto [i0, i1] = span(k);
-        w.putVector(std::vector<Pixel>(pic.pixels.begin() + long(i0), pic.pixels.begin() + long(i1)));
+        w.putVector(
+            std::vector<Pixel>(pic.pixels.begin() + long(i0), pic.pixels.begin() + long(i1)));
         w.putVector(std::vector<float>(z.begin() + long(i0), z.begin() + long(i1)));
     }
     std::vector<size_t> sizes;
-    const Bytes all = toRoot ? cluster.gather(w.bytes(), sizes) : cluster.allGather(w.bytes(), sizes);
+    const Bytes all =
+        toRoot ? cluster.gather(w.bytes(), sizes) : cluster.allGather(w.bytes(), sizes);
     if (toRoot && !cluster.isRoot()) return;
     size_t at = 0;
     std::vector<Pixel> px;
@@ -312,8 +318,16 @@ Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& fac
     const int firstRow = std::clamp(rowsIn.firstRow, 0, size.yres);
     std::atomic<long> traced{0};
     const PixelRayParams params{options.pixelJitter, options.motionBlur, options.apertureBlur};
-    Sampler s{rays, previous, size.xres, size.yres, params, options.sampleThreshold,
-              depth != nullptr, pic.pixels, z, traced};
+    Sampler s{rays,
+              previous,
+              size.xres,
+              size.yres,
+              params,
+              options.sampleThreshold,
+              depth != nullptr,
+              pic.pixels,
+              z,
+              traced};
 
     Progress report(progress, options.reportInterval, size.yres, firstRow, traced);
     report.start();

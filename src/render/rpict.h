@@ -84,8 +84,7 @@ struct RenderRows {
     // Called on the calling thread, top to bottom, each time rows [begin, end) are final
     // (pixels and depths), so that they can be written while the rest is rendered; every
     // row from firstRow on is passed exactly once.
-    std::function<void(const Picture&, const std::vector<float>& depth, int begin, int end)>
-        done;
+    std::function<void(const Picture&, const std::vector<float>& depth, int begin, int end)> done;
     // -pm: the previous frame's view; each pixel's ray is moved towards the one this
     // view would trace by a random part of -pm (RADIANCE's motion blur). Null: none.
     const View* previousView = nullptr;

@@ -1,12 +1,12 @@
 // rpict's command line parsing, defaults and picture size (see rpict_options.h).
 #include "render/rpict_options.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-
-#include <fmt/format.h>
 
 #include "render/command_args.h"
 #include "util/error.h"
@@ -148,12 +148,24 @@ std::string formatRpictDefaults(const RpictOptions& opt) {
     const View& v = opt.view;
     const char* typeName = "unknown";
     switch (v.type) {
-        case ViewType::kPerspective: typeName = "perspective"; break;
-        case ViewType::kParallel: typeName = "parallel"; break;
-        case ViewType::kCylindrical: typeName = "cylindrical"; break;
-        case ViewType::kHemispherical: typeName = "hemispherical"; break;
-        case ViewType::kAngular: typeName = "angular"; break;
-        case ViewType::kPlanisphere: typeName = "planisphere"; break;
+        case ViewType::kPerspective:
+            typeName = "perspective";
+            break;
+        case ViewType::kParallel:
+            typeName = "parallel";
+            break;
+        case ViewType::kCylindrical:
+            typeName = "cylindrical";
+            break;
+        case ViewType::kHemispherical:
+            typeName = "hemispherical";
+            break;
+        case ViewType::kAngular:
+            typeName = "angular";
+            break;
+        case ViewType::kPlanisphere:
+            typeName = "planisphere";
+            break;
     }
     // RADIANCE compat: rpmain.c printdefaults, the same order and layout.
     std::string s;

@@ -19,20 +19,20 @@ RenderOptions rpictRenderDefaults();
 
 struct RpictOptions {
     RenderOptions render = rpictRenderDefaults();
-    View view;                     // -vt -vp ... -vf (rpict's STDVIEW defaults)
-    int xres = 512;                // -x: maximum picture width
-    int yres = 512;                // -y: maximum picture height
-    double pixelAspect = 1;        // -pa: pixel height over width; 0 keeps -x and -y
-    double pixelJitter = 0.67;     // -pj: 0 samples pixel centres, 1 anywhere in the pixel
-    int sampleSpacing = 4;         // -ps: adaptive sampling spacing in pixels (1 = every pixel)
-    double sampleThreshold = 0.05; // -pt: relative difference above which pixels are traced
-    double motionBlur = 0;         // -pm: blur between the previous and this frame (-S)
-    double apertureBlur = 0;       // -pd: depth-of-field aperture diameter (world units)
-    int reportInterval = 0;        // -t: seconds between progress reports (0 = none)
-    int sequenceStart = 0;         // -S: > 0 renders one frame per view line on input
-    std::string outputFile;        // -o: picture file; with -S may hold a printf %d field
-    std::string zFile;             // -z: depth file (raw floats, one per pixel; %d as -o)
-    std::string recoverFile;       // -r / -ro: partial picture to continue; with -S a frame number
+    View view;                      // -vt -vp ... -vf (rpict's STDVIEW defaults)
+    int xres = 512;                 // -x: maximum picture width
+    int yres = 512;                 // -y: maximum picture height
+    double pixelAspect = 1;         // -pa: pixel height over width; 0 keeps -x and -y
+    double pixelJitter = 0.67;      // -pj: 0 samples pixel centres, 1 anywhere in the pixel
+    int sampleSpacing = 4;          // -ps: adaptive sampling spacing in pixels (1 = every pixel)
+    double sampleThreshold = 0.05;  // -pt: relative difference above which pixels are traced
+    double motionBlur = 0;          // -pm: blur between the previous and this frame (-S)
+    double apertureBlur = 0;        // -pd: depth-of-field aperture diameter (world units)
+    int reportInterval = 0;         // -t: seconds between progress reports (0 = none)
+    int sequenceStart = 0;          // -S: > 0 renders one frame per view line on input
+    std::string outputFile;         // -o: picture file; with -S may hold a printf %d field
+    std::string zFile;              // -z: depth file (raw floats, one per pixel; %d as -o)
+    std::string recoverFile;        // -r / -ro: partial picture to continue; with -S a frame number
 };
 
 // A parsed rpict command: options, then the scene files.

@@ -36,10 +36,10 @@ TEST(RpictOptions, DefaultsAreRpictsNotRtraces) {
 }
 
 TEST(RpictOptions, ParsesEveryFamily) {
-    RpictCommand c = parseRpictCommand({"-x", "100", "-y", "50", "-pa", "0", "-ps", "2", "-pt",
-                                        ".1", "-pj", "0", "-t", "5", "-o", "out.hdr", "-z",
-                                        "z.raw", "-vth", "-vh", "180", "-vv", "180", "-ab", "2",
-                                        "-lr", "-3", "-n", "4", "-pm", "0.5", "scene.rad"});
+    RpictCommand c = parseRpictCommand(
+        {"-x",  "100", "-y", "50",  "-pa",     "0",  "-ps",   "2",    "-pt", ".1",       "-pj",
+         "0",   "-t",  "5",  "-o",  "out.hdr", "-z", "z.raw", "-vth", "-vh", "180",      "-vv",
+         "180", "-ab", "2",  "-lr", "-3",      "-n", "4",     "-pm",  "0.5", "scene.rad"});
     const RpictOptions& o = c.options;
     EXPECT_EQ(o.xres, 100);
     EXPECT_EQ(o.yres, 50);

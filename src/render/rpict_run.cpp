@@ -1,6 +1,7 @@
 // rpict's frames, output files and recovery (see rpict_run.h).
 #include "render/rpict_run.h"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <cctype>
@@ -15,8 +16,6 @@
 #include <ostream>
 #include <sstream>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "image/picture.h"
 #include "image/rgbe.h"
@@ -338,8 +337,9 @@ int runRpict(const RpictOptions& options, const PixelTracerFactory& factory,
         std::vector<Colr> scan(size_t(size.xres));
         rows.done = [&](const Picture& pic, const std::vector<float>& z, int begin, int end) {
             // Depths first, as RADIANCE's render(): a picture row is never ahead of its z.
-            if (zout) zout->write(z.data() + size_t(begin) * size_t(size.xres),
-                                  size_t(end - begin) * size_t(size.xres));
+            if (zout)
+                zout->write(z.data() + size_t(begin) * size_t(size.xres),
+                            size_t(end - begin) * size_t(size.xres));
             std::string data;
             for (int y = begin; y < end; ++y) {
                 for (int x = 0; x < size.xres; ++x) scan[size_t(x)] = toColr(pic.at(x, y));

@@ -106,8 +106,8 @@ TEST(RpictRun, RecoveredPictureIsTheUninterruptedOne) {
             const size_t head = whole.find('\n', header) + 1;  // and the resolution line
             for (size_t cut : {header - 3, header + 5, head + 700, whole.size() / 2,
                                whole.size() - 10, whole.size()}) {
-                SCOPED_TRACE("ps " + std::to_string(ps) + " threads " +
-                             std::to_string(threads) + " cut " + std::to_string(cut));
+                SCOPED_TRACE("ps " + std::to_string(ps) + " threads " + std::to_string(threads) +
+                             " cut " + std::to_string(cut));
                 WarningLog warnings;
                 RpictOptions r = o;
                 r.outputFile = r.recoverFile = dir.file("part.hdr");  // -ro part.hdr
@@ -249,9 +249,13 @@ TEST(RpictRun, SequenceFramesFromViewLines) {
     EXPECT_EQ(f4.header.lines[0], "rpict -x 48 -y 40");
     EXPECT_EQ(f4.header.lines[2], "FRAME=4");
     // Each line applies on top of the previous view.
-    EXPECT_EQ(f3.header.lines[3], "VIEW= -vtv -vp 0 0 0 -vd 0 1 0 -vu 0 0 1 -vh 60 -vv 50 -vo 0 -va 0 -vs 0 -vl 0");
-    EXPECT_EQ(f4.header.lines[3], "VIEW= -vtv -vp 0.5 0 0.25 -vd 0 1 0 -vu 0 0 1 -vh 60 -vv 50 -vo 0 -va 0 -vs 0 -vl 0");
-    EXPECT_EQ(f5.header.lines[3], "VIEW= -vtv -vp -0.5 0 0 -vd 0 1 0 -vu 0 0 1 -vh 40 -vv 50 -vo 0 -va 0 -vs 0 -vl 0");
+    EXPECT_EQ(f3.header.lines[3],
+              "VIEW= -vtv -vp 0 0 0 -vd 0 1 0 -vu 0 0 1 -vh 60 -vv 50 -vo 0 -va 0 -vs 0 -vl 0");
+    EXPECT_EQ(
+        f4.header.lines[3],
+        "VIEW= -vtv -vp 0.5 0 0.25 -vd 0 1 0 -vu 0 0 1 -vh 60 -vv 50 -vo 0 -va 0 -vs 0 -vl 0");
+    EXPECT_EQ(f5.header.lines[3],
+              "VIEW= -vtv -vp -0.5 0 0 -vd 0 1 0 -vu 0 0 1 -vh 40 -vv 50 -vo 0 -va 0 -vs 0 -vl 0");
     // The same view as a single picture gives the same pixels.
     RpictOptions single = wallOptions(4);
     single.view.point = Vec3(0.5, 0, 0.25);

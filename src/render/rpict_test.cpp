@@ -65,7 +65,8 @@ TEST(RpictRender, LinearImagesAreExactWithAndWithoutInterpolation) {
         for (int row = 0; row < 37; ++row)
             for (int x = 0; x < 37; ++x) {
                 Color c = f(x, row);
-                ASSERT_EQ(pic.at(x, row)[0], float(c.r)) << "ps " << ps << " at " << x << "," << row;
+                ASSERT_EQ(pic.at(x, row)[0], float(c.r))
+                    << "ps " << ps << " at " << x << "," << row;
                 ASSERT_EQ(pic.at(x, row)[1], float(c.g)) << "ps " << ps;
                 ASSERT_EQ(pic.at(x, row)[2], float(c.b)) << "ps " << ps;
             }
@@ -82,13 +83,13 @@ TEST(RpictRender, DegeneratePictureSizes) {
         RpictOptions o = smallOptions(x, y, 4);
         o.pixelAspect = 0;  // keep the requested size
         TraceLog log(size_t(x) * y);
-        Picture pic = renderPicture(o, fakeFactory(x, &log, [](int px, int row) {
-            return Color(px, row, 1);
-        }));
+        Picture pic = renderPicture(
+            o, fakeFactory(x, &log, [](int px, int row) { return Color(px, row, 1); }));
         ASSERT_EQ(pic.width, x);
         ASSERT_EQ(pic.height, y);
         for (int row = 0; row < y; ++row)
-            for (int px = 0; px < x; ++px) ASSERT_EQ(pic.at(px, row), (Pixel{float(px), float(row), 1}));
+            for (int px = 0; px < x; ++px)
+                ASSERT_EQ(pic.at(px, row), (Pixel{float(px), float(row), 1}));
     }
 }
 
@@ -103,7 +104,9 @@ TEST(RpictRender, SmoothImagesAreMostlyInterpolated) {
 
 TEST(RpictRender, EdgesAreTracedNotInterpolated) {
     const int n = 48;
-    auto f = [](int x, int row) { return (x >= 21) != (row >= 30) ? Color(1, 1, 1) : Color(0.1, 0.1, 0.1); };
+    auto f = [](int x, int row) {
+        return (x >= 21) != (row >= 30) ? Color(1, 1, 1) : Color(0.1, 0.1, 0.1);
+    };
     RpictOptions o = smallOptions(n, n, 4);
     o.sampleThreshold = 0.01;
     TraceLog log(n * n);
@@ -117,7 +120,8 @@ TEST(RpictRender, EdgesAreTracedNotInterpolated) {
             EXPECT_EQ(log.count(size_t(row) * n + 20), 1) << row;
             EXPECT_EQ(log.count(size_t(row) * n + 21), 1) << row;
         }
-        for (int x = 0; x < n; ++x) ASSERT_EQ(pic.at(x, row)[0], float(f(x, row).r)) << x << "," << row;
+        for (int x = 0; x < n; ++x)
+            ASSERT_EQ(pic.at(x, row)[0], float(f(x, row).r)) << x << "," << row;
     }
     // ...and the scanline above the horizontal one (row 30 is sampled) in every column.
     for (int x = 0; x < n; ++x) EXPECT_EQ(log.count(size_t(29) * n + x), 1) << x;
@@ -159,7 +163,10 @@ TEST(RpictRender, FisheyeCornersAreBlackAndNotTraced) {
     o.view.horizontal = o.view.vertical = 180;
     TraceLog log(32 * 32);
     std::vector<float> z;
-    Picture pic = renderPicture(o, fakeFactory(32, &log, [](int, int) { return Color(1, 2, 3); }, 5.0), {}, &z);
+    Picture pic = renderPicture(o,
+                                fakeFactory(
+                                    32, &log, [](int, int) { return Color(1, 2, 3); }, 5.0),
+                                {}, &z);
     EXPECT_EQ(log.count(0), 0);
     EXPECT_EQ(pic.at(0, 0), (Pixel{0, 0, 0}));
     EXPECT_EQ(z[0], 0.0f);
@@ -185,9 +192,9 @@ TEST(RpictRender, RaysFollowTheView) {
     Picture pic = renderPicture(o, factory);
     EXPECT_NEAR(pic.at(16, 16)[0], 0.0, 1e-6);
     EXPECT_NEAR(pic.at(16, 16)[1], 1.0, 1e-6);
-    EXPECT_GT(pic.at(16, 0)[2], 0.3);   // top row looks up
+    EXPECT_GT(pic.at(16, 0)[2], 0.3);    // top row looks up
     EXPECT_LT(pic.at(16, 32)[2], -0.3);  // bottom row looks down
-    EXPECT_LT(pic.at(0, 16)[0], -0.3);  // left column looks left
+    EXPECT_LT(pic.at(0, 16)[0], -0.3);   // left column looks left
 }
 
 TEST(RpictRender, AftClippingReachesTheTracerAndBadViewsFail) {

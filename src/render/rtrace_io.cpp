@@ -32,7 +32,8 @@ OutputSpec parseOutputSpec(const std::string& spec, char outputFormat) {
         if (c == 't' || c == 'T') {
             // RADIANCE compat (rtrace.c setoutput): a trailing t/T is ignored.
             if (k + 1 == spec.size()) break;
-            if (into == &out.tree) throw InputError("-o: only one 't' or 'T' allowed in '" + spec + "'");
+            if (into == &out.tree)
+                throw InputError("-o: only one 't' or 'T' allowed in '" + spec + "'");
             into = &out.tree;
             out.traceSources = c == 'T';
             continue;
@@ -40,8 +41,9 @@ OutputSpec parseOutputSpec(const std::string& spec, char outputFormat) {
         if (std::strchr(kKnownSpecs, c) == nullptr || c == '\0')
             throw InputError(std::string("unknown output specifier '") + c + "' in -o" + spec);
         if (outputFormat == 'c' && !isColorSpec(c))
-            throw InputError(std::string("-fc (RGBE) output only for colour values (v V W r x), not '") +
-                             c + "'");
+            throw InputError(
+                std::string("-fc (RGBE) output only for colour values (v V W r x), not '") + c +
+                "'");
         *into += c;
     }
     return out;
@@ -160,10 +162,14 @@ void RayWriter::color(std::string& out, const Color& c) const {
 // RADIANCE compat (rtrace.c oputs/oputm/oputM): names are text followed by a tab in every
 // output format; "*" when the ray hit nothing, "void" for the void modifier.
 void RayWriter::name(std::string& out, int32_t index, bool hit) const {
-    if (!hit) out += '*';
-    else if (index < 0) out += "void";
-    else if (scene_ && size_t(index) < scene_->prims.size()) out += scene_->prims[size_t(index)].name;
-    else out += std::to_string(index);
+    if (!hit)
+        out += '*';
+    else if (index < 0)
+        out += "void";
+    else if (scene_ && size_t(index) < scene_->prims.size())
+        out += scene_->prims[size_t(index)].name;
+    else
+        out += std::to_string(index);
     out += '\t';
 }
 
@@ -175,29 +181,71 @@ void RayWriter::record(std::string& out, const std::string& letters, const RayRe
     };
     for (char c : letters) {
         switch (c) {
-        case 'o': vec(r.origin, true); break;
-        case 'd': vec(r.direction, true); break;
-        case 'v': color(out, r.value); break;
-        case 'V': color(out, r.value * r.coefficient); break;  // contribution to the result
-        case 'w': real(out, r.weight); break;
-        case 'W': color(out, r.coefficient); break;
-        case 'l': real(out, r.effectiveLength); break;
-        case 'L': real(out, r.distance); break;
-        case 'c': real(out, hit ? r.u : 0.0); real(out, hit ? r.v : 0.0); break;
-        // RADIANCE compat (rtrace.c oputp, oputn, oputN): the ray origin for the point of
-        // a ray that hit nothing, zero normals; a distant source's fields are its own.
-        case 'p': vec(hit ? r.point : r.origin, true); break;
-        case 'n': vec(r.normal, named); break;
-        case 'N': vec(r.unperturbedNormal, named); break;
-        case 's': name(out, r.prim, named && r.prim >= 0); break;
-        case 'm': name(out, r.modifier, named); break;
-        case 'M': name(out, r.material, named); break;
-        case 'r': color(out, r.mirrored); break;
-        case 'x': color(out, r.unmirrored); break;
-        case 'R': real(out, r.mirroredLength); break;
-        case 'X': real(out, r.unmirroredLength); break;
-        case '~': out += "~\t"; break;
-        default: break;
+            case 'o':
+                vec(r.origin, true);
+                break;
+            case 'd':
+                vec(r.direction, true);
+                break;
+            case 'v':
+                color(out, r.value);
+                break;
+            case 'V':
+                color(out, r.value * r.coefficient);
+                break;  // contribution to the result
+            case 'w':
+                real(out, r.weight);
+                break;
+            case 'W':
+                color(out, r.coefficient);
+                break;
+            case 'l':
+                real(out, r.effectiveLength);
+                break;
+            case 'L':
+                real(out, r.distance);
+                break;
+            case 'c':
+                real(out, hit ? r.u : 0.0);
+                real(out, hit ? r.v : 0.0);
+                break;
+            // RADIANCE compat (rtrace.c oputp, oputn, oputN): the ray origin for the point of
+            // a ray that hit nothing, zero normals; a distant source's fields are its own.
+            case 'p':
+                vec(hit ? r.point : r.origin, true);
+                break;
+            case 'n':
+                vec(r.normal, named);
+                break;
+            case 'N':
+                vec(r.unperturbedNormal, named);
+                break;
+            case 's':
+                name(out, r.prim, named && r.prim >= 0);
+                break;
+            case 'm':
+                name(out, r.modifier, named);
+                break;
+            case 'M':
+                name(out, r.material, named);
+                break;
+            case 'r':
+                color(out, r.mirrored);
+                break;
+            case 'x':
+                color(out, r.unmirrored);
+                break;
+            case 'R':
+                real(out, r.mirroredLength);
+                break;
+            case 'X':
+                real(out, r.unmirroredLength);
+                break;
+            case '~':
+                out += "~\t";
+                break;
+            default:
+                break;
         }
     }
 }
@@ -245,8 +293,10 @@ std::string rtraceHeader(const std::string& commandLine, char outputFormat) {
     std::strftime(buf, sizeof buf, "GMT= %Y:%m:%d %H:%M:%S\n", &tmv);
     h += buf;
     h += "FORMAT=";
-    h += outputFormat == 'a' ? "ascii" : outputFormat == 'f' ? "float"
-         : outputFormat == 'd' ? "double" : "32-bit_rle_rgbe";
+    h += outputFormat == 'a'   ? "ascii"
+         : outputFormat == 'f' ? "float"
+         : outputFormat == 'd' ? "double"
+                               : "32-bit_rle_rgbe";
     h += "\n\n";
     return h;
 }

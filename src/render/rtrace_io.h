@@ -43,7 +43,7 @@ public:
     // error() says what and where ("bad ray at input line 3: 'abc' is not a number").
     Status next(InputRay& ray);
     const std::string& error() const { return error_; }
-    long line() const { return line_; }     // current input line (ASCII)
+    long line() const { return line_; }      // current input line (ASCII)
     uint64_t rays() const { return rays_; }  // records read so far
 
 private:

@@ -1,10 +1,10 @@
 // rtrace input reading and output formatting (rtrace_io.h).
 #include "render/rtrace_io.h"
 
+#include <gtest/gtest.h>
+
 #include <cstring>
 #include <sstream>
-
-#include <gtest/gtest.h>
 
 #include "util/error.h"
 

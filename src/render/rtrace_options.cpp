@@ -28,7 +28,8 @@ int intValue(const std::vector<std::string>& args, size_t& i) {
 // -f[a|f|d][a|f|d|c]: one letter sets both formats, as RADIANCE.
 void parseFormat(const std::string& opt, RtraceOptions& o) {
     auto isIn = [](char c) { return c == 'a' || c == 'f' || c == 'd'; };
-    if (opt.size() < 3 || opt.size() > 4 || !isIn(opt[2])) throw InputError("unknown option '" + opt + "'");
+    if (opt.size() < 3 || opt.size() > 4 || !isIn(opt[2]))
+        throw InputError("unknown option '" + opt + "'");
     o.inputFormat = opt[2];
     if (opt.size() == 3) {
         o.outputFormat = opt[2];
@@ -40,28 +41,51 @@ void parseFormat(const std::string& opt, RtraceOptions& o) {
 
 const char* specName(char c) {
     switch (c) {
-    case 't': case 'T': return " trace";
-    case 'o': return " origin";
-    case 'd': return " direction";
-    case 'v': return " value";
-    case 'V': return " contribution";
-    case 'l': return " length";
-    case 'L': return " first_length";
-    case 'c': return " local_coordinates";
-    case 'p': return " point";
-    case 'n': return " normal";
-    case 'N': return " unperturbed_normal";
-    case 's': return " surface";
-    case 'w': return " weight";
-    case 'W': return " coefficient";
-    case 'm': return " modifier";
-    case 'M': return " material";
-    case 'r': return " mirrored_value";
-    case 'x': return " unmirrored_value";
-    case 'R': return " mirrored_length";
-    case 'X': return " unmirrored_length";
-    case '~': return " tilde";
-    default: return "";
+        case 't':
+        case 'T':
+            return " trace";
+        case 'o':
+            return " origin";
+        case 'd':
+            return " direction";
+        case 'v':
+            return " value";
+        case 'V':
+            return " contribution";
+        case 'l':
+            return " length";
+        case 'L':
+            return " first_length";
+        case 'c':
+            return " local_coordinates";
+        case 'p':
+            return " point";
+        case 'n':
+            return " normal";
+        case 'N':
+            return " unperturbed_normal";
+        case 's':
+            return " surface";
+        case 'w':
+            return " weight";
+        case 'W':
+            return " coefficient";
+        case 'm':
+            return " modifier";
+        case 'M':
+            return " material";
+        case 'r':
+            return " mirrored_value";
+        case 'x':
+            return " unmirrored_value";
+        case 'R':
+            return " mirrored_length";
+        case 'X':
+            return " unmirrored_length";
+        case '~':
+            return " tilde";
+        default:
+            return "";
     }
 }
 
@@ -71,7 +95,8 @@ void parseTraceList(const std::vector<std::string>& args, size_t& i, TraceFilter
     if (i + 1 >= args.size()) throw InputError("missing value for option '" + opt + "'");
     const std::string& v = args[++i];
     const bool include = opt[2] == 'i' || opt[2] == 'I';
-    const TraceFilter::Mode mode = include ? TraceFilter::Mode::kInclude : TraceFilter::Mode::kExclude;
+    const TraceFilter::Mode mode =
+        include ? TraceFilter::Mode::kInclude : TraceFilter::Mode::kExclude;
     if (t.mode != mode) {
         t.mode = mode;
         t.modifiers.clear();
@@ -91,11 +116,16 @@ void parseTraceList(const std::vector<std::string>& args, size_t& i, TraceFilter
 
 const char* formatName(char format) {
     switch (format) {
-    case 'a': return "ascii";
-    case 'f': return "float";
-    case 'd': return "double";
-    case 'c': return "32-bit_rle_rgbe";
-    default: return "unknown";
+        case 'a':
+            return "ascii";
+        case 'f':
+            return "float";
+        case 'd':
+            return "double";
+        case 'c':
+            return "32-bit_rle_rgbe";
+        default:
+            return "unknown";
     }
 }
 
@@ -128,15 +158,24 @@ RtraceOptions parseRtraceArgs(std::vector<std::string> args) {
             --i;  // parseRenderOption moved past the option; the loop adds one
             continue;
         }
-        if (opt == "-x") o.xres = intValue(args, i);
-        else if (opt == "-y") o.yres = intValue(args, i);
-        else if (opt == "-ti" || opt == "-te" || opt == "-tI" || opt == "-tE") parseTraceList(args, i, o.trace);
-        else if (opt.rfind("-ld", 0) == 0) o.limitDistance = boolSuffix(opt, 3, o.limitDistance);
-        else if (opt.rfind("-I", 0) == 0) o.immediateIrradiance = boolSuffix(opt, 2, o.immediateIrradiance);
-        else if (opt.rfind("-h", 0) == 0) o.header = boolSuffix(opt, 2, o.header);
-        else if (opt.rfind("-f", 0) == 0) parseFormat(opt, o);
-        else if (opt.rfind("-o", 0) == 0) o.outputSpec = opt.substr(2);
-        else throw InputError("unknown option '" + opt + "'");
+        if (opt == "-x")
+            o.xres = intValue(args, i);
+        else if (opt == "-y")
+            o.yres = intValue(args, i);
+        else if (opt == "-ti" || opt == "-te" || opt == "-tI" || opt == "-tE")
+            parseTraceList(args, i, o.trace);
+        else if (opt.rfind("-ld", 0) == 0)
+            o.limitDistance = boolSuffix(opt, 3, o.limitDistance);
+        else if (opt.rfind("-I", 0) == 0)
+            o.immediateIrradiance = boolSuffix(opt, 2, o.immediateIrradiance);
+        else if (opt.rfind("-h", 0) == 0)
+            o.header = boolSuffix(opt, 2, o.header);
+        else if (opt.rfind("-f", 0) == 0)
+            parseFormat(opt, o);
+        else if (opt.rfind("-o", 0) == 0)
+            o.outputSpec = opt.substr(2);
+        else
+            throw InputError("unknown option '" + opt + "'");
     }
     o.optionCount = std::min(i, args.size());
     o.sceneFile = sceneArgument(args, i);
@@ -147,7 +186,8 @@ RtraceOptions parseRtraceArgs(std::vector<std::string> args) {
 const std::string& sceneArgument(const std::vector<std::string>& args, size_t i) {
     if (i >= args.size()) throw InputError("missing octree argument");
     if (i + 1 < args.size())
-        throw InputError("unexpected argument '" + args[i + 1] + "' after octree '" + args[i] + "'");
+        throw InputError("unexpected argument '" + args[i + 1] + "' after octree '" + args[i] +
+                         "'");
     return args[i];
 }
 
@@ -162,7 +202,8 @@ std::string formatRayDefaults(int threads, int xres, int yres, bool limitDistanc
     put("-n %-2d\t\t\t\t# number of rendering processes\n", threads);
     put("-x %-9d\t\t\t# %s\n", xres, xres && yres ? "x resolution" : "flush interval");
     put("-y %-9d\t\t\t# y resolution\n", yres);
-    out += limitDistance ? "-ld+\t\t\t\t# limit distance on\n" : "-ld-\t\t\t\t# limit distance off\n";
+    out +=
+        limitDistance ? "-ld+\t\t\t\t# limit distance on\n" : "-ld-\t\t\t\t# limit distance off\n";
     put("-h%c\t\t\t\t# %s header\n", header ? '+' : '-', header ? "output" : "no");
     put("-f%c%c\t\t\t\t# format input/output = %s/%s\n", inputFormat, outputFormat,
         formatName(inputFormat), formatName(outputFormat));
@@ -183,7 +224,8 @@ std::string formatRtraceDefaults(const RtraceOptions& o) {
     put("-o%-9s\t\t\t# output", o.outputSpec.c_str());
     for (char c : o.outputSpec) out += specName(c);
     out += '\n';
-    out += o.render.warnings ? "-w+\t\t\t\t# warning messages on\n" : "-w-\t\t\t\t# warning messages off\n";
+    out += o.render.warnings ? "-w+\t\t\t\t# warning messages on\n"
+                             : "-w-\t\t\t\t# warning messages off\n";
     out += formatRenderDefaults(o.render);
     return out;
 }

@@ -21,21 +21,21 @@ struct TraceFilter {
 };
 
 struct RtraceOptions {
-    RenderOptions render;         // -n, -e, -w and every common option live here
-    std::string outputSpec = "v";  // -o
-    char inputFormat = 'a';       // -f first letter: a f d
-    char outputFormat = 'a';      // -f second letter: a f d c
-    bool header = true;           // -h
-    int xres = 0;                 // -x: flush interval (with -y: picture width)
-    int yres = 0;                 // -y
+    RenderOptions render;              // -n, -e, -w and every common option live here
+    std::string outputSpec = "v";      // -o
+    char inputFormat = 'a';            // -f first letter: a f d
+    char outputFormat = 'a';           // -f second letter: a f d c
+    bool header = true;                // -h
+    int xres = 0;                      // -x: flush interval (with -y: picture width)
+    int yres = 0;                      // -y
     bool immediateIrradiance = false;  // -I
-    TraceFilter trace;            // -ti -te -tI -tE
-    bool limitDistance = false;   // -ld: a ray's distance limit from its input direction's length
-    bool printDefaults = false;   // -defaults / -help: print and exit, no scene needed
-    bool printVersion = false;    // -version: print the version line and exit
-    std::string sceneFile;        // the octree / scene file (last argument)
+    TraceFilter trace;                 // -ti -te -tI -tE
+    bool limitDistance = false;     // -ld: a ray's distance limit from its input direction's length
+    bool printDefaults = false;     // -defaults / -help: print and exit, no scene needed
+    bool printVersion = false;      // -version: print the version line and exit
+    std::string sceneFile;          // the octree / scene file (last argument)
     std::vector<std::string> args;  // after @file/$EVAR expansion, argv[0] first
-    size_t optionCount = 0;       // args[0..optionCount) are program and options (header)
+    size_t optionCount = 0;         // args[0..optionCount) are program and options (header)
 };
 
 // RtraceOptions with rtrace's own defaults: RADIANCE compat (rtmain.c): uncorrelated

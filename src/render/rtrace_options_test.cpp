@@ -1,9 +1,9 @@
 // rtrace's command line and -defaults text (rtrace_options.h).
 #include "render/rtrace_options.h"
 
-#include <fstream>
-
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 #include "util/error.h"
 #include "util/temp_dir_for_tests.h"
@@ -21,8 +21,8 @@ std::string errorOf(std::vector<std::string> args) {
 }
 
 TEST(RtraceOptions, ToolOptions) {
-    RtraceOptions o = parseRtraceArgs({"rtrace", "-ab", "1", "-x", "4", "-y", "3", "-h-",
-                                       "-ffd", "-ovodLsmM", "-I", "-ld", "-n", "2", "s.oct"});
+    RtraceOptions o = parseRtraceArgs({"rtrace", "-ab", "1", "-x", "4", "-y", "3", "-h-", "-ffd",
+                                       "-ovodLsmM", "-I", "-ld", "-n", "2", "s.oct"});
     EXPECT_EQ(o.render.ambient.bounces, 1);
     EXPECT_EQ(o.xres, 4);
     EXPECT_EQ(o.yres, 3);

@@ -1,11 +1,11 @@
 // rtrace's batch loop (see rtrace_run.h).
 #include "render/rtrace_run.h"
 
-#include <cmath>
-#include <string>
-
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+
+#include <cmath>
+#include <string>
 
 #include "render/cluster_batch.h"
 #include "util/error.h"
@@ -24,7 +24,9 @@ struct Record {
     std::string text;  // formatted output
 };
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 // The input side of the loop (on the root): records, -x/-y counting, flush points.
 class RayInput {

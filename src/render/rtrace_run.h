@@ -27,10 +27,10 @@ using RayTraceFn =
 
 struct RtraceRunSettings {
     char inputFormat = 'a';
-    int xres = 0, yres = 0;  // -x -y
-    int threads = 1;         // -n
+    int xres = 0, yres = 0;      // -x -y
+    int threads = 1;             // -n
     bool limitDistance = false;  // -ld: rays end at the length of their direction
-    size_t batchSize = 0;    // rays per batch; 0: 64 per thread and rank (tests use small values)
+    size_t batchSize = 0;  // rays per batch; 0: 64 per thread and rank (tests use small values)
     // The ranks of an MPI run (null: this process alone). The root reads the input and
     // writes the output; every rank traces a contiguous slice of each batch, so the
     // output is the same as one process's.
@@ -38,8 +38,8 @@ struct RtraceRunSettings {
 };
 
 struct RtraceRunStats {
-    uint64_t rays = 0;     // traced
-    uint64_t bogus = 0;    // zero-direction or non-finite records
+    uint64_t rays = 0;   // traced
+    uint64_t bogus = 0;  // zero-direction or non-finite records
     uint64_t nonFinite = 0;
 };
 

@@ -2,13 +2,13 @@
 // bogus records, flushing, -x/-y counts and bad input.
 #include "render/rtrace_run.h"
 
+#include <gtest/gtest.h>
+
 #include <atomic>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
 #include <streambuf>
-
-#include <gtest/gtest.h>
 
 #include "util/error.h"
 #include "util/thread_cluster_for_tests.h"
@@ -28,6 +28,7 @@ RayResult fake(const Vec3& o, const Vec3& d, uint64_t index, std::vector<TracedR
 class FlushCounter : public std::stringbuf {
 public:
     std::vector<size_t> flushedAt;
+
 protected:
     int sync() override {
         flushedAt.push_back(str().size());

@@ -13,13 +13,15 @@ struct RendererTracer::Contexts {
 };
 
 RendererTracer::RendererTracer(const Renderer& renderer, bool immediateIrradiance)
-    : renderer_(renderer), irradiance_(immediateIrradiance), contexts_(std::make_unique<Contexts>()) {}
+    : renderer_(renderer),
+      irradiance_(immediateIrradiance),
+      contexts_(std::make_unique<Contexts>()) {}
 
 RendererTracer::~RendererTracer() = default;
 
 RayTraceFn RendererTracer::trace() const {
-    return [this](const Vec3& origin, const Vec3& dir, uint64_t index,
-                  std::vector<TracedRay>* tree, double maxDistance) {
+    return [this](const Vec3& origin, const Vec3& dir, uint64_t index, std::vector<TracedRay>* tree,
+                  double maxDistance) {
         Renderer::ContextPtr& ctx = contexts_->perThread.local();
         if (!ctx) ctx = renderer_.makeContext();
         if (irradiance_) return renderer_.irradiance(*ctx, origin, dir, index);
@@ -28,15 +30,17 @@ RayTraceFn RendererTracer::trace() const {
 }
 
 ContribTraceFn RendererTracer::contributions(const ContribTargets& targets) const {
-    return [this, &targets](const Vec3& origin, const Vec3& dir, uint64_t index,
-                            double maxDistance, std::vector<Color>& values) {
+    return [this, &targets](const Vec3& origin, const Vec3& dir, uint64_t index, double maxDistance,
+                            std::vector<Color>& values) {
         Renderer::ContextPtr& ctx = contexts_->perThread.local();
         if (!ctx) ctx = renderer_.makeContext();
         std::unique_ptr<ContribTally>& tally = contexts_->tallies.local();
         if (!tally) tally = std::make_unique<ContribTally>(targets);
         tally->reset();
-        if (irradiance_) renderer_.irradiance(*ctx, origin, dir, index, tally.get());
-        else renderer_.trace(*ctx, origin, dir, index, nullptr, maxDistance, tally.get());
+        if (irradiance_)
+            renderer_.irradiance(*ctx, origin, dir, index, tally.get());
+        else
+            renderer_.trace(*ctx, origin, dir, index, nullptr, maxDistance, tally.get());
         const std::vector<Color>& v = tally->values();
         for (size_t k = 0; k < v.size() && k < values.size(); ++k) values[k] += v[k];
     };

@@ -1,6 +1,6 @@
-// The RayTraceFn (rtrace_run.h) and ContribTraceFn (rcontrib_run.h) that trace with a Renderer: one Renderer::Context per
-// worker thread, -I (immediate irradiance) or ordinary rays. Lives in src/render because a
-// Context is only complete here (renderer_impl.h).
+// The RayTraceFn (rtrace_run.h) and ContribTraceFn (rcontrib_run.h) that trace with a Renderer: one
+// Renderer::Context per worker thread, -I (immediate irradiance) or ordinary rays. Lives in
+// src/render because a Context is only complete here (renderer_impl.h).
 #pragma once
 
 #include <memory>

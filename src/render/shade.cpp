@@ -89,8 +89,9 @@ void Renderer::Context::applyMaterialCalc(int32_t material, const Hit& hit, cons
 material::ChainResult Renderer::Context::resolve(int32_t modifier, const Hit& hit,
                                                  const Vec3& dir) {
     material::ChainResult r =
-        impl.chains.isPlain(modifier) ? material::ChainResult::plain(impl.chains.plainMaterial(modifier))
-                                      : chains.resolve(modifier, patternPoint(hit, dir), rng);
+        impl.chains.isPlain(modifier)
+            ? material::ChainResult::plain(impl.chains.plainMaterial(modifier))
+            : chains.resolve(modifier, patternPoint(hit, dir), rng);
     // RADIANCE compat (o_mesh.c): a mesh's vertex normals perturb the surface first,
     // textures add to that.
     if (lengthSquared(hit.perturbation) > 0)
@@ -297,8 +298,8 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
             redirections[size_t(k)] = prismCalc.redirect(k, Vec3{});
         sp.redirections = &redirections;
     } else if (const auto* w = std::get_if<material::WgmdParams>(&params)) {
-        wgmd = material::wgmdHitInputs(impl.materialCalc, materialCalc, chains, layer.material,
-                                       *w, patternPoint(hit, ray.dir), sp, rng);
+        wgmd = material::wgmdHitInputs(impl.materialCalc, materialCalc, chains, layer.material, *w,
+                                       patternPoint(hit, ray.dir), sp, rng);
         sp.wgmd = &wgmd;
     } else {
         applyMaterialCalc(layer.material, hit, ray.dir, sp);
@@ -338,7 +339,8 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         child.contribCoef = state.contribCoef * rc;
         if (sr.medium.kind != material::MediumChange::Kind::Unchanged) {
             childMedia = mediaOf(state);
-            childMedia->medium = material::changeMedium(childMedia->medium, sr.medium, impl.globalMedium);
+            childMedia->medium =
+                material::changeMedium(childMedia->medium, sr.medium, impl.globalMedium);
             child.media = &*childMedia;
         }
         if (child.weight <= 0) continue;
@@ -372,27 +374,26 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     if (e.diffuseLike) {
         if (impl.photons.hasDirect()) {
             // Direct photons replace the direct calculation (manual 5.4; a debug aid).
-            value += b.ambientReflect *
-                     impl.photons.directDensity(*photonLookups, hit.point, n);
+            value += b.ambientReflect * impl.photons.directDensity(*photonLookups, hit.point, n);
         } else {
             bool transmits = b.ambientTransmit.max() > 0 || b.directFromBehind;
             shadowBlockedByTransparent_ = shadowInPhotonMap(state);
-        // Specular children may have used the function evaluator: set this hit again.
-        if (sp.directional) applyMaterialCalc(layer.material, hit, ray.dir, sp);
-        if (b.transmitOffset == 0) {
-            value += directAt(hit, params, sp, transmits, state);
-        } else {
-            // m_bsdf.c: reflected light here, transmitted light from the far point.
-            value += directAt(hit, params, sp, false, state);
-            if (transmits) value += directAt(farSide, params, sp, true, state, true);
-        }
+            // Specular children may have used the function evaluator: set this hit again.
+            if (sp.directional) applyMaterialCalc(layer.material, hit, ray.dir, sp);
+            if (b.transmitOffset == 0) {
+                value += directAt(hit, params, sp, transmits, state);
+            } else {
+                // m_bsdf.c: reflected light here, transmitted light from the far point.
+                value += directAt(hit, params, sp, false, state);
+                if (transmits) value += directAt(farSide, params, sp, true, state, true);
+            }
         }
     }
     if (b.ambientReflect.max() > 0)
         value += b.ambientReflect * ambientAt(hit, n, layer.material, state, b.ambientReflect);
     if (b.ambientTransmit.max() > 0)
-        value += b.ambientTransmit *
-                 ambientAt(farSide, -n, layer.material, state, b.ambientTransmit);
+        value +=
+            b.ambientTransmit * ambientAt(farSide, -n, layer.material, state, b.ambientTransmit);
     if (first && first->prim == hit.prim && state.primary) {
         first->unmirrored = value - first->mirrored;
         first->unmirroredLength = hit.t;
@@ -401,8 +402,8 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
 }
 
 Color Renderer::Context::shadeAlternate(const Ray& ray, const Hit& hit, const RayState& state,
-                                        int32_t alternate, RayResult* first,
-                                        bool& passThrough, Passage& passage) {
+                                        int32_t alternate, RayResult* first, bool& passThrough,
+                                        Passage& passage) {
     if (alternate == kVoid) {  // "void": the surface is invisible to this ray
         passThrough = true;
         return {};
@@ -412,8 +413,8 @@ Color Renderer::Context::shadeAlternate(const Ray& ray, const Hit& hit, const Ra
     std::optional<RayState> weighted;
     for (int i = 0; i < c.count; ++i) {
         bool p = false;
-        v += shadeLayer(ray, hit, layerState(state, c, i, weighted), c.layers[size_t(i)], first,
-                        p, passage) *
+        v += shadeLayer(ray, hit, layerState(state, c, i, weighted), c.layers[size_t(i)], first, p,
+                        passage) *
              c.layers[size_t(i)].weight;
         if (p) passThrough = true;
     }
@@ -510,8 +511,8 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
         // A contribution map plays both parts, its caustic photons the caustic map's.
         if (pm.hasContrib()) {
             const bool gather = state.ambientLevel > 0 || impl.ambientOptions.bounces < 0;
-            Color d = pm.contribDensity(*photonLookups, hit.point, normal,
-                                        state.contribCoef * coef, state.contrib, !gather);
+            Color d = pm.contribDensity(*photonLookups, hit.point, normal, state.contribCoef * coef,
+                                        state.contrib, !gather);
             if (gather) return d;
             c += d;
         }
@@ -532,8 +533,7 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
     return c;
 }
 
-Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal,
-                                      const RayState& state) {
+Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, const RayState& state) {
     // White Lambertian receiver: direct irradiance sum L cos omega, plus pi times the
     // ambient calculation's average radiance.
     DirectPoint at;

@@ -117,9 +117,9 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
             ev.colour = Color{1, 1, 1};
             return ev;
         }
-        material::WgmdInputs in = material::wgmdHitInputs(
-            impl.materialCalc, prismCalc, chains, layer.material, *w,
-            material::PatternPoint::atHit(dir, hit), sp, rng);
+        material::WgmdInputs in =
+            material::wgmdHitInputs(impl.materialCalc, prismCalc, chains, layer.material, *w,
+                                    material::PatternPoint::atHit(dir, hit), sp, rng);
         sp.wgmd = &in;
         material::ShadeOptions opt = impl.shadeOptions;
         opt.specThreshold = HUGE_VAL;
@@ -238,10 +238,9 @@ Color Renderer::Context::sourceRadiance(int32_t modifier, const Hit& at, const V
     return value;
 }
 
-material::Redirection Renderer::Context::redirect(const Hit& hit, const Vec3& dir,
-                                                 int projection, const Vec3& toSource) {
-    return evalRedirect(impl.scene, impl.materialCalc, prismCalc, hit, dir, projection,
-                        toSource);
+material::Redirection Renderer::Context::redirect(const Hit& hit, const Vec3& dir, int projection,
+                                                  const Vec3& toSource) {
+    return evalRedirect(impl.scene, impl.materialCalc, prismCalc, hit, dir, projection, toSource);
 }
 
 Color Renderer::Context::distantRadiance(int32_t source, const Vec3& dir) {
@@ -306,8 +305,7 @@ Color Renderer::Context::escaped(const Ray& ray, const RayState& state, RayResul
 }
 
 HemisphereTracer::Sample Renderer::Context::trace(const Vec3& origin, const Vec3& dir,
-                                                  int ambientLevel, double weight,
-                                                  double share) {
+                                                  int ambientLevel, double weight, double share) {
     // The parent's clip set, medium and mists, with a sample's own depth and weight
     // (ambientAt, which set sampleParent_, restores it after its own samples).
     RayState st = *sampleParent_;

@@ -22,14 +22,18 @@ Vec3 sourceCentre(const light::LightSource& s, const ShapeSet& shapes,
                   const std::vector<PlanarRegion>& regions, int32_t region) {
     size_t i = size_t(s.shapeIndex);
     switch (s.shape) {
-    case light::EmitterShape::Polygon: return regions[size_t(region)].centroid;
-    case light::EmitterShape::Sphere: return shapes.spheres[i].center;
-    case light::EmitterShape::Ring: return shapes.rings[i].centre;
-    case light::EmitterShape::Cone: {
-        const ConeShape& c = shapes.cones[i];
-        return c.p0 + c.axis * (0.5 * c.length);
-    }
-    case light::EmitterShape::Distant: return shapes.sources[i].dir;
+        case light::EmitterShape::Polygon:
+            return regions[size_t(region)].centroid;
+        case light::EmitterShape::Sphere:
+            return shapes.spheres[i].center;
+        case light::EmitterShape::Ring:
+            return shapes.rings[i].centre;
+        case light::EmitterShape::Cone: {
+            const ConeShape& c = shapes.cones[i];
+            return c.p0 + c.axis * (0.5 * c.length);
+        }
+        case light::EmitterShape::Distant:
+            return shapes.sources[i].dir;
     }
     return {};
 }
@@ -71,19 +75,20 @@ ModifierSet passableModifiers(const Scene& scene, const ShapeSet& shapes) {
         int32_t mat = light::findMaterial(scene, prim);
         if (mat == kVoid) return;
         switch (scene.prims[size_t(mat)].type) {
-        case PrimType::Plastic:
-        case PrimType::Metal:
-        case PrimType::Plastic2:
-        case PrimType::Metal2:
-        case PrimType::Ashik2:
-        case PrimType::Plasfunc:
-        case PrimType::Metfunc:
-        case PrimType::Plasdata:
-        case PrimType::Metdata:
-        case PrimType::Mirror:
-        case PrimType::Antimatter:  // the pretest follows it (clearPath)
-            return;
-        default: skip.add(modifier);
+            case PrimType::Plastic:
+            case PrimType::Metal:
+            case PrimType::Plastic2:
+            case PrimType::Metal2:
+            case PrimType::Ashik2:
+            case PrimType::Plasfunc:
+            case PrimType::Metfunc:
+            case PrimType::Plasdata:
+            case PrimType::Metdata:
+            case PrimType::Mirror:
+            case PrimType::Antimatter:  // the pretest follows it (clearPath)
+                return;
+            default:
+                skip.add(modifier);
         }
     };
     for (const auto& p : shapes.polygons) consider(p.prim, p.modifier);
@@ -186,8 +191,8 @@ std::optional<DirectSource> mirrorImage(const SourceList& list, size_t s, size_t
     DirectSource v = base;
     v.relays.insert(v.relays.begin(), step);
     v.mirrorSide = side;
-    v.apparentCentre = base.distant() ? m.reflectDir(base.apparentCentre)
-                                      : m.reflectPoint(base.apparentCentre);
+    v.apparentCentre =
+        base.distant() ? m.reflectDir(base.apparentCentre) : m.reflectPoint(base.apparentCentre);
     return v;
 }
 
@@ -201,8 +206,7 @@ std::optional<DirectSource> prismImage(const SourceList& list, size_t s, size_t 
     const RelayPlane& m = list.relays[mi];
     const Vec3& n = m.region.normal;
     if (reflectingSide(m, base) == 0) return std::nullopt;
-    if (base.isVirtual() &&
-        !beyondRelay(list.relays[size_t(base.relays.front().relay)], base, m))
+    if (base.isVirtual() && !beyondRelay(list.relays[size_t(base.relays.front().relay)], base, m))
         return std::nullopt;
     Vec3 centre = m.region.centroid;
     Vec3 old;
@@ -241,9 +245,8 @@ std::optional<DirectSource> prismImage(const SourceList& list, size_t s, size_t 
     DirectSource v = base;
     v.relays.insert(v.relays.begin(), step);
     v.mirrorSide = 0;
-    v.apparentCentre = base.distant()
-                           ? normalize(step.projectDir(m.region, base.apparentCentre))
-                           : step.project(m.region, base.apparentCentre);
+    v.apparentCentre = base.distant() ? normalize(step.projectDir(m.region, base.apparentCentre))
+                                      : step.project(m.region, base.apparentCentre);
     return v;
 }
 
@@ -372,9 +375,9 @@ SourceList buildSourceList(const Scene& scene, const SceneGeometry& geometry,
                     list.sources[s].relays.front().relay == int32_t(mi))
                     continue;
                 for (int k = 0; k < m.projections; ++k) {
-                    std::optional<DirectSource> v =
-                        m.isPrism() ? prismImage(list, s, mi, k, redirect)
-                                    : mirrorImage(list, s, mi);
+                    std::optional<DirectSource> v = m.isPrism()
+                                                        ? prismImage(list, s, mi, k, redirect)
+                                                        : mirrorImage(list, s, mi);
                     if (!v) continue;
                     const DirectSource& base = list.sources[s];
                     if (!base.isVirtual()) {

@@ -21,16 +21,16 @@ namespace rp::render {
 // A planar polygon as a set of triangles in its own (u, v) frame: what flat-source
 // sampling subdivides and what mirror tests check a crossing point against.
 struct PlanarRegion {
-    Vec3 normal;            // unit, the polygon's front (right-hand rule)
-    double offset = 0;      // plane: dot(normal, x) == offset
-    Vec3 origin;            // (u, v) origin (first vertex)
-    Vec3 uAxis, vAxis;      // unit, in plane; vAxis = normal x uAxis
-    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;  // bounding rectangle in (u, v)
+    Vec3 normal;                              // unit, the polygon's front (right-hand rule)
+    double offset = 0;                        // plane: dot(normal, x) == offset
+    Vec3 origin;                              // (u, v) origin (first vertex)
+    Vec3 uAxis, vAxis;                        // unit, in plane; vAxis = normal x uAxis
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;    // bounding rectangle in (u, v)
     std::vector<std::array<double, 6>> tris;  // (u, v) of each triangle's corners, CCW
     double area = 0;
-    Vec3 centroid;          // area centroid
-    Vec3 centre;            // RADIANCE's source centre (fsetsrc sloc): the mean of the
-                            // outline's vertices, or the centroid if that lies outside
+    Vec3 centroid;  // area centroid
+    Vec3 centre;    // RADIANCE's source centre (fsetsrc sloc): the mean of the
+                    // outline's vertices, or the centroid if that lies outside
 
     Vec3 at(double u, double v) const { return origin + uAxis * u + vAxis * v; }
     // Whether in-plane point (u, v) lies in the polygon (on a triangle, edges included).
@@ -84,9 +84,7 @@ struct RelayStep {
         return p - shear * (r.signedDistance(p) / det(r));
     }
     // Unit direction from `p` toward `target`.
-    Vec3 toTarget(const Vec3& p) const {
-        return targetDistant ? target : normalize(target - p);
-    }
+    Vec3 toTarget(const Vec3& p) const { return targetDistant ? target : normalize(target - p); }
 };
 
 struct DirectSource {
@@ -95,7 +93,7 @@ struct DirectSource {
     // Local glow (RADIANCE SPROX): light reaches only points within this distance of
     // `centre` (measured from the apparent origin for virtual sources). 0: no limit.
     double proximity = 0;
-    int32_t region = -1;       // polygon sources: index into SourceList::regions
+    int32_t region = -1;  // polygon sources: index into SourceList::regions
     // Virtual sources: the relays in the order a shadow ray from the shaded point meets
     // them; empty for a real source.
     std::vector<RelayStep> relays;
@@ -113,8 +111,8 @@ struct DirectSource {
 // A prism1/prism2 redirection evaluated by the renderer (its .cal functions): redirection
 // `projection` of the prism surface at `hit`, met by a ray travelling in `dir`, with
 // DxA DyA DzA the unit direction `toSource` (zero: a ray not aimed at a source).
-using RedirectFunction = std::function<material::Redirection(
-    const Hit& hit, const Vec3& dir, int projection, const Vec3& toSource)>;
+using RedirectFunction = std::function<material::Redirection(const Hit& hit, const Vec3& dir,
+                                                             int projection, const Vec3& toSource)>;
 
 struct SourceList {
     std::vector<DirectSource> sources;  // real sources in scene order, then virtual ones

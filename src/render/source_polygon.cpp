@@ -22,8 +22,8 @@ struct Piece {
 
 // RADIANCE compat (srcsamp.c flt_partit): halve the cell across its longer side while
 // it is larger than (ds / weight) times its distance, at most MAXSPART leaves.
-void partition(const PlanarRegion& r, const Vec3& from, const Cell& c, int maxParts,
-               double scale, std::vector<Cell>& leaves) {
+void partition(const PlanarRegion& r, const Vec3& from, const Cell& c, int maxParts, double scale,
+               std::vector<Cell>& leaves) {
     Vec3 centre = r.at(0.5 * (c.u0 + c.u1), 0.5 * (c.v0 + c.v1));
     double d2 = lengthSquared(from - centre);
     double du2 = (c.u1 - c.u0) * scale, dv2 = (c.v1 - c.v0) * scale;
@@ -59,7 +59,8 @@ void clipAgainst(Piece& p, int axis, double bound, double sign) {
             double t = a / (a - b);
             for (int k = 0; k < 2; ++k)
                 out.uv[size_t(2 * out.n + k)] =
-                    p.uv[size_t(2 * i + k)] + t * (p.uv[size_t(2 * j + k)] - p.uv[size_t(2 * i + k)]);
+                    p.uv[size_t(2 * i + k)] +
+                    t * (p.uv[size_t(2 * j + k)] - p.uv[size_t(2 * i + k)]);
             ++out.n;
         }
     }
@@ -114,8 +115,7 @@ void uniformInPiece(const Piece& p, Rng& rng, double& u, double& v) {
         t = 1 - t;
     }
     u = p.uv[0] + s * (p.uv[size_t(2 * k)] - p.uv[0]) + t * (p.uv[size_t(2 * k + 2)] - p.uv[0]);
-    v = p.uv[1] + s * (p.uv[size_t(2 * k + 1)] - p.uv[1]) +
-        t * (p.uv[size_t(2 * k + 3)] - p.uv[1]);
+    v = p.uv[1] + s * (p.uv[size_t(2 * k + 1)] - p.uv[1]) + t * (p.uv[size_t(2 * k + 3)] - p.uv[1]);
 }
 
 // One sample toward `target` standing for `area` of the source (normal `nrm`, facing
@@ -142,8 +142,8 @@ void addSample(std::vector<SourceSample>& out, const Vec3& from, const Vec3& tar
 
 }  // namespace
 
-void samplePolygon(const PlanarRegion& r, const Vec3& from, double ds, double weight,
-                   double jitter, Rng& rng, std::vector<SourceSample>& out) {
+void samplePolygon(const PlanarRegion& r, const Vec3& from, double ds, double weight, double jitter,
+                   Rng& rng, std::vector<SourceSample>& out) {
     // Scratch kept per thread: this runs for every shaded point.
     thread_local std::vector<Cell> cells;
     thread_local std::vector<Piece> pieces;

@@ -72,8 +72,8 @@ void coneCells(const Vec3& axis, double cosMax, int n, double jitter, Rng& rng, 
         }
 }
 
-void sampleSphere(const SphereShape& s, const Vec3& from, const DirectOptions& opt,
-                  double weight, Rng& rng, std::vector<SourceSample>& out) {
+void sampleSphere(const SphereShape& s, const Vec3& from, const DirectOptions& opt, double weight,
+                  Rng& rng, std::vector<SourceSample>& out) {
     Vec3 toC = s.center - from;
     double d = length(toC);
     if (d <= s.radius * (1 + kFtiny)) return;  // inside: an outward sphere is not seen
@@ -114,9 +114,8 @@ void sampleDistant(const DistantSource& s, const Vec3& from, const DirectOptions
 // `diskCorrection` uses area cos / (d^2 + area/pi) instead, which makes the irradiance
 // of a whole disk seen on its axis exact (pi r^2 / (r^2 + h^2)) rather than RADIANCE's
 // overestimate by (r/h)^2; it fades away as cells get small.
-void addAreaSample(const Vec3& from, const Vec3& p, const Vec3& nrm, double area,
-                   double cosFactor, std::vector<SourceSample>& out,
-                   bool diskCorrection = false) {
+void addAreaSample(const Vec3& from, const Vec3& p, const Vec3& nrm, double area, double cosFactor,
+                   std::vector<SourceSample>& out, bool diskCorrection = false) {
     Vec3 d = p - from;
     double dist = length(d);
     if (!(dist > 0)) return;
@@ -182,8 +181,8 @@ void sampleCone(const ConeShape& c, const Vec3& from, const DirectOptions& opt, 
         return;  // outside a cup or tube: its emitting side faces away
     }
     Vec3 centre = c.p0 + c.axis * (0.5 * c.length);
-    int n = cellsPerAxis(std::fmax(2 * rmax, c.length), length(from - centre), opt.sampling,
-                         weight);
+    int n =
+        cellsPerAxis(std::fmax(2 * rmax, c.length), length(from - centre), opt.sampling, weight);
     double slant = std::sqrt(c.length * c.length + (c.r1 - c.r0) * (c.r1 - c.r0));
     double dphi = 2 * phiMax / n;
     // Average of cos over a cell's angle relative to its centre's (exact for a distant
@@ -204,8 +203,8 @@ void sampleCone(const ConeShape& c, const Vec3& from, const DirectOptions& opt, 
 }
 
 // A bubble (inward sphere) emits toward its centre: seen only from inside.
-void sampleBubble(const SphereShape& s, const Vec3& from, const DirectOptions& opt,
-                  double weight, Rng& rng, std::vector<SourceSample>& out) {
+void sampleBubble(const SphereShape& s, const Vec3& from, const DirectOptions& opt, double weight,
+                  Rng& rng, std::vector<SourceSample>& out) {
     if (length(from - s.center) >= s.radius) return;
     int n = cellsPerAxis(2 * s.radius, s.radius, opt.sampling, weight);
     Vec3 e1, e2;
@@ -240,23 +239,27 @@ void sampleSource(const SourceList& list, const DirectSource& src, const ShapeSe
     size_t first = out.size();
     size_t i = size_t(ls.shapeIndex);
     switch (ls.shape) {
-    case light::EmitterShape::Polygon: {
-        const PlanarRegion& r = list.regions[size_t(src.region)];
-        if (r.signedDistance(from) <= kFtiny) return;  // behind the source
-        samplePolygon(r, from, options.sampling, weight, options.jitter, rng, out);
-        break;
-    }
-    case light::EmitterShape::Sphere:
-        if (shapes.spheres[i].inward)
-            sampleBubble(shapes.spheres[i], from, options, weight, rng, out);
-        else
-            sampleSphere(shapes.spheres[i], from, options, weight, rng, out);
-        break;
-    case light::EmitterShape::Ring: sampleRing(shapes.rings[i], from, options, weight, rng, out); break;
-    case light::EmitterShape::Cone: sampleCone(shapes.cones[i], from, options, weight, rng, out); break;
-    case light::EmitterShape::Distant:
-        sampleDistant(shapes.sources[i], from, options, weight, rng, out);
-        break;
+        case light::EmitterShape::Polygon: {
+            const PlanarRegion& r = list.regions[size_t(src.region)];
+            if (r.signedDistance(from) <= kFtiny) return;  // behind the source
+            samplePolygon(r, from, options.sampling, weight, options.jitter, rng, out);
+            break;
+        }
+        case light::EmitterShape::Sphere:
+            if (shapes.spheres[i].inward)
+                sampleBubble(shapes.spheres[i], from, options, weight, rng, out);
+            else
+                sampleSphere(shapes.spheres[i], from, options, weight, rng, out);
+            break;
+        case light::EmitterShape::Ring:
+            sampleRing(shapes.rings[i], from, options, weight, rng, out);
+            break;
+        case light::EmitterShape::Cone:
+            sampleCone(shapes.cones[i], from, options, weight, rng, out);
+            break;
+        case light::EmitterShape::Distant:
+            sampleDistant(shapes.sources[i], from, options, weight, rng, out);
+            break;
     }
     if (ls.spotlight()) {
         // RADIANCE compat (srcray): outside the spot's cone no light leaves the source.
@@ -290,32 +293,34 @@ Hit sourceSurfaceHit(const DirectSource& src, const ShapeSet& shapes,
     size_t i = size_t(src.light.shapeIndex);
     // Hit::u, v stay 0: RADIANCE's uv, which only meshes have.
     switch (src.light.shape) {
-    case light::EmitterShape::Polygon: {
-        const PolygonShape& poly = shapes.polygons[i];
-        h.normal = poly.normal;
-        h.modifier = poly.modifier;
-        h.offset = kFloatOffsetRel * std::fmax(scale, poly.scale);
-        (void)regions;
-        break;
-    }
-    case light::EmitterShape::Sphere:
-        h.normal = sphereNormal(shapes.spheres[i], p);
-        h.modifier = shapes.spheres[i].modifier;
-        h.offset = kDoubleOffsetRel * std::fmax(scale, shapes.spheres[i].radius);
-        break;
-    case light::EmitterShape::Cone: {
-        const ConeShape& c = shapes.cones[i];
-        h.normal = coneNormal(c, p);
-        h.modifier = c.modifier;
-        h.offset = kDoubleOffsetRel * std::fmax(scale, c.length + std::fmax(c.r0, c.r1));
-        break;
-    }
-    case light::EmitterShape::Ring:
-        h.normal = shapes.rings[i].normal;
-        h.modifier = shapes.rings[i].modifier;
-        h.offset = kDoubleOffsetRel * std::fmax(scale, shapes.rings[i].r1);
-        break;
-    case light::EmitterShape::Distant: h.modifier = shapes.sources[i].modifier; break;
+        case light::EmitterShape::Polygon: {
+            const PolygonShape& poly = shapes.polygons[i];
+            h.normal = poly.normal;
+            h.modifier = poly.modifier;
+            h.offset = kFloatOffsetRel * std::fmax(scale, poly.scale);
+            (void)regions;
+            break;
+        }
+        case light::EmitterShape::Sphere:
+            h.normal = sphereNormal(shapes.spheres[i], p);
+            h.modifier = shapes.spheres[i].modifier;
+            h.offset = kDoubleOffsetRel * std::fmax(scale, shapes.spheres[i].radius);
+            break;
+        case light::EmitterShape::Cone: {
+            const ConeShape& c = shapes.cones[i];
+            h.normal = coneNormal(c, p);
+            h.modifier = c.modifier;
+            h.offset = kDoubleOffsetRel * std::fmax(scale, c.length + std::fmax(c.r0, c.r1));
+            break;
+        }
+        case light::EmitterShape::Ring:
+            h.normal = shapes.rings[i].normal;
+            h.modifier = shapes.rings[i].modifier;
+            h.offset = kDoubleOffsetRel * std::fmax(scale, shapes.rings[i].r1);
+            break;
+        case light::EmitterShape::Distant:
+            h.modifier = shapes.sources[i].modifier;
+            break;
     }
     h.front = dot(dir, h.normal) < 0;
     return h;

@@ -42,12 +42,18 @@ int blocks(int size, int step) { return (size + step - 1) / step; }
 ProgressiveImage::ProgressiveImage(const View& view, int width, int height,
                                    const render::PixelRayParams& rays, int sampleSpacing,
                                    double sampleThreshold)
-    : rays_(view), width_(width), height_(height), rayParams_(rays),
-      spacing_(std::max(1, sampleSpacing)), threshold_(sampleThreshold),
+    : rays_(view),
+      width_(width),
+      height_(height),
+      rayParams_(rays),
+      spacing_(std::max(1, sampleSpacing)),
+      threshold_(sampleThreshold),
       pixels_(size_t(width) * size_t(height), Pixel{0, 0, 0}),
       traced_(pixels_.size(), 0),
-      frame_{0, 0, width, height}, coarsest_(coarsestStep(width, height)),
-      step_(coarsest_), tracers_(std::make_unique<Tracers>()) {
+      frame_{0, 0, width, height},
+      coarsest_(coarsestStep(width, height)),
+      step_(coarsest_),
+      tracers_(std::make_unique<Tracers>()) {
     RP_CHECK(width > 0 && height > 0);
     startLevel();
 }
@@ -107,9 +113,9 @@ void ProgressiveImage::traceBlock(render::PixelTracer& tracer, int bx, int by) {
     const int s = step_, x = bx * s, row = by * s;
     const size_t i = index(x, row);
     if (traced_[i]) return;  // traced at a coarser level: its block shows it already
-    float depth = 0;  // rvu shows no depths
-    render::tracePixel(tracer, rays_, nullptr, rayParams_, x, row, width_, height_,
-                       pixels_[i], depth);
+    float depth = 0;         // rvu shows no depths
+    render::tracePixel(tracer, rays_, nullptr, rayParams_, x, row, width_, height_, pixels_[i],
+                       depth);
     traced_[i] = 1;
     // Paint the block's untraced pixels; the traced ones inside it are only its corner.
     const int x1 = std::min(width_, x + s), row1 = std::min(height_, row + s);
@@ -161,8 +167,10 @@ bool ProgressiveImage::refineLevel(int threads, const render::PixelTracerFactory
         });
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (seconds < 0.05) chunkRows *= 2;
-        else if (seconds > 0.2 && chunkRows > 1) chunkRows /= 2;
+        if (seconds < 0.05)
+            chunkRows *= 2;
+        else if (seconds > 0.2 && chunkRows > 1)
+            chunkRows /= 2;
         nextRow_ = r1;
         if (progress) progress();
     }

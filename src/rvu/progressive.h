@@ -29,9 +29,8 @@ class ProgressiveImage {
 public:
     // An untraced (black) picture of the view; `sampleSpacing` (-ps) and
     // `sampleThreshold` (-pt) as rvu's. Throws InputError for an invalid view.
-    ProgressiveImage(const View& view, int width, int height,
-                     const render::PixelRayParams& rays, int sampleSpacing,
-                     double sampleThreshold);
+    ProgressiveImage(const View& view, int width, int height, const render::PixelRayParams& rays,
+                     int sampleSpacing, double sampleThreshold);
     ~ProgressiveImage();
     ProgressiveImage(const ProgressiveImage&) = delete;
     ProgressiveImage& operator=(const ProgressiveImage&) = delete;
@@ -87,9 +86,9 @@ private:
     std::vector<uint8_t> traced_;
     long tracedCount_ = 0;
     PixelRect frame_;
-    int coarsest_;   // the first level's block side (a power of 2)
-    int step_;       // the current level's block side; 0 when done
-    int nextRow_ = 0;  // the next block row of the current level to trace
+    int coarsest_;                 // the first level's block side (a power of 2)
+    int step_;                     // the current level's block side; 0 when done
+    int nextRow_ = 0;              // the next block row of the current level to trace
     std::vector<uint8_t> marked_;  // sampling levels: blocks to trace, by block index
     struct Tracers;
     std::unique_ptr<Tracers> tracers_;

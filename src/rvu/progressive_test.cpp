@@ -63,7 +63,8 @@ TEST(ProgressiveImage, RefinedWithPs1IsRpictsPicture) {
         o.render.threads = 3;
         Picture pic = render::renderPicture(o, theirs.factory());
         ASSERT_EQ(pic.pixels.size(), image.pixels().size());
-        for (size_t i = 0; i < pic.pixels.size(); ++i) ASSERT_EQ(pic.pixels[i], image.pixels()[i]) << i;
+        for (size_t i = 0; i < pic.pixels.size(); ++i)
+            ASSERT_EQ(pic.pixels[i], image.pixels()[i]) << i;
         // Each pixel once: rpict traces the same rays (none outside the fisheye circle).
         EXPECT_EQ(ours.rays.load(), theirs.rays.load());
         EXPECT_EQ(image.tracedCount(), 67L * 45L);
@@ -93,7 +94,8 @@ TEST(ProgressiveImage, InterruptedAndResumedGivesTheSamePicture) {
         ++calls;
         // Stop after every chunk.
         bool stop = false;
-        if (!b.refineLevel(1, pieces.factory(), [&] { return stop; }, [&] { stop = true; }))
+        if (!b.refineLevel(
+                1, pieces.factory(), [&] { return stop; }, [&] { stop = true; }))
             ++interruptions;
     }
     EXPECT_TRUE(b.done());

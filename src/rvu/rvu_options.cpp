@@ -1,12 +1,12 @@
 // rvu's command line (see rvu_options.h).
 #include "rvu/rvu_options.h"
 
+#include <fmt/format.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
-
-#include <fmt/format.h>
 
 #include "util/bool_option.h"
 #include "util/error.h"
@@ -88,8 +88,8 @@ RvuCommand parseRvuCommand(std::vector<std::string> args) {
             o.greyscale = boolSuffix(w, 2, o.greyscale);  // -b toggles, -b+ -by -b0 ...
         } else if (w == "-devices") {
             cmd.printDevices = true;
-        } else if (w == "-z" || w == "-r" || w == "-ro" || w == "-S" || w == "-t" ||
-                   w == "-pd" || w == "-pm" || w == "-P" || w == "-PP") {
+        } else if (w == "-z" || w == "-r" || w == "-ro" || w == "-S" || w == "-t" || w == "-pd" ||
+                   w == "-pm" || w == "-P" || w == "-PP") {
             // RADIANCE compat (rvu.1): rpict options that have no meaning here.
             throw InputError("option '" + w + "' is rpict's, not rvu's");
         } else {
@@ -108,8 +108,7 @@ RvuCommand parseRvuCommand(std::vector<std::string> args) {
 
 std::string formatRvuDefaults(const RvuOptions& o) {
     std::string s;
-    s += fmt::format("-n {}\t\t\t\t# number of rendering threads\n",
-                     o.picture.render.threads);
+    s += fmt::format("-n {}\t\t\t\t# number of rendering threads\n", o.picture.render.threads);
     const std::string device = o.port > 0 ? fmt::format("{}:{}", o.device, o.port) : o.device;
     s += fmt::format("-o {}\t\t\t\t# output device\n", device);
     s += fmt::format("-pe {:f}\t\t\t# exposure\n", o.exposure);

@@ -30,7 +30,7 @@ bool contains(const std::string& s, const std::string& part) {
 
 TEST(RvuOptions, DefaultsAreRvmains) {
     const RvuOptions o = rvuDefaults();
-    EXPECT_EQ(o.picture.sampleSpacing, 8);          // psample
+    EXPECT_EQ(o.picture.sampleSpacing, 8);             // psample
     EXPECT_DOUBLE_EQ(o.picture.sampleThreshold, .15);  // maxdiff
     const render::RenderOptions& r = o.picture.render;
     EXPECT_DOUBLE_EQ(r.direct.threshold, .1);
@@ -79,9 +79,9 @@ TEST(RvuOptions, NoArgumentsGiveDefaults) {
 
 TEST(RvuOptions, ViewPictureAndRenderOptions) {
     const RvuCommand c = parseRvuCommand(
-        {"-vtl", "-vp", "1", "2", "3", "-vd", "0", "0", "-1", "-vu", "0", "1", "0", "-vh",
-         "20", "-vv", "10", "-ps", "2", "-pt", ".2", "-pj", ".5", "-x", "640", "-y", "480",
-         "-n", "4", "-ab", "2", "-aa", ".05", "scene.oct"});
+        {"-vtl", "-vp", "1",   "2",   "3",  "-vd", "0", "0",   "-1",  "-vu",      "0",  "1",
+         "0",    "-vh", "20",  "-vv", "10", "-ps", "2", "-pt", ".2",  "-pj",      ".5", "-x",
+         "640",  "-y",  "480", "-n",  "4",  "-ab", "2", "-aa", ".05", "scene.oct"});
     const RvuOptions& o = c.options;
     EXPECT_EQ(o.picture.view.type, ViewType::kParallel);
     EXPECT_EQ(o.picture.view.point, (Vec3{1, 2, 3}));
@@ -107,7 +107,7 @@ TEST(RvuOptions, ExposureMultiplierOrFStops) {
     auto pe = [](const std::string& v) { return parseRvuCommand({"-pe", v}).options.exposure; };
     EXPECT_DOUBLE_EQ(pe("2"), 2);
     EXPECT_DOUBLE_EQ(pe(".25"), .25);
-    EXPECT_DOUBLE_EQ(pe("+1"), 2);     // f-stops
+    EXPECT_DOUBLE_EQ(pe("+1"), 2);  // f-stops
     EXPECT_DOUBLE_EQ(pe("-1"), .5);
     EXPECT_DOUBLE_EQ(pe("-3"), .125);
     EXPECT_DOUBLE_EQ(pe("+0"), 1);
@@ -135,7 +135,9 @@ TEST(RvuOptions, WebDeviceWithOptionalPort) {
 }
 
 TEST(RvuOptions, GreyscaleTogglesOrSets) {
-    auto grey = [](const std::vector<std::string>& a) { return parseRvuCommand(a).options.greyscale; };
+    auto grey = [](const std::vector<std::string>& a) {
+        return parseRvuCommand(a).options.greyscale;
+    };
     EXPECT_TRUE(grey({"-b"}));
     EXPECT_FALSE(grey({"-b", "-b"}));
     EXPECT_TRUE(grey({"-b+"}));

@@ -2,13 +2,13 @@
 // The view commands are in session_views.cpp, set/new/trace in session_params.cpp.
 #include "rvu/session.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <ctime>
 #include <fstream>
-
-#include <fmt/format.h>
 
 #include "image/picture.h"
 #include "image/tonemap.h"
@@ -19,8 +19,10 @@
 namespace rp::rvu {
 
 Session::Session(SessionSetup setup)
-    : setup_(std::move(setup)), view_(setup_.options.picture.view),
-      exposure_(setup_.options.exposure), greyscale_(setup_.options.greyscale) {
+    : setup_(std::move(setup)),
+      view_(setup_.options.picture.view),
+      exposure_(setup_.options.exposure),
+      greyscale_(setup_.options.greyscale) {
     RP_CHECK(setup_.scene && setup_.geometry);
     ViewRays check(view_);  // before the (slower) renderer
     rebuildRenderer();
@@ -33,9 +35,8 @@ void Session::rebuildRenderer() {
     if (image_) image_->dropTracers();
     context_.reset();
     renderer_.reset();
-    renderer_ = std::make_unique<render::Renderer>(*setup_.scene, *setup_.geometry,
-                                                   setup_.options.picture.render,
-                                                   setup_.searchPath);
+    renderer_ = std::make_unique<render::Renderer>(
+        *setup_.scene, *setup_.geometry, setup_.options.picture.render, setup_.searchPath);
     context_ = renderer_->makeContext();
     newParams_ = false;
 }
@@ -47,9 +48,9 @@ void Session::restartImage() {
     size.pixelAspect = 1;
     const render::PictureSize ps = render::pictureSize(size);
     const render::RpictOptions& p = setup_.options.picture;
-    image_ = std::make_unique<ProgressiveImage>(
-        view_, ps.xres, ps.yres, render::PixelRayParams{p.pixelJitter, 0, 0}, p.sampleSpacing,
-        p.sampleThreshold);
+    image_ = std::make_unique<ProgressiveImage>(view_, ps.xres, ps.yres,
+                                                render::PixelRayParams{p.pixelJitter, 0, 0},
+                                                p.sampleSpacing, p.sampleThreshold);
 }
 
 bool Session::refine(const std::function<bool()>& interrupted,
@@ -135,8 +136,7 @@ CommandResult Session::changeView(const View& view) {
     return success("");
 }
 
-CommandResult Session::exposureCommand(const std::string& args,
-                                       const std::vector<Cursor>& cursor) {
+CommandResult Session::exposureCommand(const std::string& args, const std::vector<Cursor>& cursor) {
     // RADIANCE compat (rv2.c getexposure). A plain number or f-stops set the exposure
     // relative to the one that makes the reference 0.5 (the picture's average, or the
     // pixel picked); '=' sets it absolutely; '@' adapts to what the eye would see.

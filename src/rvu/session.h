@@ -94,9 +94,8 @@ private:
     // The point of interest for aim/move/pivot (RADIANCE getinterest): `words` after the
     // magnification give x y z, or the pointer picks it. `direction`: a unit view
     // direction is wanted rather than a point. Errors and picks come back in `result`.
-    std::optional<Vec3> interest(const std::vector<std::string>& words, size_t at,
-                                 bool direction, const std::vector<Cursor>& cursor,
-                                 CommandResult& result);
+    std::optional<Vec3> interest(const std::vector<std::string>& words, size_t at, bool direction,
+                                 const std::vector<Cursor>& cursor, CommandResult& result);
     // The first visible surface along the ray through the pointer position.
     std::optional<render::RayResult> pickSurface(const Cursor& c, CommandResult& result,
                                                  bool skipTransparent);

@@ -1,9 +1,9 @@
 // rvu's set, new, trace and its rad-file views L and V (see session.h).
+#include <fmt/format.h>
+
 #include <cmath>
 #include <fstream>
 #include <functional>
-
-#include <fmt/format.h>
 
 #include "image/tonemap.h"
 #include "rvu/session.h"
@@ -25,84 +25,108 @@ struct Variable {
 const std::vector<Variable>& variables() {
     using O = RvuOptions;
     static const std::vector<Variable> v{
-        {"aa", "ambient accuracy", 'r', [](O& o) -> void* { return &o.picture.render.ambient.accuracy; }},
-        {"ab", "ambient bounces", 'i', [](O& o) -> void* { return &o.picture.render.ambient.bounces; }},
-        {"ad", "ambient divisions", 'i', [](O& o) -> void* { return &o.picture.render.ambient.divisions; }},
-        {"ar", "ambient resolution", 'i', [](O& o) -> void* { return &o.picture.render.ambient.resolution; }},
-        {"as", "ambient super-samples", 'i', [](O& o) -> void* { return &o.picture.render.ambient.supersamples; }},
+        {"aa", "ambient accuracy", 'r',
+         [](O& o) -> void* { return &o.picture.render.ambient.accuracy; }},
+        {"ab", "ambient bounces", 'i',
+         [](O& o) -> void* { return &o.picture.render.ambient.bounces; }},
+        {"ad", "ambient divisions", 'i',
+         [](O& o) -> void* { return &o.picture.render.ambient.divisions; }},
+        {"ar", "ambient resolution", 'i',
+         [](O& o) -> void* { return &o.picture.render.ambient.resolution; }},
+        {"as", "ambient super-samples", 'i',
+         [](O& o) -> void* { return &o.picture.render.ambient.supersamples; }},
         {"av", "ambient value", 'C', [](O& o) -> void* { return &o.picture.render.ambient.value; }},
-        {"aw", "ambient value weight", 'i', [](O& o) -> void* { return &o.picture.render.ambient.valueWeight; }},
+        {"aw", "ambient value weight", 'i',
+         [](O& o) -> void* { return &o.picture.render.ambient.valueWeight; }},
         {"b", "black and white", 'b', [](O& o) -> void* { return &o.greyscale; }},
-        {"bv", "back face visibility", 'b', [](O& o) -> void* { return &o.picture.render.backVisible; }},
-        {"dc", "direct certainty", 'r', [](O& o) -> void* { return &o.picture.render.direct.certainty; }},
+        {"bv", "back face visibility", 'b',
+         [](O& o) -> void* { return &o.picture.render.backVisible; }},
+        {"dc", "direct certainty", 'r',
+         [](O& o) -> void* { return &o.picture.render.direct.certainty; }},
         {"dj", "direct jitter", 'r', [](O& o) -> void* { return &o.picture.render.direct.jitter; }},
-        {"ds", "direct sampling", 'r', [](O& o) -> void* { return &o.picture.render.direct.sampling; }},
-        {"dt", "direct threshold", 'r', [](O& o) -> void* { return &o.picture.render.direct.threshold; }},
-        {"dv", "direct visibility", 'b', [](O& o) -> void* { return &o.picture.render.direct.visibility; }},
+        {"ds", "direct sampling", 'r',
+         [](O& o) -> void* { return &o.picture.render.direct.sampling; }},
+        {"dt", "direct threshold", 'r',
+         [](O& o) -> void* { return &o.picture.render.direct.threshold; }},
+        {"dv", "direct visibility", 'b',
+         [](O& o) -> void* { return &o.picture.render.direct.visibility; }},
         {"i", "irradiance", 'b', [](O& o) -> void* { return &o.picture.render.irradiance; }},
-        {"lr", "limit reflection", 'i', [](O& o) -> void* { return &o.picture.render.limits.maxDepth; }},
-        {"lw", "limit weight", 'r', [](O& o) -> void* { return &o.picture.render.limits.minWeight; }},
-        {"ma", "scattering albedo", 'C', [](O& o) -> void* { return &o.picture.render.mist.albedo; }},
-        {"me", "extinction coefficient", 'C', [](O& o) -> void* { return &o.picture.render.mist.extinction; }},
-        {"mg", "scattering eccentricity", 'r', [](O& o) -> void* { return &o.picture.render.mist.eccentricity; }},
-        {"ms", "mist sampling distance", 'r', [](O& o) -> void* { return &o.picture.render.mist.samplingDistance; }},
+        {"lr", "limit reflection", 'i',
+         [](O& o) -> void* { return &o.picture.render.limits.maxDepth; }},
+        {"lw", "limit weight", 'r',
+         [](O& o) -> void* { return &o.picture.render.limits.minWeight; }},
+        {"ma", "scattering albedo", 'C',
+         [](O& o) -> void* { return &o.picture.render.mist.albedo; }},
+        {"me", "extinction coefficient", 'C',
+         [](O& o) -> void* { return &o.picture.render.mist.extinction; }},
+        {"mg", "scattering eccentricity", 'r',
+         [](O& o) -> void* { return &o.picture.render.mist.eccentricity; }},
+        {"ms", "mist sampling distance", 'r',
+         [](O& o) -> void* { return &o.picture.render.mist.samplingDistance; }},
         {"ps", "pixel sample", 'i', [](O& o) -> void* { return &o.picture.sampleSpacing; }},
         {"pt", "pixel threshold", 'r', [](O& o) -> void* { return &o.picture.sampleThreshold; }},
-        {"ss", "specular sampling", 'r', [](O& o) -> void* { return &o.picture.render.specular.sampling; }},
-        {"st", "specular threshold", 'r', [](O& o) -> void* { return &o.picture.render.specular.threshold; }},
-        {"u", "uncorrelated sampling", 'b', [](O& o) -> void* { return &o.picture.render.uncorrelated; }},
+        {"ss", "specular sampling", 'r',
+         [](O& o) -> void* { return &o.picture.render.specular.sampling; }},
+        {"st", "specular threshold", 'r',
+         [](O& o) -> void* { return &o.picture.render.specular.threshold; }},
+        {"u", "uncorrelated sampling", 'b',
+         [](O& o) -> void* { return &o.picture.render.uncorrelated; }},
     };
     return v;
 }
 
 std::string showValue(const Variable& v, void* p) {
     switch (v.kind) {
-    case 'b': return *static_cast<bool*>(p) ? "y" : "n";
-    case 'i': return std::to_string(*static_cast<int*>(p));
-    case 'r': return fmt::format("{:g}", *static_cast<double*>(p));
-    default: {
-        const Color& c = *static_cast<Color*>(p);
-        return fmt::format("{:g} {:g} {:g}", c.r, c.g, c.b);
-    }
+        case 'b':
+            return *static_cast<bool*>(p) ? "y" : "n";
+        case 'i':
+            return std::to_string(*static_cast<int*>(p));
+        case 'r':
+            return fmt::format("{:g}", *static_cast<double*>(p));
+        default: {
+            const Color& c = *static_cast<Color*>(p);
+            return fmt::format("{:g} {:g} {:g}", c.r, c.g, c.b);
+        }
     }
 }
 
 // Sets the variable from `words`; returns whether its value changed.
 bool assign(const Variable& v, void* p, const std::vector<std::string>& words) {
     switch (v.kind) {
-    case 'b': {
-        const char c = words[0][0];
-        const std::string yes = "yY+1tT", no = "nN-0fF";
-        if (yes.find(c) == std::string::npos && no.find(c) == std::string::npos)
-            throw InputError("expected y or n for " + std::string(v.description));
-        const bool b = yes.find(c) != std::string::npos;
-        const bool changed = *static_cast<bool*>(p) != b;
-        *static_cast<bool*>(p) = b;
-        return changed;
-    }
-    case 'i': {
-        const double d = number(words[0], v.description);
-        if (d != std::floor(d) || std::fabs(d) > 1e9)
-            throw InputError("expected an integer for " + std::string(v.description));
-        const bool changed = *static_cast<int*>(p) != int(d);
-        *static_cast<int*>(p) = int(d);
-        return changed;
-    }
-    case 'r': {
-        const double d = number(words[0], v.description);
-        const bool changed = *static_cast<double*>(p) != d;
-        *static_cast<double*>(p) = d;
-        return changed;
-    }
-    default: {
-        if (words.size() != 3) throw InputError("expected 3 values for " + std::string(v.description));
-        const Color c{number(words[0], v.description), number(words[1], v.description),
-                      number(words[2], v.description)};
-        Color& old = *static_cast<Color*>(p);
-        const bool changed = old.r != c.r || old.g != c.g || old.b != c.b;
-        old = c;
-        return changed;
-    }
+        case 'b': {
+            const char c = words[0][0];
+            const std::string yes = "yY+1tT", no = "nN-0fF";
+            if (yes.find(c) == std::string::npos && no.find(c) == std::string::npos)
+                throw InputError("expected y or n for " + std::string(v.description));
+            const bool b = yes.find(c) != std::string::npos;
+            const bool changed = *static_cast<bool*>(p) != b;
+            *static_cast<bool*>(p) = b;
+            return changed;
+        }
+        case 'i': {
+            const double d = number(words[0], v.description);
+            if (d != std::floor(d) || std::fabs(d) > 1e9)
+                throw InputError("expected an integer for " + std::string(v.description));
+            const bool changed = *static_cast<int*>(p) != int(d);
+            *static_cast<int*>(p) = int(d);
+            return changed;
+        }
+        case 'r': {
+            const double d = number(words[0], v.description);
+            const bool changed = *static_cast<double*>(p) != d;
+            *static_cast<double*>(p) = d;
+            return changed;
+        }
+        default: {
+            if (words.size() != 3)
+                throw InputError("expected 3 values for " + std::string(v.description));
+            const Color c{number(words[0], v.description), number(words[1], v.description),
+                          number(words[2], v.description)};
+            Color& old = *static_cast<Color*>(p);
+            const bool changed = old.r != c.r || old.g != c.g || old.b != c.b;
+            old = c;
+            return changed;
+        }
     }
 }
 
@@ -154,7 +178,8 @@ CommandResult Session::trace(const std::string& args, const std::vector<Cursor>&
     const auto words = splitWords(args);
     std::optional<render::RayResult> hit;
     if (words.size() == 6) {
-        const Vec3 org{number(words[0], "origin"), number(words[1], "origin"), number(words[2], "origin")};
+        const Vec3 org{number(words[0], "origin"), number(words[1], "origin"),
+                       number(words[2], "origin")};
         const Vec3 dir{number(words[3], "direction"), number(words[4], "direction"),
                        number(words[5], "direction")};
         if (length(dir) == 0) return failure("zero ray direction");
@@ -165,8 +190,8 @@ CommandResult Session::trace(const std::string& args, const std::vector<Cursor>&
         return pickRequest("Pick ray", 1);
     } else {
         const Cursor c = clampCursor(cursor[0], image_->width(), image_->height());
-        auto ray = ViewRays(image_->view()).ray((c.x + 0.5) / image_->width(),
-                                                 (c.y + 0.5) / image_->height());
+        auto ray = ViewRays(image_->view())
+                       .ray((c.x + 0.5) / image_->width(), (c.y + 0.5) / image_->height());
         if (!ray) return failure("not on image");
         hit = renderer_->trace(*context_, ray->origin, ray->direction, 0, nullptr,
                                ray->maxDistance > 0 ? ray->maxDistance : HUGE_VAL);
@@ -179,8 +204,8 @@ CommandResult Session::trace(const std::string& args, const std::vector<Cursor>&
     if (hit->material >= 0 && hit->material != hit->modifier)
         what += " (" + scene.prims[size_t(hit->material)].name + ")";
     const Primitive& surface = scene.prims[size_t(hit->prim)];
-    std::string out = fmt::format("ray hit {} {} \"{}\"\n", what, primTypeName(surface.type),
-                                  surface.name);
+    std::string out =
+        fmt::format("ray hit {} {} \"{}\"\n", what, primTypeName(surface.type), surface.name);
     out += fmt::format("at ({:.6g} {:.6g} {:.6g}) ({:.6g})\n", hit->point.x, hit->point.y,
                        hit->point.z, hit->distance);
     const Pixel v{float(hit->value.r), float(hit->value.g), float(hit->value.b)};
@@ -208,7 +233,8 @@ CommandResult Session::loadRadView(const std::string& args) {
         if (which != std::to_string(n) && which != name) continue;
         View v;
         if (applyViewString(v, line.substr(at + 5)) == 0)
-            return failure("view \"" + which + "\" has no view options (rad's standard views need rad)");
+            return failure("view \"" + which +
+                           "\" has no view options (rad's standard views need rad)");
         return changeView(v);
     }
     return failure("rad error -- no such view?");

@@ -59,9 +59,9 @@ struct Fixture {
 TEST(RvuSession, BadInputIsAnErrorNotAnEnd) {
     Fixture f;
     auto s = f.start();
-    for (const char* line : {"nosuch", "aim zz", "aim 0", "rotate", "rotate x", "move 1 2",
-                             "exposure =x", "set zz 1", "set ab x", "frame 1 2", "new 0",
-                             "trace 1 2 3", "pivot", "origin 1 2", "L", "write"}) {
+    for (const char* line :
+         {"nosuch", "aim zz", "aim 0", "rotate", "rotate x", "move 1 2", "exposure =x", "set zz 1",
+          "set ab x", "frame 1 2", "new 0", "trace 1 2 3", "pivot", "origin 1 2", "L", "write"}) {
         const CommandResult r = s->execute(line);
         EXPECT_FALSE(r.ok) << line;
         EXPECT_FALSE(r.error.empty()) << line;
@@ -69,15 +69,15 @@ TEST(RvuSession, BadInputIsAnErrorNotAnEnd) {
     }
     EXPECT_EQ(s->execute("nosuch").error, "nosuch: unknown command");
     EXPECT_EQ(s->execute("aim 0").error, "illegal magnification");
-    EXPECT_TRUE(s->execute("").ok);  // an empty line just continues
+    EXPECT_TRUE(s->execute("").ok);     // an empty line just continues
     EXPECT_TRUE(s->execute("q").quit);  // commands abbreviate
 }
 
 TEST(RvuSession, PointerCommandsAskForThePointer) {
     Fixture f;
     auto s = f.start();
-    for (const char* line : {"aim", "aim 2", "move", "pivot 30", "trace", "exposure", "focus",
-                             "origin"}) {
+    for (const char* line :
+         {"aim", "aim 2", "move", "pivot 30", "trace", "exposure", "focus", "origin"}) {
         const CommandResult r = s->execute(line);
         EXPECT_FALSE(r.pick.empty()) << line;
         EXPECT_EQ(r.points, 1) << line;
@@ -164,7 +164,7 @@ TEST(RvuSession, WriteSavesTheExposedPictureWithItsView) {
     EXPECT_TRUE(exposure);
     const Pixel& shown = s->image().pixels()[16 * 32 + 16];
     EXPECT_NEAR(pic.at(16, 16)[0], 2 * shown[0], 0.01 * shown[0]);  // RGBE rounding
-    EXPECT_TRUE(s->execute("write").ok);  // the same file again
+    EXPECT_TRUE(s->execute("write").ok);                            // the same file again
     EXPECT_FALSE(s->execute("write /nonexistent-folder/x.hdr").ok);
 }
 

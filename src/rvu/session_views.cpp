@@ -1,8 +1,8 @@
 // rvu's view commands: aim move rotate pivot origin focus view last L V (see session.h).
+#include <fmt/format.h>
+
 #include <cmath>
 #include <fstream>
-
-#include <fmt/format.h>
 
 #include "rvu/session.h"
 #include "rvu/session_words.h"
@@ -28,11 +28,16 @@ std::optional<double> magnification(const std::vector<std::string>& words, size_
 // RADIANCE's istransp: materials rvu looks through when picking a point.
 bool seeThrough(PrimType t) {
     switch (t) {
-    case PrimType::Trans: case PrimType::Trans2: case PrimType::Dielectric:
-    case PrimType::Interface: case PrimType::Mist: case PrimType::Glass: case PrimType::ABSDF:
-        return true;
-    default:
-        return false;
+        case PrimType::Trans:
+        case PrimType::Trans2:
+        case PrimType::Dielectric:
+        case PrimType::Interface:
+        case PrimType::Mist:
+        case PrimType::Glass:
+        case PrimType::ABSDF:
+            return true;
+        default:
+            return false;
     }
 }
 
@@ -67,8 +72,7 @@ std::optional<render::RayResult> Session::pickSurface(const Cursor& c, CommandRe
         const bool invisible = r.material < 0;  // void: nothing to see
         const bool through = invisible || seeThrough(scene.prims[size_t(r.material)].type);
         if (!skipTransparent || !through) return r;
-        if (!invisible && scene.prims[size_t(r.material)].type != PrimType::Mist && !weak)
-            weak = r;
+        if (!invisible && scene.prims[size_t(r.material)].type != PrimType::Mist && !weak) weak = r;
         // Continue just past the surface (relative step: the scene may be far from 0).
         const double past = r.distance * (1 + 1e-9) + 1e-7;
         org = org + ray->direction * past;

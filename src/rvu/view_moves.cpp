@@ -41,42 +41,42 @@ Vec3 geodesic(const Vec3& v, const Vec3& target, double theta) {
 void zoomView(View& v, double f) {
     // RADIANCE compat (rv3.c zoomview), per view type.
     switch (v.type) {
-    case ViewType::kParallel:
-        v.horizontal /= f;
-        v.vertical /= f;
-        return;
-    case ViewType::kAngular:
-        v.horizontal = std::min(360.0, v.horizontal / f);
-        v.vertical = std::min(360.0, v.vertical / f);
-        return;
-    case ViewType::kPlanisphere: {
-        // Stereographic: the image radius goes as tan(angle/2).
-        auto zoom = [f](double deg) {
-            double t = std::sin(kDegree / 2 * deg) / (1 + std::cos(kDegree / 2 * deg)) / f;
-            t *= t;
-            return 2 / kDegree * std::acos((1 - t) / (1 + t));
-        };
-        v.horizontal = zoom(v.horizontal);
-        v.vertical = zoom(v.vertical);
-        return;
-    }
-    case ViewType::kCylindrical:
-        v.horizontal = std::min(360.0, v.horizontal / f);
-        v.vertical = zoomTangent(v.vertical, f);
-        return;
-    case ViewType::kPerspective:
-        v.horizontal = zoomTangent(v.horizontal, f);
-        v.vertical = zoomTangent(v.vertical, f);
-        return;
-    case ViewType::kHemispherical: {
-        auto zoom = [f](double deg) {
-            const double s = std::sin(deg * kDegree / 2) / f;
-            return s >= 1 - kTiny ? 180.0 : std::asin(s) / (kDegree / 2);
-        };
-        v.horizontal = zoom(v.horizontal);
-        v.vertical = zoom(v.vertical);
-        return;
-    }
+        case ViewType::kParallel:
+            v.horizontal /= f;
+            v.vertical /= f;
+            return;
+        case ViewType::kAngular:
+            v.horizontal = std::min(360.0, v.horizontal / f);
+            v.vertical = std::min(360.0, v.vertical / f);
+            return;
+        case ViewType::kPlanisphere: {
+            // Stereographic: the image radius goes as tan(angle/2).
+            auto zoom = [f](double deg) {
+                double t = std::sin(kDegree / 2 * deg) / (1 + std::cos(kDegree / 2 * deg)) / f;
+                t *= t;
+                return 2 / kDegree * std::acos((1 - t) / (1 + t));
+            };
+            v.horizontal = zoom(v.horizontal);
+            v.vertical = zoom(v.vertical);
+            return;
+        }
+        case ViewType::kCylindrical:
+            v.horizontal = std::min(360.0, v.horizontal / f);
+            v.vertical = zoomTangent(v.vertical, f);
+            return;
+        case ViewType::kPerspective:
+            v.horizontal = zoomTangent(v.horizontal, f);
+            v.vertical = zoomTangent(v.vertical, f);
+            return;
+        case ViewType::kHemispherical: {
+            auto zoom = [f](double deg) {
+                const double s = std::sin(deg * kDegree / 2) / f;
+                return s >= 1 - kTiny ? 180.0 : std::asin(s) / (kDegree / 2);
+            };
+            v.horizontal = zoom(v.horizontal);
+            v.vertical = zoom(v.vertical);
+            return;
+        }
     }
 }
 

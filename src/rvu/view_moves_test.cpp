@@ -51,8 +51,10 @@ TEST(ViewMovesSpin, RightHandedAboutAxis) {
 }
 
 TEST(ViewMovesGeodesic, TurnsByTheAngleTowardsTarget) {
-    expectVec(geodesic({1, 0, 0}, {0, 5, 0}, 30 * kDeg), {std::cos(30 * kDeg), std::sin(30 * kDeg), 0});
-    expectVec(geodesic({3, 0, 0}, {0, 0, 1}, 45 * kDeg), {3 * std::sqrt(0.5), 0, 3 * std::sqrt(0.5)});
+    expectVec(geodesic({1, 0, 0}, {0, 5, 0}, 30 * kDeg),
+              {std::cos(30 * kDeg), std::sin(30 * kDeg), 0});
+    expectVec(geodesic({3, 0, 0}, {0, 0, 1}, 45 * kDeg),
+              {3 * std::sqrt(0.5), 0, 3 * std::sqrt(0.5)});
     // Past the target it keeps going along the great circle (RADIANCE GEOD_RAD).
     expectVec(geodesic({1, 0, 0}, {0, 1, 0}, 120 * kDeg), {-0.5, std::sqrt(0.75), 0});
     // General case: length kept, turned by exactly the angle, in the plane of v and target,
@@ -108,8 +110,8 @@ TEST(ViewMovesZoom, HemisphericalDividesSineWith180Cap) {
     EXPECT_NEAR(v.horizontal, 60, kDegEps);  // sin 90 / 2 = sin 30
     EXPECT_NEAR(v.vertical, 2 * std::asin(std::sin(60 * kDeg) / 2) / kDeg, kDegEps);
     const View out = zoomed(ViewType::kHemispherical, 120, 60, 0.5);
-    EXPECT_DOUBLE_EQ(out.horizontal, 180);  // sin 60 / .5 > 1
-    EXPECT_NEAR(out.vertical, 180, kDegEps); // sin 30 / .5 = 1
+    EXPECT_DOUBLE_EQ(out.horizontal, 180);    // sin 60 / .5 > 1
+    EXPECT_NEAR(out.vertical, 180, kDegEps);  // sin 30 / .5 = 1
 }
 
 TEST(ViewMovesZoom, PlanisphereIsStereographic) {
@@ -207,8 +209,8 @@ TEST(ViewMovesMove, ParallelMagnifiesInstead) {
     const View m = moveView(v, 0, 0, 2, {2, 5, 1});
     EXPECT_DOUBLE_EQ(m.horizontal, 5);
     EXPECT_DOUBLE_EQ(m.vertical, 4);
-    expectVec(m.point, {2, 0, 1});       // the center's depth is 5: no closer
-    expectVec(m.direction, {0, 3, 0});   // focal distance unchanged
+    expectVec(m.point, {2, 0, 1});            // the center's depth is 5: no closer
+    expectVec(m.direction, {0, 3, 0});        // focal distance unchanged
     EXPECT_TRUE(m.fore == 1 && m.aft == 10);  // not moved: clipping unchanged
 }
 
@@ -228,7 +230,7 @@ TEST(ViewMovesMove, ClippingFollowsAsRadiance) {
     EXPECT_DOUBLE_EQ(m.aft, 0);  // would be -0.5 <= fore: dropped
     v.fore = 0, v.aft = 10;
     m = moveView(v, 0, 0, 0.5, {0, 4, 0});  // d = 8: planes 4 further
-    EXPECT_DOUBLE_EQ(m.fore, 0);  // unset stays unset
+    EXPECT_DOUBLE_EQ(m.fore, 0);            // unset stays unset
     EXPECT_DOUBLE_EQ(m.aft, 14);
 }
 

@@ -2,6 +2,7 @@
 // only route, check who is asking, and hand commands to the rendering thread.
 #include "rvu/web_display.h"
 
+#include <fmt/format.h>
 #include <httplib.h>
 
 #include <chrono>
@@ -11,8 +12,6 @@
 #include <mutex>
 #include <random>
 #include <thread>
-
-#include <fmt/format.h>
 
 #include "image/png.h"
 #include "image/tonemap.h"

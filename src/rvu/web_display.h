@@ -25,8 +25,8 @@
 namespace rp::rvu {
 
 struct WebDisplayOptions {
-    int port = 0;                  // 0: a free port
-    std::optional<double> gamma;   // display gamma (RADIANCE's DISPLAY_GAMMA); sRGB if unset
+    int port = 0;                 // 0: a free port
+    std::optional<double> gamma;  // display gamma (RADIANCE's DISPLAY_GAMMA); sRGB if unset
     // Told the page's address (with its token) once the server listens.
     std::function<void(const std::string& url)> announce;
     // Set (e.g. by a signal handler) to end the run as quit does.

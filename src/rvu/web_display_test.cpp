@@ -3,9 +3,8 @@
 // JSON, malformed ones included; the picture comes as PNG; quit ends the server.
 #include "rvu/web_display.h"
 
-#include <httplib.h>
-
 #include <gtest/gtest.h>
+#include <httplib.h>
 
 #include <future>
 #include <thread>
@@ -81,7 +80,9 @@ TEST_F(WebDisplayTest, OnlyTheTokenHolderIsServed) {
     EXPECT_EQ(status(c.Post("/command", "quit", "text/plain")), 403);
     EXPECT_EQ(status(c.Get("/state", withToken())), 200);
     // Another site's page (DNS rebinding, or a cross-site request with a leaked token).
-    EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "evil.example:" + std::to_string(port_)}}))), 403);
+    EXPECT_EQ(
+        status(c.Get("/state", withToken({{"Host", "evil.example:" + std::to_string(port_)}}))),
+        403);
     EXPECT_EQ(status(c.Post("/command", withToken({{"Origin", "http://evil.example"}}), "quit",
                             "text/plain")),
               403);
@@ -102,7 +103,8 @@ TEST_F(WebDisplayTest, OnlyTheTokenHolderIsServed) {
     EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "127.0.0.1"}}))), 200);  // port 80
     EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "[::1]"}}))), 200);
     EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "127.0.0.2:" + port}}))), 403);
-    EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "localhost.evil.example:" + port}}))), 403);
+    EXPECT_EQ(status(c.Get("/state", withToken({{"Host", "localhost.evil.example:" + port}}))),
+              403);
     EXPECT_EQ(status(c.Get("/nothing", withToken())), 404);
 }
 
@@ -129,7 +131,7 @@ TEST_F(WebDisplayTest, CommandsAnswerInJsonAndQuitEnds) {
     EXPECT_FALSE(r->get_header_value("X-Rvu-Generation").empty());
     r = c.Post("/command", withToken(), "quit", "text/plain");
     EXPECT_EQ(r->body, R"({"ok":true,"output":"","quit":true})");
-    server_.join();  // ends by itself
+    server_.join();                                              // ends by itself
     EXPECT_EQ(status(client().Get("/state", withToken())), -1);  // nobody listens
 }
 

@@ -1,11 +1,11 @@
 // JSON out, query values in (see web_json.h).
 #include "rvu/web_json.h"
 
+#include <fmt/format.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-
-#include <fmt/format.h>
 
 namespace rp::rvu {
 
@@ -136,7 +136,8 @@ bool parseCursor(const std::string& s, std::vector<Cursor>& out) {
     }
     if (values.size() != 2 && values.size() != 4) return false;
     out.clear();
-    for (size_t i = 0; i < values.size(); i += 2) out.push_back({int(values[i]), int(values[i + 1])});
+    for (size_t i = 0; i < values.size(); i += 2)
+        out.push_back({int(values[i]), int(values[i + 1])});
     return true;
 }
 

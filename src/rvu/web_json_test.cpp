@@ -41,19 +41,27 @@ TEST(WebJsonString, ControlCharactersAndDelAsUnicodeEscapes) {
 }
 
 TEST(WebJsonString, ValidUtf8IsKept) {
-    for (const std::string s : {"\xc3\xa9", "\xe2\x82\xac", "\xf0\x9f\x98\x80", "\xef\xbf\xbf",
-                                "\xf4\x8f\xbf\xbf", "caf\xc3\xa9 \xe2\x82\xac" "5"})
+    for (const std::string s :
+         {"\xc3\xa9", "\xe2\x82\xac", "\xf0\x9f\x98\x80", "\xef\xbf\xbf", "\xf4\x8f\xbf\xbf",
+          "caf\xc3\xa9 \xe2\x82\xac"
+          "5"})
         EXPECT_EQ(jsonString(s), "\"" + s + "\"") << s;
 }
 
 TEST(WebJsonString, InvalidAndTruncatedBytesBecomeReplacement) {
-    EXPECT_EQ(jsonString("\x80"), R"("\ufffd")");            // lone continuation
-    EXPECT_EQ(jsonString("a\xff" "b"), R"("a\ufffdb")");     // never valid
+    EXPECT_EQ(jsonString("\x80"), R"("\ufffd")");  // lone continuation
+    EXPECT_EQ(jsonString("a\xff"
+                         "b"),
+              R"("a\ufffdb")");  // never valid
     EXPECT_EQ(jsonString("\xf8\x88\x80\x80\x80"), R"("\ufffd\ufffd\ufffd\ufffd\ufffd")");
     EXPECT_EQ(jsonString("\xe2\x82"), R"("\ufffd\ufffd")");  // truncated at the end
-    EXPECT_EQ(jsonString("\xe2\x82" "A"), R"("\ufffd\ufffdA")");
+    EXPECT_EQ(jsonString("\xe2\x82"
+                         "A"),
+              R"("\ufffd\ufffdA")");
     EXPECT_EQ(jsonString("\xf0\x9f\x98"), R"("\ufffd\ufffd\ufffd")");
-    EXPECT_EQ(jsonString("\xc3" "\""), R"("\ufffd\"")");     // a quote is never swallowed
+    EXPECT_EQ(jsonString("\xc3"
+                         "\""),
+              R"("\ufffd\"")");  // a quote is never swallowed
 }
 
 TEST(WebJsonString, SequencesOutsideUtf8AreReplaced) {
@@ -113,8 +121,7 @@ TEST(WebJsonCommand, Shapes) {
     CommandResult pick;
     pick.pick = "Pick view center";
     pick.points = 2;
-    EXPECT_EQ(commandJson(pick),
-              R"({"ok":true,"output":"","pick":"Pick view center","points":2})");
+    EXPECT_EQ(commandJson(pick), R"({"ok":true,"output":"","pick":"Pick view center","points":2})");
     CommandResult quit;
     quit.quit = true;
     EXPECT_EQ(commandJson(quit), R"({"ok":true,"output":"","quit":true})");
@@ -161,9 +168,9 @@ TEST(WebJsonCursor, TwoOrFourIntegers) {
 }
 
 TEST(WebJsonCursor, RejectsMalformedAndLeavesOutputAlone) {
-    for (const char* bad : {"", "1", "1,2,3", "1,2,3,4,5", "1,,2", "1,2,", ",1,2", "a,b",
-                            "1;2", "1,2x", "1.5,2", "1000001,0", "0,-1000001",
-                            "99999999999999999999,1", "1,2,3,4,"}) {
+    for (const char* bad :
+         {"", "1", "1,2,3", "1,2,3,4,5", "1,,2", "1,2,", ",1,2", "a,b", "1;2", "1,2x", "1.5,2",
+          "1000001,0", "0,-1000001", "99999999999999999999,1", "1,2,3,4,"}) {
         std::vector<Cursor> out{{7, 8}};
         EXPECT_FALSE(parseCursor(bad, out)) << '"' << bad << '"';
         ASSERT_EQ(out.size(), 1u) << bad;

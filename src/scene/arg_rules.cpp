@@ -93,7 +93,7 @@ std::array<ArgRule, kCount> makeTable() {
     set(T::Brightfunc, fixedXf(2, atLeast(0)));
     set(T::Colordata, dataXf(7, 7, atLeast(0)));
     set(T::Brightdata, dataXf(3, 3, atLeast(0)));
-    set(T::Colorpict, fixedXf(7, atLeast(0)));  // 3 funcs, pictfile, funcfile, u, v
+    set(T::Colorpict, fixedXf(7, atLeast(0)));            // 3 funcs, pictfile, funcfile, u, v
     set(T::Colortext, plain(atLeast(2), range(15, 16)));  // [spacing]
     set(T::Brighttext, plain(atLeast(2), range(11, 12)));
     set(T::Spectrum, plain(none(), atLeast(5)));  // nmA nmB s1 s2 s3 ..
@@ -118,8 +118,8 @@ std::string header(const Primitive& p) {
 
 void checkCount(const Primitive& p, const ArgCount& c, size_t n, const char* kind) {
     if (!c.allows(n))
-        throw InputError(p.loc, header(p) + "expected " + c.describe(kind) + ", got " +
-                                    std::to_string(n));
+        throw InputError(p.loc,
+                         header(p) + "expected " + c.describe(kind) + ", got " + std::to_string(n));
 }
 
 // Sphere and bubble: RADIANCE o_sphere() flips a negative radius into the other type.
@@ -182,7 +182,8 @@ bool polygonHasArea(const std::vector<double>& v) {
     for (size_t i = 0; i < n; ++i) {
         bool seen = false;
         for (size_t j = 0; j < i && !seen; ++j)
-            seen = v[3 * i] == v[3 * j] && v[3 * i + 1] == v[3 * j + 1] && v[3 * i + 2] == v[3 * j + 2];
+            seen = v[3 * i] == v[3 * j] && v[3 * i + 1] == v[3 * j + 1] &&
+                   v[3 * i + 2] == v[3 * j + 2];
         if (!seen) ++distinct;
     }
     if (distinct < 3) return false;
@@ -241,17 +242,17 @@ size_t transformStart(const Primitive& p) {
     const ArgRule& r = argRule(p.type);
     size_t at = static_cast<size_t>(r.xformIndex);
     switch (r.xformAt) {
-    case XformAt::None:
-        return p.sargs.size();
-    case XformAt::Fixed:
-        return std::min(at, p.sargs.size());
-    case XformAt::Search:
-        // The coordinate-function count comes from the data file's dimensions, which
-        // is not read here; a coordinate expression is never spelt exactly like a
-        // transform option, so the first such word starts the transform.
-        for (size_t i = at; i < p.sargs.size(); ++i)
-            if (isTransformOption(p.sargs[i])) return i;
-        return p.sargs.size();
+        case XformAt::None:
+            return p.sargs.size();
+        case XformAt::Fixed:
+            return std::min(at, p.sargs.size());
+        case XformAt::Search:
+            // The coordinate-function count comes from the data file's dimensions, which
+            // is not read here; a coordinate expression is never spelt exactly like a
+            // transform option, so the first such word starts the transform.
+            for (size_t i = at; i < p.sargs.size(); ++i)
+                if (isTransformOption(p.sargs[i])) return i;
+            return p.sargs.size();
     }
     return p.sargs.size();
 }
@@ -269,29 +270,29 @@ bool checkArgs(Primitive& p) {
         }
     }
     switch (p.type) {
-    case PrimType::Sphere:
-    case PrimType::Bubble:
-        checkSphere(p);
-        break;
-    case PrimType::Cone:
-    case PrimType::Cup:
-    case PrimType::Cylinder:
-    case PrimType::Tube:
-    case PrimType::Ring:
-        checkCone(p);
-        break;
-    case PrimType::Polygon:
-        if (!polygonHasArea(p.rargs)) {
-            warn(p.loc, header(p) + "degenerate polygon (zero area), skipped");
-            return false;
-        }
-        break;
-    case PrimType::Source:
-        if (p.rargs[0] == 0 && p.rargs[1] == 0 && p.rargs[2] == 0)
-            throw InputError(p.loc, header(p) + "zero direction");
-        break;
-    default:
-        break;
+        case PrimType::Sphere:
+        case PrimType::Bubble:
+            checkSphere(p);
+            break;
+        case PrimType::Cone:
+        case PrimType::Cup:
+        case PrimType::Cylinder:
+        case PrimType::Tube:
+        case PrimType::Ring:
+            checkCone(p);
+            break;
+        case PrimType::Polygon:
+            if (!polygonHasArea(p.rargs)) {
+                warn(p.loc, header(p) + "degenerate polygon (zero area), skipped");
+                return false;
+            }
+            break;
+        case PrimType::Source:
+            if (p.rargs[0] == 0 && p.rargs[1] == 0 && p.rargs[2] == 0)
+                throw InputError(p.loc, header(p) + "zero direction");
+            break;
+        default:
+            break;
     }
     return true;
 }

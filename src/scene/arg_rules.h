@@ -25,10 +25,10 @@ struct ArgCount {
 
 // Where a type's transform begins in its string arguments.
 enum class XformAt : uint8_t {
-    None,      // no transform (surfaces, colortext, ...)
-    Fixed,     // at index `xformIndex`; everything from there on is the transform
-    Search,    // data types: after a variable number of coordinate functions; the first
-               // transform option at or after `xformIndex` starts it
+    None,    // no transform (surfaces, colortext, ...)
+    Fixed,   // at index `xformIndex`; everything from there on is the transform
+    Search,  // data types: after a variable number of coordinate functions; the first
+             // transform option at or after `xformIndex` starts it
 };
 
 struct ArgRule {

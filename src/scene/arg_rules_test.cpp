@@ -26,8 +26,8 @@ TEST(Numbers, RealAndIntegerSyntax) {
     double d;
     for (const char* ok : {"1", "-1.", ".5", "+2e-3", "1E+2", "0", "-0.0", "3.e5"})
         EXPECT_TRUE(parseReal(ok, d)) << ok;
-    for (const char* bad : {"abc", "", ".", "-", "1e", "1e+", "inf", "nan", "0x10", "1.5x", "--1",
-                            "1..2"})
+    for (const char* bad :
+         {"abc", "", ".", "-", "1e", "1e+", "inf", "nan", "0x10", "1.5x", "--1", "1..2"})
         EXPECT_FALSE(parseReal(bad, d)) << bad;
     long n;
     EXPECT_TRUE(parseInteger("+12", n));
@@ -95,8 +95,10 @@ TEST(ArgRules, ValueChecksAsRadiance) {
     EXPECT_EQ(errorOf(m + "m sphere s 0 0 4 0 0 0 0\n"), "t.rad:2: sphere 's': zero radius");
     EXPECT_EQ(errorOf(m + "m cone c 0 0 8 0 0 0 0 0 1 0 0\n"), "t.rad:2: cone 'c': illegal radii");
     EXPECT_EQ(errorOf(m + "m cone c 0 0 8 0 0 0 0 0 1 1 -1\n"), "t.rad:2: cone 'c': illegal radii");
-    EXPECT_EQ(errorOf(m + "m ring r 0 0 8 0 0 0 0 0 1 -1 -2\n"), "t.rad:2: ring 'r': negative radii");
-    EXPECT_EQ(errorOf(m + "m ring r 0 0 8 0 0 0 0 0 0 0 1\n"), "t.rad:2: ring 'r': zero orientation");
+    EXPECT_EQ(errorOf(m + "m ring r 0 0 8 0 0 0 0 0 1 -1 -2\n"),
+              "t.rad:2: ring 'r': negative radii");
+    EXPECT_EQ(errorOf(m + "m ring r 0 0 8 0 0 0 0 0 0 0 1\n"),
+              "t.rad:2: ring 'r': zero orientation");
     EXPECT_EQ(errorOf(m + "m cylinder c 0 0 7 1 1 1 1 1 1 1\n"),
               "t.rad:2: cylinder 'c': zero orientation");
     EXPECT_EQ(errorOf(m + "m ring r 0 0 8 0 0 0 0 0 1 0 1\n"), "(no error)");
@@ -143,8 +145,9 @@ TEST(Xform, BadArgumentsAreInputErrors) {
 
 }  // namespace
 TEST(Transform, InverseUndoesASimilarity) {
-    Transform t = parseTransform({"-s", "2.5", "-rx", "30", "-mz", "-rz", "-75", "-t", "1", "-2", "3"},
-                                 0, SourceLoc{"t.rad", 1});
+    Transform t =
+        parseTransform({"-s", "2.5", "-rx", "30", "-mz", "-rz", "-75", "-t", "1", "-2", "3"}, 0,
+                       SourceLoc{"t.rad", 1});
     Transform inv = t.inverse();
     auto p = inv.point(t.point({0.3, -4, 7}));
     EXPECT_NEAR(p[0], 0.3, 1e-12);

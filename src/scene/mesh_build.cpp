@@ -27,7 +27,7 @@ using radgeom::sub;
 using radgeom::Vec;
 using UV = std::array<double, 2>;
 
-constexpr double kCosTol = 0.999995;   // tmesh.h COSTOL: normals this close are "flat"
+constexpr double kCosTol = 0.999995;  // tmesh.h COSTOL: normals this close are "flat"
 using octree::kMaxSet;
 constexpr int kHasN = 2, kHasUV = 4, kHasV = 1;
 
@@ -68,19 +68,22 @@ bool accept(const MeshTriangleInput& in, Tri& t) {
     int flags = kHasV;
     if (in.hasNormals) {
         switch (classify(v1, v2, v3, n1, n2, n3)) {
-        case Flatness::Bent: flags |= kHasN; break;
-        case Flatness::Flat: break;
-        case Flatness::ReversedBent:
-            flags |= kHasN;
-            std::swap(n1, n3);
-            [[fallthrough]];
-        case Flatness::ReversedFlat:
-            std::swap(v1, v3);
-            std::swap(c1, c3);
-            break;
-        case Flatness::Degenerate:
-            warn(in.loc, "degenerate triangle");
-            return false;
+            case Flatness::Bent:
+                flags |= kHasN;
+                break;
+            case Flatness::Flat:
+                break;
+            case Flatness::ReversedBent:
+                flags |= kHasN;
+                std::swap(n1, n3);
+                [[fallthrough]];
+            case Flatness::ReversedFlat:
+                std::swap(v1, v3);
+                std::swap(c1, c3);
+                break;
+            case Flatness::Degenerate:
+                warn(in.loc, "degenerate triangle");
+                return false;
         }
     }
     if (in.hasUV) flags |= kHasUV;
@@ -187,7 +190,8 @@ private:
             s.insert(std::upper_bound(s.begin(), s.end(), obj), obj);
             return;
         }
-        mesh_.tree.trees.push_back({kEmpty, kEmpty, kEmpty, kEmpty, kEmpty, kEmpty, kEmpty, kEmpty});
+        mesh_.tree.trees.push_back(
+            {kEmpty, kEmpty, kEmpty, kEmpty, kEmpty, kEmpty, kEmpty, kEmpty});
         Node tree = static_cast<Node>(mesh_.tree.trees.size() - 1);
         for (int i = 0; i < 8; ++i) {
             Node kid = kEmpty;
@@ -232,8 +236,7 @@ private:
         if (!added) return it->second;
         auto& patches = mesh_.patches;
         if (patches.empty() || patches.back().xyz.size() >= 256) {
-            if (patches.size() >= (size_t{1} << 22))
-                throw InputError("too many mesh patches");
+            if (patches.size() >= (size_t{1} << 22)) throw InputError("too many mesh patches");
             patches.emplace_back();
         }
         Patch& p = patches.back();
@@ -303,9 +306,21 @@ private:
         Patch::Join2 j{};
         j.mat = mo;
         switch (i) {
-        case 0: j.v3 = vid[0] & 0xff; j.v1j = vid[1]; j.v2j = vid[2]; break;
-        case 1: j.v2j = vid[0]; j.v3 = vid[1] & 0xff; j.v1j = vid[2]; break;
-        default: j.v1j = vid[0]; j.v2j = vid[1]; j.v3 = vid[2] & 0xff; break;
+            case 0:
+                j.v3 = vid[0] & 0xff;
+                j.v1j = vid[1];
+                j.v2j = vid[2];
+                break;
+            case 1:
+                j.v2j = vid[0];
+                j.v3 = vid[1] & 0xff;
+                j.v1j = vid[2];
+                break;
+            default:
+                j.v1j = vid[0];
+                j.v2j = vid[1];
+                j.v3 = vid[2] & 0xff;
+                break;
         }
         p.j2.push_back(j);
         return pn[i] << 10 | 0x300 | static_cast<int32_t>(p.j2.size() - 1);
@@ -318,7 +333,6 @@ private:
 };
 
 }  // namespace
-
 
 BuiltMesh buildMesh(const MeshSource& source, const MeshWriteOptions& options) {
     if (options.objlim < 1) throw InputError("objlim must be at least 1");
@@ -375,8 +389,8 @@ BuiltMesh buildMesh(const MeshSource& source, const MeshWriteOptions& options) {
     for (int32_t m = 0; m < mesh.nmats; ++m) {
         const Primitive& p = source.materials.prims[m];
         if (!isModifier(p.type))
-            throw InputError(p.loc, "non-modifier in mesh (" +
-                                        std::string(primTypeName(p.type)) + " \"" + p.name + "\")");
+            throw InputError(p.loc, "non-modifier in mesh (" + std::string(primTypeName(p.type)) +
+                                        " \"" + p.name + "\")");
     }
     bool noUVBounds = uvl[1][0] - uvl[0][0] <= kTiny || uvl[1][1] - uvl[0][1] <= kTiny;
     for (const Patch& p : mesh.patches)

@@ -30,8 +30,16 @@ struct Patch {
     std::vector<std::array<uint8_t, 3>> tri;
     int16_t solemat = 0;
     std::vector<int16_t> trimat;  // empty while every local triangle has solemat
-    struct Join1 { int32_t v1j; int16_t mat; uint8_t v2, v3; };
-    struct Join2 { int32_t v1j, v2j; int16_t mat; uint8_t v3; };
+    struct Join1 {
+        int32_t v1j;
+        int16_t mat;
+        uint8_t v2, v3;
+    };
+    struct Join2 {
+        int32_t v1j, v2j;
+        int16_t mat;
+        uint8_t v3;
+    };
     std::vector<Join1> j1;
     std::vector<Join2> j2;
 };
@@ -40,9 +48,9 @@ struct BuiltMesh {
     std::array<double, 3> cubeOrigin{};
     double cubeSize = 0;
     std::array<std::array<double, 2>, 2> uvLimits{};
-    Octree tree;       // leaf sets hold mesh triangle IDs
+    Octree tree;  // leaf sets hold mesh triangle IDs
     std::vector<Patch> patches;
-    int32_t nmats = 0; // materials 0..nmats-1 are stored
+    int32_t nmats = 0;  // materials 0..nmats-1 are stored
 };
 
 BuiltMesh buildMesh(const MeshSource& source, const MeshWriteOptions& options);

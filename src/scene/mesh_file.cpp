@@ -30,19 +30,20 @@
 // becomes kVoid; RADIANCE's checkmesh() refuses it in a mesh that has materials.
 #include "scene/mesh_file.h"
 
-#include <algorithm>
-#include <cerrno>
-#include <cmath>
-#include <cstring>
 #include <fcntl.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+
 #include "scene/portable_reader.h"
-#include "util/dir_code.h"
 #include "scene/radiance_objects.h"
 #include "scene/scene_file.h"
+#include "util/dir_code.h"
 
 namespace rp {
 
@@ -74,7 +75,10 @@ namespace {
 class PatchDecoder {
 public:
     PatchDecoder(PortableReader& r, MeshData& m, size_t npatches)
-        : r_(r), m_(m), patches_(npatches), nmats_(int64_t(m.materials.prims.size())),
+        : r_(r),
+          m_(m),
+          patches_(npatches),
+          nmats_(int64_t(m.materials.prims.size())),
           uvBounded_(m.uvLimits[1][0] - m.uvLimits[0][0] > kTiny &&
                      m.uvLimits[1][1] - m.uvLimits[0][1] > kTiny) {
         // Room for as many vertices and triangles as the patches and the bytes left can
@@ -174,7 +178,8 @@ private:
     void triangles(size_t pn, int64_t nverts) {
         std::vector<uint32_t>& ids = m_.triangles;
         int64_t ntris = r_.integer(2, "the triangle count");
-        if (ntris < 0 || ntris > 512) r_.fail(std::to_string(ntris) + " local triangles in " + name_);
+        if (ntris < 0 || ntris > 512)
+            r_.fail(std::to_string(ntris) + " local triangles in " + name_);
         for (int64_t t = 0; t < ntris; ++t)
             for (int k = 0; k < 3; ++k) ids.push_back(local(pn, nverts, "the local triangles"));
         if (r_.integer(2, "the material count") > 1) {
@@ -288,8 +293,7 @@ MeshData decodeMeshFile(std::string_view bytes, const std::string& what,
         if (pn % 1024 == 0 && consumed) consumed(offset + r.pos());
         patches.patch(pn);
     }
-    if (r.left() != 0)
-        r.fail(std::to_string(r.left()) + " unexpected bytes after the last patch");
+    if (r.left() != 0) r.fail(std::to_string(r.left()) + " unexpected bytes after the last patch");
     patches.finish();
     return m;
 }
@@ -323,8 +327,8 @@ MeshData readMeshFile(const std::string& path) {
         }
     };
     try {
-        MeshData m = decodeMeshFile(std::string_view(static_cast<const char*>(map), size), path,
-                                    consumed);
+        MeshData m =
+            decodeMeshFile(std::string_view(static_cast<const char*>(map), size), path, consumed);
         ::munmap(map, size);
         return m;
     } catch (...) {

@@ -8,10 +8,10 @@
 
 #include "scene/mesh_build.h"
 #include "scene/octree_nodes.h"
-#include "util/file_write.h"
-#include "util/portable_io.h"
 #include "scene/radiance_objects.h"
 #include "util/error.h"
+#include "util/file_write.h"
+#include "util/portable_io.h"
 
 namespace rp {
 namespace {
@@ -21,8 +21,8 @@ using meshbuild::BuiltMesh;
 using meshbuild::Node;
 using meshbuild::Patch;
 
-constexpr int kObjSize = 4;                  // sizeof(OBJECT) in RADIANCE's standard build
-constexpr int kMeshMagic = 1 * 8 + 311;      // mesh.h MESHMAGIC (MAXOBJSIZ 8)
+constexpr int kObjSize = 4;              // sizeof(OBJECT) in RADIANCE's standard build
+constexpr int kMeshMagic = 1 * 8 + 311;  // mesh.h MESHMAGIC (MAXOBJSIZ 8)
 
 void putPatch(std::string& out, const Patch& p) {
     putInt(out, 1 | (p.hasNorm ? 2 : 0) | (p.hasUV ? 4 : 0), 1);
@@ -99,9 +99,9 @@ MeshStats statsOf(const BuiltMesh& m) {
         s.doubleJoinerTris += static_cast<int>(p.j2.size());
     }
     // sizeof(MESHPATCH), uint32, int32, PTri, PJoin1, PJoin2 in a 64-bit RADIANCE build.
-    s.megabytes = (s.patches * 72.0 + s.vertices * 12.0 + withNormSlots * 4.0 +
-                   withUVSlots * 8.0 + s.localTris * 3.0 + s.joinerTris * 8.0 +
-                   s.doubleJoinerTris * 12.0) / (1024. * 1024.);
+    s.megabytes = (s.patches * 72.0 + s.vertices * 12.0 + withNormSlots * 4.0 + withUVSlots * 8.0 +
+                   s.localTris * 3.0 + s.joinerTris * 8.0 + s.doubleJoinerTris * 12.0) /
+                  (1024. * 1024.);
     return s;
 }
 
@@ -118,10 +118,10 @@ std::string formatMeshStats(const MeshStats& s) {
                   "\t%d vertices (%.1f%% w/ normals, %.1f%% w/ uv)\n"
                   "\t%d triangles (%.1f%% local, %.1f%% joiner)\n"
                   "\t%d leaves in octree (%.1f%% empty, %.2f avg. set size)\n",
-                  s.materials, s.patches, s.megabytes, s.vertices,
-                  100. * s.withNormal / s.vertices, 100. * s.withUV / s.vertices, tris,
-                  100. * s.localTris / tris, 100. * s.joinerTris / tris, leaves,
-                  100. * s.emptyLeaves / leaves, static_cast<double>(s.leafTriangles) / s.fullLeaves);
+                  s.materials, s.patches, s.megabytes, s.vertices, 100. * s.withNormal / s.vertices,
+                  100. * s.withUV / s.vertices, tris, 100. * s.localTris / tris,
+                  100. * s.joinerTris / tris, leaves, 100. * s.emptyLeaves / leaves,
+                  static_cast<double>(s.leafTriangles) / s.fullLeaves);
     return buf;
 }
 
@@ -140,8 +140,7 @@ std::string encodeMeshFile(const MeshSource& source, const MeshWriteOptions& opt
     }
     octree::putOctreeNodes(out, m.tree, kObjSize);
     Scene used;
-    used.prims.assign(source.materials.prims.begin(),
-                      source.materials.prims.begin() + m.nmats);
+    used.prims.assign(source.materials.prims.begin(), source.materials.prims.begin() + m.nmats);
     encodeRadianceObjects(used, kObjSize, out);
     putInt(out, static_cast<int64_t>(m.patches.size()), 4);
     for (const Patch& p : m.patches) putPatch(out, p);

@@ -36,8 +36,8 @@ struct MeshSource {
 };
 
 struct MeshWriteOptions {
-    int objlim = 9;       // triangles per octree leaf before it is split (obj2mesh -n)
-    int maxres = 16384;   // octree resolution limit (obj2mesh -r)
+    int objlim = 9;      // triangles per octree leaf before it is split (obj2mesh -n)
+    int maxres = 16384;  // octree resolution limit (obj2mesh -r)
 };
 
 // RADIANCE printmeshstats' numbers (obj2mesh -v).
@@ -59,8 +59,7 @@ std::string formatMeshStats(const MeshStats& s);
 // with a warning, as RADIANCE does. Throws InputError when no triangle remains, a
 // triangle's material index is out of range, or a used material is not a modifier.
 std::string encodeMeshFile(const MeshSource& source, const MeshWriteOptions& options,
-                           const std::vector<std::string>& headerLines,
-                           MeshStats* stats = nullptr);
+                           const std::vector<std::string>& headerLines, MeshStats* stats = nullptr);
 
 // The same from indexed mesh data (e.g. a mesh read back from a file): each triangle
 // takes the normals and (u, v) of its vertices when all three have them.

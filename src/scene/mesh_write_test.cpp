@@ -4,8 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include "util/warning_capture_for_tests.h"
-
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -16,6 +14,7 @@
 #include "scene/obj_file.h"
 #include "scene/radiance_objects.h"
 #include "scene/reader.h"
+#include "util/warning_capture_for_tests.h"
 
 namespace rp {
 namespace {
@@ -35,7 +34,8 @@ std::string convert(const std::string& name, bool withMaterials, MeshStats* stat
     ObjMesh obj = parseObj(slurp(kData + name + ".obj"), name + ".obj");
     assignObjMaterials(obj, mats);
     MeshSource src{obj.triangles, mats};
-    std::string cmd = "obj2mesh " + std::string(withMaterials ? "-a cube.rad " : "") + name + ".obj";
+    std::string cmd =
+        "obj2mesh " + std::string(withMaterials ? "-a cube.rad " : "") + name + ".obj";
     return encodeMeshFile(src, MeshWriteOptions{}, {cmd}, stats);
 }
 
@@ -148,7 +148,8 @@ struct Corner {
 using Tri = std::array<Corner, 3>;
 
 double dist(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return std::fmax(std::fabs(a[0] - b[0]), std::fmax(std::fabs(a[1] - b[1]), std::fabs(a[2] - b[2])));
+    return std::fmax(std::fabs(a[0] - b[0]),
+                     std::fmax(std::fabs(a[1] - b[1]), std::fabs(a[2] - b[2])));
 }
 
 // The corner of `w` that corner 0 of `got` is (cyclic order kept, or reversed when
@@ -178,8 +179,10 @@ void expectRoundTrip(const std::string& name, bool materials) {
                       t.hasUV ? t.uv[k] : std::array<double, 2>{}};
         want.push_back(tri);
         bool away = t.hasNormals;
-        const std::array<double, 3> e1{t.v[1][0] - t.v[0][0], t.v[1][1] - t.v[0][1], t.v[1][2] - t.v[0][2]};
-        const std::array<double, 3> e2{t.v[2][0] - t.v[1][0], t.v[2][1] - t.v[1][1], t.v[2][2] - t.v[1][2]};
+        const std::array<double, 3> e1{t.v[1][0] - t.v[0][0], t.v[1][1] - t.v[0][1],
+                                       t.v[1][2] - t.v[0][2]};
+        const std::array<double, 3> e2{t.v[2][0] - t.v[1][0], t.v[2][1] - t.v[1][1],
+                                       t.v[2][2] - t.v[1][2]};
         const std::array<double, 3> fn{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
                                        e1[0] * e2[1] - e1[1] * e2[0]};
         for (size_t k = 0; k < 3 && away; ++k)
@@ -198,7 +201,8 @@ void expectRoundTrip(const std::string& name, bool materials) {
             const float* p = &back.positions[3 * size_t(v)];
             got[k].p = {p[0], p[1], p[2]};
             flags &= back.flagsOf(v);
-            if (!back.normals.empty()) got[k].n = {back.normals[v][0], back.normals[v][1], back.normals[v][2]};
+            if (!back.normals.empty())
+                got[k].n = {back.normals[v][0], back.normals[v][1], back.normals[v][2]};
             if (!back.uvs.empty()) got[k].uv = {back.uvs[v][0], back.uvs[v][1]};
         }
         size_t j = 0;
@@ -212,10 +216,12 @@ void expectRoundTrip(const std::string& name, bool materials) {
             const Corner& a = got[size_t(k)];
             const Corner& b = want[j][size_t(faceAway[j] ? (s - k + 3) % 3 : (s + k) % 3)];
             if (flags & MeshData::kHasNormal) {
-                for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.n[size_t(c)], b.n[size_t(c)], 2e-4) << name;
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_NEAR(a.n[size_t(c)], b.n[size_t(c)], 2e-4) << name;
             }
             if (flags & MeshData::kHasUV) {
-                for (int c = 0; c < 2; ++c) EXPECT_NEAR(a.uv[size_t(c)], b.uv[size_t(c)], 1e-6) << name;
+                for (int c = 0; c < 2; ++c)
+                    EXPECT_NEAR(a.uv[size_t(c)], b.uv[size_t(c)], 1e-6) << name;
             }
         }
         withNormals += (flags & MeshData::kHasNormal) != 0;

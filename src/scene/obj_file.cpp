@@ -26,7 +26,8 @@ struct Pt {
 
 double polyArea(const std::vector<Pt>& p) {
     double a = 0.0;
-    for (size_t q = 0, r = p.size() - 1; q < p.size(); r = q++) a += p[r].x * p[q].y - p[q].x * p[r].y;
+    for (size_t q = 0, r = p.size() - 1; q < p.size(); r = q++)
+        a += p[r].x * p[q].y - p[q].x * p[r].y;
     return a * 0.5;
 }
 
@@ -37,7 +38,8 @@ bool insideTriangle(Pt a, Pt b, Pt c, Pt p) {
     double apx = p.x - a.x, apy = p.y - a.y;
     double bpx = p.x - b.x, bpy = p.y - b.y;
     double cpx = p.x - c.x, cpy = p.y - c.y;
-    return (ax * bpy - ay * bpx >= 0.0) & (bx * cpy - by * cpx >= 0.0) & (cx * apy - cy * apx >= 0.0);
+    return (ax * bpy - ay * bpx >= 0.0) & (bx * cpy - by * cpx >= 0.0) &
+           (cx * apy - cy * apx >= 0.0);
 }
 
 // 1: an ear, 0: not an ear, -1: the three corners are collinear.
@@ -165,7 +167,8 @@ private:
         long n = static_cast<long>(count);
         long k = i > 0 ? i - 1 : n + i;
         if (i == 0 || k < 0 || k >= n)
-            fail(std::string(what) + " index " + t + " out of range (" + std::to_string(n) + " defined)");
+            fail(std::string(what) + " index " + t + " out of range (" + std::to_string(n) +
+                 " defined)");
         return static_cast<int>(k);
     }
 
@@ -177,7 +180,8 @@ private:
         std::string_view rest = s.substr(a + 1);
         size_t b = rest.find('/');
         c.vt = index(rest.substr(0, b), vts_.size(), "texture vertex", false);
-        if (b != std::string_view::npos) c.vn = index(rest.substr(b + 1), vns_.size(), "normal", false);
+        if (b != std::string_view::npos)
+            c.vn = index(rest.substr(b + 1), vns_.size(), "normal", false);
         return c;
     }
 
@@ -292,15 +296,15 @@ ObjMesh parseObj(std::string_view text, const std::string& file) {
     }
     if (p.out.unrecognised > 0)
         warn(SourceLoc{file, 0}, std::to_string(p.out.unrecognised) + " of " +
-                                     std::to_string(p.out.statements) +
-                                     " statements unrecognized");
+                                     std::to_string(p.out.statements) + " statements unrecognized");
     return std::move(p.out);
 }
 
 void assignObjMaterials(ObjMesh& obj, const Scene& materials) {
     std::map<std::string, int32_t> latest;
     for (size_t i = 0; i < materials.prims.size(); ++i)
-        if (isModifier(materials.prims[i].type)) latest[materials.prims[i].name] = static_cast<int32_t>(i);
+        if (isModifier(materials.prims[i].type))
+            latest[materials.prims[i].name] = static_cast<int32_t>(i);
     for (size_t t = 0; t < obj.triangles.size(); ++t) {
         const std::string& name = obj.materialNames[t];
         int32_t m = kVoid;
@@ -317,7 +321,8 @@ void assignObjMaterials(ObjMesh& obj, const Scene& materials) {
 MeshData objToMeshData(const ObjMesh& obj, const Scene& materials) {
     MeshData m;
     m.materials = materials;
-    using Key = std::tuple<std::array<double, 3>, int, std::array<double, 3>, std::array<double, 2>>;
+    using Key =
+        std::tuple<std::array<double, 3>, int, std::array<double, 3>, std::array<double, 2>>;
     std::map<Key, uint32_t> index;
     bool anyN = false, anyUV = false;
     for (const auto& t : obj.triangles) {
@@ -333,11 +338,13 @@ MeshData objToMeshData(const ObjMesh& obj, const Scene& materials) {
             auto [it, added] = index.emplace(key, static_cast<uint32_t>(m.vertexCount()));
             if (added) {
                 for (double c : t.v[k]) m.positions.push_back(static_cast<float>(c));
-                if (anyN) m.normals.push_back({static_cast<float>(std::get<2>(key)[0]),
-                                               static_cast<float>(std::get<2>(key)[1]),
-                                               static_cast<float>(std::get<2>(key)[2])});
-                if (anyUV) m.uvs.push_back({static_cast<float>(std::get<3>(key)[0]),
-                                            static_cast<float>(std::get<3>(key)[1])});
+                if (anyN)
+                    m.normals.push_back({static_cast<float>(std::get<2>(key)[0]),
+                                         static_cast<float>(std::get<2>(key)[1]),
+                                         static_cast<float>(std::get<2>(key)[2])});
+                if (anyUV)
+                    m.uvs.push_back({static_cast<float>(std::get<3>(key)[0]),
+                                     static_cast<float>(std::get<3>(key)[1])});
                 if (anyN || anyUV) m.vertexFlags.push_back(static_cast<uint8_t>(fl));
             }
             m.triangles.push_back(it->second);

@@ -4,9 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "util/warning_capture_for_tests.h"
-
 #include "scene/reader.h"
+#include "util/warning_capture_for_tests.h"
 
 namespace rp {
 namespace {
@@ -71,7 +70,8 @@ TEST(ObjFile, PolygonsSplitAsRadiance) {
     EXPECT_EQ(first(2, 2), (std::array<double, 3>{2, 0, 0}));   // 2
 
     // A non-convex face: no triangle may cover the notch at (4, -2).
-    ObjMesh h = parseObj("v 3 -3 0\nv 5 -3 0\nv 5 -1 0\nv 4 -2 0\nv 3 -1 0\nf 1 2 3 4 5\n", "h.obj");
+    ObjMesh h =
+        parseObj("v 3 -3 0\nv 5 -3 0\nv 5 -1 0\nv 4 -2 0\nv 3 -1 0\nf 1 2 3 4 5\n", "h.obj");
     ASSERT_EQ(h.triangles.size(), 3u);
 }
 
@@ -85,8 +85,9 @@ TEST(ObjFile, MaterialsFollowUsemtlThenGroup) {
     EXPECT_EQ(m.unrecognised, 2);
     ASSERT_EQ(warnings.lines.size(), 1u);
     EXPECT_EQ(warnings.lines[0], "m.obj: 2 of 15 statements unrecognized");
-    Scene mats = parseScene("void plastic red 0 0 5 1 0 0 0 0\nvoid plastic blue 0 0 5 0 0 1 0 0\n"
-                            "void plastic walls 0 0 5 1 1 1 0 0\nvoid plastic red 0 0 5 1 1 0 0 0\n");
+    Scene mats = parseScene(
+        "void plastic red 0 0 5 1 0 0 0 0\nvoid plastic blue 0 0 5 0 0 1 0 0\n"
+        "void plastic walls 0 0 5 1 1 1 0 0\nvoid plastic red 0 0 5 1 1 0 0 0\n");
     assignObjMaterials(m, mats);
     EXPECT_EQ(m.triangles[0].material, kVoid);
     EXPECT_EQ(m.triangles[1].material, 2);
@@ -113,7 +114,8 @@ TEST(ObjFile, UndefinedMaterialIsAnErrorAtTheFace) {
 
 TEST(ObjFile, LineContinuationAndComments) {
     WarningCapture warnings;
-    ObjMesh m = parseObj(std::string(kSquare) + "f 1 \\\n 2 3 # a comment\n# f 1 2 4\nf 1 2 4\n", "c.obj");
+    ObjMesh m =
+        parseObj(std::string(kSquare) + "f 1 \\\n 2 3 # a comment\n# f 1 2 4\nf 1 2 4\n", "c.obj");
     ASSERT_EQ(m.triangles.size(), 2u);
     EXPECT_EQ(m.triangles[1].loc.line, 8);
 }
@@ -133,11 +135,16 @@ TEST(ObjFile, BadInputsNameFileAndLine) {
     expectError("v 0 0\n", "bad.obj:1: bad vertex");
     expectError("vn 0 0 0\n", "bad.obj:1: zero normal");
     expectError("vt a\n", "bad.obj:1: bad texture coordinate 'a'");
-    expectError(std::string(kSquare) + "f 1 2 5\n", "bad.obj:5: vertex index 5 out of range (4 defined)");
-    expectError(std::string(kSquare) + "f 1 2 -5\n", "bad.obj:5: vertex index -5 out of range (4 defined)");
-    expectError(std::string(kSquare) + "f 1 2 0\n", "bad.obj:5: vertex index 0 out of range (4 defined)");
-    expectError(std::string(kSquare) + "f 1/1 2 3\n", "bad.obj:5: texture vertex index 1 out of range (0 defined)");
-    expectError(std::string(kSquare) + "f 1//2 2 3\n", "bad.obj:5: normal index 2 out of range (0 defined)");
+    expectError(std::string(kSquare) + "f 1 2 5\n",
+                "bad.obj:5: vertex index 5 out of range (4 defined)");
+    expectError(std::string(kSquare) + "f 1 2 -5\n",
+                "bad.obj:5: vertex index -5 out of range (4 defined)");
+    expectError(std::string(kSquare) + "f 1 2 0\n",
+                "bad.obj:5: vertex index 0 out of range (4 defined)");
+    expectError(std::string(kSquare) + "f 1/1 2 3\n",
+                "bad.obj:5: texture vertex index 1 out of range (0 defined)");
+    expectError(std::string(kSquare) + "f 1//2 2 3\n",
+                "bad.obj:5: normal index 2 out of range (0 defined)");
     expectError(std::string(kSquare) + "f 1 2\n", "bad.obj:5: face with fewer than 3 vertices");
     expectError(std::string(kSquare) + "f 1 2 3 a\n", "bad.obj:5: bad vertex index 'a'");
 }

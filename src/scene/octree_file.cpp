@@ -14,7 +14,7 @@ using namespace octree;
 
 constexpr int kObjSize = 4;             // sizeof(OBJECT) in RADIANCE's standard build
 constexpr int kOctMagic = 4 * 8 + 251;  // octree.h OCTMAGIC (MAXOBJSIZ 8)
-constexpr size_t kMaxDepth = 64;  // deeper than double precision allows: damage
+constexpr size_t kMaxDepth = 64;        // deeper than double precision allows: damage
 
 std::string g12(double x) {
     char buf[64];

@@ -33,7 +33,8 @@ void skipRadianceTree(PortableReader& r, int objsize, int64_t maxRef) {
                     r.fail("octree object reference " + std::to_string(ref) + " out of range");
             }
         } else if (kind == 2) {  // tree: eight children follow
-            if (pending.size() >= kMaxDepth) r.fail("octree deeper than " + std::to_string(kMaxDepth));
+            if (pending.size() >= kMaxDepth)
+                r.fail("octree deeper than " + std::to_string(kMaxDepth));
             pending.push_back(8);
         } else {
             r.fail("octree node of unknown kind " + std::to_string(kind));

@@ -20,16 +20,15 @@ namespace rp {
 class PortableReader {
 public:
     // `kind` names what is read in messages ("mesh file", "octree").
-    PortableReader(std::string_view bytes, size_t& pos, const std::string& what,
-                   const char* kind)
+    PortableReader(std::string_view bytes, size_t& pos, const std::string& what, const char* kind)
         : in_(bytes), pos_(pos), what_(what), kind_(kind) {}
 
     [[noreturn]] void fail(const std::string& why) const {
         throw InputError(SourceLoc{what_, 0}, "damaged " + std::string(kind_) + " (" + why + ")");
     }
     [[noreturn]] void truncated(const char* where) const {
-        throw InputError(SourceLoc{what_, 0},
-                         "truncated " + std::string(kind_) + " (ends inside " + describe(where) + ")");
+        throw InputError(SourceLoc{what_, 0}, "truncated " + std::string(kind_) + " (ends inside " +
+                                                  describe(where) + ")");
     }
 
     // What the values being read belong to ("patch 3", "object 12 'chair'"), named in

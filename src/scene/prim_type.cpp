@@ -100,14 +100,16 @@ int32_t chainMaterial(const Scene& scene, int32_t modifier) {
 
 bool isTransparentMaterial(PrimType t) {
     switch (t) {
-    case PrimType::Trans:
-    case PrimType::Trans2:
-    case PrimType::Dielectric:
-    case PrimType::Interface:
-    case PrimType::Mist:
-    case PrimType::Glass:
-    case PrimType::ABSDF: return true;
-    default: return false;
+        case PrimType::Trans:
+        case PrimType::Trans2:
+        case PrimType::Dielectric:
+        case PrimType::Interface:
+        case PrimType::Mist:
+        case PrimType::Glass:
+        case PrimType::ABSDF:
+            return true;
+        default:
+            return false;
     }
 }
 

@@ -16,20 +16,69 @@ namespace rp {
 // Every primitive type of the RADIANCE reference manual (ray.html).
 enum class PrimType : uint8_t {
     // surfaces
-    Source, Sphere, Bubble, Polygon, Cone, Cup, Cylinder, Tube, Ring, Instance, Mesh,
+    Source,
+    Sphere,
+    Bubble,
+    Polygon,
+    Cone,
+    Cup,
+    Cylinder,
+    Tube,
+    Ring,
+    Instance,
+    Mesh,
     // light-emitting materials
-    Light, Illum, Glow, Spotlight,
+    Light,
+    Illum,
+    Glow,
+    Spotlight,
     // reflecting/refracting materials
-    Mirror, Prism1, Prism2, Plastic, Metal, Trans, Plastic2, Metal2, Trans2, Ashik2, Mist,
-    Dielectric, Interface, Glass, Plasfunc, Metfunc, Transfunc, BRTDfunc, Plasdata,
-    Metdata, Transdata, BSDF, ABSDF, WGMDfunc, Antimatter,
+    Mirror,
+    Prism1,
+    Prism2,
+    Plastic,
+    Metal,
+    Trans,
+    Plastic2,
+    Metal2,
+    Trans2,
+    Ashik2,
+    Mist,
+    Dielectric,
+    Interface,
+    Glass,
+    Plasfunc,
+    Metfunc,
+    Transfunc,
+    BRTDfunc,
+    Plasdata,
+    Metdata,
+    Transdata,
+    BSDF,
+    ABSDF,
+    WGMDfunc,
+    Antimatter,
     // textures
-    Texfunc, Texdata,
+    Texfunc,
+    Texdata,
     // patterns
-    Colorfunc, Brightfunc, Colordata, Brightdata, Colorpict, Colortext, Brighttext,
-    Spectrum, Specfile, Specfunc, Specdata, Specpict,
+    Colorfunc,
+    Brightfunc,
+    Colordata,
+    Brightdata,
+    Colorpict,
+    Colortext,
+    Brighttext,
+    Spectrum,
+    Specfile,
+    Specfunc,
+    Specdata,
+    Specpict,
     // mixtures
-    Mixfunc, Mixdata, Mixpict, Mixtext,
+    Mixfunc,
+    Mixdata,
+    Mixpict,
+    Mixtext,
     // alias (resolved by the reader: never appears in a Scene)
     Alias,
 };
@@ -49,12 +98,12 @@ constexpr int32_t kVoid = -1;  // modifier index of "void"
 struct Primitive {
     PrimType type = PrimType::Polygon;
     std::string name;
-    std::string modifierName;       // as written ("void" for none)
-    int32_t modifier = kVoid;       // index into Scene::prims of the resolved modifier
-    std::vector<std::string> sargs; // string arguments
-    std::vector<long> iargs;        // integer arguments
-    std::vector<double> rargs;      // real arguments
-    SourceLoc loc;                  // where it was defined
+    std::string modifierName;        // as written ("void" for none)
+    int32_t modifier = kVoid;        // index into Scene::prims of the resolved modifier
+    std::vector<std::string> sargs;  // string arguments
+    std::vector<long> iargs;         // integer arguments
+    std::vector<double> rargs;       // real arguments
+    SourceLoc loc;                   // where it was defined
     // Set by attachObjects (scene_load.h): the Scene::objects entry this record belongs
     // to (-1: the scene itself), and for instance and mesh primitives the object placed.
     int32_t object = -1;
@@ -76,9 +125,9 @@ struct MeshData;
 struct SceneObject {
     enum class Kind : uint8_t { Octree, Mesh };
     Kind kind = Kind::Octree;
-    std::string path;                       // as found on the search path
-    int32_t firstPrim = 0, endPrim = 0;     // its records in Scene::prims
-    std::shared_ptr<const MeshData> mesh;   // Kind::Mesh: the triangles
+    std::string path;                      // as found on the search path
+    int32_t firstPrim = 0, endPrim = 0;    // its records in Scene::prims
+    std::shared_ptr<const MeshData> mesh;  // Kind::Mesh: the triangles
 };
 
 // A file the scene was read from, for the photon map stale check.
@@ -88,8 +137,8 @@ struct SceneInput {
 };
 
 struct Scene {
-    std::vector<Primitive> prims;    // surfaces and modifiers in input order
-    std::vector<SceneInput> inputs;  // files read, in order
+    std::vector<Primitive> prims;      // surfaces and modifiers in input order
+    std::vector<SceneInput> inputs;    // files read, in order
     std::vector<SceneObject> objects;  // what instances and meshes place (attachObjects)
 
     // The scene's own records come first, then the objects'.

@@ -87,15 +87,14 @@ Scene decodeRadianceObjects(std::string_view bytes, size_t& pos, int objsize,
         for (auto& v : p.rargs) v = r.real("a real argument");
 
         if (p.type == PrimType::Alias) {
-            if (!p.rargs.empty() || p.sargs.size() > 1)
-                r.fail("alias" + whose + " has arguments");
+            if (!p.rargs.empty() || p.sargs.size() > 1) r.fail("alias" + whose + " has arguments");
             int32_t target = p.modifier;
             if (p.sargs.size() == 1) {
                 auto it = modifiers.find(p.sargs[0]);
                 if (it == modifiers.end())
-                    throw InputError(SourceLoc{what, 0}, "alias" + whose +
-                                                             " refers to undefined modifier '" +
-                                                             p.sargs[0] + "'");
+                    throw InputError(
+                        SourceLoc{what, 0},
+                        "alias" + whose + " refers to undefined modifier '" + p.sargs[0] + "'");
                 target = it->second;
             } else if (target == kVoid) {
                 r.fail("alias" + whose + " has no target");

@@ -3,9 +3,9 @@
 #include <array>
 #include <string_view>
 
-#include "util/portable_io.h"
 #include "scene/radiance_objects.h"
 #include "util/error.h"
+#include "util/portable_io.h"
 
 namespace rp {
 namespace {
@@ -13,22 +13,21 @@ namespace {
 // RADIANCE 5.x's object type table (otypes.h), in its order: a record stores its type as
 // an index into this list, and the file carries the list so readers can remap it.
 constexpr std::array<std::string_view, 53> kTypeNames = {
-    "polygon",   "cone",       "sphere",    "texfunc",   "ring",      "cylinder",
-    "instance",  "cup",        "bubble",    "tube",      "mesh",      "alias",
-    "plastic",   "metal",      "glass",     "trans",     "dielectric", "plastic2",
-    "metal2",    "trans2",     "interface", "plasfunc",  "metfunc",   "brightfunc",
-    "brightdata", "brighttext", "colorpict", "glow",     "source",    "light",
-    "illum",     "spotlight",  "mist",      "mirror",    "transfunc", "BRTDfunc",
-    "BSDF",      "aBSDF",      "plasdata",  "metdata",   "transdata", "colorfunc",
-    "antimatter", "colordata", "colortext", "texdata",   "mixfunc",   "mixdata",
-    "mixtext",   "mixpict",    "prism1",    "prism2",    "ashik2"};
+    "polygon",    "cone",      "sphere",     "texfunc",    "ring",       "cylinder",  "instance",
+    "cup",        "bubble",    "tube",       "mesh",       "alias",      "plastic",   "metal",
+    "glass",      "trans",     "dielectric", "plastic2",   "metal2",     "trans2",    "interface",
+    "plasfunc",   "metfunc",   "brightfunc", "brightdata", "brighttext", "colorpict", "glow",
+    "source",     "light",     "illum",      "spotlight",  "mist",       "mirror",    "transfunc",
+    "BRTDfunc",   "BSDF",      "aBSDF",      "plasdata",   "metdata",    "transdata", "colorfunc",
+    "antimatter", "colordata", "colortext",  "texdata",    "mixfunc",    "mixdata",   "mixtext",
+    "mixpict",    "prism1",    "prism2",     "ashik2"};
 
 int typeIndex(const Primitive& p) {
     std::string_view name = primTypeName(p.type);
     for (size_t i = 0; i < kTypeNames.size(); ++i)
         if (kTypeNames[i] == name) return static_cast<int>(i);
-    throw InputError(p.loc, "type '" + std::string(name) +
-                                "' has no code in RADIANCE's binary scene format");
+    throw InputError(
+        p.loc, "type '" + std::string(name) + "' has no code in RADIANCE's binary scene format");
 }
 
 constexpr int kAliasType = 11;  // "alias" in kTypeNames

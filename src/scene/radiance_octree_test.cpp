@@ -47,9 +47,9 @@ TEST(RadianceOctree, LoadsPorscheLikeRadiance) {
     const Primitive& p2 = s.prims[2];
     EXPECT_EQ(p2.type, PrimType::Mixfunc);
     EXPECT_EQ(p2.name, "grey_metal");
-    EXPECT_EQ(p2.sargs, (std::vector<std::string>{"grey_metal_mirror",
-                                                  "grey_metal_directional_diffuse",
-                                                  "0.04+0.96*exp(-6*Rdot)", "."}));
+    EXPECT_EQ(p2.sargs,
+              (std::vector<std::string>{"grey_metal_mirror", "grey_metal_directional_diffuse",
+                                        "0.04+0.96*exp(-6*Rdot)", "."}));
     EXPECT_TRUE(p2.rargs.empty());
     EXPECT_EQ(s.prims[11].type, PrimType::Glass);
     EXPECT_EQ(s.prims[11].name, "dark_glass");
@@ -87,8 +87,8 @@ TEST(RadianceOctree, CubeAsGetinfoPrintsIt) {
         return std::string(rest);
     };
     RadianceCube c = radianceCube(binary("porsche.octf"), false, "porsche.octf");
-    EXPECT_EQ(c.text, (std::array<std::string, 4>{"-7.018318", "-6.9963735", "-7.0151235",
-                                                  "14.030247"}));
+    EXPECT_EQ(c.text,
+              (std::array<std::string, 4>{"-7.018318", "-6.9963735", "-7.0151235", "14.030247"}));
     EXPECT_DOUBLE_EQ(c.origin[1], -6.9963735);
     EXPECT_DOUBLE_EQ(c.size, 14.030247);
     RadianceCube m = radianceCube(binary("woman.rtm"), true, "woman.rtm");

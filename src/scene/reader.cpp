@@ -30,9 +30,7 @@ std::string describe(PrimType t, const std::string& name) {
     return std::string(primTypeName(t)) + " '" + name + "'";
 }
 
-std::string shorten(const std::string& s) {
-    return s.size() <= 60 ? s : s.substr(0, 57) + "...";
-}
+std::string shorten(const std::string& s) { return s.size() <= 60 ? s : s.substr(0, 57) + "..."; }
 }  // namespace
 
 struct SceneReader::Context {
@@ -55,15 +53,17 @@ int64_t fileMtime(const std::string& path) {
 void SceneReader::readFile(const std::string& path) {
     size_t before = scene_.prims.size();
     if (path == "-") {
-        std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+        std::string text{std::istreambuf_iterator<char>(std::cin),
+                         std::istreambuf_iterator<char>()};
         scene_.inputs.push_back({"-", 0});
         parse(text, Context{""});  // empty file name = standard input (util/error.h)
     } else if (!path.empty() && path[0] == '!') {
         runCommand(path.substr(1), SourceLoc{}, 1);
     } else {
         std::ifstream in(path, std::ios::binary);
-        if (!in) throw InputError(SourceLoc{path, 0}, std::string("cannot open file (") +
-                                                          std::strerror(errno) + ")");
+        if (!in)
+            throw InputError(SourceLoc{path, 0},
+                             std::string("cannot open file (") + std::strerror(errno) + ")");
         std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
         readContents(path, text);
         return;
@@ -128,8 +128,7 @@ void SceneReader::runCommand(const std::string& rawCommand, const SourceLoc& loc
         int status = ::pclose(pipe);
         // RADIANCE compat: readobj() only warns "bad status"; a failed generator leaves
         // a silently incomplete scene, so we stop instead.
-        if (status == -1)
-            throw InputError(loc, "cannot run command: !" + shorten(command));
+        if (status == -1) throw InputError(loc, "cannot run command: !" + shorten(command));
         if (WIFSIGNALED(status))
             throw InputError(loc, "command killed by signal " + std::to_string(WTERMSIG(status)) +
                                       ": !" + shorten(command));
@@ -188,8 +187,8 @@ void SceneReader::parsePrimitive(SceneLexer& lex, const Context& ctx) {
     std::string what = "a primitive";
     auto next = [&](const char* expected) {
         if (!lex.readWord(word, wordLine))
-            throw InputError(loc, "unexpected end of file in " + what + " (expected " +
-                                      expected + ")");
+            throw InputError(loc,
+                             "unexpected end of file in " + what + " (expected " + expected + ")");
         return word;
     };
     modName = next("a modifier");
@@ -241,8 +240,8 @@ void SceneReader::parsePrimitive(SceneLexer& lex, const Context& ctx) {
         next(expected.c_str());
         long n;
         if (!parseInteger(word, n) || n < 0)
-            throw InputError(ctx.loc(wordLine), what + ": expected " + expected + ", got '" +
-                                                    word + "'");
+            throw InputError(ctx.loc(wordLine),
+                             what + ": expected " + expected + ", got '" + word + "'");
         return static_cast<size_t>(n);
     };
     auto eofIn = [&](const char* kind, size_t n, size_t got) {
@@ -266,8 +265,8 @@ void SceneReader::parsePrimitive(SceneLexer& lex, const Context& ctx) {
         next(eofIn("real", nr, i).c_str());
         double v;
         if (!parseReal(word, v))
-            throw InputError(ctx.loc(wordLine), what + ": expected a real number, got '" + word +
-                                                    "'");
+            throw InputError(ctx.loc(wordLine),
+                             what + ": expected a real number, got '" + word + "'");
         p.rargs.push_back(v);
     }
     add(std::move(p));

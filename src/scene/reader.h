@@ -21,8 +21,8 @@ using CommandHook =
     std::function<std::optional<std::string>(const std::string& command, const SourceLoc& loc)>;
 
 struct LoadOptions {
-    CommandHook commandHook;  // default: none, every command goes to /bin/sh -c
-    int maxCommandDepth = 32; // commands whose output runs commands, and so on
+    CommandHook commandHook;   // default: none, every command goes to /bin/sh -c
+    int maxCommandDepth = 32;  // commands whose output runs commands, and so on
     // Number objects and resolve modifier names exactly as RADIANCE does, as oconv must
     // for its octree: records the renderers skip (a polygon without area) are kept, and
     // a modifier redefined equal to the one its name stands for keeps the earlier one

@@ -12,7 +12,6 @@
 namespace rp {
 namespace {
 
-
 std::string errorOf(const std::string& text, const std::string& file = "t.rad",
                     const LoadOptions& options = {}) {
     try {
@@ -50,10 +49,11 @@ TEST(Reader, RecordsArgumentsAndLocations) {
 }
 
 TEST(Reader, NumbersInEveryForm) {
-    Scene s = parseScene("void spectrum sp 0 +0 12 1 -1. .5 +2e-3 1E+2 -0.25e1 3.E0 +4 0 7e2 1e-2 5.\n");
+    Scene s =
+        parseScene("void spectrum sp 0 +0 12 1 -1. .5 +2e-3 1E+2 -0.25e1 3.E0 +4 0 7e2 1e-2 5.\n");
     ASSERT_EQ(s.prims.size(), 1u);
-    EXPECT_EQ(s.prims[0].rargs, (std::vector<double>{1, -1, 0.5, 0.002, 100, -2.5, 3, 4, 0,
-                                                      700, 0.01, 5}));
+    EXPECT_EQ(s.prims[0].rargs,
+              (std::vector<double>{1, -1, 0.5, 0.002, 100, -2.5, 3, 4, 0, 700, 0.01, 5}));
 }
 
 TEST(Reader, QuotedStringArguments) {
@@ -80,9 +80,9 @@ TEST(Reader, AliasTakesDefinition) {
     Scene s = parseScene(
         "void brightfunc pat 2 f f.cal 0 0\n"
         "pat plastic paint 0 0 5 .5 .5 .5 0 0\n"
-        "inherit alias paint2 paint\n"    // keeps pat as modifier
-        "void alias paint3 paint\n"       // void replaces it
-        "pat alias paint4 paint3\n"       // another modifier replaces it
+        "inherit alias paint2 paint\n"  // keeps pat as modifier
+        "void alias paint3 paint\n"     // void replaces it
+        "pat alias paint4 paint3\n"     // another modifier replaces it
         "paint3 sphere s 0 0 4 0 0 0 1\n",
         "a.rad");
     ASSERT_EQ(s.prims.size(), 6u);
@@ -100,7 +100,8 @@ TEST(Reader, AliasTakesDefinition) {
 }
 
 TEST(Reader, AliasErrors) {
-    EXPECT_EQ(errorOf("void alias a nothing\n"), "t.rad:1: alias 'a': undefined reference 'nothing'");
+    EXPECT_EQ(errorOf("void alias a nothing\n"),
+              "t.rad:1: alias 'a': undefined reference 'nothing'");
     EXPECT_EQ(errorOf("void sphere s 0 0 4 0 0 0 1\nvoid alias a s\n"),
               "t.rad:2: alias 'a': cannot alias 's', a surface");
     EXPECT_EQ(errorOf("inherit sphere s 0 0 4 0 0 0 1\n"),
@@ -132,14 +133,16 @@ TEST(Reader, CommandHookInterceptsCommands) {
     std::vector<std::string> seen;
     opt.commandHook = [&](const std::string& cmd, const SourceLoc&) -> std::optional<std::string> {
         seen.push_back(cmd);
-        if (cmd.rfind("genbox", 0) == 0) return std::string("void plastic boxmat 0 0 5 1 1 1 0 0\n");
+        if (cmd.rfind("genbox", 0) == 0)
+            return std::string("void plastic boxmat 0 0 5 1 1 1 0 0\n");
         return std::nullopt;
     };
     Scene s = parseScene("!genbox m b 1 2 3\n!echo void light l 0 0 3 1 1 1\n", "h.rad", opt);
     ASSERT_EQ(s.prims.size(), 2u);
     EXPECT_EQ(s.prims[0].name, "boxmat");
     EXPECT_EQ(s.prims[1].name, "l");
-    EXPECT_EQ(seen, (std::vector<std::string>{"genbox m b 1 2 3", "echo void light l 0 0 3 1 1 1"}));
+    EXPECT_EQ(seen,
+              (std::vector<std::string>{"genbox m b 1 2 3", "echo void light l 0 0 3 1 1 1"}));
 }
 
 TEST(ReaderErrors, UnknownType) {

@@ -11,8 +11,6 @@
 // does not depend on the order of PrimType.
 #include "scene/scene_file.h"
 
-#include "util/file_write.h"
-
 #include <unistd.h>
 
 #include <cstdio>
@@ -23,6 +21,7 @@
 
 #include "scene/portable_reader.h"
 #include "scene/radiance_objects.h"
+#include "util/file_write.h"
 
 namespace rp {
 
@@ -166,7 +165,8 @@ Scene decodeScene(std::string_view payload, const std::string& what) {
     uint64_t size = after.u64("size");
     std::string_view body = payload.substr(sizeof kMagic + 12);
     if (body.size() != size)
-        d.fail("size " + std::to_string(body.size()) + " bytes, header says " + std::to_string(size));
+        d.fail("size " + std::to_string(body.size()) + " bytes, header says " +
+               std::to_string(size));
     if (size < 8) d.fail("no checksum");
     uint64_t stored = 0;
     for (int i = 0; i < 8; ++i)
@@ -245,8 +245,8 @@ constexpr int kMeshMagic = 1 * 8 + 311;
 int readMagic(PortableReader& r, bool mesh, const std::string& what) {
     int64_t objSize = r.integer(2, "the magic number") - (mesh ? kMeshMagic : kOctMagic);
     if (objSize <= 0 || objSize > 8)
-        throw InputError(SourceLoc{what, 0}, mesh ? "incompatible mesh file format"
-                                                  : "incompatible octree format");
+        throw InputError(SourceLoc{what, 0},
+                         mesh ? "incompatible mesh file format" : "incompatible octree format");
     return static_cast<int>(objSize);
 }
 

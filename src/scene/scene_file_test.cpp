@@ -148,7 +148,8 @@ TEST(SceneFile, LoadsRadianceOctreeScenes) {
     std::string rad = dir.file("room.rad", kRoom);
     std::string bin = std::string("\x01\x1f", 2) + "0" + '\0' + "0" + '\0' + "0" + '\0' + "5.5" +
                       '\0' + rad + '\0' + '\0' + std::string("\x00\x00\x00\x05\x02", 5);
-    std::string oct = dir.file("r.oct", "#?RADIANCE\noconv room.rad\nFORMAT=Radiance_octree\n\n" + bin);
+    std::string oct =
+        dir.file("r.oct", "#?RADIANCE\noconv room.rad\nFORMAT=Radiance_octree\n\n" + bin);
     Scene s = loadScene({oct});
     EXPECT_EQ(s.prims.size(), 5u);
     ASSERT_EQ(s.inputs.size(), 2u);
@@ -156,8 +157,8 @@ TEST(SceneFile, LoadsRadianceOctreeScenes) {
     EXPECT_EQ(s.inputs[1].path, oct);
     EXPECT_GT(s.inputs[0].mtime, 0);
 
-    std::string frozenBin = std::string("\x01\x1f", 2) + "0" + '\0' + "0" + '\0' + "0" + '\0' +
-                            "1" + '\0' + '\0';
+    std::string frozenBin =
+        std::string("\x01\x1f", 2) + "0" + '\0' + "0" + '\0' + "0" + '\0' + "1" + '\0' + '\0';
     std::string frozen =
         dir.file("f.oct", "#?RADIANCE\noconv -f x.rad\nFORMAT=Radiance_octree\n\n" + frozenBin);
     try {
@@ -165,8 +166,7 @@ TEST(SceneFile, LoadsRadianceOctreeScenes) {
         FAIL();
     } catch (const InputError& e) {
         // Frozen: the objects would follow, here nothing does.
-        EXPECT_EQ(std::string(e.what()),
-                  frozen + ": truncated octree (ends inside object count)");
+        EXPECT_EQ(std::string(e.what()), frozen + ": truncated octree (ends inside object count)");
     }
     std::string pic = dir.file("p.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n");
     EXPECT_THROW(loadScene({pic}), InputError);

@@ -90,7 +90,8 @@ std::string findPlacedFile(const Primitive& p, const std::vector<std::string>& d
     const std::string header = std::string(primTypeName(p.type)) + " '" + p.name + "': ";
     if (p.sargs.empty()) throw InputError(p.loc, header + "no " + what + " file");
     auto found = calc::findFile(p.sargs[0], dirs);
-    if (!found) throw InputError(p.loc, header + "cannot find " + what + " file '" + p.sargs[0] + "'");
+    if (!found)
+        throw InputError(p.loc, header + "cannot find " + what + " file '" + p.sargs[0] + "'");
     return *found;
 }
 
@@ -171,7 +172,8 @@ private:
         loaded_[key] = index;
         if (!mesh) {
             loading_.push_back(found);
-            placeAll(scene_.objects[size_t(index)].firstPrim, scene_.objects[size_t(index)].endPrim);
+            placeAll(scene_.objects[size_t(index)].firstPrim,
+                     scene_.objects[size_t(index)].endPrim);
             loading_.pop_back();
         }
         return index;
@@ -184,8 +186,9 @@ private:
         std::string_view rest;
         std::string format = splitHeader(bytes, header, rest) ? header.format() : "";
         if (format != kSceneFileFormat && format != kRadianceOctreeFormat)
-            throw InputError(SourceLoc{path, 0}, "not an octree" +
-                                                     (format.empty() ? std::string() : " (FORMAT=" + format + ")"));
+            throw InputError(
+                SourceLoc{path, 0},
+                "not an octree" + (format.empty() ? std::string() : " (FORMAT=" + format + ")"));
         SceneReader reader(options_);
         loadOne(reader, path);
         return reader.take();
@@ -195,7 +198,7 @@ private:
     const std::vector<std::string>& dirs_;
     const LoadOptions& options_;
     std::unordered_map<std::string, int32_t> loaded_;  // kind + path -> object
-    std::vector<std::string> loading_;                // octrees whose contents are being placed
+    std::vector<std::string> loading_;                 // octrees whose contents are being placed
 };
 
 }  // namespace

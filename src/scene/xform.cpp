@@ -88,9 +88,9 @@ bool isTransformOption(const std::string& a) {
 }
 
 Transform parseTransform(const std::vector<std::string>& args, size_t first, const SourceLoc& loc) {
-    Transform result;       // groups already closed by a later -i
-    Transform group;        // options since the last -i
-    long repeat = 1;        // how often `group` applies
+    Transform result;  // groups already closed by a later -i
+    Transform group;   // options since the last -i
+    long repeat = 1;   // how often `group` applies
     auto closeGroup = [&] {
         for (long k = 0; k < repeat; ++k) result = result.then(group);
         group = Transform();

@@ -16,7 +16,8 @@ namespace rp {
 // An affine transform p' = M p (column vectors). scale is the uniform scale factor that
 // RADIANCE keeps beside the matrix (XF.sca): distances and radii multiply by it.
 struct Transform {
-    std::array<std::array<double, 4>, 4> m{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+    std::array<std::array<double, 4>, 4> m{
+        {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
     double scale = 1.0;
 
     static Transform identity() { return {}; }

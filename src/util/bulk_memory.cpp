@@ -32,8 +32,8 @@ void* allocateHugePages(size_t bytes) {
     const size_t size = roundToHugePages(bytes);
 #if defined(__linux__)
     // Map one huge page more than needed and unmap the unaligned ends.
-    void* m = ::mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE,
-                     MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    void* m = ::mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS,
+                     -1, 0);
     if (m == MAP_FAILED) throw std::bad_alloc();
     const uintptr_t raw = reinterpret_cast<uintptr_t>(m);
     const uintptr_t begin = (raw + kHugePage - 1) & ~(kHugePage - 1);
@@ -42,7 +42,7 @@ void* allocateHugePages(size_t bytes) {
     if (tail > 0) ::munmap(reinterpret_cast<void*>(begin + size), tail);
     void* p = reinterpret_cast<void*>(begin);
 #else
-    void* p = ::operator new(size, std::align_val_t{kHugePage});
+    void* p = ::operator new (size, std::align_val_t{kHugePage});
 #endif
     adviseHugePages(p, size);
     return p;
@@ -53,7 +53,7 @@ void freeHugePages(void* p, size_t bytes) {
     ::munmap(p, roundToHugePages(bytes));
 #else
     (void)bytes;
-    ::operator delete(p, std::align_val_t{kHugePage});
+    ::operator delete (p, std::align_val_t{kHugePage});
 #endif
 }
 

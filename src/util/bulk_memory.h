@@ -56,7 +56,9 @@ struct BulkAllocator {
             ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
     }
     template <class U>
-    bool operator==(const BulkAllocator<U>&) const { return true; }
+    bool operator==(const BulkAllocator<U>&) const {
+        return true;
+    }
 };
 template <class T>
 using BulkVector = std::vector<T, BulkAllocator<T>>;

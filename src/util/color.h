@@ -20,9 +20,24 @@ struct Color {
     constexpr Color operator*(const Color& o) const { return {r * o.r, g * o.g, b * o.b}; }
     constexpr Color operator*(double s) const { return {r * s, g * s, b * s}; }
     constexpr Color operator/(double s) const { return {r / s, g / s, b / s}; }
-    constexpr Color& operator+=(const Color& o) { r += o.r; g += o.g; b += o.b; return *this; }
-    constexpr Color& operator*=(const Color& o) { r *= o.r; g *= o.g; b *= o.b; return *this; }
-    constexpr Color& operator*=(double s) { r *= s; g *= s; b *= s; return *this; }
+    constexpr Color& operator+=(const Color& o) {
+        r += o.r;
+        g += o.g;
+        b += o.b;
+        return *this;
+    }
+    constexpr Color& operator*=(const Color& o) {
+        r *= o.r;
+        g *= o.g;
+        b *= o.b;
+        return *this;
+    }
+    constexpr Color& operator*=(double s) {
+        r *= s;
+        g *= s;
+        b *= s;
+        return *this;
+    }
     constexpr bool operator==(const Color&) const = default;
 
     constexpr bool isBlack() const { return r <= 0 && g <= 0 && b <= 0; }

@@ -28,8 +28,8 @@ TEST(DirCode, RoundTripWithinRadiancesAccuracy) {
 TEST(DirCode, AxesAndZero) {
     EXPECT_EQ(encodeDirection({0, 0, 0}), 0);
     EXPECT_EQ(decodeDirection(0), (std::array<double, 3>{0, 0, 0}));
-    for (const std::array<double, 3>& v : {std::array<double, 3>{1, 0, 0}, {0, -1, 0}, {0, 0, 1},
-                                           {0, 0, -1}}) {
+    for (const std::array<double, 3>& v :
+         {std::array<double, 3>{1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}) {
         const auto d = decodeDirection(encodeDirection(v));
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(d[size_t(k)], v[size_t(k)], 1e-12);
     }

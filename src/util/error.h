@@ -40,5 +40,4 @@ InputError notSupportedYet(const SourceLoc& loc, const std::string& feature);
 }  // namespace rp
 
 // Programmer errors (violated invariants), distinct from bad input. Always on.
-#define RP_CHECK(cond) \
-    ((cond) ? (void)0 : ::rp::checkFailed(#cond, __FILE__, __LINE__))
+#define RP_CHECK(cond) ((cond) ? (void)0 : ::rp::checkFailed(#cond, __FILE__, __LINE__))

@@ -34,11 +34,11 @@ TEST(FastFrexp, MatchesStdFrexpBitForBit) {
             expectSameAsStd(x);
             expectSameAsStd(-x);
         }
-    for (double x : {0.0, -0.0, std::numeric_limits<double>::min(),
-                     std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::max(),
-                     std::numeric_limits<double>::infinity(),
-                     -std::numeric_limits<double>::infinity(),
-                     std::numeric_limits<double>::quiet_NaN(), 0.5, 1.0, 3e-32, 1e32})
+    for (double x :
+         {0.0, -0.0, std::numeric_limits<double>::min(), std::numeric_limits<double>::denorm_min(),
+          std::numeric_limits<double>::max(), std::numeric_limits<double>::infinity(),
+          -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), 0.5,
+          1.0, 3e-32, 1e32})
         expectSameAsStd(x);
 }
 

@@ -18,9 +18,9 @@ uint64_t bitsOf(double x) { return std::bit_cast<uint64_t>(x); }
 TEST(FastMinMax, SameBitsAsLibm) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
-    const std::vector<double> values = {0.0, 1.0, -1.0, 2.5, -2.5, 1e-300, -1e-300, 5e-324,
-                                        1e300, -1e300, inf, -inf, nan, 0.1, 0.1 + 1e-17,
-                                        std::nextafter(1.0, 2.0)};
+    const std::vector<double> values = {
+        0.0,   1.0,    -1.0, 2.5,  -2.5, 1e-300, -1e-300,     5e-324,
+        1e300, -1e300, inf,  -inf, nan,  0.1,    0.1 + 1e-17, std::nextafter(1.0, 2.0)};
     for (double a : values)
         for (double b : values) {
             SCOPED_TRACE(testing::Message() << "a=" << a << " b=" << b);

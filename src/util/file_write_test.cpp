@@ -92,7 +92,8 @@ TEST(AtomicFile, UnwritableFolderNamesTheTarget) {
         AtomicFile f("/nonexistent-folder/x.pm");
         FAIL() << "no error";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("/nonexistent-folder/x.pm"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("/nonexistent-folder/x.pm"), std::string::npos)
+            << e.what();
     }
 }
 

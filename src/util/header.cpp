@@ -76,9 +76,12 @@ std::string commandLine(int argc, const char* const* argv) {
         char quote = 0;
         for (size_t k = 0; k < a.size(); ++k) {
             const char c = a[k];
-            if (std::isspace(static_cast<unsigned char>(c))) space = true;
-            else if (k > 0 && k + 1 < a.size() && c == '"') quote = '\'';
-            else if (k > 0 && k + 1 < a.size() && c == '\'') quote = '"';
+            if (std::isspace(static_cast<unsigned char>(c)))
+                space = true;
+            else if (k > 0 && k + 1 < a.size() && c == '"')
+                quote = '\'';
+            else if (k > 0 && k + 1 < a.size() && c == '\'')
+                quote = '"';
         }
         if (space || quote) {
             if (!quote) quote = '"';

@@ -10,8 +10,8 @@ namespace rp {
 
 TEST(Header, RoundTripAndValues) {
     Header h;
-    h.lines = {"mkpmap -apg x.pm 50k scene.oct", "NumPhotons\t= 3", "FORMAT=Radiance_Global_kdT_Photon_Map",
-               "VERSION=3.1k"};
+    h.lines = {"mkpmap -apg x.pm 50k scene.oct", "NumPhotons\t= 3",
+               "FORMAT=Radiance_Global_kdT_Photon_Map", "VERSION=3.1k"};
     std::stringstream ss;
     writeHeader(ss, h);
     ss << "BINARY";
@@ -44,7 +44,8 @@ TEST(Header, TruncatedHeaderIsInputError) {
 
 TEST(Header, CommandLineQuotesAsRadiancePrintargs) {
     // RADIANCE compat (fputword): examples checked against RADIANCE 5.4's rcontrib header.
-    const char* argv[] = {"rtrace", "-ap", "my map.pm", "50", "it's", "say\"hi\"", "a'", "tab\there"};
+    const char* argv[] = {"rtrace", "-ap",       "my map.pm", "50",
+                          "it's",   "say\"hi\"", "a'",        "tab\there"};
     EXPECT_EQ(commandLine(8, argv),
               "rtrace -ap \"my map.pm\" 50 \"it's\" 'say\"hi\"' a' \"tab\there\"");
 }

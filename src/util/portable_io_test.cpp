@@ -91,9 +91,9 @@ TEST(PortableIo, PutFltFastPathMatchesFrexpDefinition) {
         return s;
     };
     std::mt19937_64 gen(7);
-    std::vector<double> xs = {0.0, -0.0, 1.0, -1.0, 0.5, 5.5, 1e-300, 4.9e-324, -2.2e-308,
-                              1e300, HUGE_VAL, -HUGE_VAL, std::nan(""), 0x1p127, 0x1p-128,
-                              0x1p-129, -0x1p128};
+    std::vector<double> xs = {0.0,          -0.0,     1.0,       -1.0,     0.5,      5.5,
+                              1e-300,       4.9e-324, -2.2e-308, 1e300,    HUGE_VAL, -HUGE_VAL,
+                              std::nan(""), 0x1p127,  0x1p-128,  0x1p-129, -0x1p128};
     for (int i = 0; i < 200000; ++i) {
         uint64_t bits = gen();
         double d;

@@ -11,7 +11,13 @@ namespace rp {
 // Sampling domains: separate streams so that e.g. changing the scattering code does not
 // change emission positions.
 enum class RngDomain : uint32_t {
-    Emission = 1, Scattering = 2, Roulette = 3, Ambient = 4, Pixel = 5, Sampling = 6, Test = 99
+    Emission = 1,
+    Scattering = 2,
+    Roulette = 3,
+    Ambient = 4,
+    Pixel = 5,
+    Sampling = 6,
+    Test = 99
 };
 
 // SplitMix64 finaliser (Steele, Lea & Flood 2014): a bijective 64-bit mixer.

@@ -9,7 +9,8 @@ namespace rp {
 TEST(Rng, StreamsAreValuesKeyedBySeedDomainIndex) {
     Rng a(7, RngDomain::Emission, 42), b(7, RngDomain::Emission, 42);
     for (int i = 0; i < 100; ++i) EXPECT_EQ(a.next(), b.next());
-    Rng c(7, RngDomain::Scattering, 42), d(7, RngDomain::Emission, 43), e(8, RngDomain::Emission, 42);
+    Rng c(7, RngDomain::Scattering, 42), d(7, RngDomain::Emission, 43),
+        e(8, RngDomain::Emission, 42);
     Rng f(7, RngDomain::Emission, 42);
     uint64_t x = f.next();
     EXPECT_NE(x, c.next());

@@ -32,8 +32,7 @@ public:
     const std::filesystem::path& path() const { return path_; }
     // Number of entries in the folder (e.g. to check no temporary files were left).
     size_t count() const {
-        return static_cast<size_t>(
-            std::distance(std::filesystem::directory_iterator(path_), {}));
+        return static_cast<size_t>(std::distance(std::filesystem::directory_iterator(path_), {}));
     }
 
 private:

@@ -21,9 +21,24 @@ struct Vec3 {
     constexpr Vec3 operator-() const { return {-x, -y, -z}; }
     constexpr Vec3 operator*(double s) const { return {x * s, y * s, z * s}; }
     constexpr Vec3 operator/(double s) const { return {x / s, y / s, z / s}; }
-    constexpr Vec3& operator+=(const Vec3& o) { x += o.x; y += o.y; z += o.z; return *this; }
-    constexpr Vec3& operator-=(const Vec3& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
-    constexpr Vec3& operator*=(double s) { x *= s; y *= s; z *= s; return *this; }
+    constexpr Vec3& operator+=(const Vec3& o) {
+        x += o.x;
+        y += o.y;
+        z += o.z;
+        return *this;
+    }
+    constexpr Vec3& operator-=(const Vec3& o) {
+        x -= o.x;
+        y -= o.y;
+        z -= o.z;
+        return *this;
+    }
+    constexpr Vec3& operator*=(double s) {
+        x *= s;
+        y *= s;
+        z *= s;
+        return *this;
+    }
     constexpr bool operator==(const Vec3& o) const = default;
 };
 
@@ -52,8 +67,14 @@ struct Bounds3 {
     Vec3 max{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
 
     bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
-    void extend(const Vec3& p) { min = vmin(min, p); max = vmax(max, p); }
-    void extend(const Bounds3& b) { min = vmin(min, b.min); max = vmax(max, b.max); }
+    void extend(const Vec3& p) {
+        min = vmin(min, p);
+        max = vmax(max, p);
+    }
+    void extend(const Bounds3& b) {
+        min = vmin(min, b.min);
+        max = vmax(max, b.max);
+    }
     Vec3 extent() const { return max - min; }
 };
 

@@ -11,7 +11,9 @@ namespace rp {
 
 class WarningCapture {
 public:
-    WarningCapture() { setWarningSink([this](const std::string& m) { lines.push_back(m); }); }
+    WarningCapture() {
+        setWarningSink([this](const std::string& m) { lines.push_back(m); });
+    }
     ~WarningCapture() { setWarningSink(nullptr); }
     WarningCapture(const WarningCapture&) = delete;
     WarningCapture& operator=(const WarningCapture&) = delete;

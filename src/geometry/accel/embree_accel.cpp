@@ -19,9 +19,10 @@
 // hold inside instances too; t is the same parameter in both spaces (object-space
 // directions are not renormalised).
 #include "geometry/accel/embree_accel.h"
-#include "util/fast_minmax.h"
 
 #include <embree3/rtcore.h>
+
+#include "util/fast_minmax.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -286,8 +287,8 @@ struct EmbreeAccel::Impl {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     std::vector<RTCScene> objectScenes;  // per object; null for an empty one
-    bool embreeEmpty = true;  // no geometry attached: queries skip Embree
-    std::vector<DirectShape> direct;  // analytic shapes tested outside Embree
+    bool embreeEmpty = true;             // no geometry attached: queries skip Embree
+    std::vector<DirectShape> direct;     // analytic shapes tested outside Embree
 
     Impl(const ShapeSet& s, std::vector<AccelObject> o, std::vector<AccelPlacement> p)
         : shapes(s), objects(std::move(o)), placements(std::move(p)) {}
@@ -319,15 +320,17 @@ struct EmbreeAccel::Impl {
     bool addTriangles(RTCScene sc, const ShapeSet& set) {
         if (set.triangles.empty()) return false;
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), set.vertices.size()));
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                              RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                              set.vertices.size()));
         for (size_t i = 0; i < set.vertices.size(); ++i) {
             v[3 * i] = float(set.vertices[i].x);
             v[3 * i + 1] = float(set.vertices[i].y);
             v[3 * i + 2] = float(set.vertices[i].z);
         }
-        auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), set.triangles.size()));
+        auto* idx = static_cast<uint32_t*>(
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(uint32_t), set.triangles.size()));
         for (size_t i = 0; i < set.triangles.size(); ++i)
             for (int k = 0; k < 3; ++k) idx[3 * i + k] = set.triangles[i][k];
         attach(sc, g, unsigned(ShapeKind::Polygon));
@@ -338,10 +341,10 @@ struct EmbreeAccel::Impl {
     bool addMesh(RTCScene sc, const MeshData& m) {
         if (m.triangleCount() == 0) return false;
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, m.positions.data(),
-                                   0, 3 * sizeof(float), m.vertexCount());
-        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, m.triangles.data(),
-                                   0, 3 * sizeof(uint32_t), m.triangleCount());
+        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                   m.positions.data(), 0, 3 * sizeof(float), m.vertexCount());
+        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                   m.triangles.data(), 0, 3 * sizeof(uint32_t), m.triangleCount());
         attach(sc, g, unsigned(ShapeKind::Mesh));
         return true;
     }
@@ -377,7 +380,8 @@ struct EmbreeAccel::Impl {
     RTCScene buildObject(const AccelObject& o) {
         const bool mesh = o.mesh != nullptr;
         RTCScene sc = newScene(mesh ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_HIGH, mesh);
-        bool any = mesh ? addMesh(sc, *o.mesh) : addTriangles(sc, *o.shapes) | addAllUser(sc, *o.shapes);
+        bool any =
+            mesh ? addMesh(sc, *o.mesh) : addTriangles(sc, *o.shapes) | addAllUser(sc, *o.shapes);
         if (!any) {
             rtcReleaseScene(sc);
             return nullptr;
@@ -397,7 +401,8 @@ struct EmbreeAccel::Impl {
             rtcSetGeometryTimeStepCount(g, 1);
             float xfm[12];  // 3x4, column-major: the linear part's columns, then the translation
             for (int c = 0; c < 4; ++c)
-                for (int r = 0; r < 3; ++r) xfm[3 * c + r] = float(p.xf.forward.m[size_t(r)][size_t(c)]);
+                for (int r = 0; r < 3; ++r)
+                    xfm[3 * c + r] = float(p.xf.forward.m[size_t(r)][size_t(c)]);
             rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
             attach(scene, g, kFirstPlacement + unsigned(i));
         }
@@ -407,11 +412,15 @@ struct EmbreeAccel::Impl {
     bool hitDirect(const DirectShape& d, QueryContext& ctx, double tmax, double& t) const {
         const unsigned top = RTC_INVALID_GEOMETRY_ID;
         switch (d.kind) {
-        case ShapeKind::Sphere: return hitUserShape<SphereFamily>(shapes.spheres[d.index], ctx, top, tmax, t);
-        case ShapeKind::Cone: return hitUserShape<ConeFamily>(shapes.cones[d.index], ctx, top, tmax, t);
-        case ShapeKind::Ring: return hitUserShape<RingFamily>(shapes.rings[d.index], ctx, top, tmax, t);
-        case ShapeKind::Polygon:
-        case ShapeKind::Mesh: break;
+            case ShapeKind::Sphere:
+                return hitUserShape<SphereFamily>(shapes.spheres[d.index], ctx, top, tmax, t);
+            case ShapeKind::Cone:
+                return hitUserShape<ConeFamily>(shapes.cones[d.index], ctx, top, tmax, t);
+            case ShapeKind::Ring:
+                return hitUserShape<RingFamily>(shapes.rings[d.index], ctx, top, tmax, t);
+            case ShapeKind::Polygon:
+            case ShapeKind::Mesh:
+                break;
         }
         return false;
     }
@@ -495,7 +504,8 @@ bool intersectEmbree(RTCScene scene, QueryContext& ctx, const Ray& ray, AccelHit
         if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
         const auto kind = ShapeKind(rh.hit.geomID);
         const unsigned inst = rh.hit.instID[0];
-        const int32_t placement = inst == RTC_INVALID_GEOMETRY_ID ? -1 : int32_t(inst - kFirstPlacement);
+        const int32_t placement =
+            inst == RTC_INVALID_GEOMETRY_ID ? -1 : int32_t(inst - kFirstPlacement);
         const uint32_t prim = rh.hit.primID;
         double t;
         if (kind == ShapeKind::Polygon) {
@@ -535,7 +545,8 @@ EmbreeAccel::EmbreeAccel(const ShapeSet& shapes, std::vector<AccelObject> object
     m.scene = m.newScene(RTC_BUILD_QUALITY_HIGH, false);
     m.addTriangles(m.scene, shapes);
     if (shapes.spheres.size() + shapes.cones.size() + shapes.rings.size() <= kDirectShapes) {
-        for (uint32_t i = 0; i < shapes.spheres.size(); ++i) m.direct.push_back({ShapeKind::Sphere, i});
+        for (uint32_t i = 0; i < shapes.spheres.size(); ++i)
+            m.direct.push_back({ShapeKind::Sphere, i});
         for (uint32_t i = 0; i < shapes.cones.size(); ++i) m.direct.push_back({ShapeKind::Cone, i});
         for (uint32_t i = 0; i < shapes.rings.size(); ++i) m.direct.push_back({ShapeKind::Ring, i});
     } else {

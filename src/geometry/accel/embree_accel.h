@@ -45,13 +45,13 @@ struct AccelPlacement {
 
 struct AccelHit {
     ShapeKind kind = ShapeKind::Polygon;
-    uint32_t index = 0;     // into the ShapeSet array of `kind` (polygons, spheres, ...), or
-                            // the mesh triangle
-    uint32_t triangle = 0;  // for polygons: the triangle Embree reported
-    int32_t placement = -1; // the placement hit, -1 for the scene's own shapes
-    double t = 0;           // double precision: against the polygon's exact plane (or the
-                            // mesh triangle's), or the analytic quadric with the unrounded
-                            // ray; the same in object space, whose rays are not normalised
+    uint32_t index = 0;      // into the ShapeSet array of `kind` (polygons, spheres, ...), or
+                             // the mesh triangle
+    uint32_t triangle = 0;   // for polygons: the triangle Embree reported
+    int32_t placement = -1;  // the placement hit, -1 for the scene's own shapes
+    double t = 0;            // double precision: against the polygon's exact plane (or the
+                             // mesh triangle's), or the analytic quadric with the unrounded
+                             // ray; the same in object space, whose rays are not normalised
 };
 
 class EmbreeAccel {
