@@ -3,6 +3,9 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
+
+#include "util/error.h"
 
 namespace rp::calc {
 
@@ -49,6 +52,14 @@ std::optional<std::string> findFile(const std::string& name, std::span<const std
         if (readable(path)) return path;
     }
     return std::nullopt;
+}
+
+std::vector<std::string> readWordFile(const std::string& name, std::span<const std::string> dirs,
+                                      const std::string& what) {
+    const std::optional<std::string> path = findFile(name, dirs);
+    std::ifstream in(path ? *path : name);
+    if (!path || !in) throw InputError("cannot open " + what + " file \"" + name + "\"");
+    return {std::istream_iterator<std::string>(in), std::istream_iterator<std::string>()};
 }
 
 }  // namespace rp::calc

@@ -26,6 +26,13 @@ std::vector<std::string> defaultSearchPath(const std::string& projectLibDir);
 std::optional<std::string> findFile(const std::string& name, std::span<const std::string> dirs,
                                     const std::string& from = "");
 
+// RADIANCE's wordfile() on getpath(): the whitespace-separated words of file `name`,
+// found on `dirs` as findFile finds it (the modifier lists of -aI/-aE, -tI/-tE and
+// mkpmap's -apO/-apS/-aI/-aE). InputError `cannot open <what> file "<name>"` when it is
+// nowhere or unreadable.
+std::vector<std::string> readWordFile(const std::string& name, std::span<const std::string> dirs,
+                                      const std::string& what);
+
 // `path` as seen from directory `from` ("" = the current one): relative paths are joined
 // to it, absolute ones kept.
 std::string inDirectory(const std::string& from, const std::string& path);

@@ -8,11 +8,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 
+#include "calc/search_path.h"
 #include "util/bool_option.h"
 #include "util/error.h"
+#include "util/paths.h"
 
 namespace rp::pmap {
 
@@ -80,11 +80,10 @@ private:
     int i_ = 1;
 };
 
-// Whitespace-separated words of a modifier list file (RADIANCE wordfile).
-std::vector<std::string> readWordFile(const std::string& path, const std::string& what) {
-    std::ifstream in(path);
-    if (!in) throw InputError("cannot open " + what + " file " + path);
-    return {std::istream_iterator<std::string>(in), std::istream_iterator<std::string>()};
+// The words of a modifier list file, found along RAYPATH (RADIANCE mkpmap.c: wordfile on
+// getpath).
+std::vector<std::string> readWordFile(const std::string& name, const std::string& what) {
+    return calc::readWordFile(name, calc::defaultSearchPath(projectLibDir()), what);
 }
 
 void append(std::vector<std::string>& to, const std::vector<std::string>& words) {

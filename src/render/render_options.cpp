@@ -7,12 +7,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 
+#include "calc/search_path.h"
 #include "pmap/mkpmap_options.h"
 #include "util/bool_option.h"
 #include "util/error.h"
+#include "util/paths.h"
 
 namespace rp::render {
 
@@ -68,10 +68,10 @@ private:
 
 bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
-std::vector<std::string> readWordFile(const std::string& path, const std::string& what) {
-    std::ifstream in(path);
-    if (!in) throw InputError("cannot open ambient " + what + " file \"" + path + "\"");
-    return {std::istream_iterator<std::string>(in), std::istream_iterator<std::string>()};
+// The words of a modifier list file, found along RAYPATH (RADIANCE renderopts.c:
+// wordfile on getpath).
+std::vector<std::string> readWordFile(const std::string& name, const std::string& what) {
+    return calc::readWordFile(name, calc::defaultSearchPath(projectLibDir()), "ambient " + what);
 }
 
 // -ai/-ae/-aI/-aE: RADIANCE compat (renderopts.c): switching between include and exclude

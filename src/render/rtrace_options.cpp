@@ -4,10 +4,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 
+#include "calc/search_path.h"
 #include "render/command_args.h"
 #include "util/error.h"
+#include "util/paths.h"
 
 namespace rp::render {
 
@@ -105,11 +106,10 @@ void parseTraceList(const std::vector<std::string>& args, size_t& i, TraceFilter
         t.modifiers.push_back(v);
         return;
     }
-    std::ifstream in(v);
-    if (!in)
-        throw InputError(std::string("cannot open trace ") + (include ? "include" : "exclude") +
-                         " file \"" + v + "\"");
-    for (std::string w; in >> w;) t.modifiers.push_back(w);
+    // RADIANCE rtmain.c: wordfile on getpath, so the file is found along RAYPATH.
+    for (std::string& w : calc::readWordFile(v, calc::defaultSearchPath(projectLibDir()),
+                                             include ? "trace include" : "trace exclude"))
+        t.modifiers.push_back(std::move(w));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 
 #include "util/error.h"
@@ -78,6 +79,25 @@ TEST(RtraceOptions, TraceIncludeAndExcludeLists) {
               "cannot open trace include file \"" + dir.file("none") + "\"");
     EXPECT_EQ(errorOf({"rtrace", "-te"}), "missing value for option '-te'");
     EXPECT_EQ(errorOf({"rtrace", "-tx", "a", "s.oct"}), "unknown option '-tx'");
+}
+
+// RADIANCE compat (rtmain.c and renderopts.c: wordfile on getpath): a modifier list file
+// named without a folder is found along RAYPATH, as the .cal files are.
+TEST(RtraceOptions, ModifierListFilesAreFoundAlongRaypath) {
+    TempDir dir;
+    std::ofstream(dir.file("lib_mods.txt")) << "glass frame\n";
+    const char* old = std::getenv("RAYPATH");
+    const std::string saved = old ? old : "";
+    ::setenv("RAYPATH", (".:" + dir.path().string()).c_str(), 1);
+    RtraceOptions o = parseRtraceArgs({"rtrace", "-tI", "lib_mods.txt", "s.oct"});
+    EXPECT_EQ(o.trace.modifiers, (std::vector<std::string>{"glass", "frame"}));
+    o = parseRtraceArgs({"rtrace", "-aE", "lib_mods.txt", "s.oct"});
+    EXPECT_EQ(o.render.ambient.modifiers, (std::vector<std::string>{"glass", "frame"}));
+    EXPECT_FALSE(o.render.ambient.includeList);
+    if (old)
+        ::setenv("RAYPATH", saved.c_str(), 1);
+    else
+        ::unsetenv("RAYPATH");
 }
 
 TEST(RtraceOptions, DefaultsStopsParsing) {
