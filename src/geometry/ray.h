@@ -87,8 +87,8 @@ private:
 constexpr double kFloatOffsetRel = 1.0 / (1 << 19);
 constexpr double kDoubleOffsetRel = 1.0 / (double(1LL << 40));
 
-// Forced inline: GCC kept it out of line in hit completion, a call per photon bounce
-// (~1 % of mkpmap's time in the call and its AVX state transitions).
+// Forced inline: GCC kept it out of line in hit completion, a call (and its AVX state
+// transitions) per photon bounce.
 [[gnu::always_inline]] inline double maxAbs(const Vec3& p) {
     // fastMax: fabs gives no -0, so the same bits as std::fmax without its libm call.
     return fastMax(std::fabs(p.x), fastMax(std::fabs(p.y), std::fabs(p.z)));

@@ -64,8 +64,7 @@ struct EmissionPlan::Impl {
     // Walker's alias table over all partitions (Vose's construction): slot i keeps
     // partition i with probability keep, else gives its alias, so a pick is one table
     // read. Why not a search of the cdf (still used within one group): even a guided,
-    // branch-free search was a chain of dependent loads, ~3 % of mkpmap's time on the
-    // Cornell lamp's 512 partitions.
+    // branch-free search is a chain of dependent loads per photon (bench/README_profile.md).
     struct AliasEntry {
         double keep;     // probability of keeping the slot's own partition
         uint64_t alias;  // the partition taken otherwise

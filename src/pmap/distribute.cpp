@@ -229,7 +229,7 @@ Prepass runPrepass(const PhotonTracer& tracer, tbb::task_arena& arena,
     // Expected deposits per photon, for sizing the bins. Before the first prepass is
     // measured: 2 per map (a photon in a closed room deposits at about every bounce).
     // Only memory depends on it: without a guess the first prepass's bins grew by
-    // doubling, and those copies and their page faults were ~1 % of a Cornell run.
+    // doubling, copies and page faults included (bench/README_profile.md).
     std::array<double, kNumPhotonMapTypes> perPhoton{};
     for (size_t t : active) perPhoton[t] = 2;
     uint64_t passSize =

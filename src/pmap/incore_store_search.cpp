@@ -286,9 +286,9 @@ void InCoreStore::searchNode(uint32_t root, float rootOff[3], Search& s) const {
     // are within the radius, their memory is requested all at once, and only then are
     // they tested. Why: a leaf's photons are one cache miss chain (about 6 lines), and
     // tested as soon as reached the misses of a lookup's ~10 leaves came one after the
-    // other (40 % of the search's time was the first load of a leaf). The radius shrinks
-    // only when a full buffer is cut, so a leaf collected before a cut is tested against
-    // its cell distance again.
+    // other, and the first load of a leaf dominated the search (bench/README_profile.md).
+    // The radius shrinks only when a full buffer is cut, so a leaf collected before a cut
+    // is tested against its cell distance again.
     struct LeafRef {
         uint32_t node;
         float rd;  // squared distance to the leaf's cell
@@ -416,7 +416,7 @@ size_t InCoreStore::findNearestSlots(const PhotonQuery& query,
     // its radius were collected), so the guess changes the cost, never the result.
     // The first pass guesses its radius from the density of the leaf the query falls in
     // (its photons per unit area, stored at build time), on its way down to that leaf:
-    // a separate descent for the guess cost 3 % of rtrace's time on the Cornell box.
+    // a separate descent for the guess would walk the tree twice.
     s.guessK = k;
     float bound = maxDist2;
     for (;;) {

@@ -51,7 +51,7 @@ constexpr size_t kMaxVersionLength = 32;
 constexpr size_t kChunkPhotons = size_t{1} << 16;  // photons decoded per task (/ 4)
 // Photons encoded per write buffer: 442 kB, so the four buffers of a save come from the
 // heap, reused from one save to the next. At 2^16 photons each buffer was a fresh 2 MB
-// huge page, 16 MB zero-filled by the kernel per mkpmap run (~0.6 % of a Cornell run).
+// huge page, 16 MB zero-filled by the kernel per mkpmap run.
 constexpr size_t kWriteChunkPhotons = size_t{1} << 14;
 constexpr size_t kReadChunkPhotons = size_t{1} << 18;  // photons read per chunk (7 MB)
 

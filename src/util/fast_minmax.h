@@ -6,7 +6,7 @@
 //
 // Branch-free on x86-64 (SSE2 min/max plus a NaN mask): GCC compiles the plain ternary
 // form to conditional jumps, and the comparisons in maxAbs (which coordinate of a hit
-// point is largest) are random, so they mispredicted: about 3 % of mkpmap's time.
+// point is largest) are random, so they mispredicted (bench/README_profile.md).
 #pragma once
 
 #if defined(__SSE2__)

@@ -39,8 +39,8 @@ constexpr uint64_t fmix64(uint64_t z) {
 // gamma and each output is mix64 of it. Hand-written rather than <random> because std
 // engines are either slow (mt19937: 2.5 kB state per stream) or weak (minstd), and we
 // create one per work item: mkpmap makes three per photon. Why not xoshiro256+ (used
-// before): seeding its 256-bit state took six mixes per stream, ~3 % of mkpmap's
-// instructions; a SplitMix stream starts with two. A stream starts at a pseudo-random
+// before): seeding its 256-bit state took six mixes per stream, a SplitMix stream starts
+// with two (bench/README_profile.md). A stream starts at a pseudo-random
 // point of the one 2^64 Weyl sequence: two streams of L draws overlap with probability
 // about 2L / 2^64 (for a million streams of a thousand draws, ~5e-5 that any pair
 // does), and an overlap would only make two work items share some of their draws.
