@@ -1,10 +1,12 @@
 // .rad scene text: the reader with every "!command" refused (a fuzzer must never reach
-// the shell) and the argument rules.
+// the shell) and the argument rules; then, for text that reads, oconv's octree builder
+// and writer over it (as `oconv -f -`).
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "scene/reader.h"
+#include "scene/scene_load.h"
 #include "util/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -16,6 +18,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     };
     try {
         (void)rp::parseScene(text, "fuzz.rad", opt);
+        rp::OconvRequest request;
+        request.files = {"-"};
+        request.standardInput = text;
+        request.frozen = true;
+        (void)rp::oconvOutput(request, opt);
     } catch (const rp::InputError&) {
     }
     return 0;

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "scene/mesh_file.h"
+#include "scene/octree_file.h"
 #include "scene/scene_file.h"
 #include "util/error.h"
 #include "util/header.h"
@@ -31,6 +32,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             if (rp::radianceOctreeFiles(rest, "fuzz").empty())
                 (void)rp::decodeRadianceFrozenOctree(rest, "fuzz");
         });
+        guarded([&] { (void)rp::decodeRadianceOctree(rest, "fuzz"); });  // oconv -i
     } else {
         guarded([&] { (void)rp::radianceCube(rest, true, "fuzz"); });
         guarded([&] { (void)rp::decodeMeshFile(bytes, "fuzz"); });

@@ -15,6 +15,7 @@
 #include "scene/octree_file.h"
 #include "scene/scene_file.h"
 #include "scene/scene_load.h"
+#include "util/file_read.h"
 #include "util/paths.h"
 #include "util/warnings.h"
 
@@ -23,19 +24,6 @@ namespace rp {
 namespace {
 
 constexpr double kMargin = 10 * radgeom::kTiny;  // oconv.c OMARGIN
-
-// At most `limit` bytes of the file (all of it when limit is 0).
-std::string readFileBytes(const std::string& path, size_t limit = 0) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw InputError(SourceLoc{path, 0},
-                         std::string("cannot open file (") + std::strerror(errno) + ")");
-    if (limit == 0) return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    std::string s(limit, '\0');
-    in.read(s.data(), std::streamsize(limit));
-    s.resize(size_t(in.gcount()));
-    return s;
-}
 
 // getcone() makes a cone or cup whose radii are equal a cylinder or tube of 7 arguments,
 // in the object itself (so a frozen octree stores it so).

@@ -18,6 +18,7 @@
 #include "scene/arg_rules.h"
 #include "scene/lexer.h"
 #include "scene/modifier_table.h"
+#include "util/file_read.h"
 #include "util/warnings.h"
 
 namespace rp {
@@ -60,12 +61,7 @@ void SceneReader::readFile(const std::string& path) {
     } else if (!path.empty() && path[0] == '!') {
         runCommand(path.substr(1), SourceLoc{}, 1);
     } else {
-        std::ifstream in(path, std::ios::binary);
-        if (!in)
-            throw InputError(SourceLoc{path, 0},
-                             std::string("cannot open file (") + std::strerror(errno) + ")");
-        std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-        readContents(path, text);
+        readContents(path, readFileBytes(path));
         return;
     }
     // RADIANCE compat: readobj() warns "(file): empty file".

@@ -14,18 +14,12 @@
 #include "scene/mesh_data.h"
 #include "scene/mesh_file.h"
 #include "scene/scene_file.h"
+#include "util/file_read.h"
 #include "util/paths.h"
 
 namespace rp {
 
 namespace {
-std::string readWholeFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw InputError(SourceLoc{path, 0},
-                         std::string("cannot open file (") + std::strerror(errno) + ")");
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 void loadRadianceOctree(SceneReader& reader, const std::string& path, std::string_view binary) {
     std::vector<std::string> files = radianceOctreeFiles(binary, path);
@@ -50,7 +44,7 @@ std::vector<std::string> loadOne(SceneReader& reader, const std::string& path) {
         reader.readFile(path);
         return {};
     }
-    std::string bytes = readWholeFile(path);
+    std::string bytes = readFileBytes(path);
     Header header;
     std::string_view rest;
     if (!splitHeader(bytes, header, rest)) {
@@ -181,7 +175,7 @@ private:
 
     // An instance's file: our scene file or a RADIANCE octree, not scene text.
     Scene loadOctree(const std::string& path) {
-        std::string bytes = readWholeFile(path);
+        std::string bytes = readFileBytes(path);
         Header header;
         std::string_view rest;
         std::string format = splitHeader(bytes, header, rest) ? header.format() : "";
