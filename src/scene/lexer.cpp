@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 
 namespace rp {
@@ -45,8 +46,10 @@ bool parseReal(std::string_view w, double& out) {
     }
     if (i != w.size()) return false;
     std::string s(w);
-    out = std::strtod(s.c_str(), nullptr);  // overflow gives +-HUGE_VAL, as in RADIANCE
-    return true;
+    out = std::strtod(s.c_str(), nullptr);
+    // Beyond double range: RADIANCE takes +-HUGE_VAL, and an infinite coordinate then
+    // crashes its oconv; refused here, at the word's line.
+    return std::isfinite(out);
 }
 
 bool SceneLexer::skipSpace() {

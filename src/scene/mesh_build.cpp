@@ -181,7 +181,7 @@ private:
     void addToLeaf(const Vec& org, double size, Node& node, int32_t obj) {
         std::vector<int32_t> set = mesh_.tree.sets[setIndex(node)];
         double half = size * 0.5;
-        double minSize = mesh_.cubeSize / opt_.maxres - kTiny;
+        double minSize = octree::smallestCell(mesh_.cubeSize, opt_.maxres);
         if (set.size() < static_cast<size_t>(opt_.objlim) ||
             half < (set.size() < kMaxSet ? minSize : minSize / 256.0)) {
             if (set.size() >= kMaxSet)

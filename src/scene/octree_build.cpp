@@ -167,7 +167,7 @@ bool cubeHolds(const Shapes& shapes, int32_t first, int32_t end, const Cube& cub
 
 void addObjects(Octree& tree, Shapes& shapes, const std::vector<Primitive>& prims, int32_t first,
                 int32_t end, const BuildOptions& options) {
-    const double minCube = tree.cube.size / options.maxres - radgeom::kTiny;
+    const double minCube = smallestCell(tree.cube.size, options.maxres);
     shapes.setMinCubeSize(minCube);
     Builder b(tree, shapes, prims, options.objlim, minCube);
     for (int32_t i = first; i < end; ++i) b.add(tree.cube, tree.root, i);

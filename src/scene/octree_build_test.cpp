@@ -8,6 +8,7 @@
 
 #include <cctype>
 #include <climits>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -187,6 +188,28 @@ TEST(Oconv, Errors) {
 // An instance of a scene file of our older oconv (no cube of its own) gets the cube
 // RADIANCE's oconv would have made for its records: the same octree as when it places
 // RADIANCE's frozen octree of the same file.
+// A scene smaller than maxres x FTINY (here 1 mm, under -r 16384's 1.6 cm) with more
+// than objlim triangles meeting at a point: RADIANCE's split limit is negative there and
+// its oconv recurses until the stack overflows; ours stops at size / maxres.
+TEST(Oconv, TinySceneWithCoincidentObjectsEnds) {
+    std::string text = "void plastic p 0 0 5 .5 .5 .5 0 0\n";
+    for (int k = 0; k < 8; ++k) {
+        const double a = k * 0.785398, b = a + 0.5;
+        text += "p polygon t" + std::to_string(k) + " 0 0 9 0 0 0 " +
+                std::to_string(0.001 * std::cos(a)) + " " + std::to_string(0.001 * std::sin(a)) +
+                " 0 " + std::to_string(0.001 * std::cos(b)) + " " +
+                std::to_string(0.001 * std::sin(b)) + " 0.0005\n";
+    }
+    OconvRequest r;
+    r.files = {"-"};
+    r.standardInput = text;
+    r.frozen = true;
+    r.commandLine = "oconv -f -";
+    const std::string bytes = oconvOutput(r);
+    EXPECT_NE(bytes.find("FORMAT=Radiance_octree"), std::string::npos);
+    EXPECT_LT(bytes.size(), 1u << 20);
+}
+
 TEST(Oconv, InstanceOfAnOlderSceneFile) {
     TempDir dir("rp_oconv");
     setWarningSink([](const std::string&) {});

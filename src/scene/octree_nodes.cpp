@@ -1,8 +1,19 @@
 #include "scene/octree_nodes.h"
 
+#include <cmath>
+
+#include "scene/radiance_geom.h"
+#include "util/error.h"
 #include "util/portable_io.h"
 
 namespace rp::octree {
+
+double smallestCell(double cubeSize, int maxres) {
+    if (!std::isfinite(cubeSize))
+        throw InputError("the scene's bounds are not finite (coordinates beyond double range)");
+    const double radiance = cubeSize / maxres - radgeom::kTiny;
+    return radiance > 0 ? radiance : cubeSize / maxres;
+}
 
 // An explicit stack rather than recursion: each entry is a node still to write.
 void putOctreeNodes(std::string& out, const OctreeNodes& t, int objsize) {

@@ -30,6 +30,13 @@ struct OctreeNodes {
     std::vector<std::vector<int32_t>> sets;  // object (or triangle) numbers, ascending
 };
 
+// The size below which a cell is not split (unless its set is full): RADIANCE's cube
+// size / maxres - FTINY, or size / maxres where that is not positive. RADIANCE's own
+// limit is not positive for a cube under maxres x FTINY, where its oconv and obj2mesh
+// split objects meeting at a point without end until the stack overflows; elsewhere
+// nothing changes. InputError for a cube that is not finite (coordinates overflowing).
+double smallestCell(double cubeSize, int maxres);
+
 // Appends the nodes in pre-order, as RADIANCE writes them: a kind byte each, and for a
 // leaf its set size and members as `objsize`-byte integers.
 void putOctreeNodes(std::string& out, const OctreeNodes& t, int objsize);

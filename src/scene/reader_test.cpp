@@ -159,6 +159,9 @@ TEST(ReaderErrors, NonNumericReal) {
               "t.rad:5: plastic 'wall': expected a real number, got 'abc'");
     EXPECT_EQ(errorOf("void plastic wall 0 0 5 1e 0 0 0 0\n"),
               "t.rad:1: plastic 'wall': expected a real number, got '1e'");
+    // Beyond double range (RADIANCE's atof gives HUGE_VAL, and its oconv then crashes).
+    EXPECT_EQ(errorOf("void plastic p 0 0 5 .5 .5 .5 0 0\np sphere s 0 0 4 0 0 1.4e5914 1\n"),
+              "t.rad:2: sphere 's': expected a real number, got '1.4e5914'");
     EXPECT_EQ(errorOf("void plastic wall x 0 5 1 0 0 0 0\n"),
               "t.rad:1: plastic 'wall': expected the number of string arguments, got 'x'");
 }
