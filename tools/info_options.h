@@ -1,7 +1,7 @@
-// -version and -defaults for the tools that take them before anything else: one place,
-// so every tool prints the same version line (util/version.h). rtrace, rpict, rvu,
-// rcontrib and mkpmap take both at any option position in their own parsers (as
-// RADIANCE's do) and print the same line.
+// -version and -defaults for the tools whose option tables (util/options.h) do not stop
+// at them: one place, so every tool prints the same version line (util/version.h).
+// rtrace, rpict, rvu, rcontrib and mkpmap get both from their tables, at any option
+// position, and print the same line.
 #pragma once
 
 #include <iostream>
@@ -11,14 +11,17 @@
 
 namespace rp::tools {
 
-// If argv[1] is -version, prints the version line; if it is -defaults and the tool
-// passes its `defaults` (its options with their default values, or for a generator its
-// synopsis), prints them. Returns true when it printed (the tool then exits 0); false
-// leaves the argument to the tool.
+// If any argument is -version (so at any option position, whichever the tool's are:
+// generators take theirs after the positional arguments), prints the version line; if
+// argv[1] is -defaults and the tool passes its `defaults` (its options with their default
+// values, or for a generator its synopsis), prints them. Returns true when it printed (the
+// tool then exits 0); false leaves the arguments to the tool.
 inline bool printedInfo(int argc, char** argv, std::string_view defaults) {
     if (argc < 2) return false;
+    bool version = false;
+    for (int i = 1; i < argc; ++i) version = version || std::string_view(argv[i]) == "-version";
     const std::string_view a = argv[1];
-    if (a == "-version") {
+    if (version) {
         std::cout << versionLine() << '\n';
     } else if (a == "-defaults" && !defaults.empty()) {
         std::cout << defaults;

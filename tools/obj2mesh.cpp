@@ -17,6 +17,7 @@
 #include "scene/reader.h"
 #include "util/error.h"
 #include "util/header.h"
+#include "util/options.h"
 #include "util/paths.h"
 #include "util/warnings.h"
 
@@ -31,6 +32,36 @@ std::string readAll(std::istream& in) {
     std::ostringstream ss;
     ss << in.rdbuf();
     return ss.str();
+}
+
+// obj2mesh's options (util/options.h), with its messages.
+rp::OptionTable obj2meshTable(rp::MeshWriteOptions& opt, rp::SceneReader& materials, bool& quiet,
+                              bool& verbose) {
+    rp::OptionTable t;
+    t.defaultsStops = false;  // -defaults is info_options.h's, at argv[1]
+    t.messages.missing = [](const std::string& o) { return "option " + o + " needs a value"; };
+    t.messages.bad = [](const std::string& o, const std::string& v, rp::ValueKind) {
+        return "option " + o + " needs a positive integer, got '" + v + "'";
+    };
+    t.messages.unknown = [](const std::string& o) { return "unknown option: '" + o + "'"; };
+    auto positive = [](const char* name, int& v) {
+        return rp::customOption(name,
+                                [&v](rp::OptionReader& r) { v = int(r.integer(1, 1L << 30)); });
+    };
+    t.add(positive("-n", opt.objlim));
+    t.add(positive("-r", opt.maxres));
+    t.add(rp::customOption("-a",
+                           [&materials](rp::OptionReader& r) { materials.readFile(r.word()); }));
+    t.add(rp::customOption("-l", [&materials](rp::OptionReader& r) {
+        const std::string& name = r.word();
+        auto dirs = rp::calc::defaultSearchPath(rp::projectLibDir());
+        auto path = rp::calc::findFile(name, dirs);
+        if (!path) throw rp::InputError("cannot find library material: '" + name + "'");
+        materials.readFile(*path);
+    }));
+    t.add(rp::customOption("-w", [&quiet](rp::OptionReader&) { quiet = true; }));
+    t.add(rp::customOption("-v", [&verbose](rp::OptionReader&) { verbose = true; }));
+    return t;
 }
 
 }  // namespace
@@ -54,41 +85,8 @@ int main(int argc, char** argv) {
     try {
         rp::MeshWriteOptions opt;
         rp::SceneReader materials;
-        int i = 1;
-        for (; i < argc && argv[i][0] == '-' && argv[i][1] != '\0'; ++i) {
-            std::string o = argv[i];
-            auto value = [&]() -> std::string {
-                if (i + 1 >= argc) fail("option " + o + " needs a value");
-                return argv[++i];
-            };
-            auto integer = [&]() {
-                std::string v = value();
-                char* end = nullptr;
-                long n = std::strtol(v.c_str(), &end, 10);
-                if (v.empty() || *end || n < 1 || n > (1L << 30))
-                    fail("option " + o + " needs a positive integer, got '" + v + "'");
-                return static_cast<int>(n);
-            };
-            if (o == "-n") {
-                opt.objlim = integer();
-            } else if (o == "-r") {
-                opt.maxres = integer();
-            } else if (o == "-a") {
-                materials.readFile(value());
-            } else if (o == "-l") {
-                std::string name = value();
-                auto dirs = rp::calc::defaultSearchPath(rp::projectLibDir());
-                auto path = rp::calc::findFile(name, dirs);
-                if (!path) fail("cannot find library material: '" + name + "'");
-                materials.readFile(*path);
-            } else if (o == "-w") {
-                quiet = true;
-            } else if (o == "-v") {
-                verbose = true;
-            } else {
-                fail("unknown option: '" + o + "'");
-            }
-        }
+        std::vector<std::string> words(argv, argv + argc);
+        const int i = int(obj2meshTable(opt, materials, quiet, verbose).parse(words, 1).next);
         if (i < argc - 2) fail("too many file arguments");
         // RADIANCE's header names the options and the input, not the output file.
         int shown = i < argc ? i + 1 : argc;

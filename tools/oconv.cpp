@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "gen/builtin_commands.h"
 #include "info_options.h"
@@ -17,6 +18,7 @@
 #include "scene/scene_load.h"
 #include "util/error.h"
 #include "util/header.h"
+#include "util/options.h"
 #include "util/warnings.h"
 
 namespace {
@@ -26,13 +28,32 @@ namespace {
     std::exit(1);
 }
 
-// A number option's value, read as RADIANCE's atoi/atof would but refusing junk.
-double number(const std::string& opt, const char* s) {
-    char* end = nullptr;
-    const double v = std::strtod(s, &end);
-    if (end == s || *end != '\0')
-        usage(("option " + opt + " needs a number, not '" + s + "'").c_str());
-    return v;
+// oconv's options (util/options.h), with its messages; a number is read as RADIANCE's
+// atoi/atof would but refusing junk.
+rp::OptionTable oconvTable(rp::OconvRequest& request) {
+    rp::OptionTable t;
+    t.defaultsStops = false;  // -defaults is info_options.h's, at argv[1]
+    t.messages.missing = [](const std::string& opt) { return "option " + opt + " needs a value"; };
+    t.messages.bad = [](const std::string& opt, const std::string& v, rp::ValueKind) {
+        return "option " + opt + " needs a number, not '" + v + "'";
+    };
+    t.messages.unknown = [](const std::string& opt) { return "unknown option: '" + opt + "'"; };
+    t.add(rp::customOption("-f", [&request](rp::OptionReader&) { request.frozen = true; }));
+    t.add(rp::customOption(
+        "-w", [](rp::OptionReader&) { rp::setWarningSink([](const std::string&) {}); }));
+    t.add(rp::customOption("-r", [&request](rp::OptionReader& r) {
+        request.maxres = static_cast<int>(r.real());
+        if (request.maxres < 1) throw rp::InputError("-r needs a resolution of at least 1");
+    }));
+    t.add(rp::customOption(
+        "-n", [&request](rp::OptionReader& r) { request.objlim = static_cast<int>(r.real()); }));
+    t.add(rp::customOption("-b", [&request](rp::OptionReader& r) {
+        std::array<double, 4> b{};
+        for (double& v : b) v = r.real();
+        request.bounds = b;
+    }));
+    t.add(rp::valueOption("-i", request.addTo));
+    return t;
 }
 }  // namespace
 
@@ -48,34 +69,15 @@ int main(int argc, char** argv) {
     rp::OconvRequest request;
     // argv[0] as given, as RADIANCE's printargs() writes it on Unix.
     request.commandLine = rp::commandLine(argc, argv);
-    int i = 1;
-    // A lone "-" (standard input) ends the options, as in RADIANCE.
-    for (; i < argc && argv[i][0] == '-' && argv[i][1] != '\0'; ++i) {
-        std::string opt = argv[i];
-        auto value = [&]() -> const char* {
-            if (i + 1 >= argc) usage(("option " + opt + " needs a value").c_str());
-            return argv[++i];
-        };
-        if (opt == "-f") {
-            request.frozen = true;
-        } else if (opt == "-w") {
-            rp::setWarningSink([](const std::string&) {});
-        } else if (opt == "-r") {
-            request.maxres = static_cast<int>(number(opt, value()));
-            if (request.maxres < 1) usage("-r needs a resolution of at least 1");
-        } else if (opt == "-n") {
-            request.objlim = static_cast<int>(number(opt, value()));
-        } else if (opt == "-b") {
-            std::array<double, 4> b{};
-            for (double& v : b) v = number(opt, value());
-            request.bounds = b;
-        } else if (opt == "-i") {
-            request.addTo = value();
-        } else {
-            usage(("unknown option: '" + opt + "'").c_str());
-        }
+    std::vector<std::string> args(argv, argv + argc);
+    size_t first = 0;
+    try {
+        // A lone "-" (standard input) ends the options, as in RADIANCE.
+        first = oconvTable(request).parse(args, 1).next;
+    } catch (const rp::InputError& e) {
+        usage(e.what());
     }
-    for (; i < argc; ++i) request.files.push_back(argv[i]);
+    for (size_t i = first; i < args.size(); ++i) request.files.push_back(args[i]);
     if (request.files.empty() && request.addTo.empty()) usage("no scene files given");
     if (request.bounds && !request.addTo.empty()) usage("only one of '-b' or '-i'");
     try {

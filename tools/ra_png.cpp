@@ -3,18 +3,39 @@
 //   ra_png [-e exposure|+/-stops] [-g gamma] input.hdr|- output.png
 // Without -e the log-average brightness is mapped to mid grey (0.18); without -g the
 // sRGB transfer curve is used.
-#include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "image/tonemap.h"
 #include "info_options.h"
 #include "main_errors.h"
 #include "util/error.h"
+#include "util/options.h"
 
 namespace {
 constexpr const char* kUsage =
     "usage: ra_png [-e exposure|+/-stops] [-g gamma] input.hdr|- output.png";
+// ra_png's options (util/options.h); a malformed one is reported with the usage.
+rp::OptionTable raPngTable(rp::DisplayOptions& opt) {
+    rp::OptionTable t;
+    t.defaultsStops = false;  // -defaults is info_options.h's, at argv[1]
+    t.messages.unknown = [](const std::string& a) {
+        return "unknown option '" + a + "' (" + kUsage + ")";
+    };
+    t.messages.missing = t.messages.unknown;
+    t.add(rp::customOption(
+        "-e", [&opt](rp::OptionReader& r) { opt.exposure = rp::parseExposureArg(r.word()); }));
+    t.add(rp::customOption("-g", [&opt](rp::OptionReader& r) {
+        const std::string& v = r.word();
+        const std::optional<double> g = rp::parseReal(v);
+        if (!g || !(*g > 0)) throw rp::InputError("-g: bad gamma '" + v + "'");
+        opt.gamma = *g;
+    }));
+    return t;
+}
+
 }  // namespace
 
 // -defaults (tools/info_options.h).
@@ -28,26 +49,13 @@ int main(int argc, char** argv) {
     std::string files[2];
     int nfiles = 0;
     try {
-        for (int i = 1; i < argc; ++i) {
-            std::string a = argv[i];
-            if ((a == "-e" || a == "-g") && i + 1 < argc) {
-                std::string v = argv[++i];
-                if (a == "-e") {
-                    opt.exposure = rp::parseExposureArg(v);
-                } else {
-                    char* end;
-                    double g = std::strtod(v.c_str(), &end);
-                    if (v.empty() || *end || !(g > 0))
-                        throw rp::InputError("-g: bad gamma '" + v + "'");
-                    opt.gamma = g;
-                }
-            } else if (a.size() > 1 && a[0] == '-') {
-                throw rp::InputError("unknown option '" + a + "' (" + kUsage + ")");
-            } else if (nfiles < 2) {
-                files[nfiles++] = a;
-            } else {
-                throw rp::InputError(kUsage);
-            }
+        // Options may stand anywhere among the two file names.
+        std::vector<std::string> args(argv, argv + argc);
+        const rp::OptionTable table = raPngTable(opt);
+        for (size_t i = table.parse(args, 1).next; i < args.size();
+             i = table.parse(args, i + 1).next) {
+            if (nfiles == 2) throw rp::InputError(kUsage);
+            files[nfiles++] = args[i];
         }
         if (nfiles != 2) throw rp::InputError(kUsage);
         rp::convertPictureToPng(files[0], files[1], opt);

@@ -17,7 +17,6 @@
 #include "geometry/scene_geometry.h"
 #include "main_errors.h"
 #include "material/mist_probe.h"
-#include "render/command_args.h"
 #include "render/photon_lighting.h"
 #include "render/rcontrib_options.h"
 #include "render/rcontrib_output.h"
@@ -25,6 +24,7 @@
 #include "render/renderer.h"
 #include "render/rtrace_tracer.h"
 #include "scene/scene_load.h"
+#include "util/command_args.h"
 #include "util/error.h"
 #include "util/header.h"
 #include "util/paths.h"
@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
     };
     try {
         cluster = rp::tools::startCluster(argc, argv);
-        RcontribOptions o = parseRcontribArgs(argVector(argc, argv), &evalBinCount);
+        RcontribOptions o = parseRcontribArgs(rp::argVector(argc, argv), &evalBinCount);
         if (o.printVersion) {
             if (cluster->isRoot()) std::cout << rp::versionLine() << '\n';
             return 0;

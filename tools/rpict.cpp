@@ -19,13 +19,13 @@
 #include "geometry/scene_geometry.h"
 #include "image/view.h"
 #include "main_errors.h"
-#include "render/command_args.h"
 #include "render/photon_lighting.h"
 #include "render/renderer.h"
 #include "render/rpict_options.h"
 #include "render/rpict_run.h"
 #include "render/rpict_tracer.h"
 #include "scene/scene_load.h"
+#include "util/command_args.h"
 #include "util/error.h"
 #include "util/header.h"
 #include "util/paths.h"
@@ -37,7 +37,7 @@ namespace {
 using namespace rp::render;
 
 int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp::Cluster& cluster) {
-    std::vector<std::string> args = argVector(argc, argv);
+    std::vector<std::string> args = rp::argVector(argc, argv);
     args.erase(args.begin());
     RpictCommand cmd = parseRpictCommand(args);
     const RpictOptions& o = cmd.options;

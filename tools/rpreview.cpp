@@ -17,38 +17,38 @@
 #include "scene/scene_load.h"
 #include "util/error.h"
 #include "util/header.h"
+#include "util/options.h"
 
 namespace {
 
-int positiveInt(const char* s, const char* opt) {
-    char* end;
-    long v = std::strtol(s, &end, 10);
-    if (*end || v <= 0 || v > 100000)
-        throw rp::InputError(std::string("bad value for ") + opt + ": '" + s + "'");
-    return int(v);
+// rpreview's options (util/options.h): the view options, -x -y -o; a value option at the
+// end of the line, without its value, is an unknown option as it always was.
+rp::OptionTable rpreviewTable(rp::PreviewOptions& opt, std::string& out) {
+    rp::OptionTable t;
+    t.defaultsStops = false;  // -defaults is info_options.h's, at argv[1]
+    t.messages.missing = t.messages.unknown;
+    t.messages.bad = [](const std::string& o, const std::string& v, rp::ValueKind) {
+        return "bad value for " + o + ": '" + v + "'";
+    };
+    t.add(rp::viewOptionSpec(opt.view));
+    auto resolution = [](const char* name, int& v) {
+        return rp::customOption(name, [&v](rp::OptionReader& r) { v = int(r.integer(1, 100000)); });
+    };
+    t.add(resolution("-x", opt.xres));
+    t.add(resolution("-y", opt.yres));
+    t.add(rp::valueOption("-o", out));
+    return t;
 }
 
 int run(int argc, char** argv) {
     rp::PreviewOptions opt;
     std::string out;
     std::vector<std::string> files;
-    for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        if (int n = rp::parseViewOption(opt.view, argc - i, argv + i)) {
-            i += n - 1;
-        } else if ((a == "-x" || a == "-y" || a == "-o") && i + 1 < argc) {
-            if (a == "-x")
-                opt.xres = positiveInt(argv[++i], "-x");
-            else if (a == "-y")
-                opt.yres = positiveInt(argv[++i], "-y");
-            else
-                out = argv[++i];
-        } else if (a.size() > 1 && a[0] == '-') {
-            throw rp::InputError("unknown option '" + a + "'");
-        } else {
-            files.push_back(a);
-        }
-    }
+    // Options may stand anywhere among the scene files.
+    std::vector<std::string> args(argv, argv + argc);
+    const rp::OptionTable table = rpreviewTable(opt, out);
+    for (size_t i = table.parse(args, 1).next; i < args.size(); i = table.parse(args, i + 1).next)
+        files.push_back(args[i]);
     if (files.empty())
         throw rp::InputError(
             "usage: rpreview [view options] [-x res] [-y res] [-o out.hdr] scene ...");

@@ -11,12 +11,12 @@
 #include "gen/builtin_commands.h"
 #include "geometry/scene_geometry.h"
 #include "main_errors.h"
-#include "render/command_args.h"
 #include "render/rpict.h"
 #include "rvu/rvu_options.h"
 #include "rvu/session.h"
 #include "rvu/web_display.h"
 #include "scene/scene_load.h"
+#include "util/command_args.h"
 #include "util/error.h"
 #include "util/header.h"
 #include "util/paths.h"
@@ -30,7 +30,7 @@ std::atomic<bool> stopRequested{false};
 void onSignal(int) { stopRequested = true; }
 
 int run(int argc, char** argv) {
-    std::vector<std::string> args = rp::render::argVector(argc, argv);
+    std::vector<std::string> args = rp::argVector(argc, argv);
     args.erase(args.begin());
     rp::rvu::RvuCommand cmd = rp::rvu::parseRvuCommand(args);
     if (cmd.printVersion) {

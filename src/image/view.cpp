@@ -153,6 +153,22 @@ bool veq(const Vec3& a, const Vec3& b) { return feq(a.x, b.x) && feq(a.y, b.y) &
 
 }  // namespace
 
+OptionSpec viewOptionSpec(View& view) {
+    auto matches = [](const std::string& w) {
+        return w.size() >= 3 && w.rfind("-v", 0) == 0 &&
+               (w[2] == 't' ||
+                (w.size() == 3 && std::string("pduhvoaslf").find(w[2]) != std::string::npos));
+    };
+    return customOption(matches, "-v", [&view](OptionReader& r) {
+        const size_t at = r.next() - 1;  // the option word itself
+        std::vector<const char*> words;
+        for (size_t k = at; k < r.args().size(); ++k) words.push_back(r.args()[k].c_str());
+        const int n = parseViewOption(view, int(words.size()), words.data());
+        if (n <= 0) throw InputError("unknown option '" + r.option() + "'");  // not reached
+        r.skipTo(at + size_t(n));
+    });
+}
+
 int parseViewOption(View& view, int argc, const char* const* argv) {
     return parseOption(view, argc, argv, true);
 }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "util/header.h"
+#include "util/options.h"
 #include "util/vec.h"
 
 namespace rp {
@@ -44,6 +45,10 @@ struct View {
 // the caller can try its own options). Missing or non-numeric values, an unknown view
 // type, and unreadable view files throw InputError.
 int parseViewOption(View& view, int argc, const char* const* argv);
+
+// The view options as one entry of a tool's option table (util/options.h): the words
+// parseViewOption takes (-vt?, -vp -vd -vu -vh -vv -vo -va -vs -vl -vf), read by it.
+OptionSpec viewOptionSpec(View& view);
 
 // Applies the view options found in `text` in order, skipping other words, like
 // RADIANCE's sscanview; `text` may be a VIEW= value ("-vtv -vp 1 2 3 ..."), a saved rvu

@@ -1,123 +1,71 @@
 // pmapdump command line: option groups that apply to the photon map file following them
 // and are reset after it (photon-map manual section 7; RADIANCE pmapdump.c main loop).
-#include <cmath>
-#include <cstdlib>
+#include <array>
 
 #include "pmap/dump.h"
-#include "pmap/mkpmap_options.h"
+#include "util/command_args.h"
 #include "util/error.h"
+#include "util/options.h"
 
 namespace rp::pmap {
 namespace {
 
 // RADIANCE compat: setBool() in pmapdump.c: a bare switch toggles, y/t/+/1 set, n/f/-/0
-// clear. Unlike RADIANCE we also reject trailing characters ("-a+x").
-bool setBool(const std::string& opt, bool& var) {
-    if (opt.size() == 2) {
-        var = !var;
-        return true;
-    }
-    if (opt.size() != 3) return false;
-    switch (opt[2]) {
-        case 'y':
-        case 'Y':
-        case 't':
-        case 'T':
-        case '+':
-        case '1':
-            var = true;
-            return true;
-        case 'n':
-        case 'N':
-        case 'f':
-        case 'F':
-        case '-':
-        case '0':
-            var = false;
-            return true;
-        default:
-            return false;
-    }
+// clear (boolSuffix). Unlike RADIANCE we also reject trailing characters ("-a+x").
+OptionSpec dumpFlag(const std::string& name, bool& var) {
+    return customOption(prefix(name), name, [&var](OptionReader& r) {
+        try {
+            var = boolSuffix(r.option(), 2, var);
+        } catch (const InputError&) {
+            throw InputError("invalid option syntax at " + r.option());
+        }
+    });
 }
 
-std::optional<double> parseReal(const std::string& s) {
-    if (s.empty()) return std::nullopt;
-    char* end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if (*end != '\0' || !std::isfinite(v)) return std::nullopt;
-    return v;
+// The value after -n/-r/-c, or "option -n needs a count".
+const std::string& value(OptionReader& r, const char* what) {
+    if (!r.hasNext()) throw InputError("option " + r.option() + " needs " + what);
+    return r.word();
 }
 
-class ArgReader {
-public:
-    ArgReader(int argc, const char* const* argv) : argc_(argc), argv_(argv) {}
-    bool done() const { return i_ >= argc_; }
-    std::string next() { return argv_[i_++]; }
-    std::string value(const std::string& opt, const char* what) {
-        if (done()) throw InputError("option " + opt + " needs " + what);
-        return next();
-    }
-
-private:
-    int argc_;
-    const char* const* argv_;
-    int i_ = 1;
-};
-
-void parseOption(const std::string& opt, ArgReader& args, DumpOptions& o) {
-    const char letter = opt[1];
-    const bool bare = opt.size() == 2;
-    auto badSyntax = [&] { return InputError("invalid option syntax at " + opt); };
-    switch (letter) {
-        case 'a':
-            if (!setBool(opt, o.ascii)) throw badSyntax();
-            return;
-        case 'P':
-            if (!setBool(opt, o.ply)) throw badSyntax();
-            return;
-        case 'f':
-            if (!setBool(opt, o.fluxColour)) throw badSyntax();
-            return;
-        case 'n': {
-            if (!bare) break;
-            const std::string v = args.value(opt, "a count");
-            const auto n = parsePhotonCount(v);
-            if (!n)
-                throw InputError("invalid number of points/spheres '" + v +
-                                 "' for -n (expected a positive count, e.g. 5000, 10k, 1M)");
-            o.num = *n;
-            return;
+// The options of one group, bound to `o` (the group of the next map file).
+OptionTable dumpTable(DumpOptions& o) {
+    OptionTable t;
+    t.messages.unknown = [](const std::string& opt) { return "unknown option " + opt; };
+    t.defaultsStops = false;  // -defaults is tools/info_options.h's, at argv[1] only
+    t.add(dumpFlag("-a", o.ascii));
+    t.add(dumpFlag("-P", o.ply));
+    t.add(dumpFlag("-f", o.fluxColour));
+    t.add(customOption("-n", [&o](OptionReader& r) {
+        const std::string& v = value(r, "a count");
+        const auto n = parseCount(v);
+        if (!n)
+            throw InputError("invalid number of points/spheres '" + v +
+                             "' for -n (expected a positive count, e.g. 5000, 10k, 1M)");
+        o.num = *n;
+    }));
+    t.add(customOption("-r", [&o](OptionReader& r) {
+        const std::string& v = value(r, "a radius scale");
+        const auto x = parseReal(v);
+        if (!x || *x <= 0)
+            throw InputError("invalid radius scale '" + v + "' for -r (must be > 0)");
+        o.radScale = *x;
+    }));
+    t.add(customOption("-c", [&o](OptionReader& r) {
+        std::array<float, 3> c{};
+        double sum = 0;
+        for (int i = 0; i < 3; ++i) {
+            const std::string& v = value(r, "3 colour components (r g b)");
+            const auto x = parseReal(v);
+            if (!x || *x < 0) throw InputError("invalid RGB colour component '" + v + "' for -c");
+            c[size_t(i)] = static_cast<float>(*x);
+            sum += *x;
         }
-        case 'r': {
-            if (!bare) break;
-            const std::string v = args.value(opt, "a radius scale");
-            const auto r = parseReal(v);
-            if (!r || *r <= 0)
-                throw InputError("invalid radius scale '" + v + "' for -r (must be > 0)");
-            o.radScale = *r;
-            return;
-        }
-        case 'c': {
-            if (!bare) break;
-            std::array<float, 3> c{};
-            double sum = 0;
-            for (int i = 0; i < 3; ++i) {
-                const std::string v = args.value(opt, "3 colour components (r g b)");
-                const auto x = parseReal(v);
-                if (!x || *x < 0)
-                    throw InputError("invalid RGB colour component '" + v + "' for -c");
-                c[size_t(i)] = static_cast<float>(*x);
-                sum += *x;
-            }
-            // RADIANCE treats a colour of zero intensity as "no -c given"; we reject it.
-            if (!(sum > 0)) throw InputError("invalid RGB colour for -c (all components 0)");
-            o.colour = c;
-            return;
-        }
-        default:
-            break;
-    }
-    throw InputError("unknown option " + opt);
+        // RADIANCE treats a colour of zero intensity as "no -c given"; we reject it.
+        if (!(sum > 0)) throw InputError("invalid RGB colour for -c (all components 0)");
+        o.colour = c;
+    }));
+    return t;
 }
 
 }  // namespace
@@ -126,14 +74,15 @@ std::vector<DumpRequest> parseDumpArgs(int argc, const char* const* argv) {
     std::vector<DumpRequest> requests;
     DumpOptions current;
     std::string pending;  // options seen since the last map, for the trailing-options error
-    ArgReader args(argc, argv);
-    while (!args.done()) {
-        const std::string arg = args.next();
-        if (arg.size() >= 2 && arg[0] == '-') {
-            parseOption(arg, args, current);
-            pending += pending.empty() ? arg : " " + arg;
-            continue;
-        }
+    std::vector<std::string> args = argVector(argc, argv);
+    const OptionTable table = dumpTable(current);
+    for (size_t i = 1; i < args.size();) {
+        const size_t next = table.parse(args, i).next;
+        for (; i < next; ++i)
+            if (args[i].size() >= 2 && args[i][0] == '-')
+                pending += pending.empty() ? args[i] : " " + args[i];
+        if (i >= args.size()) break;
+        const std::string& arg = args[i++];
         if (arg.empty() || arg == "-")
             throw InputError("invalid photon map file name '" + arg + "'");
         // RADIANCE compat: -c and -f are mutually exclusive (pmapdump.c checks them in

@@ -62,12 +62,11 @@ void checkRequest(const MkpmapOptions& o) {
 // the prepasses find no volume photons.
 void checkVolumeMedium(const MkpmapOptions& o, const Scene& scene) {
     if (!o.wants(PhotonMapType::Volume)) return;
-    const material::Medium global{o.mediumExtinction, o.mediumAlbedo, o.mediumEccentricity};
-    if (global.scatters()) return;
+    if (o.trace.medium.scatters()) return;
     for (const Primitive& p : scene.prims) {
         if (p.type != PrimType::Mist) continue;
         const bool ownAlbedo = p.rargs.size() >= 6;
-        if (!ownAlbedo && o.mediumAlbedo.max() > 1e-6) return;
+        if (!ownAlbedo && o.trace.medium.albedo.max() > 1e-6) return;
         if (ownAlbedo && std::max({p.rargs[3], p.rargs[4], p.rargs[5]}) > 1e-6) return;
     }
     throw InputError("volume photon map " + o.maps[size_t(PhotonMapType::Volume)]->file +
@@ -191,16 +190,8 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
     planArena.execute([&] { planHolder.emplace(geometry, std::move(sources), eo); });
     const light::EmissionPlan& plan = *planHolder;
 
-    TraceSettings ts;
+    TraceSettings& ts = o.trace;  // as parsed; which maps follows from the requests
     for (size_t t = 0; t < o.maps.size(); ++t) ts.maps[t] = o.maps[t].has_value();
-    ts.backVisible = o.backVisible;
-    ts.maxBounce = o.maxBounce;
-    ts.maxDistance = o.maxDistance;
-    ts.rois = o.rois;
-    ts.sensors = o.sensors;
-    ts.include = o.include;
-    ts.exclude = o.exclude;
-    ts.medium = material::Medium{o.mediumExtinction, o.mediumAlbedo, o.mediumEccentricity};
     // BRTDfunc's specular expressions at photon hits (pmapmat.c brdfPhotonScatter).
     material::MaterialCalc functions(scene, calc::defaultSearchPath(projectLibDir()));
     auto t0 = Clock::now();
@@ -254,7 +245,7 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
     report.runaways = dist.runaways;
     if (dist.runaways > 0)
         warn(std::to_string(dist.runaways) + " runaway photons terminated after " +
-             std::to_string(o.maxBounce) + " bounces (manual 4.3)");
+             std::to_string(o.trace.maxBounce) + " bounces (manual 4.3)");
 
     std::array<MapPhotons, kNumPhotonMapTypes> photons;
     for (size_t t = 0; t < o.maps.size(); ++t) {

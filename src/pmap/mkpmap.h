@@ -1,7 +1,7 @@
 // mkpmap's work as a library call: check the request, load the scene, find sources and
 // ports, distribute photons (distribute.h), build each photon map and save it with the
-// command line in its header. Option parsing is mkpmap_options.h; the tool's main only
-// maps errors to exit codes.
+// command line in its header; mkpmap's options struct and its parser (mkpmap_options.cpp,
+// an option table of util/options.h). The tool's main only maps errors to exit codes.
 #pragma once
 
 #include <array>
@@ -11,10 +11,57 @@
 
 #include "pmap/mkpmap_options.h"
 #include "pmap/photon.h"
+#include "pmap/trace.h"
 #include "scene/reader.h"
 #include "util/cluster.h"
 
 namespace rp::pmap {
+
+struct MkpmapOptions {
+    // Indexed by PhotonMapType; unset = not requested. As RADIANCE (mkpmap.1), a later
+    // instance of the same type replaces an earlier one.
+    std::array<std::optional<MapRequest>, kNumPhotonMapTypes> maps;
+
+    double preDistrib = 0.25;       // -apD
+    int maxPrepass = 4;             // -apM
+    double precompFraction = 0.25;  // -apP
+    int64_t seed = 0;               // -apr
+    // What the tracer reads, parsed straight into its settings (trace.h): -bv (on, as
+    // RADIANCE's backvis = 1), -lr/-apm, -ld, -api (cumulative), -aps/-apS, ambient
+    // include (-ai/-aI/-al) or exclude (-ae/-aE), mutually exclusive, and the global
+    // medium -me -ma -mg. Which maps it fills follows from `maps`.
+    TraceSettings trace;
+    std::vector<light::PortSpec> portSpecs;  // -apo[+|-|0] mod, -apO[+|-|0] file contents
+    double pdfSamples = 1000;                // -dp
+    double partitionSize = 0.01;             // -ds
+    std::string diagnosticsFile;             // -e
+    bool overwrite = false;                  // -fo
+    int nproc = 1;                           // -n
+    int reportSeconds = 0;                   // -t
+    // -aC N (a radphoton extension; RADIANCE's rtrace -aC sizes its out-of-core cache):
+    // hold about N photons in memory at most while building, all maps together (prepass
+    // deposits, collected photons, kd-tree parts). Photons beyond it go to temporary files
+    // beside the maps, whose trees are then built externally (kdtree_external.h); the
+    // files are the same as when built in memory. Precomputed (-app) and contribution
+    // (-apC) maps are always built in memory.
+    uint64_t memoryPhotons = defaultMemoryPhotons();
+    std::vector<std::string> sceneFiles;  // the octree / scene file(s), last
+    // -defaults (-help) or -version: print and exit; parsing stops there and nothing
+    // else is checked (RADIANCE mkpmap prints its defaults even without a map).
+    bool printDefaults = false, printVersion = false;
+
+    bool wants(PhotonMapType t) const { return maps[size_t(t)].has_value(); }
+};
+
+// Parses argv[1..argc-1] with mkpmap's option table (util/options.h). Throws InputError with
+// RADIANCE-like one-line messages (without the "mkpmap: " prefix, which the tool adds): unknown
+// option, missing or bad value, no photon map requested, -ai with -ae, no scene file. File lists
+// for -apO, -apS, -aI/-al and -aE are read here (whitespace separated words).
+MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv);
+
+// The -defaults listing, one option a line with the values in `o`, in RADIANCE mkpmap's
+// layout ("-apD 0.250000\t\t\t\t# predistribution factor").
+std::string formatMkpmapDefaults(const MkpmapOptions& o);
 
 struct MkpmapReport {
     std::array<uint64_t, kNumPhotonMapTypes> stored{};  // photons per saved map

@@ -1,39 +1,18 @@
 // mkpmap command-line parsing (RADIANCE mkpmap.c main, mkpmap.1). Option semantics are
 // RADIANCE's; messages are ours, one line each.
-#include "pmap/mkpmap_options.h"
-
 #include <unistd.h>
 
-#include <cerrno>
-#include <cmath>
+#include <climits>
 #include <cstdio>
-#include <cstdlib>
 
 #include "calc/search_path.h"
-#include "util/bool_option.h"
+#include "pmap/mkpmap.h"
+#include "util/command_args.h"
 #include "util/error.h"
+#include "util/options.h"
 #include "util/paths.h"
 
 namespace rp::pmap {
-
-std::optional<uint64_t> parsePhotonCount(const std::string& s) {
-    if (s.empty()) return std::nullopt;
-    char* end = nullptr;
-    errno = 0;
-    double v = std::strtod(s.c_str(), &end);
-    if (end == s.c_str() || errno != 0) return std::nullopt;
-    std::string rest(end);
-    if (rest == "k" || rest == "K")
-        v *= 1e3;
-    else if (rest == "m" || rest == "M")
-        v *= 1e6;
-    else if (rest == "g" || rest == "G")
-        v *= 1e9;
-    else if (!rest.empty())
-        return std::nullopt;
-    if (!(v >= 1) || v > 1e15) return std::nullopt;
-    return uint64_t(std::llround(v));
-}
 
 uint64_t defaultMemoryPhotons() {
     const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
@@ -42,43 +21,6 @@ uint64_t defaultMemoryPhotons() {
 }
 
 namespace {
-
-class ArgReader {
-public:
-    ArgReader(int argc, const char* const* argv) : argc_(argc), argv_(argv) {}
-    bool done() const { return i_ >= argc_; }
-    bool last() const { return i_ == argc_ - 1; }
-    std::string peek() const { return argv_[i_]; }
-    std::string next() { return argv_[i_++]; }
-
-    // The value after option `opt`.
-    std::string value(const std::string& opt) {
-        if (i_ >= argc_) throw InputError("missing value for option '" + opt + "'");
-        return argv_[i_++];
-    }
-    double real(const std::string& opt) {
-        std::string v = value(opt);
-        char* end = nullptr;
-        double d = std::strtod(v.c_str(), &end);
-        if (end == v.c_str() || *end != '\0' || !std::isfinite(d))
-            throw InputError("bad value '" + v + "' for option '" + opt + "'");
-        return d;
-    }
-    long integer(const std::string& opt) {
-        std::string v = value(opt);
-        char* end = nullptr;
-        errno = 0;
-        long n = std::strtol(v.c_str(), &end, 10);
-        if (end == v.c_str() || *end != '\0' || errno != 0)
-            throw InputError("bad value '" + v + "' for option '" + opt + "'");
-        return n;
-    }
-
-private:
-    int argc_;
-    const char* const* argv_;
-    int i_ = 1;
-};
 
 // The words of a modifier list file, found along RAYPATH (RADIANCE mkpmap.c: wordfile on
 // getpath).
@@ -90,140 +32,152 @@ void append(std::vector<std::string>& to, const std::vector<std::string>& words)
     to.insert(to.end(), words.begin(), words.end());
 }
 
-// RADIANCE mkpmap.c: the port orientation is the option's suffix, -apo[+|-|0] mod and
-// -apO[+|-|0] file (forward when none), not part of the modifier's name.
-bool isPortOption(const std::string& opt) {
-    return (opt.rfind("-apo", 0) == 0 || opt.rfind("-apO", 0) == 0) &&
-           (opt.size() == 4 ||
-            (opt.size() == 5 && std::string("+-0").find(opt[4]) != std::string::npos));
+}  // namespace
+
+namespace {
+
+// mkpmap's messages: a bad photon count says so; a range error is its own sentence.
+OptionMessages mkpmapMessages() {
+    OptionMessages m;
+    const auto bad = m.bad;
+    m.bad = [bad](const std::string& opt, const std::string& v, ValueKind kind) {
+        if (kind == ValueKind::kCount)
+            return "bad photon count '" + v + "' for option '" + opt + "'";
+        return bad(opt, v, kind);
+    };
+    m.range = [](const std::string&, const std::string& what) { return what; };
+    return m;
 }
 
-light::PortDirection portDirection(const std::string& opt) {
-    if (opt.size() == 4 || opt[4] == '+') return light::PortDirection::Forward;
-    return opt[4] == '-' ? light::PortDirection::Backward : light::PortDirection::Bidirectional;
+// -apg/-apc/-apv/-apd/-app/-apC(PD) file nphotons [bwidth]: a later one replaces an
+// earlier one of the same type, as RADIANCE's.
+OptionSpec mapOption(const std::string& name, PhotonMapType type, MkpmapOptions& o) {
+    return customOption(name, [&o, type, name](OptionReader& r) {
+        MapRequest m;
+        m.file = r.word();
+        m.target = r.count();
+        if (type == PhotonMapType::PreComp) {
+            const long b = r.integer(LONG_MIN, LONG_MAX);
+            r.require(b > 0, "bandwidth for option '" + name + "' must be > 0");
+            m.bandwidth = int(b);
+        }
+        m.primaryRays = name == "-apCPD";
+        o.maps[size_t(type)] = m;
+    });
+}
+
+bool positive(double v) { return v > 0; }
+
+void addMapOptions(OptionTable& t, MkpmapOptions& o) {
+    t.add(mapOption("-apg", PhotonMapType::Global, o));
+    t.add(mapOption("-apc", PhotonMapType::Caustic, o));
+    t.add(mapOption("-apv", PhotonMapType::Volume, o));
+    t.add(mapOption("-apd", PhotonMapType::Direct, o));
+    t.add(mapOption("-apC", PhotonMapType::Contrib, o));
+    t.add(mapOption("-apCPD", PhotonMapType::Contrib, o));
+    t.add(mapOption("-app", PhotonMapType::PreComp, o));
+    t.add(countOption("-aC", o.memoryPhotons));
+    t.add(valueOption("-apD", o.preDistrib, positive, "predistribution factor must be > 0"));
+    t.add(valueOption("-apM", o.maxPrepass, positive, "max predistribution passes must be > 0"));
+    t.add(valueOption(
+        "-apP", o.precompFraction, [](double v) { return v > 0 && v <= 1; },
+        "global photon precomputation factor must be in range ]0, 1]"));
+    t.add(customOption("-apr", [&o](OptionReader& r) { o.seed = r.integer(LONG_MIN, LONG_MAX); }));
+    t.add(customOption("-api", [&o](OptionReader& r) {
+        RegionOfInterest roi;
+        for (int k = 0; k < 3; ++k) roi.min[k] = r.real();
+        for (int k = 0; k < 3; ++k) roi.max[k] = r.real();
+        for (int k = 0; k < 3; ++k)
+            r.require(roi.min[k] < roi.max[k], "invalid region of interest (swapped min/max?)");
+        o.trace.rois.push_back(roi);
+    }));
+    for (const char* name : {"-apm", "-lr"})
+        t.add(customOption(name, [&o](OptionReader& r) {
+            o.trace.maxBounce = r.integer(LONG_MIN, LONG_MAX);
+            r.require(o.trace.maxBounce > 0, "max photon bounces must be > 0");
+        }));
+    t.add(valueOption("-ld", o.trace.maxDistance, positive, "max photon distance must be > 0"));
+}
+
+// -apo[+|-|0] mod, -apO[+|-|0] file (RADIANCE mkpmap.c): the orientation is the option's
+// suffix (forward when none), not part of the modifier's name.
+void addPortOptions(OptionTable& t, MkpmapOptions& o) {
+    auto isPort = [](const std::string& w) {
+        return (w.rfind("-apo", 0) == 0 || w.rfind("-apO", 0) == 0) &&
+               (w.size() == 4 ||
+                (w.size() == 5 && std::string("+-0").find(w[4]) != std::string::npos));
+    };
+    t.add(customOption(isPort, "-apo", [&o](OptionReader& r) {
+        const std::string& opt = r.option();
+        const light::PortDirection dir = opt.size() == 4 || opt[4] == '+'
+                                             ? light::PortDirection::Forward
+                                         : opt[4] == '-' ? light::PortDirection::Backward
+                                                         : light::PortDirection::Bidirectional;
+        std::vector<std::string> mods{r.word()};
+        if (opt[3] == 'O') mods = readWordFile(mods[0], "photon port");
+        for (std::string& m : mods) o.portSpecs.push_back({std::move(m), dir});
+    }));
+}
+
+void addModifierOptions(OptionTable& t, MkpmapOptions& o) {
+    t.add(customOption("-aps", [&o](OptionReader& r) { o.trace.sensors.push_back(r.word()); }));
+    t.add(customOption("-apS", [&o](OptionReader& r) {
+        append(o.trace.sensors, readWordFile(r.word(), "antimatter sensor"));
+    }));
+    t.add(customOption("-ai", [&o](OptionReader& r) { o.trace.include.push_back(r.word()); }));
+    for (const char* name : {"-aI", "-al"})
+        t.add(customOption(name, [&o](OptionReader& r) {
+            append(o.trace.include, readWordFile(r.word(), "ambient include"));
+        }));
+    t.add(customOption("-ae", [&o](OptionReader& r) { o.trace.exclude.push_back(r.word()); }));
+    t.add(customOption("-aE", [&o](OptionReader& r) {
+        append(o.trace.exclude, readWordFile(r.word(), "ambient exclude"));
+    }));
+}
+
+void addOtherOptions(OptionTable& t, MkpmapOptions& o) {
+    t.add(flagOption("-bv", o.trace.backVisible));
+    t.add(flagOption("-fo", o.overwrite));
+    t.add(valueOption("-dp", o.pdfSamples, positive, "PDF samples must be > 0"));
+    t.add(valueOption("-ds", o.partitionSize, positive, "source partition size ratio must be > 0"));
+    t.add(valueOption("-e", o.diagnosticsFile));
+    t.add(valueOption("-ma", o.trace.medium.albedo));
+    t.add(valueOption("-me", o.trace.medium.extinction));
+    t.add(valueOption("-mg", o.trace.medium.eccentricity));
+    t.add(customOption("-n", [&o](OptionReader& r) {
+        const long n = r.integer(LONG_MIN, LONG_MAX);
+        r.require(n > 0, "number of processes must be > 0");
+        o.nproc = int(n);
+    }));
+    t.add(customOption("-t", [&o](OptionReader& r) {
+        const long s = r.integer(LONG_MIN, LONG_MAX);
+        r.require(s >= 0, "report interval must be >= 0");
+        o.reportSeconds = int(s);
+    }));
+}
+
+OptionTable mkpmapTable(MkpmapOptions& o) {
+    OptionTable t;
+    t.messages = mkpmapMessages();
+    t.helpIsDefaults = true;
+    addMapOptions(t, o);
+    addPortOptions(t, o);
+    addModifierOptions(t, o);
+    addOtherOptions(t, o);
+    return t;
 }
 
 }  // namespace
 
 MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
     MkpmapOptions o;
-    ArgReader a(argc, argv);
-    auto mapOpt = [&](const std::string& opt, PhotonMapType type, bool bwidth) {
-        MapRequest r;
-        r.file = a.value(opt);
-        std::string n = a.value(opt);
-        auto count = parsePhotonCount(n);
-        if (!count) throw InputError("bad photon count '" + n + "' for option '" + opt + "'");
-        r.target = *count;
-        if (bwidth) {
-            long b = a.integer(opt);
-            if (b <= 0) throw InputError("bandwidth for option '" + opt + "' must be > 0");
-            r.bandwidth = int(b);
-        }
-        o.maps[size_t(type)] = r;
-    };
-    auto positive = [](double v, const char* msg) {
-        if (!(v > 0)) throw InputError(msg);
-        return v;
-    };
-
-    while (!a.done()) {
-        std::string opt = a.peek();
-        if (opt.size() < 2 || opt[0] != '-') break;  // scene files from here on
-        a.next();
-        if (opt == "-defaults" || opt == "-help" || opt == "-version") {
-            (opt == "-version" ? o.printVersion : o.printDefaults) = true;
-            return o;
-        }
-        if (opt == "-apg")
-            mapOpt(opt, PhotonMapType::Global, false);
-        else if (opt == "-apc")
-            mapOpt(opt, PhotonMapType::Caustic, false);
-        else if (opt == "-apv")
-            mapOpt(opt, PhotonMapType::Volume, false);
-        else if (opt == "-apd")
-            mapOpt(opt, PhotonMapType::Direct, false);
-        else if (opt == "-apC" || opt == "-apCPD") {
-            mapOpt(opt, PhotonMapType::Contrib, false);
-            o.maps[size_t(PhotonMapType::Contrib)]->primaryRays = opt == "-apCPD";
-        } else if (opt == "-app")
-            mapOpt(opt, PhotonMapType::PreComp, true);
-        else if (opt == "-aC") {
-            const std::string n = a.value(opt);
-            const auto count = parsePhotonCount(n);
-            if (!count) throw InputError("bad photon count '" + n + "' for option '-aC'");
-            o.memoryPhotons = *count;
-        } else if (opt == "-apD")
-            o.preDistrib = positive(a.real(opt), "predistribution factor must be > 0");
-        else if (opt == "-apM") {
-            o.maxPrepass = int(a.integer(opt));
-            if (o.maxPrepass <= 0) throw InputError("max predistribution passes must be > 0");
-        } else if (opt == "-apP") {
-            o.precompFraction = a.real(opt);
-            if (!(o.precompFraction > 0 && o.precompFraction <= 1))
-                throw InputError("global photon precomputation factor must be in range ]0, 1]");
-        } else if (opt == "-apr")
-            o.seed = a.integer(opt);
-        else if (opt == "-api") {
-            RegionOfInterest r;
-            for (int k = 0; k < 3; ++k) r.min[k] = a.real(opt);
-            for (int k = 0; k < 3; ++k) r.max[k] = a.real(opt);
-            for (int k = 0; k < 3; ++k)
-                if (r.min[k] >= r.max[k])
-                    throw InputError("invalid region of interest (swapped min/max?)");
-            o.rois.push_back(r);
-        } else if (opt == "-apm" || opt == "-lr") {
-            o.maxBounce = a.integer(opt);
-            if (o.maxBounce <= 0) throw InputError("max photon bounces must be > 0");
-        } else if (opt == "-ld")
-            o.maxDistance = positive(a.real(opt), "max photon distance must be > 0");
-        else if (isPortOption(opt)) {
-            const light::PortDirection dir = portDirection(opt);
-            std::vector<std::string> mods{a.value(opt)};
-            if (opt[3] == 'O') mods = readWordFile(mods[0], "photon port");
-            for (std::string& m : mods) o.portSpecs.push_back({std::move(m), dir});
-        } else if (opt == "-aps")
-            o.sensors.push_back(a.value(opt));
-        else if (opt == "-apS")
-            append(o.sensors, readWordFile(a.value(opt), "antimatter sensor"));
-        else if (opt == "-ai")
-            o.include.push_back(a.value(opt));
-        else if (opt == "-aI" || opt == "-al")
-            append(o.include, readWordFile(a.value(opt), "ambient include"));
-        else if (opt == "-ae")
-            o.exclude.push_back(a.value(opt));
-        else if (opt == "-aE")
-            append(o.exclude, readWordFile(a.value(opt), "ambient exclude"));
-        else if (opt.rfind("-bv", 0) == 0)
-            o.backVisible = boolSuffix(opt, 3, o.backVisible);
-        else if (opt.rfind("-fo", 0) == 0)
-            o.overwrite = boolSuffix(opt, 3, o.overwrite);
-        else if (opt == "-dp")
-            o.pdfSamples = positive(a.real(opt), "PDF samples must be > 0");
-        else if (opt == "-ds")
-            o.partitionSize = positive(a.real(opt), "source partition size ratio must be > 0");
-        else if (opt == "-e")
-            o.diagnosticsFile = a.value(opt);
-        else if (opt == "-ma" || opt == "-me") {
-            Color c;
-            for (int k = 0; k < 3; ++k) c[k] = a.real(opt);
-            (opt == "-ma" ? o.mediumAlbedo : o.mediumExtinction) = c;
-        } else if (opt == "-mg")
-            o.mediumEccentricity = a.real(opt);
-        else if (opt == "-n") {
-            long n = a.integer(opt);
-            if (n <= 0) throw InputError("number of processes must be > 0");
-            o.nproc = int(n);
-        } else if (opt == "-t") {
-            long t = a.integer(opt);
-            if (t < 0) throw InputError("report interval must be >= 0");
-            o.reportSeconds = int(t);
-        } else
-            throw InputError("unknown option '" + opt + "'");
-    }
-    while (!a.done()) o.sceneFiles.push_back(a.next());
-
-    if (!o.include.empty() && !o.exclude.empty())
+    std::vector<std::string> args = argVector(argc, argv);
+    const OptionParse p = mkpmapTable(o).parse(args, 1);
+    o.printVersion = p.stop == OptionStop::kVersion;
+    o.printDefaults = p.stop == OptionStop::kDefaults;
+    if (p.stop != OptionStop::kEnd) return o;
+    o.sceneFiles.assign(args.begin() + std::ptrdiff_t(p.next), args.end());
+    if (!o.trace.include.empty() && !o.trace.exclude.empty())
         throw InputError("ambient include (-ai/-aI) and exclude (-ae/-aE) are mutually exclusive");
     bool any = false;
     for (const auto& m : o.maps) any = any || m.has_value();
@@ -284,29 +238,29 @@ std::string formatMkpmapDefaults(const MkpmapOptions& o) {
     defaultsLine(out, mapLine(o, PhotonMapType::Contrib, "-apC"), "contribution photon map");
     defaultsLine(out, "-apD " + fixed(o.preDistrib, 6), "predistribution factor");
     defaultsLine(out, "-apM " + std::to_string(o.maxPrepass), "max predistrib passes");
-    defaultsLine(out, "-apm " + std::to_string(o.maxBounce), "limit photon bounces");
+    defaultsLine(out, "-apm " + std::to_string(o.trace.maxBounce), "limit photon bounces");
     defaultsLine(out, "-apo+ mod", "photon port modifier");
     defaultsLine(out, "-apO+ file", "photon ports from file");
     defaultsLine(out, "-apP " + fixed(o.precompFraction, 6), "precomputation factor");
     defaultsLine(out, "-apr " + std::to_string(o.seed), "random seed");
     defaultsLine(out, "-aps mod", "antimatter sensor modifier");
     defaultsLine(out, "-apS file", "antimatter sensors from file");
-    defaultsLine(out, "-bv" + sign(o.backVisible),
-                 o.backVisible ? "back face visibility on" : "back face visibility off");
+    defaultsLine(out, "-bv" + sign(o.trace.backVisible),
+                 o.trace.backVisible ? "back face visibility on" : "back face visibility off");
     defaultsLine(out, "-dp  " + fixed(o.pdfSamples, 1), "PDF samples / sr");
     defaultsLine(out, "-ds  " + fixed(o.partitionSize, 6), "source partition size ratio");
     defaultsLine(out,
                  "-e   " + (o.diagnosticsFile.empty() ? std::string("(null)") : o.diagnosticsFile),
                  "diagnostics output file");
     defaultsLine(out, "-fo" + sign(o.overwrite), o.overwrite ? "overwrite" : "do not overwrite");
-    defaultsLine(out, "-ld " + fixed(o.maxDistance, 1), "limit photon distance");
-    defaultsLine(out, "-lr " + std::to_string(o.maxBounce), "limit photon bounces");
-    defaultsLine(out, "-ma  " + colour(o.mediumAlbedo, 2), "scattering albedo");
+    defaultsLine(out, "-ld " + fixed(o.trace.maxDistance, 1), "limit photon distance");
+    defaultsLine(out, "-lr " + std::to_string(o.trace.maxBounce), "limit photon bounces");
+    defaultsLine(out, "-ma  " + colour(o.trace.medium.albedo, 2), "scattering albedo");
     char ext[96];
-    std::snprintf(ext, sizeof ext, "-me  %.2e %.2e %.2e", o.mediumExtinction[0],
-                  o.mediumExtinction[1], o.mediumExtinction[2]);
+    std::snprintf(ext, sizeof ext, "-me  %.2e %.2e %.2e", o.trace.medium.extinction[0],
+                  o.trace.medium.extinction[1], o.trace.medium.extinction[2]);
     defaultsLine(out, ext, "extinction coefficient");
-    defaultsLine(out, "-mg  " + fixed(o.mediumEccentricity, 2), "scattering eccentricity");
+    defaultsLine(out, "-mg  " + fixed(o.trace.medium.eccentricity, 2), "scattering eccentricity");
     defaultsLine(out, "-n   " + std::to_string(o.nproc), "number of parallel processes");
     defaultsLine(out, "-t   " + std::to_string(o.reportSeconds), "time between reports");
     return out;

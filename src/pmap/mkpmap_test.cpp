@@ -12,6 +12,7 @@
 #include "pmap/photon_map.h"
 #include "pmap/pmap_test_util.h"
 #include "util/error.h"
+#include "util/options.h"
 #include "util/temp_dir_for_tests.h"
 
 namespace rp::pmap {
@@ -47,16 +48,16 @@ TEST(MkpmapOptions, ParsesRadianceCommandLine) {
     EXPECT_DOUBLE_EQ(o.preDistrib, 0.5);
     EXPECT_EQ(o.maxPrepass, 6);
     EXPECT_EQ(o.seed, 3);
-    ASSERT_EQ(o.rois.size(), 1u);
-    EXPECT_EQ(o.rois[0].max.z, 3);
-    EXPECT_EQ(o.maxBounce, 100);
-    EXPECT_DOUBLE_EQ(o.maxDistance, 7.5);
+    ASSERT_EQ(o.trace.rois.size(), 1u);
+    EXPECT_EQ(o.trace.rois[0].max.z, 3);
+    EXPECT_EQ(o.trace.maxBounce, 100);
+    EXPECT_DOUBLE_EQ(o.trace.maxDistance, 7.5);
     ASSERT_EQ(o.portSpecs.size(), 1u);
     EXPECT_EQ(o.portSpecs[0].modifier, "win");
     EXPECT_EQ(o.portSpecs[0].direction, light::PortDirection::Forward);
-    EXPECT_EQ(o.sensors, std::vector<std::string>{"sens"});
-    EXPECT_EQ(o.exclude, std::vector<std::string>{"x"});
-    EXPECT_FALSE(o.backVisible);
+    EXPECT_EQ(o.trace.sensors, std::vector<std::string>{"sens"});
+    EXPECT_EQ(o.trace.exclude, std::vector<std::string>{"x"});
+    EXPECT_FALSE(o.trace.backVisible);
     EXPECT_TRUE(o.overwrite);
     EXPECT_DOUBLE_EQ(o.partitionSize, 0.02);
     EXPECT_EQ(o.nproc, 2);
@@ -97,11 +98,11 @@ TEST(MkpmapOptions, Defaults) {
     EXPECT_DOUBLE_EQ(o.preDistrib, 0.25);
     EXPECT_EQ(o.maxPrepass, 4);
     EXPECT_DOUBLE_EQ(o.partitionSize, 0.01);
-    EXPECT_TRUE(o.backVisible);  // RADIANCE mkpmap.c: backvis = 1
+    EXPECT_TRUE(o.trace.backVisible);  // RADIANCE mkpmap.c: backvis = 1
     EXPECT_FALSE(o.overwrite);
     EXPECT_EQ(o.nproc, 1);
-    EXPECT_EQ(parse({"-bv", "-apg", "g", "1", "x"}).backVisible, false);  // bare flag toggles
-    EXPECT_EQ(parse({"-apm", "9", "-apg", "g", "1", "x"}).maxBounce, 9);
+    EXPECT_EQ(parse({"-bv", "-apg", "g", "1", "x"}).trace.backVisible, false);  // bare flag toggles
+    EXPECT_EQ(parse({"-apm", "9", "-apg", "g", "1", "x"}).trace.maxBounce, 9);
 }
 
 TEST(MkpmapOptions, MemoryBudget) {
@@ -114,12 +115,12 @@ TEST(MkpmapOptions, MemoryBudget) {
 }
 
 TEST(MkpmapOptions, PhotonCounts) {
-    EXPECT_EQ(parsePhotonCount("500k"), 500000u);
-    EXPECT_EQ(parsePhotonCount("1M"), 1000000u);
-    EXPECT_EQ(parsePhotonCount("20000"), 20000u);
-    EXPECT_FALSE(parsePhotonCount("0"));
-    EXPECT_FALSE(parsePhotonCount("12x"));
-    EXPECT_FALSE(parsePhotonCount("-5"));
+    EXPECT_EQ(parseCount("500k"), 500000u);
+    EXPECT_EQ(parseCount("1M"), 1000000u);
+    EXPECT_EQ(parseCount("20000"), 20000u);
+    EXPECT_FALSE(parseCount("0"));
+    EXPECT_FALSE(parseCount("12x"));
+    EXPECT_FALSE(parseCount("-5"));
 }
 
 TEST(MkpmapOptions, Errors) {

@@ -1,7 +1,6 @@
 // rcontrib command-line parsing and -defaults (RADIANCE rcmain.c main/printdefaults).
 #include "render/rcontrib_options.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -9,30 +8,15 @@
 #include <unordered_set>
 
 #include "calc/search_path.h"
-#include "render/command_args.h"
 #include "render/rtrace_options.h"
+#include "util/command_args.h"
 #include "util/error.h"
+#include "util/options.h"
 #include "util/paths.h"
 
 namespace rp::render {
 
 namespace {
-
-const std::string& value(const std::vector<std::string>& args, size_t& i) {
-    if (i + 1 >= args.size()) throw InputError("missing value for option '" + args[i] + "'");
-    return args[++i];
-}
-
-int intValue(const std::vector<std::string>& args, size_t& i) {
-    const std::string& opt = args[i];
-    const std::string& v = value(args, i);
-    char* end = nullptr;
-    errno = 0;
-    long n = std::strtol(v.c_str(), &end, 10);
-    if (v.empty() || *end != '\0' || errno != 0 || n < -2147483647L || n > 2147483647L)
-        throw InputError("bad value '" + v + "' for option '" + opt + "'");
-    return int(n);
-}
 
 // -f[a|f|d][a|f|d|c] (rcmain.c setformat): one letter sets both formats.
 void parseFormat(const std::string& opt, RcontribOptions& o) {
@@ -46,9 +30,9 @@ void parseFormat(const std::string& opt, RcontribOptions& o) {
 
 // A number, or (RADIANCE rcmain.c: eval) an expression of what -e/-f defined so far.
 int binCount(const std::string& text, const RcontribOptions& o, BinCountEval eval) {
-    char* end = nullptr;
-    double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0') {
+    const std::optional<double> number = parseReal(text);
+    double v = number ? *number : 0;
+    if (!number) {
         if (!eval) throw InputError("bad bin count '" + text + "'");
         v = eval(o.definitions, text);
     }
@@ -121,102 +105,102 @@ RcontribOptions rcontribDefaults() {
     return o;
 }
 
-RcontribOptions parseRcontribArgs(std::vector<std::string> args, BinCountEval evalCount) {
-    RcontribOptions o = rcontribDefaults();
-    o.commandWords = args;
-    if (!o.commandWords.empty()) o.commandWords.pop_back();
+namespace {
+
+// Where each -m/-M stands: the most recent -o, -p, -b and -bn to its left.
+struct ModifierContext {
     std::unordered_set<std::string> seen;
     std::string out, params, binExpr;
     int bins = 0;
-    size_t i = 1;
-    for (; i < args.size(); ++i) {
-        expandArgAt(args, i);
-        if (i >= args.size() || args[i].size() < 2 || args[i][0] != '-') break;
-        const std::string opt = args[i];
-        if (opt == "-defaults" || opt == "-help" || opt == "-version") {
-            (opt == "-version" ? o.printVersion : o.printDefaults) = true;
-            break;
-        }
-        // rcontrib's own first: -e, -f, -o, -t, -x, -y mean other things to rtrace.
-        if (opt == "-e")
-            o.definitions.push_back({false, value(args, i)});
-        else if (opt == "-f")
-            o.definitions.push_back({true, value(args, i)});
-        else if (opt.rfind("-fo", 0) == 0)
-            o.force = boolSuffix(opt, 3, o.force);
-        else if (opt.rfind("-f", 0) == 0)
-            parseFormat(opt, o);
-        else if (opt == "-o")
-            out = value(args, i);
-        else if (opt == "-p")
-            params = value(args, i);
-        else if (opt == "-b")
-            binExpr = value(args, i);
-        else if (opt == "-bn")
-            bins = binCount(value(args, i), o, evalCount);
-        else if (opt == "-m")
-            addModifier(o, seen, value(args, i), out, params, binExpr, bins);
-        else if (opt == "-M")
-            addModifierFile(o, seen, value(args, i), out, params, binExpr, bins);
-        else if (opt == "-c") {
-            o.accumulate = intValue(args, i);
-        } else if (opt == "-x")
-            o.xres = intValue(args, i);
-        else if (opt == "-y")
-            o.yres = intValue(args, i);
-        else if (opt == "-t")
-            o.reportSeconds = intValue(args, i);
-        else if (opt.rfind("-V", 0) == 0 && opt.size() <= 3)
-            o.contributions = boolSuffix(opt, 2, o.contributions);
-        else if (opt.rfind("-r", 0) == 0 && opt.size() <= 3)
-            o.recover = boolSuffix(opt, 2, o.recover);
-        else if (opt.rfind("-h", 0) == 0 && opt.size() <= 3)
-            o.header = boolSuffix(opt, 2, o.header);
-        else if (opt.rfind("-I", 0) == 0 && opt.size() <= 3)
-            o.immediateIrradiance = boolSuffix(opt, 2, o.immediateIrradiance);
-        else if (opt.rfind("-ld", 0) == 0 && opt.size() <= 4)
-            o.limitDistance = boolSuffix(opt, 3, o.limitDistance);
-        else if (parseRenderOption(args, i, o.render))
-            --i;  // it moved past the option
-        else
-            throw InputError("command line error at '" + opt + "'");
-    }
-    o.optionCount = std::min(i, args.size());
-    // RADIANCE compat (rcmain.c override_options): no shadow threshold, no irradiance
-    // cache and no ambient super-samples; -c 0 has no flushing.
+};
+
+// rcontrib's own options, ahead of the shared ones: -e, -f, -o, -t, -x, -y mean other
+// things to rtrace. In the order of its -defaults lines (rcmain.c printdefaults) where
+// they have one.
+void addOwnOptions(OptionTable& t, RcontribOptions& o, ModifierContext& m, BinCountEval eval) {
+    t.add(valueOption("-c", o.accumulate), [&o] {
+        return formatLine("-c %-5d\t\t\t# accumulated rays per record\n", o.accumulate);
+    });
+    t.add(flagOption("-V", o.contributions, 3), [&o] {
+        return formatLine("-V%c\t\t\t\t# output %s\n", o.contributions ? '+' : '-',
+                          o.contributions ? "contributions" : "coefficients");
+    });
+    t.add(flagOption("-I", o.immediateIrradiance, 3), [&o] {
+        return std::string(o.immediateIrradiance ? "-I+\t\t\t\t# immediate irradiance on\n" : "");
+    });
+    addRayOptions(t, o.render.threads, {valueOption("-x", o.xres), valueOption("-y", o.yres)},
+                  o.xres, o.yres, o.limitDistance, o.header, o.inputFormat, o.outputFormat, 3);
+    t.add(warningsOption(o.render.warnings));
+    t.add(customOption("-e", [&o](OptionReader& r) {
+        o.definitions.push_back({false, r.word()});
+    }));
+    t.add(customOption("-f", [&o](OptionReader& r) { o.definitions.push_back({true, r.word()}); }));
+    t.add(flagOption("-fo", o.force));
+    t.add(customOption(prefix("-f"), "-f[io]",
+                       [&o](OptionReader& r) { parseFormat(r.option(), o); }));
+    t.add(valueOption("-o", m.out));
+    t.add(valueOption("-p", m.params));
+    t.add(valueOption("-b", m.binExpr));
+    t.add(customOption("-bn",
+                       [&o, &m, eval](OptionReader& r) { m.bins = binCount(r.word(), o, eval); }));
+    t.add(customOption("-m", [&o, &m](OptionReader& r) {
+        addModifier(o, m.seen, r.word(), m.out, m.params, m.binExpr, m.bins);
+    }));
+    t.add(customOption("-M", [&o, &m](OptionReader& r) {
+        addModifierFile(o, m.seen, r.word(), m.out, m.params, m.binExpr, m.bins);
+    }));
+    t.add(valueOption("-t", o.reportSeconds));
+    t.add(flagOption("-r", o.recover, 3));
+}
+
+OptionTable rcontribTable(RcontribOptions& o, ModifierContext& m, BinCountEval eval) {
+    OptionTable t;
+    t.expandArgs = true;
+    t.helpIsDefaults = true;
+    t.messages.unknown = [](const std::string& opt) {
+        return "command line error at '" + opt + "'";
+    };
+    addOwnOptions(t, o, m, eval);
+    addRenderOptions(t, o.render);
+    return t;
+}
+
+// RADIANCE compat (rcmain.c override_options): no shadow threshold, no irradiance cache
+// and no ambient super-samples; -c 0 has no flushing.
+void overrideOptions(RcontribOptions& o) {
     o.render.direct.threshold = 0;
     o.render.ambient.accuracy = 0;
     o.render.ambient.supersamples = 0;
     o.render.contributions = true;
     if (o.accumulate <= 0) o.xres = o.yres = 0;
+}
+
+}  // namespace
+
+RcontribOptions parseRcontribArgs(std::vector<std::string> args, BinCountEval evalCount) {
+    RcontribOptions o = rcontribDefaults();
+    o.commandWords = args;
+    if (!o.commandWords.empty()) o.commandWords.pop_back();
+    ModifierContext m;
+    const OptionParse p = rcontribTable(o, m, evalCount).parse(args, 1);
+    o.optionCount = p.next;
+    o.printVersion = p.stop == OptionStop::kVersion;
+    o.printDefaults = p.stop == OptionStop::kDefaults;
+    overrideOptions(o);
     if (o.printDefaults || o.printVersion) {
         o.args = std::move(args);
         return o;
     }
     if (o.modifiers.empty()) throw InputError("missing required modifier argument");
-    o.sceneFile = sceneArgument(args, i);
+    o.sceneFile = sceneArgument(args, p.next);
     o.args = std::move(args);
     return o;
 }
 
-std::string formatRcontribDefaults(const RcontribOptions& o) {
-    std::string out;
-    char line[256];
-    auto put = [&](const char* fmt, auto... a) {
-        std::snprintf(line, sizeof line, fmt, a...);
-        out += line;
-    };
-    // RADIANCE compat: rcmain.c printdefaults, lines and formats.
-    put("-c %-5d\t\t\t# accumulated rays per record\n", o.accumulate);
-    put("-V%c\t\t\t\t# output %s\n", o.contributions ? '+' : '-',
-        o.contributions ? "contributions" : "coefficients");
-    if (o.immediateIrradiance) out += "-I+\t\t\t\t# immediate irradiance on\n";
-    out += formatRayDefaults(o.render.threads, o.xres, o.yres, o.limitDistance, o.header,
-                             o.inputFormat, o.outputFormat);
-    out += o.render.warnings ? "-w+\t\t\t\t# warning messages on\n"
-                             : "-w-\t\t\t\t# warning messages off\n";
-    out += formatRenderDefaults(o.render);
-    return out;
+std::string formatRcontribDefaults(const RcontribOptions& opt) {
+    RcontribOptions copy = opt;
+    ModifierContext m;
+    return rcontribTable(copy, m, nullptr).formatDefaults();
 }
 
 }  // namespace rp::render

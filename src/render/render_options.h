@@ -1,7 +1,8 @@
 // The options rtrace, rpict (and later rcontrib and rvu) share: RADIANCE's -d (direct),
 // -s (specular), -l (limits), -a (ambient), -b, -i/-I, -u, -e, -w and -ap families, with
 // RADIANCE 5.4's defaults and spellings (doc/man/rtrace.1). Tool-specific options (rtrace's
-// -o/-f/-h/-x/-y, rpict's -x/-y/-p/-v/-o) are parsed by each tool; what is common lives here.
+// -o/-f/-h/-x/-y, rpict's -x/-y/-p/-v/-o) are added by each tool to its option table
+// (util/options.h); what is common lives here.
 #pragma once
 
 #include <tbb/global_control.h>
@@ -9,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "util/bool_option.h"  // boolSuffix, used by the rtrace/rpict parsers
 #include "util/color.h"
+#include "util/options.h"
 
 namespace rp::render {
 
@@ -99,20 +100,25 @@ struct RenderOptions {
     std::vector<std::string> contribModifiers;
 };
 
-// Consumes one common option starting at args[i] (and its values), advancing i past
-// them. Returns false, leaving i unchanged, if args[i] is not a common option so that the
-// caller can try its own. Boolean options follow RADIANCE: "-bv" toggles, "-bv+"/"-bv-"
-// set. Throws InputError (util/error.h, no location) with a one-line message for a missing or
-// non-numeric value or an out-of-range one (negative -ad, -n < 1, ...). -aE/-aI files
-// are read here (one modifier per whitespace-separated word); a missing one is an
-// InputError naming it. -ap takes the following words as bandwidths only when they are
-// integers; as RADIANCE (pmapopt.c), asking for a photon map with -ab 0 sets -ab 1.
-// Also handled: -n (threads), -e (error file), -w, and the mist options -me -ma -mg -ms.
-bool parseRenderOption(const std::vector<std::string>& args, size_t& i, RenderOptions& opt);
+// Adds the shared options to `table`, bound to `opt`, each with its line of RADIANCE's
+// `rtrace -defaults` (print_rdefaults in renderopts.c, printPmapDefaults in pmapopt.c:
+// "-dt 0.030000\t\t\t# direct threshold", same order and formats). Options the tool
+// added before keep their place (rcontrib's -e is not the error file). Boolean options
+// follow RADIANCE: "-bv" toggles, "-bv+"/"-bv-" set. Errors (InputError, no location, the
+// table's messages): a missing or non-numeric value, an out-of-range one (negative -ad,
+// -n < 1, ...). -aE/-aI files are read when parsed (one modifier per word); a missing one
+// is an InputError naming it. -ap takes the following words as bandwidths only when they
+// are integers; as RADIANCE (pmapopt.c), asking for a photon map with -ab 0 sets -ab 1.
+// -n, -e, -w and the mist options -me -ma -mg -ms are here too; -n and -w have no
+// -defaults line here, as each tool prints them in its own place (threadsOption,
+// warningsOption).
+void addRenderOptions(OptionTable& table, RenderOptions& opt);
 
-// The lines RADIANCE's `rtrace -defaults` prints for these options (print_rdefaults in
-// RADIANCE's rtmain/rpmain), e.g. "-dt 0.030000\t\t\t# direct threshold", in the same
-// order, reflecting `opt`.
+// -n (threads, >= 1) without a -defaults line, and -w with RADIANCE's line.
+OptionSpec threadsOption(int& threads);
+OptionSpec warningsOption(bool& warnings);
+
+// The -defaults lines of addRenderOptions alone, reflecting `opt`.
 std::string formatRenderDefaults(const RenderOptions& opt);
 
 // -n bounds every phase of a renderer, map loading and indexing included, not only the

@@ -7,30 +7,28 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "render/command_args.h"
+#include "util/command_args.h"
 #include "util/error.h"
 #include "util/temp_dir_for_tests.h"
 
 namespace rp::render {
 namespace {
 
-// Parses every argument of `line` as common options; fails if one is not consumed.
+// Parses every argument as common options (the shared entries of a tool's option table);
+// a word that is none of them is an unknown option.
 RenderOptions parse(std::vector<std::string> args, RenderOptions o = {}) {
-    size_t i = 0;
-    while (i < args.size()) {
-        size_t before = i;
-        EXPECT_TRUE(parseRenderOption(args, i, o)) << args[i];
-        if (i == before) break;
-    }
+    OptionTable t;
+    addRenderOptions(t, o);
+    EXPECT_EQ(t.parse(args, 0).next, args.size());
     return o;
 }
 
 std::string errorOf(std::vector<std::string> args) {
     RenderOptions o;
-    size_t i = 0;
+    OptionTable t;
+    addRenderOptions(t, o);
     try {
-        while (i < args.size() && parseRenderOption(args, i, o)) {
-        }
+        t.parse(args, 0);
     } catch (const InputError& e) {
         return e.what();
     }
@@ -119,10 +117,10 @@ TEST(RenderOptions, PhotonMaps) {
     EXPECT_EQ(o.ambient.bounces, 1);  // RADIANCE pmapopt.c: a photon map implies -ab 1
     // A following word that is not an integer is the next option (or the octree).
     std::vector<std::string> args{"-ap", "g.pm", "scene.oct"};
-    size_t i = 0;
     RenderOptions p;
-    EXPECT_TRUE(parseRenderOption(args, i, p));
-    EXPECT_EQ(i, 2u);
+    OptionTable t;
+    addRenderOptions(t, p);
+    EXPECT_EQ(t.parse(args, 0).next, 2u);
     EXPECT_NE(errorOf({"-ap", "g.pm", "0"}), "");
     EXPECT_NE(errorOf({"-ap", "g.pm", "50", "20"}), "");
     EXPECT_NE(errorOf({"-am", "0"}), "");
@@ -181,13 +179,12 @@ TEST(RenderOptions, Errors) {
     EXPECT_NE(errorOf({"-n", "0"}), "");
     EXPECT_NE(errorOf({"-dc", "2"}), "");
     // Not common options: left for the tool (which reports them as unknown).
-    std::vector<std::string> args{"-xx"};
-    size_t i = 0;
     RenderOptions o;
-    EXPECT_FALSE(parseRenderOption(args, i, o));
-    EXPECT_EQ(i, 0u);
-    args = {"-I"};
-    EXPECT_FALSE(parseRenderOption(args, i, o));
+    OptionTable t;
+    addRenderOptions(t, o);
+    EXPECT_EQ(t.find("-xx"), nullptr);
+    EXPECT_EQ(t.find("-I"), nullptr);
+    EXPECT_EQ(errorOf({"-xx"}), "unknown option '-xx'");
 }
 
 TEST(RenderOptions, DefaultsText) {

@@ -4,11 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 
-#include "render/command_args.h"
 #include "util/error.h"
 #include "util/vec.h"
 
@@ -39,113 +36,36 @@ RenderOptions rpictRenderDefaults() {
 
 namespace {
 
-const std::string& valueOf(const std::vector<std::string>& args, size_t i) {
-    if (i + 1 >= args.size()) throw InputError("missing value for " + args[i]);
-    return args[i + 1];
+// rpict's own messages, as its options have always said them.
+const OptionMessages& rpictMessages() {
+    static const OptionMessages m = [] {
+        OptionMessages r;
+        r.missing = [](const std::string& opt) { return "missing value for " + opt; };
+        r.bad = [](const std::string& opt, const std::string& v, ValueKind kind) {
+            return "bad value for " + opt + ": '" + v + "' (expected " +
+                   (kind == ValueKind::kInteger ? "an integer" : "a number") + ")";
+        };
+        r.range = [](const std::string& opt, const std::string& what) {
+            return "bad value for " + opt + ": " + what;
+        };
+        return r;
+    }();
+    return m;
 }
 
-int intValue(const std::vector<std::string>& args, size_t i) {
-    const std::string& s = valueOf(args, i);
-    char* end = nullptr;
-    errno = 0;
-    long v = std::strtol(s.c_str(), &end, 10);
-    if (s.empty() || *end || errno || v < -1000000000L || v > 1000000000L)
-        throw InputError("bad value for " + args[i] + ": '" + s + "' (expected an integer)");
-    return int(v);
+OptionSpec own(OptionSpec s) {
+    s.messages = &rpictMessages();
+    return s;
 }
 
-double realValue(const std::vector<std::string>& args, size_t i) {
-    const std::string& s = valueOf(args, i);
-    char* end = nullptr;
-    double v = std::strtod(s.c_str(), &end);
-    if (s.empty() || *end || !std::isfinite(v))
-        throw InputError("bad value for " + args[i] + ": '" + s + "' (expected a number)");
-    return v;
+OptionSpec ownInt(const std::string& name, int& v) {
+    return own(customOption(
+        name, [&v](OptionReader& r) { v = int(r.integer(-1000000000L, 1000000000L)); }));
 }
 
-// rpict's own options at args[i]; advances i past the values. False if not one of them.
-bool parseOwnOption(const std::vector<std::string>& args, size_t& i, RpictCommand& cmd) {
-    RpictOptions& o = cmd.options;
-    const std::string& a = args[i];
-    if (a == "-x" || a == "-y") {
-        int v = intValue(args, i);
-        if (v <= 0) throw InputError("bad value for " + a + ": resolution must be positive");
-        (a == "-x" ? o.xres : o.yres) = v;
-        i += 1;
-    } else if (a == "-pa") {
-        o.pixelAspect = realValue(args, i++);
-    } else if (a == "-pj") {
-        o.pixelJitter = realValue(args, i++);
-    } else if (a == "-ps") {
-        o.sampleSpacing = intValue(args, i++);
-    } else if (a == "-pt") {
-        o.sampleThreshold = realValue(args, i++);
-    } else if (a == "-pm") {
-        o.motionBlur = realValue(args, i++);
-    } else if (a == "-pd") {
-        o.apertureBlur = realValue(args, i++);
-    } else if (a == "-t") {
-        o.reportInterval = intValue(args, i++);
-    } else if (a == "-o") {
-        o.outputFile = valueOf(args, i++);
-    } else if (a == "-z") {
-        o.zFile = valueOf(args, i++);
-    } else if (a == "-S") {
-        o.sequenceStart = intValue(args, i++);
-    } else if (a == "-r" || a == "-ro") {
-        // RADIANCE compat (rpmain.c): -ro names the recover file and the output file.
-        o.recoverFile = valueOf(args, i++);
-        if (a == "-ro") o.outputFile = o.recoverFile;
-    } else if (a == "-P" || a == "-PP") {
-        throw notSupportedYet({}, "persistent processes (" + a + ")");
-    } else if (a == "-defaults" || a == "-help") {
-        cmd.printDefaults = true;
-    } else if (a == "-version") {
-        cmd.printVersion = true;
-    } else {
-        return false;
-    }
-    i += 1;
-    return true;
-}
+OptionSpec ownReal(const std::string& name, double& v) { return own(valueOption(name, v)); }
 
-}  // namespace
-
-RpictCommand parseRpictCommand(std::vector<std::string> args, const RpictOptions& defaults,
-                               const ToolOptionParser& toolOption) {
-    RpictCommand cmd;
-    cmd.options = defaults;
-    size_t i = 0;
-    while (true) {
-        // RADIANCE compat (rpmain.c): @file and $EVAR are expanded at option positions.
-        expandArgAt(args, i);
-        if (i >= args.size()) break;
-        const std::string a = args[i];
-        // RADIANCE compat (rpmain.c): the first word that is not an option ends them.
-        if (a.size() < 2 || a[0] != '-') break;
-        if (parseRenderOption(args, i, cmd.options.render)) continue;
-        // parseViewOption wants C strings (rebuilt: expansion may have changed args).
-        std::vector<const char*> cargs;
-        for (size_t k = i; k < args.size(); ++k) cargs.push_back(args[k].c_str());
-        if (int n = parseViewOption(cmd.options.view, int(cargs.size()), cargs.data())) {
-            i += size_t(n);
-            continue;
-        }
-        if (toolOption && toolOption(args, i)) continue;
-        if (parseOwnOption(args, i, cmd)) continue;
-        throw InputError("unknown option '" + a + "'");
-    }
-    for (; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a.size() > 1 && a[0] == '-')
-            throw InputError("option '" + a + "' after the scene file");
-        cmd.sceneFiles.push_back(a);
-    }
-    return cmd;
-}
-
-std::string formatRpictDefaults(const RpictOptions& opt) {
-    const View& v = opt.view;
+std::string viewDefaults(const View& v) {
     const char* typeName = "unknown";
     switch (v.type) {
         case ViewType::kPerspective:
@@ -167,7 +87,6 @@ std::string formatRpictDefaults(const RpictOptions& opt) {
             typeName = "planisphere";
             break;
     }
-    // RADIANCE compat: rpmain.c printdefaults, the same order and layout.
     std::string s;
     s += fmt::format("-vt{}\t\t\t\t# view type {}\n", char(v.type), typeName);
     s += fmt::format("-vp {:f} {:f} {:f}\t# view point\n", v.point.x, v.point.y, v.point.z);
@@ -180,19 +99,100 @@ std::string formatRpictDefaults(const RpictOptions& opt) {
     s += fmt::format("-va {:f}\t\t\t# view aft clipping plane\n", v.aft);
     s += fmt::format("-vs {:f}\t\t\t# view shift\n", v.shift);
     s += fmt::format("-vl {:f}\t\t\t# view lift\n", v.lift);
-    s += fmt::format("-x  {:<9d}\t\t\t# x resolution\n", opt.xres);
-    s += fmt::format("-y  {:<9d}\t\t\t# y resolution\n", opt.yres);
-    s += fmt::format("-pa {:f}\t\t\t# pixel aspect ratio\n", opt.pixelAspect);
-    s += fmt::format("-pj {:f}\t\t\t# pixel jitter\n", opt.pixelJitter);
-    s += fmt::format("-pm {:f}\t\t\t# pixel motion\n", opt.motionBlur);
-    s += fmt::format("-pd {:f}\t\t\t# pixel depth-of-field\n", opt.apertureBlur);
-    s += fmt::format("-ps {:<9d}\t\t\t# pixel sample\n", opt.sampleSpacing);
-    s += fmt::format("-pt {:f}\t\t\t# pixel threshold\n", opt.sampleThreshold);
-    s += fmt::format("-t  {:<9d}\t\t\t# time between reports\n", opt.reportInterval);
-    s += opt.render.warnings ? "-w+\t\t\t\t# warning messages on\n"
-                             : "-w-\t\t\t\t# warning messages off\n";
-    s += formatRenderDefaults(opt.render);
     return s;
+}
+
+std::function<std::string()> realLine(const double& v, const char* name, const char* what) {
+    return [&v, name, what] { return fmt::format("{} {:f}\t\t\t# {}\n", name, v, what); };
+}
+
+// rpict's -x -y -p? -t, in the order of its -defaults lines (rpmain.c printdefaults).
+void addPictureOptions(OptionTable& t, RpictOptions& o) {
+    for (auto [name, v] : {std::pair{"-x", &o.xres}, std::pair{"-y", &o.yres}}) {
+        t.add(own(customOption(name,
+                               [v](OptionReader& r) {
+                                   const long n = r.integer(-1000000000L, 1000000000L);
+                                   r.require(n > 0, "resolution must be positive");
+                                   *v = int(n);
+                               })),
+              [name, v] {
+                  return fmt::format("{}  {:<9d}\t\t\t# {} resolution\n", name, *v, name[1]);
+              });
+    }
+    t.add(ownReal("-pa", o.pixelAspect), realLine(o.pixelAspect, "-pa", "pixel aspect ratio"));
+    t.add(ownReal("-pj", o.pixelJitter), realLine(o.pixelJitter, "-pj", "pixel jitter"));
+    t.add(ownReal("-pm", o.motionBlur), realLine(o.motionBlur, "-pm", "pixel motion"));
+    t.add(ownReal("-pd", o.apertureBlur), realLine(o.apertureBlur, "-pd", "pixel depth-of-field"));
+    t.add(ownInt("-ps", o.sampleSpacing),
+          [&o] { return fmt::format("-ps {:<9d}\t\t\t# pixel sample\n", o.sampleSpacing); });
+    t.add(ownReal("-pt", o.sampleThreshold), realLine(o.sampleThreshold, "-pt", "pixel threshold"));
+    t.add(ownInt("-t", o.reportInterval), [&o] {
+        return fmt::format("-t  {:<9d}\t\t\t# time between reports\n", o.reportInterval);
+    });
+}
+
+// rpict's options that print no -defaults line.
+void addOutputOptions(OptionTable& t, RpictOptions& o) {
+    t.add(own(valueOption("-o", o.outputFile)));
+    t.add(own(valueOption("-z", o.zFile)));
+    t.add(ownInt("-S", o.sequenceStart));
+    t.add(own(valueOption("-r", o.recoverFile)));
+    // RADIANCE compat (rpmain.c): -ro names the recover file and the output file.
+    t.add(own(customOption("-ro", [&o](OptionReader& r) {
+        o.recoverFile = r.word();
+        o.outputFile = o.recoverFile;
+    })));
+    for (const char* name : {"-P", "-PP"})
+        t.add(customOption(name, [](OptionReader& r) {
+            throw notSupportedYet({}, "persistent processes (" + r.option() + ")");
+        }));
+}
+
+}  // namespace
+
+void addRpictOptions(OptionTable& t, RpictOptions& o,
+                     const std::function<void(OptionTable&)>& toolOptions) {
+    t.expandArgs = true;
+    t.helpIsDefaults = true;
+    // A program sharing rpict's command line (rvu) comes first: its options replace
+    // rpict's of the same name, and its -defaults lines lead.
+    if (toolOptions) toolOptions(t);
+    // RADIANCE compat (rpmain.c printdefaults): the view, the picture options, -w and the
+    // common options, in this order.
+    t.add(viewOptionSpec(o.view), [&o] { return viewDefaults(o.view); });
+    addPictureOptions(t, o);
+    t.add(warningsOption(o.render.warnings));
+    addRenderOptions(t, o.render);
+    addOutputOptions(t, o);
+}
+
+RpictCommand parseRpictCommand(std::vector<std::string> args, const RpictOptions& defaults) {
+    RpictCommand cmd;
+    cmd.options = defaults;
+    OptionTable t;
+    addRpictOptions(t, cmd.options);
+    finishRpictCommand(t, std::move(args), cmd);
+    return cmd;
+}
+
+void finishRpictCommand(const OptionTable& t, std::vector<std::string> args, RpictCommand& cmd) {
+    const OptionParse p = t.parse(args, 0);
+    cmd.printVersion = p.stop == OptionStop::kVersion;
+    cmd.printDefaults = p.stop == OptionStop::kDefaults;
+    if (p.stop != OptionStop::kEnd) return;
+    for (size_t i = p.next; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a.size() > 1 && a[0] == '-')
+            throw InputError("option '" + a + "' after the scene file");
+        cmd.sceneFiles.push_back(a);
+    }
+}
+
+std::string formatRpictDefaults(const RpictOptions& opt) {
+    RpictOptions copy = opt;
+    OptionTable t;
+    addRpictOptions(t, copy);
+    return t.formatDefaults();
 }
 
 double viewAspect(const View& v) {

@@ -10,6 +10,7 @@
 
 #include "image/view.h"
 #include "render/render_options.h"
+#include "util/options.h"
 
 namespace rp::render {
 
@@ -43,22 +44,25 @@ struct RpictCommand {
     bool printVersion = false;   // -version
 };
 
-// Parses rpict's arguments (without the program name); @file and $EVAR words at option
-// positions are expanded (command_args.h). As
-// RADIANCE's rpmain, options come first (shared render options, then view options, then
-// rpict's own) and the first word not starting with '-' starts the scene files. Throws
-// InputError for an unknown option ("unknown option '-q'"), a missing or bad value, an
-// option after the scene files, and RADIANCE features not supported yet (-P, -PP).
-// -ro file is -r file -o file, as RADIANCE's. A missing scene is not an error here (the
-// tool decides).
-// `defaults`: the options before parsing (another program's defaults, e.g. rvu's);
-// `toolOption` (may be empty): tried before rpict's own options, for a program that
-// shares rpict's command line (rvu): consumes args[i] and its values, advancing i past
-// them, and returns true, or returns false to leave args[i] to rpict.
-using ToolOptionParser = std::function<bool(const std::vector<std::string>& args, size_t& i)>;
+// Adds rpict's options to `t` bound to `opt` (util/options.h): the shared render options,
+// the view options, rpict's own, with @file and $EVAR expanded at option positions
+// (util/command_args.h) and -defaults in rpict's layout. `toolOptions` (may be empty) adds
+// the options of a program that shares rpict's command line (rvu) first, so that they
+// replace rpict's of the same name and lead the -defaults text. Errors: "unknown option
+// '-q'", missing or bad values, RADIANCE features not supported yet (-P, -PP). -ro file is
+// -r file -o file, as RADIANCE's.
+void addRpictOptions(OptionTable& t, RpictOptions& opt,
+                     const std::function<void(OptionTable&)>& toolOptions = {});
+
+// Parses rpict's arguments (without the program name) with rpict's table: as RADIANCE's
+// rpmain, options come first and the first word not starting with '-' starts the scene
+// files; an option after them is an InputError. A missing scene is not an error here (the
+// tool decides). `defaults`: the options before parsing.
 RpictCommand parseRpictCommand(std::vector<std::string> args,
-                               const RpictOptions& defaults = RpictOptions{},
-                               const ToolOptionParser& toolOption = {});
+                               const RpictOptions& defaults = RpictOptions{});
+// The parsing of parseRpictCommand with a table built by addRpictOptions (bound to the
+// options it fills): sets cmd's scene files and -defaults/-version flags.
+void finishRpictCommand(const OptionTable& t, std::vector<std::string> args, RpictCommand& cmd);
 
 // The lines RADIANCE's `rpict -defaults` prints (view, picture, then the render options
 // of formatRenderDefaults), reflecting `opt`.

@@ -1,30 +1,15 @@
 // rtrace command-line parsing and -defaults (RADIANCE rtmain.c main/printdefaults).
 #include "render/rtrace_options.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-
 #include "calc/search_path.h"
-#include "render/command_args.h"
+#include "util/command_args.h"
 #include "util/error.h"
+#include "util/options.h"
 #include "util/paths.h"
 
 namespace rp::render {
 
 namespace {
-
-int intValue(const std::vector<std::string>& args, size_t& i) {
-    const std::string& opt = args[i];
-    if (i + 1 >= args.size()) throw InputError("missing value for option '" + opt + "'");
-    const std::string& v = args[++i];
-    char* end = nullptr;
-    errno = 0;
-    long n = std::strtol(v.c_str(), &end, 10);
-    if (v.empty() || *end != '\0' || errno != 0 || n < 0 || n > 2147483647L)
-        throw InputError("bad value '" + v + "' for option '" + opt + "'");
-    return int(n);
-}
 
 // -f[a|f|d][a|f|d|c]: one letter sets both formats, as RADIANCE.
 void parseFormat(const std::string& opt, RtraceOptions& o) {
@@ -90,11 +75,10 @@ const char* specName(char c) {
     }
 }
 
-// -ti/-te/-tI/-tE at args[i] (RADIANCE rtmain.c): a word, or the words of a file.
-void parseTraceList(const std::vector<std::string>& args, size_t& i, TraceFilter& t) {
-    const std::string& opt = args[i];
-    if (i + 1 >= args.size()) throw InputError("missing value for option '" + opt + "'");
-    const std::string& v = args[++i];
+// -ti/-te/-tI/-tE (RADIANCE rtmain.c): a word, or the words of a file.
+void readTraceList(OptionReader& r, TraceFilter& t) {
+    const std::string& opt = r.option();
+    const std::string& v = r.word();
     const bool include = opt[2] == 'i' || opt[2] == 'I';
     const TraceFilter::Mode mode =
         include ? TraceFilter::Mode::kInclude : TraceFilter::Mode::kExclude;
@@ -110,6 +94,38 @@ void parseTraceList(const std::vector<std::string>& args, size_t& i, TraceFilter
     for (std::string& w : calc::readWordFile(v, calc::defaultSearchPath(projectLibDir()),
                                              include ? "trace include" : "trace exclude"))
         t.modifiers.push_back(std::move(w));
+}
+
+// rtrace's table, in the order of its -defaults lines (rtmain.c printdefaults), then the
+// common options.
+OptionTable rtraceTable(RtraceOptions& o) {
+    OptionTable t;
+    t.expandArgs = true;
+    t.helpIsDefaults = true;
+    t.add(flagOption("-I", o.immediateIrradiance), [&o] {
+        return o.immediateIrradiance ? std::string("-I+\t\t\t\t# immediate irradiance on\n")
+                                     : std::string();
+    });
+    // Only positive resolutions make sense; a negative one is a bad value, as before.
+    auto resolution = [](const std::string& name, int& v) {
+        return customOption(name, [&v](OptionReader& r) { v = int(r.integer(0, 2147483647L)); });
+    };
+    addRayOptions(t, o.render.threads, {resolution("-x", o.xres), resolution("-y", o.yres)}, o.xres,
+                  o.yres, o.limitDistance, o.header, o.inputFormat, o.outputFormat);
+    t.add(customOption(prefix("-f"), "-f[io]",
+                       [&o](OptionReader& r) { parseFormat(r.option(), o); }));
+    t.add(customOption(prefix("-o"), "-o",
+                       [&o](OptionReader& r) { o.outputSpec = r.option().substr(2); }),
+          [&o] {
+              std::string line = formatLine("-o%-9s\t\t\t# output", o.outputSpec.c_str());
+              for (char c : o.outputSpec) line += specName(c);
+              return line + '\n';
+          });
+    t.add(warningsOption(o.render.warnings));
+    for (const char* name : {"-ti", "-te", "-tI", "-tE"})
+        t.add(customOption(name, [&o](OptionReader& r) { readTraceList(r, o.trace); }));
+    addRenderOptions(t, o.render);
+    return t;
 }
 
 }  // namespace
@@ -143,42 +159,11 @@ RtraceOptions parseRtraceArgs(int argc, const char* const* argv) {
 
 RtraceOptions parseRtraceArgs(std::vector<std::string> args) {
     RtraceOptions o = rtraceDefaults();
-    size_t i = 1;
-    for (; i < args.size(); ++i) {
-        expandArgAt(args, i);
-        if (i >= args.size() || args[i].size() < 2 || args[i][0] != '-') break;
-        const std::string opt = args[i];
-        if (opt == "-defaults" || opt == "-help" || opt == "-version") {
-            (opt == "-version" ? o.printVersion : o.printDefaults) = true;
-            o.args = std::move(args);
-            o.optionCount = i;
-            return o;
-        }
-        if (parseRenderOption(args, i, o.render)) {
-            --i;  // parseRenderOption moved past the option; the loop adds one
-            continue;
-        }
-        if (opt == "-x")
-            o.xres = intValue(args, i);
-        else if (opt == "-y")
-            o.yres = intValue(args, i);
-        else if (opt == "-ti" || opt == "-te" || opt == "-tI" || opt == "-tE")
-            parseTraceList(args, i, o.trace);
-        else if (opt.rfind("-ld", 0) == 0)
-            o.limitDistance = boolSuffix(opt, 3, o.limitDistance);
-        else if (opt.rfind("-I", 0) == 0)
-            o.immediateIrradiance = boolSuffix(opt, 2, o.immediateIrradiance);
-        else if (opt.rfind("-h", 0) == 0)
-            o.header = boolSuffix(opt, 2, o.header);
-        else if (opt.rfind("-f", 0) == 0)
-            parseFormat(opt, o);
-        else if (opt.rfind("-o", 0) == 0)
-            o.outputSpec = opt.substr(2);
-        else
-            throw InputError("unknown option '" + opt + "'");
-    }
-    o.optionCount = std::min(i, args.size());
-    o.sceneFile = sceneArgument(args, i);
+    const OptionParse p = rtraceTable(o).parse(args, 1);
+    o.optionCount = p.next;
+    o.printVersion = p.stop == OptionStop::kVersion;
+    o.printDefaults = p.stop == OptionStop::kDefaults;
+    if (p.stop == OptionStop::kEnd) o.sceneFile = sceneArgument(args, p.next);
     o.args = std::move(args);
     return o;
 }
@@ -191,43 +176,38 @@ const std::string& sceneArgument(const std::vector<std::string>& args, size_t i)
     return args[i];
 }
 
-std::string formatRayDefaults(int threads, int xres, int yres, bool limitDistance, bool header,
-                              char inputFormat, char outputFormat) {
-    std::string out;
-    char line[256];
-    auto put = [&](const char* fmt, auto... a) {
-        std::snprintf(line, sizeof line, fmt, a...);
-        out += line;
-    };
-    put("-n %-2d\t\t\t\t# number of rendering processes\n", threads);
-    put("-x %-9d\t\t\t# %s\n", xres, xres && yres ? "x resolution" : "flush interval");
-    put("-y %-9d\t\t\t# y resolution\n", yres);
-    out +=
-        limitDistance ? "-ld+\t\t\t\t# limit distance on\n" : "-ld-\t\t\t\t# limit distance off\n";
-    put("-h%c\t\t\t\t# %s header\n", header ? '+' : '-', header ? "output" : "no");
-    put("-f%c%c\t\t\t\t# format input/output = %s/%s\n", inputFormat, outputFormat,
-        formatName(inputFormat), formatName(outputFormat));
-    return out;
+void addRayOptions(OptionTable& t, int& threads, std::array<OptionSpec, 2> xy, const int& xres,
+                   const int& yres, bool& limitDistance, bool& header, const char& inputFormat,
+                   const char& outputFormat, size_t flagLength) {
+    // RADIANCE compat: rtmain.c/rcmain.c printdefaults, lines and formats.
+    t.add(threadsOption(threads), [&threads] {
+        return formatLine("-n %-2d\t\t\t\t# number of rendering processes\n", threads);
+    });
+    t.add(std::move(xy[0]), [&xres, &yres] {
+        return formatLine("-x %-9d\t\t\t# %s\n", xres,
+                          xres && yres ? "x resolution" : "flush interval");
+    });
+    t.add(std::move(xy[1]), [&yres] { return formatLine("-y %-9d\t\t\t# y resolution\n", yres); });
+    t.add(flagOption("-ld", limitDistance, flagLength == SIZE_MAX ? SIZE_MAX : flagLength + 1),
+          [&limitDistance] {
+              return std::string(limitDistance ? "-ld+\t\t\t\t# limit distance on\n"
+                                               : "-ld-\t\t\t\t# limit distance off\n");
+          });
+    t.add(flagOption("-h", header, flagLength), [&header] {
+        return formatLine("-h%c\t\t\t\t# %s header\n", header ? '+' : '-',
+                          header ? "output" : "no");
+    });
+    // The format option itself is each tool's (their errors differ); this is its line.
+    t.add(customOption([](const std::string&) { return false; }, "-f line", {}),
+          [&inputFormat, &outputFormat] {
+              return formatLine("-f%c%c\t\t\t\t# format input/output = %s/%s\n", inputFormat,
+                                outputFormat, formatName(inputFormat), formatName(outputFormat));
+          });
 }
 
-std::string formatRtraceDefaults(const RtraceOptions& o) {
-    std::string out;
-    char line[256];
-    auto put = [&](const char* fmt, auto... a) {
-        std::snprintf(line, sizeof line, fmt, a...);
-        out += line;
-    };
-    // RADIANCE compat: rtmain.c printdefaults, lines and formats.
-    if (o.immediateIrradiance) out += "-I+\t\t\t\t# immediate irradiance on\n";
-    out += formatRayDefaults(o.render.threads, o.xres, o.yres, o.limitDistance, o.header,
-                             o.inputFormat, o.outputFormat);
-    put("-o%-9s\t\t\t# output", o.outputSpec.c_str());
-    for (char c : o.outputSpec) out += specName(c);
-    out += '\n';
-    out += o.render.warnings ? "-w+\t\t\t\t# warning messages on\n"
-                             : "-w-\t\t\t\t# warning messages off\n";
-    out += formatRenderDefaults(o.render);
-    return out;
+std::string formatRtraceDefaults(const RtraceOptions& opt) {
+    RtraceOptions copy = opt;
+    return rtraceTable(copy).formatDefaults();
 }
 
 }  // namespace rp::render

@@ -3,10 +3,12 @@
 // input/output formats by rtrace_io.h; the run itself by rtrace_run.h.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
 #include "render/render_options.h"
+#include "util/options.h"
 
 namespace rp::render {
 
@@ -56,9 +58,12 @@ std::string formatRtraceDefaults(const RtraceOptions& opt);
 // "ascii", "float", "double" or "32-bit_rle_rgbe" (RADIANCE formstr).
 const char* formatName(char format);
 
-// The -n -x -y -ld -h -f lines of `-defaults` that RADIANCE's rtrace and rcontrib share.
-std::string formatRayDefaults(int threads, int xres, int yres, bool limitDistance, bool header,
-                              char inputFormat, char outputFormat);
+// The options RADIANCE's rtrace and rcontrib share, in their -defaults order: -n, the
+// given -x and -y specs, -ld, -h, and the -f line (each tool reads -f itself). The
+// booleans match words up to `flagLength` characters (-ld one more; SIZE_MAX: any).
+void addRayOptions(OptionTable& t, int& threads, std::array<OptionSpec, 2> xy, const int& xres,
+                   const int& yres, bool& limitDistance, bool& header, const char& inputFormat,
+                   const char& outputFormat, size_t flagLength = SIZE_MAX);
 
 // The octree argument at args[i], which must be the last (rtrace, rcontrib): throws
 // InputError "missing octree argument" or for an argument after it.

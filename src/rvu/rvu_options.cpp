@@ -3,13 +3,12 @@
 
 #include <fmt/format.h>
 
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
-#include "util/bool_option.h"
 #include "util/error.h"
+#include "util/options.h"
 
 namespace rp::rvu {
 
@@ -41,14 +40,22 @@ RvuOptions rvuDefaults() {
 namespace {
 
 double exposureValue(const std::string& s) {
-    char* end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if (s.empty() || *end || !std::isfinite(v))
-        throw InputError("bad value for -pe: '" + s + "' (expected a number)");
+    const std::optional<double> v = parseReal(s);
+    if (!v) throw InputError("bad value for -pe: '" + s + "' (expected a number)");
     // RADIANCE compat (rvmain.c): a sign means f-stops.
-    const double e = (s[0] == '+' || s[0] == '-') ? std::pow(2.0, v) : v;
+    const double e = (s[0] == '+' || s[0] == '-') ? std::pow(2.0, *v) : *v;
     if (!(e > 0)) throw InputError("bad value for -pe: exposure must be positive");
     return e;
+}
+
+// rvu's messages for its own values, as rpict's ("missing value for -o").
+const OptionMessages& rvuMessages() {
+    static const OptionMessages m = [] {
+        OptionMessages r;
+        r.missing = [](const std::string& opt) { return "missing value for " + opt; };
+        return r;
+    }();
+    return m;
 }
 
 void setDevice(RvuOptions& o, const std::string& spec) {
@@ -58,14 +65,52 @@ void setDevice(RvuOptions& o, const std::string& spec) {
     o.device = name;
     if (spec.size() > name.size()) {
         const std::string port = spec.substr(name.size() + 1);
-        char* end = nullptr;
-        errno = 0;
-        const long v = std::strtol(port.c_str(), &end, 10);
-        if (port.empty() || port.find_first_not_of("0123456789") != std::string::npos || *end ||
-            errno || v < 0 || v > 65535)
+        const std::optional<long> v = parseInteger(port);
+        if (port.find_first_not_of("0123456789") != std::string::npos || !v || *v < 0 || *v > 65535)
             throw InputError("bad port in -o " + spec + " (expected web:PORT, 0 to 65535)");
-        o.port = int(v);
+        o.port = int(*v);
     }
+}
+
+// rvu's own options, ahead of rpict's (rpict_options.h addRpictOptions).
+void addRvuOptions(OptionTable& t, RvuCommand& cmd) {
+    RvuOptions& o = cmd.options;
+    t.add(render::threadsOption(o.picture.render.threads), [&o] {
+        return fmt::format("-n {}\t\t\t\t# number of rendering threads\n",
+                           o.picture.render.threads);
+    });
+    OptionSpec device = customOption("-o", [&o](OptionReader& r) { setDevice(o, r.word()); });
+    device.messages = &rvuMessages();
+    t.add(device, [&o] {
+        const std::string d = o.port > 0 ? fmt::format("{}:{}", o.device, o.port) : o.device;
+        return fmt::format("-o {}\t\t\t\t# output device\n", d);
+    });
+    OptionSpec exposure =
+        customOption("-pe", [&o](OptionReader& r) { o.exposure = exposureValue(r.word()); });
+    exposure.messages = &rvuMessages();
+    t.add(exposure, [&o] { return fmt::format("-pe {:f}\t\t\t# exposure\n", o.exposure); });
+    // -b toggles, -b+ -by -b0 ... (not -bv, the common back-face option).
+    auto grey = [](const std::string& w) {
+        return w.rfind("-b", 0) == 0 && w.size() <= 3 && w != "-bv";
+    };
+    t.add(customOption(
+              grey, "-b",
+              [&o](OptionReader& r) { o.greyscale = boolSuffix(r.option(), 2, o.greyscale); }),
+          [&o] {
+              return std::string(o.greyscale ? "-b+\t\t\t\t# greyscale on\n"
+                                             : "-b-\t\t\t\t# greyscale off\n");
+          });
+    t.add(customOption("-devices", [&cmd](OptionReader&) { cmd.printDevices = true; }));
+    // RADIANCE compat (rvu.1): rpict options that have no meaning here (nor -defaults lines).
+    for (const char* name : {"-z", "-r", "-ro", "-S", "-t", "-pd", "-pm", "-P", "-PP"})
+        t.add(customOption(name, [](OptionReader& r) {
+            throw InputError("option '" + r.option() + "' is rpict's, not rvu's");
+        }));
+}
+
+void addRvuTable(OptionTable& t, RvuCommand& cmd) {
+    render::addRpictOptions(t, cmd.options.picture,
+                            [&cmd](OptionTable& t) { addRvuOptions(t, cmd); });
 }
 
 }  // namespace
@@ -73,33 +118,10 @@ void setDevice(RvuOptions& o, const std::string& spec) {
 RvuCommand parseRvuCommand(std::vector<std::string> args) {
     RvuCommand cmd;
     cmd.options = rvuDefaults();
-    RvuOptions& o = cmd.options;
-    auto own = [&](const std::vector<std::string>& a, size_t& i) {
-        const std::string& w = a[i];
-        auto value = [&]() -> const std::string& {
-            if (i + 1 >= a.size()) throw InputError("missing value for " + w);
-            return a[++i];
-        };
-        if (w == "-o") {
-            setDevice(o, value());
-        } else if (w == "-pe") {
-            o.exposure = exposureValue(value());
-        } else if (w.rfind("-b", 0) == 0 && w.size() <= 3 && w != "-bv") {
-            o.greyscale = boolSuffix(w, 2, o.greyscale);  // -b toggles, -b+ -by -b0 ...
-        } else if (w == "-devices") {
-            cmd.printDevices = true;
-        } else if (w == "-z" || w == "-r" || w == "-ro" || w == "-S" || w == "-t" || w == "-pd" ||
-                   w == "-pm" || w == "-P" || w == "-PP") {
-            // RADIANCE compat (rvu.1): rpict options that have no meaning here.
-            throw InputError("option '" + w + "' is rpict's, not rvu's");
-        } else {
-            return false;
-        }
-        ++i;
-        return true;
-    };
-    render::RpictCommand r = render::parseRpictCommand(std::move(args), o.picture, own);
-    o.picture = r.options;
+    OptionTable t;
+    addRvuTable(t, cmd);
+    render::RpictCommand r;  // scene files and -defaults/-version; the options are cmd's
+    render::finishRpictCommand(t, std::move(args), r);
     cmd.sceneFiles = std::move(r.sceneFiles);
     cmd.printDefaults = r.printDefaults;
     cmd.printVersion = r.printVersion;
@@ -107,20 +129,11 @@ RvuCommand parseRvuCommand(std::vector<std::string> args) {
 }
 
 std::string formatRvuDefaults(const RvuOptions& o) {
-    std::string s;
-    s += fmt::format("-n {}\t\t\t\t# number of rendering threads\n", o.picture.render.threads);
-    const std::string device = o.port > 0 ? fmt::format("{}:{}", o.device, o.port) : o.device;
-    s += fmt::format("-o {}\t\t\t\t# output device\n", device);
-    s += fmt::format("-pe {:f}\t\t\t# exposure\n", o.exposure);
-    s += o.greyscale ? "-b+\t\t\t\t# greyscale on\n" : "-b-\t\t\t\t# greyscale off\n";
-    // rpict's lines, less those of the options rvu refuses.
-    std::istringstream lines(render::formatRpictDefaults(o.picture));
-    for (std::string line; std::getline(lines, line);) {
-        if (line.rfind("-pm ", 0) == 0 || line.rfind("-pd ", 0) == 0 || line.rfind("-t ", 0) == 0)
-            continue;
-        s += line + '\n';
-    }
-    return s;
+    RvuCommand cmd;
+    cmd.options = o;
+    OptionTable t;
+    addRvuTable(t, cmd);
+    return t.formatDefaults();
 }
 
 std::string formatRvuDevices() {

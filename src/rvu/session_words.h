@@ -8,14 +8,14 @@
 #include <vector>
 
 #include "image/rgbe.h"
-#include "render/command_args.h"
 #include "rvu/session.h"
+#include "util/command_args.h"
 #include "util/error.h"
 
 namespace rp::rvu {
 
 // Words as RADIANCE's nextword reads them: white space separates, quotes may hold it.
-using render::splitWords;
+using rp::splitWords;
 
 inline std::string trim(const std::string& s) {
     const size_t a = s.find_first_not_of(" \t\r\n");

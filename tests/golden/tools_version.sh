@@ -25,6 +25,16 @@ for line in '^-apD 0\.250000' '^-apM 4' '^-apm 5000' '^-bv\+' '^-dp  1000\.0' '^
             '^-fo-' '^-n   1' '^-apr 0'; do
     grep -Eq "$line" "$tmp/mk" || { echo "FAIL mkpmap -defaults lacks $line"; fail=1; }
 done
+# -version at any option position, not only first (util/options.h, info_options.h).
+for cmd in "rtrace -ab 1 -version" "rpict -x 10 -version" "rcontrib -V+ -version" \
+           "mkpmap -apD 0.5 -version" "rvu -b -version" "oconv -f -version" \
+           "obj2mesh -w -version" "pmapdump -a -version" "genbox m n 1 1 1 -i -version"; do
+    rc=0; $RP_BIN/$cmd > "$tmp/out" 2> "$tmp/err" < /dev/null || rc=$?
+    if [ "$rc" -ne 0 ] || [ "$(wc -l < "$tmp/out")" -ne 1 ] || [ -s "$tmp/err" ] ||
+       ! grep -q '^RADIANCE 5\.4a ' "$tmp/out"; then
+        echo "FAIL $cmd: rc=$rc, out: $(cat "$tmp/out"), err: $(cat "$tmp/err")"; fail=1
+    fi
+done
 # Values given before -defaults are the ones listed, as RADIANCE's rtrace -defaults does.
 "$RP_BIN/mkpmap" -apD 0.5 -n 3 -defaults > "$tmp/mk"
 grep -q '^-apD 0\.500000' "$tmp/mk" && grep -q '^-n   3' "$tmp/mk" ||

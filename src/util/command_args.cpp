@@ -1,5 +1,5 @@
 // @file and $EVAR expansion (see command_args.h).
-#include "render/command_args.h"
+#include "util/command_args.h"
 
 #include <cctype>
 #include <cstdlib>
@@ -9,7 +9,7 @@
 
 #include "util/error.h"
 
-namespace rp::render {
+namespace rp {
 
 std::vector<std::string> splitWords(const std::string& text) {
     std::vector<std::string> words;
@@ -62,4 +62,4 @@ std::vector<std::string> argVector(int argc, const char* const* argv) {
     return std::vector<std::string>(argv, argv + argc);
 }
 
-}  // namespace rp::render
+}  // namespace rp

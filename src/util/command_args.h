@@ -1,14 +1,13 @@
-// RADIANCE's argument expansion shared by rtrace and rpict (expandarg in common/expandarg.c):
+// RADIANCE's argument expansion for every tool's options (expandarg in common/expandarg.c):
 // an option-position argument "@file" is replaced by the words of that file and "$EVAR" by
-// the words of that environment variable. Option parsing itself lives in render_options.h
-// and each tool's *_options.h.
+// the words of that environment variable. Option parsing itself lives in util/options.h.
 #pragma once
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
-namespace rp::render {
+namespace rp {
 
 // Splits text into words at white space; a word may be quoted with '...' or "..." to hold
 // white space (the quotes are removed), as RADIANCE's wordstring does for @files.
@@ -24,4 +23,4 @@ void expandArgAt(std::vector<std::string>& args, size_t i);
 // argv as strings (argv[0] included).
 std::vector<std::string> argVector(int argc, const char* const* argv);
 
-}  // namespace rp::render
+}  // namespace rp
