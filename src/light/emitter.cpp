@@ -20,6 +20,21 @@ enum class Mode : uint8_t {
     Table,       // modified source or port: -dp direction table
 };
 
+// What one source sends in unit direction `w` from point `p` with normal `n`: radiance x
+// emission modifier x cos (zero behind the surface).
+struct SourceValue {
+    Color radiance;
+    EmissionModifier mod;
+    int32_t source = -1;
+    Color operator()(const Vec3& w, const Vec3& p, const Vec3& n, bool distant) const {
+        const double c = dot(w, n);
+        if (!(c > 0)) return Color{};
+        Color v = radiance * c;
+        if (mod.eval) v *= mod.eval({distant ? w : -w, p, n, c, source});
+        return v;
+    }
+};
+
 struct Group {
     int32_t source = -1;
     int32_t port = -1, portPrim = -1;
@@ -51,6 +66,19 @@ struct EmissionPlan::Impl {
     Color total;
     std::vector<Color> sourceFlux;
     std::vector<size_t> sourceCount;
+
+    // The constructor's phases, per kind of source: a local source's partitions; a
+    // distant source through the scene cube's faces, or through the photon ports (each
+    // side a port emits from).
+    void planLocal(const LightSource& src, Group g, const SourceValue& value,
+                   const EmissionOptions& options);
+    void planCube(const LightSource& src, Group g, const SourceValue& value,
+                  const EmissionOptions& options);
+    void planPorts(const SceneGeometry& geometry, const LightSource& src, Group g,
+                   const SourceValue& value, const EmissionOptions& options);
+    void planPortSide(const SceneGeometry& geometry, const PhotonPort& port, int32_t portIndex,
+                      const std::vector<Partition>& portParts, bool flip, Group g,
+                      const SourceValue& value, const EmissionOptions& options);
 
     void add(const Partition& p, uint32_t group, const Color& flux, int32_t table) {
         if (!(flux.average() > 0)) return;
@@ -149,189 +177,186 @@ EmissionPlan::EmissionPlan(const SceneGeometry& geometry, std::vector<LightSourc
     m.sources = std::move(sources);
     m.sourceFlux.assign(m.sources.size(), Color{});
     m.sourceCount.assign(m.sources.size(), 0);
-    const ShapeSet& shapes = *m.shapes;
-    const double ds = options.partitionSize;
-    if (!(ds > 0)) throw InputError("-ds: partition size must be positive");
-    const double edge = ds * m.cube.size;
-
+    if (!(options.partitionSize > 0)) throw InputError("-ds: partition size must be positive");
     for (size_t si = 0; si < m.sources.size(); ++si) {
         const LightSource& src = m.sources[si];
-        EmissionModifier mod;
+        SourceValue value{src.params.radiance, {}, int32_t(si)};
         if (src.modified()) {
-            if (options.modifierFor) mod = options.modifierFor(src);
-            if (!mod.eval)
+            if (options.modifierFor) value.mod = options.modifierFor(src);
+            if (!value.mod.eval)
                 throw notSupportedYet(src.loc, "pattern-modified light source '" + src.name +
                                                    "' (emission modifier)");
         }
-        const Color& L = src.params.radiance;
-        // Radiance x modifier x cos for one aperture direction w about normal n at p.
-        auto value = [&](const Vec3& w, const Vec3& p, const Vec3& n, bool distant) {
-            double c = dot(w, n);
-            if (!(c > 0)) return Color{};
-            Color v = L * c;
-            if (mod.eval) v *= mod.eval({distant ? w : -w, p, n, c, int32_t(si)});
-            return v;
-        };
         Group g;
         g.source = int32_t(si);
-        g.radiance = L;
+        g.radiance = value.radiance;
         g.distant = src.distant();
         g.maxDistance = src.maxDistance;
-
-        if (!src.distant()) {
-            std::vector<Partition> parts = partitionShape(shapes, src.shape, src.shapeIndex, edge);
-            for (const Partition& p : parts) m.sourceCount[si] += p.cells;
-            bool flat = src.shape == EmitterShape::Polygon || src.shape == EmitterShape::Ring;
-            bool spot = src.spotlight();
-            if (spot) g.cone = {src.params.spotAim, std::cos(src.params.spotAngleDeg * kPi / 360)};
-            g.first = m.parts.size();
-            uint32_t gi = uint32_t(m.groups.size());
-            m.groups.push_back(g);
-            if (src.modified()) {
-                m.groups[gi].mode = Mode::Table;
-                int32_t shared = -1;
-                for (const Partition& p : parts) {
-                    EmissionPoint e = partitionCentre(shapes, m.cube, p);
-                    int32_t t = shared;
-                    if (t < 0) {
-                        Cone ap = spot ? g.cone : Cone{e.normal, 0};
-                        m.tables.emplace_back(ap, options.samplesPerSr, [&](const Vec3& w) {
-                            return value(w, e.point, e.normal, false);
-                        });
-                        t = int32_t(m.tables.size() - 1);
-                        if (flat && mod.directionalOnly) shared = t;
-                    }
-                    m.add(p, gi, m.tables[size_t(t)].integral() * p.area, t);
-                }
-            } else if (!spot) {
-                m.groups[gi].mode = Mode::Hemisphere;
-                if (flat && !parts.empty()) {
-                    // pointAt gives every point of a polygon or ring this same normal.
-                    const Vec3 n = partitionCentre(shapes, m.cube, parts.front()).normal;
-                    m.groups[gi].flatFrame = true;
-                    coneFrame(n, m.groups[gi].frameU, m.groups[gi].frameV);
-                }
-                for (const Partition& p : parts) m.add(p, gi, L * (kPi * p.area), -1);
-            } else if (flat) {
-                m.groups[gi].mode = Mode::FlatCone;
-                Vec3 n = partitionCentre(shapes, m.cube, parts.front()).normal;
-                double proj = projectedSolidAngle(g.cone, n);
-                for (const Partition& p : parts) m.add(p, gi, L * (proj * p.area), -1);
-            } else {
-                // Exact total, spread over partitions by area: the joint rejection in
-                // emitPhoton needs partitions chosen by area within the group.
-                m.groups[gi].mode = Mode::CurvedCone;
-                double meanProj;
-                if (src.shape == EmitterShape::Sphere)  // projected area pi r^2 any way
-                    meanProj = 0.25 * g.cone.solidAngle();
-                else
-                    meanProj =
-                        meanConeSurfaceProjection(shapes.cones[size_t(src.shapeIndex)], g.cone);
-                for (const Partition& p : parts) m.add(p, gi, L * (meanProj * p.area), -1);
-            }
-            m.groups[gi].end = m.parts.size();
-            continue;
-        }
-
-        const DistantSource& ds0 = shapes.sources[size_t(src.shapeIndex)];
-        g.cone = {ds0.dir, ds0.cosHalfAngle};
-        if (options.ports.empty()) {
-            // Scene cube faces: the flux entering a face from the source disk is
-            // L * A * integral over the disk of max(0, w . n_out); every ray entering the
-            // cube crosses exactly one face, so the faces together deliver exactly the
-            // flux the source sends through the cube.
-            std::vector<Partition> faces = partitionCube(ds);
-            for (const Partition& p : faces) m.sourceCount[si] += p.cells;
-            g.first = m.parts.size();
-            uint32_t gi = uint32_t(m.groups.size());
-            g.mode = src.modified() ? Mode::Table : Mode::CubeCone;
-            m.groups.push_back(g);
-            for (Partition p : faces) {
-                p.area = m.cube.size * m.cube.size;
-                EmissionPoint e = partitionCentre(shapes, m.cube, p);
-                if (src.modified()) {
-                    m.tables.emplace_back(g.cone, options.samplesPerSr, [&](const Vec3& w) {
-                        return value(w, e.point, e.normal, true);
-                    });
-                    int32_t t = int32_t(m.tables.size() - 1);
-                    m.add(p, gi, m.tables[size_t(t)].integral() * p.area, t);
-                } else {
-                    m.add(p, gi, L * (projectedSolidAngle(g.cone, e.normal) * p.area), -1);
-                }
-            }
-            m.groups[gi].end = m.parts.size();
-            continue;
-        }
-
-        for (size_t pi = 0; pi < options.ports.size(); ++pi) {
-            const PhotonPort& port = options.ports[pi];
-            std::vector<Partition> parts =
-                partitionShape(shapes, port.shape, port.shapeIndex, edge);
-            bool flat = port.shape == EmitterShape::Polygon || port.shape == EmitterShape::Ring;
-            // Port normals point inside: photons enter along them when emitted about the
-            // outward (flipped) normal.
-            std::vector<bool> sides;
-            if (port.direction != PortDirection::Backward) sides.push_back(true);
-            if (port.direction != PortDirection::Forward) sides.push_back(false);
-            for (bool flip : sides) {
-                for (const Partition& p : parts) m.sourceCount[si] += p.cells;
-                Group pg = g;
-                pg.port = int32_t(pi);
-                pg.portPrim = port.prim;
-                pg.flipNormal = flip;
-                pg.mode = Mode::Table;
-                pg.first = m.parts.size();
-                uint32_t gi = uint32_t(m.groups.size());
-                m.groups.push_back(pg);
-                // One table for a flat port under a direction-only modifier, each
-                // partition's own where the source is partly hidden from it (or where the
-                // modifier depends on the point). The partitions' tables are independent:
-                // built in parallel, then added in partition order (the same plan for any
-                // number of threads).
-                int32_t base = -1;
-                if (flat && (!mod.eval || mod.directionalOnly) && !parts.empty()) {
-                    EmissionPoint e = partitionCentre(shapes, m.cube, parts.front());
-                    Vec3 n = flip ? -e.normal : e.normal;
-                    m.tables.emplace_back(g.cone, options.samplesPerSr, [&](const Vec3& w) {
-                        return value(w, e.point, n, true);
-                    });
-                    base = int32_t(m.tables.size() - 1);
-                }
-                std::vector<std::optional<DirectionTable>> own(parts.size());
-                tbb::parallel_for(size_t(0), parts.size(), [&](size_t k) {
-                    EmissionPoint e = partitionCentre(shapes, m.cube, parts[k]);
-                    Vec3 n = flip ? -e.normal : e.normal;
-                    Vec3 from = e.point + n * e.offset;
-                    auto visible = [&](const Vec3& w) {
-                        return !geometry.occluded(from, w, HUGE_VAL);
-                    };
-                    if (base >= 0) {
-                        bool changed = false;
-                        DirectionTable seen = m.tables[size_t(base)].filtered(visible, changed);
-                        if (changed) own[k] = std::move(seen);
-                    } else {
-                        own[k].emplace(g.cone, options.samplesPerSr, [&](const Vec3& w) {
-                            return visible(w) ? value(w, e.point, n, true) : Color{};
-                        });
-                    }
-                });
-                for (size_t k = 0; k < parts.size(); ++k) {
-                    int32_t t = base;
-                    if (own[k]) {
-                        m.tables.push_back(std::move(*own[k]));
-                        t = int32_t(m.tables.size() - 1);
-                    }
-                    m.add(parts[k], gi, m.tables[size_t(t)].integral() * parts[k].area, t);
-                }
-                m.groups[gi].end = m.parts.size();
-            }
-        }
+        if (!src.distant())
+            m.planLocal(src, g, value, options);
+        else if (options.ports.empty())
+            m.planCube(src, g, value, options);
+        else
+            m.planPorts(geometry, src, g, value, options);
     }
     if (!(m.total.average() > 0)) throw InputError("zero flux from light sources");
     // Every photon carries the mean total flux (same expression as emitPhoton's for
     // Table groups, so the same bits).
     for (Group& g : m.groups) g.weight = g.radiance * (m.total.average() / g.radiance.average());
     m.buildAlias();
+}
+
+void EmissionPlan::Impl::planLocal(const LightSource& src, Group g, const SourceValue& value,
+                                   const EmissionOptions& options) {
+    const size_t si = size_t(g.source);
+    const Color& L = value.radiance;
+    const std::vector<Partition> parts =
+        partitionShape(*shapes, src.shape, src.shapeIndex, options.partitionSize * cube.size);
+    for (const Partition& p : parts) sourceCount[si] += p.cells;
+    const bool flat = src.shape == EmitterShape::Polygon || src.shape == EmitterShape::Ring;
+    const bool spot = src.spotlight();
+    if (spot) g.cone = {src.params.spotAim, std::cos(src.params.spotAngleDeg * kPi / 360)};
+    g.first = this->parts.size();
+    const uint32_t gi = uint32_t(groups.size());
+    groups.push_back(g);
+    if (src.modified()) {
+        groups[gi].mode = Mode::Table;
+        int32_t shared = -1;
+        for (const Partition& p : parts) {
+            EmissionPoint e = partitionCentre(*shapes, cube, p);
+            int32_t t = shared;
+            if (t < 0) {
+                Cone ap = spot ? g.cone : Cone{e.normal, 0};
+                tables.emplace_back(ap, options.samplesPerSr, [&](const Vec3& w) {
+                    return value(w, e.point, e.normal, false);
+                });
+                t = int32_t(tables.size() - 1);
+                if (flat && value.mod.directionalOnly) shared = t;
+            }
+            add(p, gi, tables[size_t(t)].integral() * p.area, t);
+        }
+    } else if (!spot) {
+        groups[gi].mode = Mode::Hemisphere;
+        if (flat && !parts.empty()) {
+            // pointAt gives every point of a polygon or ring this same normal.
+            const Vec3 n = partitionCentre(*shapes, cube, parts.front()).normal;
+            groups[gi].flatFrame = true;
+            coneFrame(n, groups[gi].frameU, groups[gi].frameV);
+        }
+        for (const Partition& p : parts) add(p, gi, L * (kPi * p.area), -1);
+    } else if (flat) {
+        groups[gi].mode = Mode::FlatCone;
+        Vec3 n = partitionCentre(*shapes, cube, parts.front()).normal;
+        double proj = projectedSolidAngle(g.cone, n);
+        for (const Partition& p : parts) add(p, gi, L * (proj * p.area), -1);
+    } else {
+        // Exact total, spread over partitions by area: the joint rejection in emitPhoton
+        // needs partitions chosen by area within the group.
+        groups[gi].mode = Mode::CurvedCone;
+        const double meanProj =
+            src.shape == EmitterShape::Sphere  // projected area pi r^2 any way
+                ? 0.25 * g.cone.solidAngle()
+                : meanConeSurfaceProjection(shapes->cones[size_t(src.shapeIndex)], g.cone);
+        for (const Partition& p : parts) add(p, gi, L * (meanProj * p.area), -1);
+    }
+    groups[gi].end = this->parts.size();
+}
+
+void EmissionPlan::Impl::planCube(const LightSource& src, Group g, const SourceValue& value,
+                                  const EmissionOptions& options) {
+    // Scene cube faces: the flux entering a face from the source disk is L * A * integral
+    // over the disk of max(0, w . n_out); every ray entering the cube crosses exactly one
+    // face, so the faces together deliver exactly the flux the source sends through it.
+    const DistantSource& d = shapes->sources[size_t(src.shapeIndex)];
+    g.cone = {d.dir, d.cosHalfAngle};
+    const std::vector<Partition> faces = partitionCube(options.partitionSize);
+    for (const Partition& p : faces) sourceCount[size_t(g.source)] += p.cells;
+    g.first = parts.size();
+    const uint32_t gi = uint32_t(groups.size());
+    g.mode = src.modified() ? Mode::Table : Mode::CubeCone;
+    groups.push_back(g);
+    for (Partition p : faces) {
+        p.area = cube.size * cube.size;
+        EmissionPoint e = partitionCentre(*shapes, cube, p);
+        if (src.modified()) {
+            tables.emplace_back(g.cone, options.samplesPerSr,
+                                [&](const Vec3& w) { return value(w, e.point, e.normal, true); });
+            int32_t t = int32_t(tables.size() - 1);
+            add(p, gi, tables[size_t(t)].integral() * p.area, t);
+        } else {
+            add(p, gi, value.radiance * (projectedSolidAngle(g.cone, e.normal) * p.area), -1);
+        }
+    }
+    groups[gi].end = parts.size();
+}
+
+void EmissionPlan::Impl::planPorts(const SceneGeometry& geometry, const LightSource& src, Group g,
+                                   const SourceValue& value, const EmissionOptions& options) {
+    const DistantSource& d = shapes->sources[size_t(src.shapeIndex)];
+    g.cone = {d.dir, d.cosHalfAngle};
+    for (size_t pi = 0; pi < options.ports.size(); ++pi) {
+        const PhotonPort& port = options.ports[pi];
+        const std::vector<Partition> portParts =
+            partitionShape(*shapes, port.shape, port.shapeIndex, options.partitionSize * cube.size);
+        // Port normals point inside: photons enter along them when emitted about the
+        // outward (flipped) normal.
+        if (port.direction != PortDirection::Backward)
+            planPortSide(geometry, port, int32_t(pi), portParts, true, g, value, options);
+        if (port.direction != PortDirection::Forward)
+            planPortSide(geometry, port, int32_t(pi), portParts, false, g, value, options);
+    }
+}
+
+void EmissionPlan::Impl::planPortSide(const SceneGeometry& geometry, const PhotonPort& port,
+                                      int32_t portIndex, const std::vector<Partition>& portParts,
+                                      bool flip, Group g, const SourceValue& value,
+                                      const EmissionOptions& options) {
+    const bool flat = port.shape == EmitterShape::Polygon || port.shape == EmitterShape::Ring;
+    for (const Partition& p : portParts) sourceCount[size_t(g.source)] += p.cells;
+    g.port = portIndex;
+    g.portPrim = port.prim;
+    g.flipNormal = flip;
+    g.mode = Mode::Table;
+    g.first = parts.size();
+    const uint32_t gi = uint32_t(groups.size());
+    groups.push_back(g);
+    // One table for a flat port under a direction-only modifier, each partition's own
+    // where the source is partly hidden from it (or where the modifier depends on the
+    // point). The partitions' tables are independent: built in parallel, then added in
+    // partition order (the same plan for any number of threads).
+    int32_t base = -1;
+    if (flat && (!value.mod.eval || value.mod.directionalOnly) && !portParts.empty()) {
+        EmissionPoint e = partitionCentre(*shapes, cube, portParts.front());
+        Vec3 n = flip ? -e.normal : e.normal;
+        tables.emplace_back(g.cone, options.samplesPerSr,
+                            [&](const Vec3& w) { return value(w, e.point, n, true); });
+        base = int32_t(tables.size() - 1);
+    }
+    std::vector<std::optional<DirectionTable>> own(portParts.size());
+    tbb::parallel_for(size_t(0), portParts.size(), [&](size_t k) {
+        EmissionPoint e = partitionCentre(*shapes, cube, portParts[k]);
+        Vec3 n = flip ? -e.normal : e.normal;
+        Vec3 from = e.point + n * e.offset;
+        auto visible = [&](const Vec3& w) { return !geometry.occluded(from, w, HUGE_VAL); };
+        if (base >= 0) {
+            bool changed = false;
+            DirectionTable seen = tables[size_t(base)].filtered(visible, changed);
+            if (changed) own[k] = std::move(seen);
+        } else {
+            own[k].emplace(g.cone, options.samplesPerSr, [&](const Vec3& w) {
+                return visible(w) ? value(w, e.point, n, true) : Color{};
+            });
+        }
+    });
+    for (size_t k = 0; k < portParts.size(); ++k) {
+        int32_t t = base;
+        if (own[k]) {
+            tables.push_back(std::move(*own[k]));
+            t = int32_t(tables.size() - 1);
+        }
+        add(portParts[k], gi, tables[size_t(t)].integral() * portParts[k].area, t);
+    }
+    groups[gi].end = parts.size();
 }
 
 EmissionPlan::~EmissionPlan() = default;

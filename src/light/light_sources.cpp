@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "light/aperture.h"
+#include "material/type_traits.h"
 #include "util/warnings.h"
 
 namespace rp::light {
@@ -12,8 +13,9 @@ namespace rp::light {
 namespace {
 
 bool isLightType(PrimType t, bool illumEmits) {
-    return t == PrimType::Light || t == PrimType::Glow || t == PrimType::Spotlight ||
-           (illumEmits && t == PrimType::Illum);
+    using L = material::TypeTraits::Light;
+    const L light = material::typeTraits(t).light;
+    return light != L::None && (illumEmits || light != L::Illum);
 }
 
 bool isAnyLightType(PrimType t) { return isLightType(t, true); }
@@ -74,7 +76,7 @@ std::vector<LightSource> findLightSources(const Scene& scene, const SceneGeometr
         const Color& L = src.params.radiance;
         if (L.r <= kFtiny && L.g <= kFtiny && L.b <= kFtiny) return;
         const bool distant = shape == EmitterShape::Distant;
-        if (src.params.kind == material::LightParams::Kind::Glow && !distant) {
+        if (src.params.glow() && !distant) {
             // Radius 0: ambient calculation only; negative: no illumination.
             if (src.params.glowMaxRadius <= kFtiny) return;
             src.maxDistance = src.params.glowMaxRadius;

@@ -36,10 +36,8 @@ struct LightSource {
     // A distant glow (a sky or ground): RADIANCE's direct calculation skips it (source.c
     // SSKIP) and its light reaches surfaces only through the ambient calculation, so the
     // renderer's direct light never holds it, and photon maps must carry all of it.
-    bool ambientOnly() const {
-        return params.kind == material::LightParams::Kind::Glow && distant();
-    }
-    bool spotlight() const { return params.kind == material::LightParams::Kind::Spotlight; }
+    bool ambientOnly() const { return params.glow() && distant(); }
+    bool spotlight() const { return params.spotlight(); }
 };
 
 struct LightSearchOptions {

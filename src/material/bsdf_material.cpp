@@ -15,6 +15,7 @@
 
 #include "bsdf/bsdf.h"
 #include "material/detail.h"
+#include "util/error.h"
 #include "util/rng.h"
 #include "util/warnings.h"
 
@@ -307,6 +308,7 @@ BackwardResult shadeBsdf(const BsdfParams& m, const SurfacePoint& sp, const Shad
 }
 
 PhotonScatter scatterBsdf(const BsdfParams& m, const SurfacePoint& sp, Rng& rng) {
+    RP_CHECK(sp.bsdf);  // the data comes through prepareHit (a MaterialCalc is needed)
     PhotonScatter s;
     if (!sp.front && !sp.backVisible && !m.hasBackDiffuse && !sp.bsdf->rb && !sp.bsdf->tf) {
         // pmapmat.c: without -bv the back of a BSDF with nothing there absorbs.

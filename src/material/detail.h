@@ -9,6 +9,15 @@
 
 namespace rp::material::detail {
 
+// The visitor of every per-family dispatch: one lambda per MaterialParams alternative and
+// no catch-all, so a family added without its case is a compile error.
+template <class... Fs>
+struct Overloaded : Fs... {
+    using Fs::operator()...;
+};
+template <class... Fs>
+Overloaded(Fs...) -> Overloaded<Fs...>;
+
 constexpr double kFtiny = 1e-6;           // RADIANCE FTINY (double RREAL)
 constexpr int kMaxIter = 10;              // RADIANCE MAXITER: specular sample attempts
 constexpr double kFresThresh = 0.017999;  // normal.c FRESTHRESH
@@ -130,6 +139,9 @@ BackwardResult shadeWgmd(const WgmdParams&, const SurfacePoint&, const ShadeOpti
 PhotonScatter scatterWgmd(const WgmdParams&, const SurfacePoint&, Rng&);
 
 BackwardResult shadeLight(const LightParams&, const SurfacePoint&);
+// The radiance a light material sends back along -sp.dir (black from behind, outside a
+// spotlight's cone), without shadeLight's rules for the ray that sees it.
+Color lightEmitted(const LightParams&, const SurfacePoint&);
 
 BackwardResult shadePrism(const PrismParams&, const SurfacePoint&);
 

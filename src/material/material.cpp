@@ -131,6 +131,17 @@ void setPhotonRoulette(NormalParams& m) {
 
 BackwardResult shadeLight(const LightParams& m, const SurfacePoint& sp) {
     BackwardResult r;
+    // RADIANCE compat (source.c badcomponent, distglow): a ray descended from an ambient
+    // or sampled specular ray sees every light material from the front as black, source
+    // or not (lights inside instances are not), since the direct calculation counts
+    // sources; only a glow farther than its radius shows, and a glow with a negative
+    // radius never does (ray.html glow).
+    const bool distantGlow = m.kind == LightParams::Kind::Glow && m.glowMaxRadius >= -1e-6 &&
+                             sp.distance > m.glowMaxRadius;
+    if (sp.scatteredRay && sp.front && !distantGlow) {
+        r.uncounted = true;
+        return r;
+    }
     if (m.kind == LightParams::Kind::Illum) {
         // ray.html illum: seen directly it is its alternate material, or invisible.
         if (m.alternate && *m.alternate != "void")
@@ -139,30 +150,24 @@ BackwardResult shadeLight(const LightParams& m, const SurfacePoint& sp) {
             r.transparent = true;
         return r;
     }
-    // RADIANCE compat (source.c m_light): a light seen from behind is black.
-    if (!sp.front) return r;
-    Color L = m.radiance * sp.pattern;
-    if (m.kind == LightParams::Kind::Spotlight) {
-        // srcsupp.c spotout: outside the cone when 2 pi (1 - cos theta) > solid angle,
-        // theta between the aim and the emitted direction (-sp.dir).
-        if (m.spotSolidAngle < 2 * kPi * (1 + dot(m.spotAim, sp.dir))) L = Color{};
-    }
-    r.emitted = L;
+    r.emitted = lightEmitted(m, sp);
     return r;
+}
+
+Color lightEmitted(const LightParams& m, const SurfacePoint& sp) {
+    // RADIANCE compat (source.c m_light): a light seen from behind is black.
+    if (!sp.front) return {};
+    // srcsupp.c spotout: outside the cone when 2 pi (1 - cos theta) > solid angle, theta
+    // between the aim and the emitted direction (-sp.dir).
+    if (m.kind == LightParams::Kind::Spotlight &&
+        m.spotSolidAngle < 2 * kPi * (1 + dot(m.spotAim, sp.dir)))
+        return {};
+    return m.radiance * sp.pattern;
 }
 
 }  // namespace detail
 
 using namespace detail;
-
-namespace {
-template <class... Fs>
-struct Overloaded : Fs... {
-    using Fs::operator()...;
-};
-template <class... Fs>
-Overloaded(Fs...) -> Overloaded<Fs...>;
-}  // namespace
 
 Color evaluate(const MaterialParams& m, const SurfacePoint& sp, const Vec3& toLight,
                double sourceOmega) {
@@ -176,7 +181,13 @@ Color evaluate(const MaterialParams& m, const SurfacePoint& sp, const Vec3& toLi
             [&](const BsdfParams& p) { return evaluateBsdf(p, sp, toLight, sourceOmega); },
             [&](const WgmdParams& p) { return evaluateWgmd(p, sp, toLight, sourceOmega); },
             // Purely specular, emitting or invisible: nothing for a direct-light sample.
-            [&](const auto&) { return Color{}; },
+            [](const MirrorParams&) { return Color{}; },
+            [](const GlassParams&) { return Color{}; },
+            [](const DielectricParams&) { return Color{}; },
+            [](const LightParams&) { return Color{}; },
+            [](const AntimatterParams&) { return Color{}; },
+            [](const PrismParams&) { return Color{}; },
+            [](const MistParams&) { return Color{}; },
         },
         m);
 }
@@ -215,9 +226,11 @@ BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
                        [&](const PrismParams& p) { return shadePrism(p, sp); },
                        [&](const BsdfParams& p) { return shadeBsdf(p, sp, opt, rng); },
                        [&](const WgmdParams& p) { return shadeWgmd(p, sp, opt, rng); },
-                       [&](const MistParams&) {
-                           BackwardResult r;  // the medium change is the ray tracer's business
+                       [&](const MistParams& p) {
+                           BackwardResult r;  // m_mist.c: on in the medium entered or left
                            r.transparent = true;
+                           r.passMedium = mistCrossing(p, sp.front, sp.pattern);
+                           r.mist = &p;
                            return r;
                        },
                    },
@@ -261,6 +274,12 @@ PhotonScatter scatterPhoton(const MaterialParams& m, const SurfacePoint& sp, Rng
             },
         },
         m);
+}
+
+std::optional<Emission> emissionOf(const MaterialParams& m) {
+    const auto* light = std::get_if<LightParams>(&m);
+    if (!light) return std::nullopt;
+    return Emission{light->radiance, light->glow()};
 }
 
 Color Medium::transmittance(double t, bool absorptionOnly) const {
@@ -341,7 +360,14 @@ bool storesPhotons(const MaterialParams& m) {
                                      p.backDiffuse.average() > kFtiny ||
                                      p.diffuseTransmittance.average() > kFtiny;
                           },
-                          [](const auto&) { return false; },
+                          // Specular, emitting or invisible: photons pass or bounce.
+                          [](const MirrorParams&) { return false; },
+                          [](const GlassParams&) { return false; },
+                          [](const DielectricParams&) { return false; },
+                          [](const LightParams&) { return false; },
+                          [](const AntimatterParams&) { return false; },
+                          [](const PrismParams&) { return false; },
+                          [](const MistParams&) { return false; },
                       },
                       m);
 }

@@ -130,6 +130,11 @@ struct LightParams {
     double spotSolidAngle = 0;             // 2 pi (1 - cos(angle/2)) (srcsupp.c makespot)
     Vec3 spotAim;                          // unit output direction
     double spotFocalLength = 0;            // |orientation vector|
+    bool glow() const { return kind == Kind::Glow; }
+    bool spotlight() const { return kind == Kind::Spotlight; }
+    // A secondary source (illum) or a weak one (glow): RADIANCE source.c illumblock keeps
+    // a shadow ray toward one from passing an illum's front (no light relayed twice).
+    bool secondary() const { return kind == Kind::Illum || kind == Kind::Glow; }
 };
 
 struct AntimatterParams {
@@ -220,6 +225,14 @@ using MaterialParams =
 // constants. Throws InputError at p.loc for bad values and for non-material types.
 MaterialParams makeMaterial(const Primitive& p);
 
+// The light a material emits, if it is a light material (light, illum, glow, spotlight):
+// its radiance (before patterns) and whether it is a glow.
+struct Emission {
+    Color radiance;
+    bool glow = false;
+};
+std::optional<Emission> emissionOf(const MaterialParams& m);
+
 // ---------------------------------------------------------------------------------------
 // Inputs at a hit point (all unit vectors, world space).
 
@@ -242,6 +255,18 @@ struct WgmdInputs {
     std::array<Vec3, 3> normal;
 };
 
+// A function-driven material's directional part at one hit (MaterialCalc's BoundHit):
+// evaluated per light sample, long after the hit was prepared.
+class DirectionalPart {
+public:
+    // plasfunc/metfunc/transfunc/..data: the specular function's value for light from unit
+    // world direction `toLight` (grey); BRTDfunc: rbrtd gbrtd bbrtd.
+    virtual Color operator()(const Vec3& toLight) const = 0;
+
+protected:
+    ~DirectionalPart() = default;
+};
+
 struct SurfacePoint {
     Vec3 dir;                // direction the ray/photon travels (towards the surface)
     Vec3 normal;             // shading normal (texture-perturbed), flipped to the incoming side
@@ -251,10 +276,9 @@ struct SurfacePoint {
     Color pattern{1, 1, 1};  // pattern colour modulation (r->pcol)
     Vec3 uDir;               // plastic2/metal2/trans2/ashik2: evaluated u orientation (world)
     std::optional<Color> brtdSpecularReflection, brtdSpecularTransmission;  // BRTDfunc
-    // plasfunc/metfunc/transfunc/..data: the specular function's value for light from a
-    // unit world direction (grey); BRTDfunc: rbrtd gbrtd bbrtd. Null: no such part
-    // (MaterialCalcEvaluator::directional supplies it). Only evaluate() uses it.
-    const std::function<Color(const Vec3&)>* directional = nullptr;
+    // The directional part of plasfunc/metfunc/transfunc/..data and BRTDfunc; null: none
+    // (prepareHit sets it). Only evaluate() uses it.
+    const DirectionalPart* directional = nullptr;
     // prism1/prism2: the redirections at this hit (MaterialCalcEvaluator::redirect).
     const std::array<Redirection, 2>* redirections = nullptr;
     // BSDF/aBSDF: the data, the evaluated thickness (world units; 0 for aBSDF) and the up
@@ -268,6 +292,8 @@ struct SurfacePoint {
     // In photon-map mode, the hit of a ray below the first gather bounce: the BSDF's
     // specular direct light is in the photons already (RADIANCE ambRayInPmap).
     bool specularInPhotons = false;
+    // The distance the ray travelled to the hit (a glow shows only beyond its radius).
+    double distance = 0;
     double rayWeight = 1;     // RADIANCE rweight: how many jittered BSDF samples direct light gets
     double specJitter = 1;    // rtrace -ss (ShadeOptions::specJitter), for BSDF direct light
     bool backVisible = true;  // mkpmap -bv, for photons meeting a BSDF's empty back
@@ -404,6 +430,13 @@ struct BackwardResult {
     Color emitted;              // light/glow/spotlight radiance seen along -dir
     bool transparent = false;   // continue the ray unchanged (antimatter, back faces)
     bool useAlternate = false;  // shade with the alternate material (illum, mirror)
+    // A light seen by a ray descended from an ambient or sampled specular ray
+    // (sp.scatteredRay), whose light the direct calculation counts: black, and no
+    // contribution (RADIANCE source.c badcomponent; a glow beyond its radius shows).
+    bool uncounted = false;
+    // A transparent mist boundary: the medium the ray goes on in, and the mist crossed.
+    MediumChange passMedium;
+    const MistParams* mist = nullptr;
     // evaluate() gives light from behind the surface beyond what ambientTransmit says
     // (a BSDF's non-diffuse transmission, which is sampled rather than ambient).
     bool directFromBehind = false;
@@ -421,6 +454,37 @@ BackwardResult shadeBackward(const MaterialParams& m, const SurfacePoint& sp,
 // colour it passes with (aBSDF: its through peak; a thick BSDF: unchanged); a thin BSDF
 // stops it (its transmission reaches the far side only through the ambient).
 bool bsdfShadowPass(const BsdfParams& m, const SurfacePoint& sp, bool backVisible, Color& colour);
+
+// ---------------------------------------------------------------------------------------
+// Shadow rays: what a ray toward a light source does where it meets the material (the
+// SHADOW branch of each RADIANCE m_* routine), the third direction beside shadeBackward
+// and scatterPhoton.
+
+struct ShadowPass {
+    enum class Kind : uint8_t {
+        Opaque,     // stops the light
+        Transmit,   // goes on with `colour` (refracted along `bent` where that is set)
+        Reflect,    // a planar mirror: goes on reflected, light times `colour`
+        Emit,       // a light source: `colour` is its radiance toward the ray's origin
+        Alternate,  // an illum passed for another source: its alternate material decides
+    } kind = Kind::Opaque;
+    Color colour;
+    Vec3 bent;                         // Transmit through a refracting surface (zero: straight)
+    MediumChange medium;               // the medium the ray goes on in
+    const MistParams* mist = nullptr;  // the mist a medium change crosses
+};
+
+// The shadow ray travels sp.dir; sp is prepared as for shadeBackward (prepareHit).
+// `passIllum`: the ray is aimed at another source, so an illum it meets is its alternate
+// material (RADIANCE source.c passillum: a window's illum passes the sun through its
+// glass). Uses opt.backVisible; rough lobes are never sampled for shadow rays.
+ShadowPass shadowPass(const MaterialParams& m, const SurfacePoint& sp, bool passIllum,
+                      const ShadeOptions& opt, Rng& rng);
+
+// True where shadowPass is Opaque whatever else the hit holds (plastic, metal, the
+// anisotropic and function types, prisms; `front` or -bv): the common case, answered
+// without preparing a SurfacePoint.
+bool blocksShadows(const MaterialParams& m, bool front, bool backVisible);
 
 // ---------------------------------------------------------------------------------------
 // Forward direction: photon scattering (pmapmat.c).

@@ -334,6 +334,34 @@ void MaterialCalcEvaluator::setHit(int32_t material, const PatternPoint& at,
     ctx_.args = rec_->rargs;
     eval_.setRay(ctx_);
     errorsAtHit_ = eval_.mathErrors();
+    serial_ = ++nextSerial_;
+    hitMaterial_ = material;
+    hitAt_ = at;
+    hitNormal_ = shadingNormal;
+    hitPattern_ = pattern;
+}
+
+BoundHit MaterialCalcEvaluator::bound() {
+    BoundHit b;
+    b.ev_ = this;
+    b.serial_ = serial_;
+    b.material_ = hitMaterial_;
+    b.at_ = hitAt_;
+    b.normal_ = hitNormal_;
+    b.pattern_ = hitPattern_;
+    return b;
+}
+
+void MaterialCalcEvaluator::restore(const BoundHit& hit) {
+    if (serial_ == hit.serial_) return;
+    setHit(hit.material_, hit.at_, hit.normal_, hit.pattern_);
+    serial_ = hit.serial_;
+}
+
+Color BoundHit::operator()(const Vec3& toLight) const {
+    RP_CHECK(ev_);
+    ev_->restore(*this);
+    return ev_->directional(toLight);
 }
 
 Vec3 MaterialCalcEvaluator::anisoU() {
@@ -519,10 +547,43 @@ WgmdInputs wgmdHitInputs(const MaterialCalc& calc, MaterialCalcEvaluator& ev,
 
 namespace rp::material {
 
-void prepareHit(const MaterialCalc& calc, MaterialCalcEvaluator& ev, int32_t material,
-                const MaterialParams& params, const PatternPoint& at, SurfacePoint& sp,
-                const std::function<Color(const Vec3&)>* directional) {
-    if (!calc.uses(material)) return;
+MaterialCalcEvaluator& HitEvaluators::calc() {
+    RP_CHECK(calc_);
+    if (!calcEval_) calcEval_.emplace(*calc_);
+    return *calcEval_;
+}
+
+SurfaceChainEvaluator& HitEvaluators::chains() {
+    if (!chainEval_) chainEval_.emplace(chains_);
+    return *chainEval_;
+}
+
+bool needsPreparation(const MaterialCalc* calc, int32_t material, const MaterialParams& params) {
+    if (std::holds_alternative<WgmdParams>(params) || std::holds_alternative<PrismParams>(params))
+        return calc != nullptr;
+    return calc && calc->uses(material);
+}
+
+void prepareHit(HitEvaluators& evs, int32_t material, const MaterialParams& params,
+                const PatternPoint& at, SurfacePoint& sp, HitScratch& scratch, Rng& rng) {
+    const MaterialCalc* calc = evs.materialCalc();
+    if (!needsPreparation(calc, material, params)) return;
+    MaterialCalcEvaluator& ev = evs.calc();
+    if (const auto* w = std::get_if<WgmdParams>(&params)) {
+        scratch.wgmd = wgmdHitInputs(*calc, ev, evs.chains(), material, *w, at, sp, rng);
+        sp.wgmd = &scratch.wgmd;
+        return;
+    }
+    if (const auto* prism = std::get_if<PrismParams>(&params)) {
+        // m_direct.c: a ray aimed at no source (DxA DyA DzA zero); the functions see the
+        // plain normal and no pattern. Shadow rays toward its virtual sources are the
+        // direct calculation's (MaterialCalcEvaluator::redirect).
+        ev.setHit(material, at);
+        for (int k = 0; k < prism->redirections; ++k)
+            scratch.redirections[size_t(k)] = ev.redirect(k, Vec3{});
+        sp.redirections = &scratch.redirections;
+        return;
+    }
     ev.setHit(material, at, sp.normal, sp.pattern);
     if (std::holds_alternative<AnisoParams>(params) ||
         std::holds_alternative<AshikParams>(params)) {
@@ -532,27 +593,33 @@ void prepareHit(const MaterialCalc& calc, MaterialCalcEvaluator& ev, int32_t mat
         ev.brtdSpecular(refl, trans);
         sp.brtdSpecularReflection = refl;
         sp.brtdSpecularTransmission = trans;
-        sp.directional = directional;
+        scratch.directional = ev.bound();
+        sp.directional = &scratch.directional;
     } else if (std::holds_alternative<FuncParams>(params)) {
-        sp.directional = directional;
+        scratch.directional = ev.bound();
+        sp.directional = &scratch.directional;
     } else if (std::holds_alternative<BsdfParams>(params)) {
         ev.setBsdfInputs(sp);
     }
 }
 
-bool photonScatterReadsFunctions(PrimType type) {
-    switch (type) {
-        case PrimType::Plastic2:
-        case PrimType::Metal2:
-        case PrimType::Trans2:
-        case PrimType::Ashik2:
-        case PrimType::BRTDfunc:
-        case PrimType::BSDF:
-        case PrimType::ABSDF:
-            return true;
-        default:
-            return false;
-    }
+Redirection prismRedirect(const MaterialCalc& calc, MaterialCalcEvaluator& ev, int32_t material,
+                          const MaterialParams& params, const PatternPoint& at, int projection,
+                          const Vec3& toSource) {
+    const auto* prism = std::get_if<PrismParams>(&params);
+    if (!prism || projection >= prism->redirections || !calc.uses(material)) return {};
+    ev.setHit(material, at);
+    return ev.redirect(projection, toSource);
+}
+
+void resetPreparedInputs(SurfacePoint& sp) {
+    sp.uDir = Vec3{};
+    sp.brtdSpecularReflection = sp.brtdSpecularTransmission = std::nullopt;
+    sp.directional = nullptr;
+    sp.redirections = nullptr;
+    sp.bsdf = nullptr;
+    sp.bsdfThickness = 0;
+    sp.wgmd = nullptr;
 }
 
 }  // namespace rp::material

@@ -18,6 +18,7 @@
 #include "calc/program.h"
 #include "material/material.h"
 #include "material/pattern.h"
+#include "material/surface_chain.h"
 #include "scene/primitive.h"
 #include "scene/xform.h"
 #include "util/color.h"
@@ -91,6 +92,23 @@ private:
     std::shared_ptr<const calc::Program> program_;
 };
 
+// A hit set on a MaterialCalcEvaluator, to be evaluated again after the evaluator served
+// other hits (a shadow ray's BSDF, a prism relay): the directional part of the material
+// being lit is read per light sample, after those. Valid while the evaluator lives.
+class BoundHit final : public DirectionalPart {
+public:
+    Color operator()(const Vec3& toLight) const override;
+
+private:
+    friend class MaterialCalcEvaluator;
+    MaterialCalcEvaluator* ev_ = nullptr;
+    uint64_t serial_ = 0;
+    int32_t material_ = kVoid;
+    PatternPoint at_;
+    Vec3 normal_;
+    Color pattern_;
+};
+
 // Per-thread evaluation state for a MaterialCalc (not thread-safe itself).
 class MaterialCalcEvaluator {
 public:
@@ -104,6 +122,8 @@ public:
     // colour of the modifier chain's patterns) give NxP NyP NzP RdotP CrP CgP CbP.
     void setHit(int32_t material, const PatternPoint& at, const Vec3& shadingNormal,
                 const Color& pattern);
+    // The hit set last, as a value its reader can come back to (BoundHit).
+    BoundHit bound();
     // The same with the plain normal turned to the ray and no pattern (prisms, whose
     // functions see no NxP..CbP in RADIANCE).
     void setHit(int32_t material, const PatternPoint& at) {
@@ -145,6 +165,9 @@ public:
     void wgmd(WgmdInputs& in);
 
 private:
+    friend class BoundHit;
+    // Sets `hit` again if another hit was set since (its serial is no longer current).
+    void restore(const BoundHit& hit);
     double expression(int k);
     void setPerturbedNormal(const Vec3& n);
     double call(const MaterialCalc::Callable& c, std::span<const double> args);
@@ -158,6 +181,12 @@ private:
     Transform npTransform_;                  // world -> function space at the hit, for NxP NyP NzP
     Vec3 ctxDir_;                            // the ray direction at the hit (world), for RdotP
     long errorsAtHit_ = 0;
+    // The hit set last: its arguments and a serial that setHit advances (BoundHit).
+    uint64_t serial_ = 0, nextSerial_ = 0;
+    int32_t hitMaterial_ = kVoid;
+    PatternPoint hitAt_;
+    Vec3 hitNormal_;
+    Color hitPattern_;
 };
 
 // WGMDfunc at a hit, for either direction: wgmdInputs(m, sp), then each named component
@@ -168,20 +197,53 @@ WgmdInputs wgmdHitInputs(const MaterialCalc& calc, MaterialCalcEvaluator& ev,
                          SurfaceChainEvaluator& chains, int32_t material, const WgmdParams& m,
                          const PatternPoint& at, const SurfacePoint& sp, Rng& rng);
 
-// What a material reads from its functions at a hit, evaluated into sp: the u
-// orientation of plastic2/metal2/trans2/ashik2, BRTDfunc's specular colours, a BSDF's
-// data, thickness and up vector; and, for BRTDfunc and the *func/*data types, the
-// directional part through `directional` (a callback reading `ev` as set here; null when
-// only photons are scattered, which do not use it). The one preparation backward shading
-// and photon scattering share, so both see the same orientation. Nothing for a material
-// without functions (calc.uses(material) false).
-void prepareHit(const MaterialCalc& calc, MaterialCalcEvaluator& ev, int32_t material,
-                const MaterialParams& params, const PatternPoint& at, SurfacePoint& sp,
-                const std::function<Color(const Vec3&)>* directional);
+// What prepareHit evaluates into, kept by the caller for as long as the SurfacePoint is
+// used (the SurfacePoint points into it).
+struct HitScratch {
+    std::array<Redirection, 2> redirections{};
+    WgmdInputs wgmd;
+    BoundHit directional;
+};
 
-// True for the types whose photon scattering reads what prepareHit evaluates (the
-// anisotropic types, BRTDfunc, BSDF and aBSDF); the *func/*data types scatter photons
-// by their plain parameters.
-bool photonScatterReadsFunctions(PrimType type);
+// The evaluators prepareHit uses, per thread; made on first use (most rays and photons
+// meet materials without functions).
+struct HitEvaluators {
+    HitEvaluators(const MaterialCalc* calc, const SurfaceChains& chains)
+        : calc_(calc), chains_(chains) {}
+    MaterialCalcEvaluator& calc();
+    SurfaceChainEvaluator& chains();
+    const MaterialCalc* materialCalc() const { return calc_; }
+
+private:
+    const MaterialCalc* calc_;  // null: the scene has no function-driven material
+    const SurfaceChains& chains_;
+    std::optional<MaterialCalcEvaluator> calcEval_;
+    std::optional<SurfaceChainEvaluator> chainEval_;
+};
+
+// Whether prepareHit evaluates anything for `material` (a function-driven material, a
+// WGMDfunc or a prism); callers may skip it otherwise.
+bool needsPreparation(const MaterialCalc* calc, int32_t material, const MaterialParams& params);
+
+// The one preparation of a hit for all three directions (backward shading, shadow rays,
+// photon scattering), so that they see the same inputs: the u orientation of
+// plastic2/metal2/trans2/ashik2, BRTDfunc's specular colours, a BSDF's data, thickness
+// and up vector, WGMDfunc's expressions and component modifiers, prism redirections (for
+// a ray aimed at no source), and the directional part of BRTDfunc and the *func/*data
+// types. `at` as for setHit; sp.normal and sp.pattern are the hit's shading normal and
+// pattern. Nothing for a material needsPreparation rejects.
+void prepareHit(HitEvaluators& ev, int32_t material, const MaterialParams& params,
+                const PatternPoint& at, SurfacePoint& sp, HitScratch& scratch, Rng& rng);
+
+// prism1/prism2 (m_direct.c): redirection `projection` of `material` at `at` for a
+// shadow ray toward a virtual source, DxA DyA DzA along `toSource`; not ok where the
+// material is no prism, has no such projection or no functions.
+Redirection prismRedirect(const MaterialCalc& calc, MaterialCalcEvaluator& ev, int32_t material,
+                          const MaterialParams& params, const PatternPoint& at, int projection,
+                          const Vec3& toSource);
+
+// Clears what prepareHit sets, for a SurfacePoint reused from hit to hit (the photon
+// tracer's, one per path).
+void resetPreparedInputs(SurfacePoint& sp);
 
 }  // namespace rp::material

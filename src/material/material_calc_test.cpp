@@ -31,7 +31,7 @@ struct Fixture {
     std::unique_ptr<Scene> scene;
     std::unique_ptr<MaterialCalc> calc;
     std::unique_ptr<MaterialCalcEvaluator> eval;
-    std::function<Color(const Vec3&)> fn;
+    BoundHit bound;  // the hit set last (hit())
 
     void write(const std::string& name, const std::string& text) {
         std::ofstream((dir.path() / name).string()) << text;
@@ -42,7 +42,6 @@ struct Fixture {
             *scene,
             std::vector<std::string>{dir.path().string(), std::string(RP_SOURCE_DIR) + "/lib"});
         eval = std::make_unique<MaterialCalcEvaluator>(*calc);
-        fn = [this](const Vec3& l) { return eval->directional(l); };
     }
     // A hit on the plane z = 0 (normal +z); `shading` is the perturbed normal on the
     // ray's side (the plain one when not given).
@@ -59,12 +58,13 @@ struct Fixture {
         at.rdot = -dot(dir, at.normal);
         Vec3 n = shading ? *shading : at.rdot < 0 ? -at.normal : at.normal;
         eval->setHit(m, at, n, pattern);
+        bound = eval->bound();
         return m;
     }
     MaterialParams params(int32_t m) { return makeMaterial(scene->prims[m]); }
     SurfacePoint point(const Vec3& dir = {0, 0, -1}) {
         SurfacePoint sp = makeSurfacePoint(dir, {0, 0, 1}, true);
-        sp.directional = &fn;
+        sp.directional = &bound;
         return sp;
     }
 };

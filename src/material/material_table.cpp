@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "material/type_traits.h"
 #include "util/error.h"
 #include "util/warnings.h"
 
@@ -10,10 +11,7 @@ namespace rp::material {
 
 namespace {
 
-bool isLightType(PrimType t) {
-    return t == PrimType::Light || t == PrimType::Illum || t == PrimType::Glow ||
-           t == PrimType::Spotlight;
-}
+bool isLightType(PrimType t) { return typeTraits(t).light != TypeTraits::Light::None; }
 
 bool takesDirect(const MaterialParams& m) {
     return std::holds_alternative<NormalParams>(m) || std::holds_alternative<AnisoParams>(m) ||
@@ -43,7 +41,9 @@ MaterialRecord makeRecord(const Scene& scene, int32_t index, bool warnUnknown) {
     MaterialRecord e;
     const Primitive& p = scene.prims[size_t(index)];
     e.isLight = isLightType(p.type);
-    e.antimatter = p.type == PrimType::Antimatter;
+    e.antimatter = typeTraits(p.type).antimatter;
+    const bool bsdfProxy = p.type == PrimType::BSDF && !p.sargs.empty() && p.sargs[0] != "0";
+    e.plugsLeaks = !isTransparentMaterial(p.type) && !bsdfProxy;
     try {
         e.params = makeMaterial(p);
     } catch (const InputError& err) {
@@ -53,6 +53,12 @@ MaterialRecord makeRecord(const Scene& scene, int32_t index, bool warnUnknown) {
     e.diffuseLike = takesDirect(*e.params);
     e.backAbsorbs = opaqueBackAbsorbs(*e.params);
     e.reorientsBackHits = reorientsBackHits(*e.params);
+    e.passesIrradiance = std::holds_alternative<GlassParams>(*e.params) ||
+                         std::holds_alternative<DielectricParams>(*e.params) ||
+                         std::holds_alternative<AntimatterParams>(*e.params);
+    e.passesPhotonShadows = std::holds_alternative<AntimatterParams>(*e.params) ||
+                            std::holds_alternative<MistParams>(*e.params);
+    e.scattersPhotons = !std::holds_alternative<PrismParams>(*e.params);
     std::optional<std::string> alt;
     if (auto* m = std::get_if<MirrorParams>(&*e.params)) alt = m->alternate;
     if (auto* l = std::get_if<LightParams>(&*e.params)) alt = l->alternate;

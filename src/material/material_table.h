@@ -28,6 +28,18 @@ struct MaterialRecord {
     // the normal facing the ray; the others (lights, mirror, dielectric, BRTDfunc, BSDF,
     // mist, prisms) keep it as given.
     bool reorientsBackHits = false;
+    // With -i, rays pass it to compute the irradiance on the first opaque surface behind
+    // (RADIANCE irr_ignore: glass, dielectric, interface, antimatter).
+    bool passesIrradiance = false;
+    // A shadow ray stopped by transparent surfaces in photon-map mode still passes it
+    // (pmapmat.h shadowRayInPmap: antimatter and mist boundaries are no surfaces to it).
+    bool passesPhotonShadows = false;
+    // An ambient record behind it is hidden (RADIANCE ambient.c plugaleak: neither
+    // transparent, initotypes.c T_TRANSP, nor a thick BSDF's proxy). Set from the type
+    // even where the arguments are bad, as RADIANCE's test looks at the type only.
+    bool plugsLeaks = true;
+    // Photons can meet it (RADIANCE's photon tracer has no prism1/prism2).
+    bool scattersPhotons = true;
     std::vector<int32_t> clips;  // antimatter: the modifiers it clips (RADIANCE lastmod)
 };
 
@@ -39,6 +51,11 @@ int32_t lastModifier(const Scene& scene, int32_t before, const std::string& name
 // lastModifier, "void" and repeats skipped; unknown names are warned about with
 // `warnUnknown` (RADIANCE warns and goes on without them).
 std::vector<int32_t> antimatterClips(const Scene& scene, int32_t index, bool warnUnknown);
+
+// The mist's parameters if the record is a mist boundary, else null.
+inline const MistParams* mistOf(const MaterialRecord& r) {
+    return r.params ? std::get_if<MistParams>(&*r.params) : nullptr;
+}
 
 class MaterialTable {
 public:
@@ -52,6 +69,7 @@ public:
     const MaterialRecord& at(int32_t index) const;
     // The record of `index`, unchecked: for callers that checked it with at() before.
     const MaterialRecord& operator[](int32_t index) const { return records_[size_t(index)]; }
+    const Scene& scene() const { return scene_; }
     // Whether `index` is a material whose arguments are fine.
     bool usable(int32_t index) const {
         return index >= 0 && size_t(index) < records_.size() && records_[size_t(index)].params;

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 namespace rp::pmap {
@@ -132,18 +133,22 @@ size_t partition2(Photon* first, Photon* last, Pred left) {
     return size_t(l - first);
 }
 
-// Ranges up to this size are partitioned through a per-thread scratch buffer (98 kB, in
-// L2) by a branch-free scatter: the lower tree levels are many small ranges, where the
-// block partition's remainder loop would mispredict about half its branches.
+// Ranges up to this size are partitioned through a scratch buffer on the stack (98 kB,
+// in L2; uninitialised, so it costs nothing to set up) by a branch-free scatter: the
+// lower tree levels are many small ranges, where the block partition's remainder loop
+// would mispredict about half its branches.
 constexpr size_t kScatterRange = 4096;
 
-// The three-way partition of the m photons at p (cls() in {0, 1, 2}; nBelow of class 0,
-// nIn of class 1) by a scatter into scratch memory and a copy back, without branches on
-// the class.
+// The three-way partition of the m <= kScatterRange photons at p (cls() in {0, 1, 2};
+// nBelow of class 0, nIn of class 1) by a scatter into scratch memory and a copy back,
+// without branches on the class.
+// Not inlined: the buffer must live in this leaf's frame only, not in the frames of the
+// recursive tree build that calls it.
 template <class Class>
-void scatter3(Photon* p, size_t m, size_t nBelow, size_t nIn, Class cls) {
-    thread_local std::vector<Photon> scratch(kScatterRange);
-    Photon* out = scratch.data();
+[[gnu::noinline]] void scatter3(Photon* p, size_t m, size_t nBelow, size_t nIn, Class cls) {
+    static_assert(std::is_trivially_copyable_v<Photon>);
+    alignas(Photon) unsigned char scratch[kScatterRange * sizeof(Photon)];
+    Photon* out = reinterpret_cast<Photon*>(scratch);
     size_t next[3] = {0, nBelow, nBelow + nIn};
     for (size_t i = 0; i < m; ++i) std::memcpy(out + next[cls(p[i])]++, p + i, sizeof(Photon));
     std::memcpy(p, out, m * sizeof(Photon));

@@ -62,14 +62,11 @@ PhotonTracer::PhotonTracer(const Scene& scene, const SceneGeometry& geometry,
     bool sensorFound = false;
     for (size_t i = 0; i < prims.size(); ++i) {
         const Primitive& p = prims[i];
-        if (isModifier(p.type) && material::photonScatterReadsFunctions(p.type)) {
-            if (materialCalc_ && materialCalc_->uses(int32_t(i)))
-                roles_[i] |= kFunctions;
-            else  // a BSDF's data comes through MaterialCalc: callers must pass it
-                RP_CHECK(p.type != PrimType::BSDF && p.type != PrimType::ABSDF);
-        }
+        if (materials_.usable(int32_t(i)) &&
+            material::needsPreparation(materialCalc_, int32_t(i), *materials_[int32_t(i)].params))
+            roles_[i] |= kPrepare;
         if (!isModifier(p.type) || !sensors.count(p.name)) continue;
-        if (p.type != PrimType::Antimatter)
+        if (!materials_.usable(int32_t(i)) || !materials_[int32_t(i)].antimatter)
             throw InputError(p.loc, "photon sensor modifier " + p.name + " is not antimatter");
         roles_[i] |= kSensor;
         sensorFound = true;
@@ -135,7 +132,7 @@ const material::MaterialRecord& PhotonTracer::scatterer(int32_t m) const {
     const material::MaterialRecord& r = materials_.at(m);
     // RADIANCE's photon tracer has no prism1/prism2 scattering (pmapmat.c leaves them to
     // its default, an error); we say so at the material's line.
-    if (std::holds_alternative<material::PrismParams>(*r.params)) {
+    if (!r.scattersPhotons) {
         const Primitive& p = scene_.prims[size_t(m)];
         throw notSupportedYet(p.loc,
                               std::string(primTypeName(p.type)) + " material in photon maps");
@@ -144,11 +141,10 @@ const material::MaterialRecord& PhotonTracer::scatterer(int32_t m) const {
 }
 
 int32_t PhotonTracer::resolveChain(int32_t modifier, const Hit& hit, const Vec3& dir,
-                                   std::optional<material::SurfaceChainEvaluator>& eval, Rng& rng,
-                                   Color& pattern, Vec3& perturbation) const {
-    if (!eval) eval.emplace(chains_);
+                                   material::HitEvaluators& evals, Rng& rng, Color& pattern,
+                                   Vec3& perturbation) const {
     const auto at = material::PatternPoint::atHit(dir, hit);
-    material::ChainResult c = eval->resolve(modifier, at, rng);
+    material::ChainResult c = evals.chains().resolve(modifier, at, rng);
     if (c.count <= 0) return kVoid;
     int pick = 0;
     if (c.count > 1) {
@@ -159,15 +155,6 @@ int32_t PhotonTracer::resolveChain(int32_t modifier, const Hit& hit, const Vec3&
     pattern = l.pattern;
     perturbation = l.perturbation;
     return l.material;
-}
-
-void PhotonTracer::setFunctionValues(int32_t material, const material::MaterialParams& params,
-                                     const Hit& hit, const Vec3& dir,
-                                     std::optional<material::MaterialCalcEvaluator>& eval,
-                                     material::SurfacePoint& sp) const {
-    if (!eval) eval.emplace(*materialCalc_);
-    material::prepareHit(*materialCalc_, *eval, material, params,
-                         material::PatternPoint::atHit(dir, hit), sp, nullptr);
 }
 
 bool PhotonTracer::inRegions(const Vec3& p) const {
@@ -292,45 +279,64 @@ PhotonTracer::MediumStep PhotonTracer::crossMist(const material::MistParams& mis
     return MediumStep::Reached;
 }
 
-void PhotonTracer::trace(uint64_t seed, uint64_t index,
-                         const std::array<double, kNumPhotonMapTypes>& prob,
-                         PhotonBins& out) const {
-    light::EmittedPhoton e = plan_.emitPhoton(seed, index);
-    Rng rng(seed, RngDomain::Scattering, index);
-    Rng storeRng(seed, RngDomain::Sampling, index);
+// One photon's way through the scene: the state trace()'s phases read and change.
+struct PhotonTracer::PhotonPath {
+    PhotonPath(const PhotonTracer& t, uint64_t seed, uint64_t index, const StoreProbabilities& p,
+               PhotonBins& o)
+        : e(t.plan_.emitPhoton(seed, index)),
+          rng(seed, RngDomain::Scattering, index),
+          storeRng(seed, RngDomain::Sampling, index),
+          ray(e.ray),
+          flux(e.weight),
+          evals(t.materialCalc_, t.chains_),
+          prob(p),
+          out(o) {
+        // Path length limit: -ld and a local glow's radius (pmapsrc.c: the photon's rmax).
+        pathLimit = t.settings_.maxDistance > 0 ? t.settings_.maxDistance : HUGE_VAL;
+        if (e.source >= 0 && t.sourceMaxDistance_[size_t(e.source)] > 0)
+            pathLimit = std::fmin(pathLimit, t.sourceMaxDistance_[size_t(e.source)]);
+        // What encloses its source (RADIANCE's photons start in the global medium,
+        // whatever encloses them); photons from ports come from outside.
+        const bool local = e.source >= 0 && e.port < 0;
+        medium = local ? t.sourceMedium_[size_t(e.source)] : t.settings_.medium;
+        if (local) mists = t.sourceMists_[size_t(e.source)];
+        // What a photon meets first is direct light, stored in direct maps only
+        // (pmapmat.c addPhotons): the renderer's direct calculation counts it, and a
+        // global map holding it would count it again at every final-gather hit (issue 42:
+        // a ceiling point read 41.0 against 24.0). A photon from a port starts just outside
+        // it and is scattered by the port's own material (pmapsrc.c emitPhoton): past an
+        // antimatter or void port its first hit is still direct, past glass, trans or a
+        // BSDF it is indirect. Deliberately unlike RADIANCE: the first hits of a sky or
+        // ground glow are indirect, since no direct calculation holds their light
+        // (LightSource::ambientOnly). RADIANCE stores them in direct maps only and loses
+        // that light at final-gather hits (ceiling points under a sky through an
+        // antimatter port read 0.53 for 1.21 classic).
+        firstHitIndirect = e.source >= 0 && t.plan_.sources()[size_t(e.source)].ambientOnly();
+    }
 
-    // Path length limit: -ld and a local glow's radius (pmapsrc.c: the photon's rmax).
-    double pathLimit = settings_.maxDistance > 0 ? settings_.maxDistance : HUGE_VAL;
-    if (e.source >= 0 && sourceMaxDistance_[size_t(e.source)] > 0)
-        pathLimit = std::fmin(pathLimit, sourceMaxDistance_[size_t(e.source)]);
-
-    Ray ray = e.ray;
-    Color flux = e.weight;
-    // What encloses its source (RADIANCE's photons start in the global medium, whatever
-    // encloses them); photons from ports come from outside.
-    const bool local = e.source >= 0 && e.port < 0;
-    material::Medium medium = local ? sourceMedium_[size_t(e.source)] : settings_.medium;
-    material::MistSet mists = local ? sourceMists_[size_t(e.source)] : material::MistSet{};
-    // What a photon meets first is direct light, stored in direct maps only (pmapmat.c
-    // addPhotons): the renderer's direct calculation counts it, and a global map holding
-    // it would count it again at every final-gather hit (issue 42: a ceiling point read
-    // 41.0 against 24.0). A photon from a port starts just outside it and is scattered
-    // by the port's own material (pmapsrc.c emitPhoton): past an antimatter or void port
-    // its first hit is still direct, past glass, trans or a BSDF it is indirect.
-    // Deliberately unlike RADIANCE: the first hits of a sky or ground glow are indirect,
-    // since no direct calculation holds their light (LightSource::ambientOnly). RADIANCE
-    // stores them in direct maps only and loses that light at final-gather hits (ceiling
-    // points under a sky through an antimatter port read 0.53 for 1.21 classic).
-    const bool fromPort = e.port >= 0;
-    const bool firstHitIndirect = e.source >= 0 && plan_.sources()[size_t(e.source)].ambientOnly();
-    long scatters = 0;
-    long passes = 0;
     // RADIANCE compat (pmap.h PMAP_CAUSTICRAY): a photon is caustic when its last scatter
     // was specular, so D S+ D paths count too, not only L S+ D. The renderer adds the
     // caustic map at primary rays and its final gather does not follow specular
-    // transport, so this is what keeps the two maps from missing or double counting
-    // light reflected by mirrors and glass after a diffuse bounce (cornell: RADIANCE's
-    // caustic map is tinted by the walls). It also needs ~3x fewer emitted photons.
+    // transport, so this is what keeps the two maps from missing or double counting light
+    // reflected by mirrors and glass after a diffuse bounce (cornell: RADIANCE's caustic
+    // map is tinted by the walls). It also needs ~3x fewer emitted photons.
+    bool caustic() const { return scatters > 0 && lastSpecular; }
+    bool indirect() const { return scatters > 0 || firstHitIndirect; }
+    // On through `hit` unchanged (PMAP_XFER): not a bounce.
+    void passOn(const Hit& hit) {
+        ray = spawnRay(hit, ray.dir);
+        ++passes;
+    }
+
+    light::EmittedPhoton e;
+    Rng rng, storeRng;
+    double pathLimit = HUGE_VAL;
+    Ray ray;
+    Color flux;
+    material::Medium medium;
+    material::MistSet mists;
+    bool firstHitIndirect = false;
+    long scatters = 0, passes = 0;
     bool lastSpecular = false;
     bool firstSegment = true;
     double travelled = 0;
@@ -338,140 +344,140 @@ void PhotonTracer::trace(uint64_t seed, uint64_t index,
     // One per path, set at each hit (setSurfaceHit, pattern, normal, and prepareHit for
     // what a material's functions give); its other fields keep their defaults.
     material::SurfacePoint sp;
-    std::optional<material::MaterialCalcEvaluator> calcEval;   // made at the first use
-    std::optional<material::SurfaceChainEvaluator> chainEval;  // idem
-    auto causticNow = [&] { return scatters > 0 && lastSpecular; };
+    material::HitScratch scratch;  // what prepareHit gives, for the hit at hand
+    material::HitEvaluators evals;
+    const StoreProbabilities& prob;
+    PhotonBins& out;
+};
 
-    for (;;) {
-        if (scatters > settings_.maxBounce || passes > 4 * settings_.maxBounce + 1000) {
-            ++out.runaways;  // manual 4.3: terminated, warned once at the end
-            return;
-        }
-        ray.tmax = pathLimit - travelled;
-        if (!(ray.tmax > 0)) return;
-        std::optional<Hit> hit = geometry_.closestHit(ray);
-        if (medium.active()) {
-            MediumStep step = travelMedium(ray, hit ? &*hit : nullptr, medium, flux, travelled, rng,
-                                           storeRng, prob, out);
-            if (step == MediumStep::Lost) return;
-            if (step == MediumStep::Scattered) {
-                // Surface photons after this are indirect (global), never caustic.
-                ++scatters;
-                lastSpecular = false;
-                firstSegment = false;
-                continue;
-            }
-        }
-        if (!hit) return;
-        travelled += hit->t;
-
-        if (firstSegment && fromPort) {
-            firstSegment = false;
-            // pmap.c port rejection: a photon emitted from a port's partition that misses
-            // the port geometry is terminated (the partition overestimates its area).
-            if (hit->prim != e.portPrim) {
-                int32_t pm = scene_.prims[size_t(e.portPrim)].modifier;
-                int32_t hm = hit->modifier;
-                int32_t portMat = pm == kVoid ? kVoid : surfaces_[size_t(pm)].material;
-                int32_t hitMat = hm == kVoid ? kVoid : surfaces_[size_t(hm)].material;
-                if (portMat != hitMat) return;
-            }
-        }
-        firstSegment = false;
-
-        const int32_t modIndex = hit->modifier;
-        const SurfaceModifier* surf = modIndex == kVoid ? nullptr : &surfaces_[size_t(modIndex)];
-        if (!surf || surf->material == kVoid || clip.contains(modIndex)) {
-            // Void modifier or clipped by antimatter: transfer unchanged (PMAP_XFER).
-            ray = spawnRay(*hit, ray.dir);
-            ++passes;
-            continue;
-        }
-        // The chain at this hit: patterns colour the albedo, textures tilt the scattering
-        // normal (the stored photon keeps the surface's own), a mixture picks a material.
-        Color pattern{1, 1, 1};
-        Vec3 perturbation;
-        const int32_t matIndex = surf->plain ? surf->material
-                                             : resolveChain(modIndex, *hit, ray.dir, chainEval, rng,
-                                                            pattern, perturbation);
-        perturbation += hit->perturbation;  // a mesh's vertex normals (RADIANCE o_mesh.c)
-        if (matIndex == kVoid) {
-            ray = spawnRay(*hit, ray.dir);
-            ++passes;
-            continue;
-        }
-        // Plain chains' materials were checked in the constructor.
-        const material::MaterialRecord& mi =
-            surf->plain ? materials_[matIndex] : scatterer(matIndex);
-        const uint8_t role = roles_[size_t(matIndex)];
-        if (mi.antimatter) {
-            // pmapmat.c clipPhotonScatter: a sensor stores photons entering it (front
-            // side) and passes them on unscattered, like any antimatter.
-            if (hit->front && (role & kSensor) && surf->storeAllowed)
-                deposit(*hit, true, flux, scatters > 0 || firstHitIndirect, causticNow(), prob,
-                        storeRng, out);
-            clip.cross(mi.clips, hit->front);
-            ray = spawnRay(*hit, ray.dir);
-            ++passes;
-            continue;
-        }
-        if (const auto* mist = std::get_if<material::MistParams>(&*mi.params)) {
-            // pmapmat.c mistPhotonScatter: passed on (not a bounce) into the medium it
-            // enters or returns to.
-            const MediumStep step = crossMist(*mist, matIndex, *hit, pattern, ray, medium, mists,
-                                              flux, travelled, rng, storeRng, prob, out);
-            if (step == MediumStep::Lost) return;
-            if (step == MediumStep::Scattered) {
-                ++scatters;
-                lastSpecular = false;
-            } else {
-                ++passes;
-            }
-            continue;
-        }
-        if (mi.isLight) return;  // "Light sources doan' reflect"; nothing stored
-        if (!hit->front && !settings_.backVisible && mi.backAbsorbs) return;
-
-        const Vec3 facing = hit->front ? hit->normal : -hit->normal;
-        material::setSurfaceHit(sp, ray.dir, facing, hit->front);
-        sp.backVisible = settings_.backVisible;
-        sp.pattern = pattern;
-        if (lengthSquared(perturbation) > 0) {  // RADIANCE raynormal, turned to the photon
-            Vec3 n = normalize(hit->normal + perturbation);
-            sp.normal = hit->front ? n : -n;
-        }
-        const bool functions = role & kFunctions;
-        if (functions) setFunctionValues(matIndex, *mi.params, *hit, ray.dir, calcEval, sp);
-        material::WgmdInputs wgmd;  // WGMDfunc: its expressions and component modifiers
-        const auto* wgmdParams = std::get_if<material::WgmdParams>(&*mi.params);
-        if (wgmdParams && materialCalc_) {
-            if (!calcEval) calcEval.emplace(*materialCalc_);
-            if (!chainEval) chainEval.emplace(chains_);
-            wgmd = material::wgmdHitInputs(*materialCalc_, *calcEval, *chainEval, matIndex,
-                                           *wgmdParams,
-                                           material::PatternPoint::atHit(ray.dir, *hit), sp, rng);
-            sp.wgmd = &wgmd;
-        }
-        material::PhotonScatter s = material::scatterPhoton(*mi.params, sp, rng);
-        sp.wgmd = nullptr;
-        if (functions) sp.brtdSpecularReflection = sp.brtdSpecularTransmission = std::nullopt;
-        if (s.store && surf->storeAllowed)
-            deposit(*hit, hit->front, flux, scatters > 0 || firstHitIndirect, causticNow(), prob,
-                    storeRng, out);
-        if (s.kind == ScatterKind::Absorbed) return;
-        if (s.kind == ScatterKind::PassThrough) {
-            ray = spawnRay(*hit, ray.dir);
-            ++passes;
-            continue;
-        }
-        flux *= s.fluxFactor;
-        ++scatters;
-        lastSpecular = material::isSpecular(s.kind);
-        medium = material::changeMedium(medium, material::MediumChange{s.mediumKind, s.extinction},
-                                        settings_.medium);
-        ray = spawnRay(*hit, s.dir);
-        if (s.originOffset != 0) ray.origin += hit->normal * double(s.originOffset);
+void PhotonTracer::trace(uint64_t seed, uint64_t index, const StoreProbabilities& prob,
+                         PhotonBins& out) const {
+    PhotonPath path(*this, seed, index, prob, out);
+    while (advance(path)) {
     }
+}
+
+bool PhotonTracer::advance(PhotonPath& p) const {
+    if (p.scatters > settings_.maxBounce || p.passes > 4 * settings_.maxBounce + 1000) {
+        ++p.out.runaways;  // manual 4.3: terminated, warned once at the end
+        return false;
+    }
+    p.ray.tmax = p.pathLimit - p.travelled;
+    if (!(p.ray.tmax > 0)) return false;
+    std::optional<Hit> hit = geometry_.closestHit(p.ray);
+    if (p.medium.active()) {
+        MediumStep step = travelMedium(p.ray, hit ? &*hit : nullptr, p.medium, p.flux, p.travelled,
+                                       p.rng, p.storeRng, p.prob, p.out);
+        if (step == MediumStep::Lost) return false;
+        if (step == MediumStep::Scattered) {
+            // Surface photons after this are indirect (global), never caustic.
+            ++p.scatters;
+            p.lastSpecular = false;
+            p.firstSegment = false;
+            return true;
+        }
+    }
+    if (!hit) return false;
+    p.travelled += hit->t;
+    if (rejectedAtPort(p, *hit)) return false;
+    return atSurface(p, *hit);
+}
+
+bool PhotonTracer::rejectedAtPort(PhotonPath& p, const Hit& hit) const {
+    const bool first = p.firstSegment;
+    p.firstSegment = false;
+    // pmap.c port rejection: a photon emitted from a port's partition that misses the port
+    // geometry is terminated (the partition overestimates its area).
+    if (!first || p.e.port < 0 || hit.prim == p.e.portPrim) return false;
+    const int32_t pm = scene_.prims[size_t(p.e.portPrim)].modifier;
+    const int32_t hm = hit.modifier;
+    const int32_t portMat = pm == kVoid ? kVoid : surfaces_[size_t(pm)].material;
+    const int32_t hitMat = hm == kVoid ? kVoid : surfaces_[size_t(hm)].material;
+    return portMat != hitMat;
+}
+
+bool PhotonTracer::atSurface(PhotonPath& p, const Hit& hit) const {
+    const int32_t modIndex = hit.modifier;
+    const SurfaceModifier* surf = modIndex == kVoid ? nullptr : &surfaces_[size_t(modIndex)];
+    if (!surf || surf->material == kVoid || p.clip.contains(modIndex)) {
+        p.passOn(hit);  // void modifier or clipped by antimatter
+        return true;
+    }
+    // The chain at this hit: patterns colour the albedo, textures tilt the scattering
+    // normal (the stored photon keeps the surface's own), a mixture picks a material.
+    ChainHit at;
+    at.material = surf->plain ? surf->material
+                              : resolveChain(modIndex, hit, p.ray.dir, p.evals, p.rng, at.pattern,
+                                             at.perturbation);
+    at.perturbation += hit.perturbation;  // a mesh's vertex normals (RADIANCE o_mesh.c)
+    if (at.material == kVoid) {
+        p.passOn(hit);
+        return true;
+    }
+    // Plain chains' materials were checked in the constructor.
+    const material::MaterialRecord& mi =
+        surf->plain ? materials_[at.material] : scatterer(at.material);
+    if (mi.antimatter) {
+        // pmapmat.c clipPhotonScatter: a sensor stores photons entering it (front side)
+        // and passes them on unscattered, like any antimatter.
+        if (hit.front && (roles_[size_t(at.material)] & kSensor) && surf->storeAllowed)
+            deposit(hit, true, p.flux, p.indirect(), p.caustic(), p.prob, p.storeRng, p.out);
+        p.clip.cross(mi.clips, hit.front);
+        p.passOn(hit);
+        return true;
+    }
+    if (const material::MistParams* mist = material::mistOf(mi)) {
+        // pmapmat.c mistPhotonScatter: passed on (not a bounce) into the medium it enters
+        // or returns to.
+        const MediumStep step =
+            crossMist(*mist, at.material, hit, at.pattern, p.ray, p.medium, p.mists, p.flux,
+                      p.travelled, p.rng, p.storeRng, p.prob, p.out);
+        if (step == MediumStep::Lost) return false;
+        if (step == MediumStep::Scattered) {
+            ++p.scatters;
+            p.lastSpecular = false;
+        } else {
+            ++p.passes;
+        }
+        return true;
+    }
+    if (mi.isLight) return false;  // "Light sources doan' reflect"; nothing stored
+    if (!hit.front && !settings_.backVisible && mi.backAbsorbs) return false;
+    return scatterAt(p, hit, at, mi, surf->storeAllowed);
+}
+
+bool PhotonTracer::scatterAt(PhotonPath& p, const Hit& hit, const ChainHit& at,
+                             const material::MaterialRecord& mi, bool storeAllowed) const {
+    material::SurfacePoint& sp = p.sp;
+    const Vec3 facing = hit.front ? hit.normal : -hit.normal;
+    material::setSurfaceHit(sp, p.ray.dir, facing, hit.front);
+    sp.backVisible = settings_.backVisible;
+    sp.pattern = at.pattern;
+    if (lengthSquared(at.perturbation) > 0) {  // RADIANCE raynormal, turned to the photon
+        Vec3 n = normalize(hit.normal + at.perturbation);
+        sp.normal = hit.front ? n : -n;
+    }
+    const bool prepared = roles_[size_t(at.material)] & kPrepare;
+    if (prepared)
+        material::prepareHit(p.evals, at.material, *mi.params,
+                             material::PatternPoint::atHit(p.ray.dir, hit), sp, p.scratch, p.rng);
+    const material::PhotonScatter s = material::scatterPhoton(*mi.params, sp, p.rng);
+    if (prepared) material::resetPreparedInputs(sp);
+    if (s.store && storeAllowed)
+        deposit(hit, hit.front, p.flux, p.indirect(), p.caustic(), p.prob, p.storeRng, p.out);
+    if (s.kind == ScatterKind::Absorbed) return false;
+    if (s.kind == ScatterKind::PassThrough) {
+        p.passOn(hit);
+        return true;
+    }
+    p.flux *= s.fluxFactor;
+    ++p.scatters;
+    p.lastSpecular = material::isSpecular(s.kind);
+    p.medium = material::changeMedium(p.medium, material::MediumChange{s.mediumKind, s.extinction},
+                                      settings_.medium);
+    p.ray = spawnRay(hit, s.dir);
+    if (s.originOffset != 0) p.ray.origin += hit.normal * double(s.originOffset);
+    return true;
 }
 
 }  // namespace rp::pmap

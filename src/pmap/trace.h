@@ -72,8 +72,8 @@ public:
 
     // Emits photon `index` of the run keyed by `seed` and traces it. A deposit for map
     // type t is kept when its storage draw u < storeProbability[t]. Thread-safe.
-    void trace(uint64_t seed, uint64_t index,
-               const std::array<double, kNumPhotonMapTypes>& storeProbability,
+    using StoreProbabilities = std::array<double, kNumPhotonMapTypes>;
+    void trace(uint64_t seed, uint64_t index, const StoreProbabilities& storeProbability,
                PhotonBins& out) const;
 
     const TraceSettings& settings() const { return settings_; }
@@ -89,17 +89,33 @@ private:
                                    // chain with a mixture: the mixture, for port tests)
         bool storeAllowed = true;  // include/exclude sets
     };
-    // What this run's settings make of a material: a photon sensor (-aps), a BRTDfunc
-    // whose specular colours are expressions (materialCalc_).
-    enum MaterialRole : uint8_t { kSensor = 1, kFunctions = 2 };
+    // What this run's settings make of a material: a photon sensor (-aps), one whose hits
+    // are prepared (material::needsPreparation: functions, WGMDfunc components).
+    enum MaterialRole : uint8_t { kSensor = 1, kPrepare = 2 };
+
+    // trace()'s phases over one photon's path (defined in trace.cpp): the next segment
+    // and what ends it (false: the path ended); the port rejection of its first hit;
+    // what the surface's chain makes of it; the material's scattering.
+    struct PhotonPath;
+    // The material a chain gives at a hit, with the pattern and normal perturbation.
+    struct ChainHit {
+        int32_t material = kVoid;
+        Color pattern{1, 1, 1};
+        Vec3 perturbation;
+    };
+    bool advance(PhotonPath& p) const;
+    bool rejectedAtPort(PhotonPath& p, const Hit& hit) const;
+    bool atSurface(PhotonPath& p, const Hit& hit) const;
+    bool scatterAt(PhotonPath& p, const Hit& hit, const ChainHit& at,
+                   const material::MaterialRecord& mi, bool storeAllowed) const;
 
     // The material a photon meets at `hit` and what the chain did to it: for a plain
     // chain the material alone; otherwise the chain is evaluated at the hit, and of a
     // mixture's materials one is chosen with its weight's probability (pmapmat.c
     // mx_funcPhotonScatter draws one). Returns kVoid for an invisible surface.
     int32_t resolveChain(int32_t modifier, const Hit& hit, const Vec3& dir,
-                         std::optional<material::SurfaceChainEvaluator>& eval, Rng& rng,
-                         Color& pattern, Vec3& perturbation) const;
+                         material::HitEvaluators& evals, Rng& rng, Color& pattern,
+                         Vec3& perturbation) const;
     // The record of material `m` if photons can scatter there; throws its argument
     // error, or "not supported yet" for prisms.
     const material::MaterialRecord& scatterer(int32_t m) const;
@@ -126,10 +142,6 @@ private:
                          material::MistSet& mists, Color& flux, double& travelled, Rng& rng,
                          Rng& storeRng, const std::array<double, kNumPhotonMapTypes>& prob,
                          PhotonBins& out) const;
-
-    void setFunctionValues(int32_t material, const material::MaterialParams& params, const Hit& hit,
-                           const Vec3& dir, std::optional<material::MaterialCalcEvaluator>& eval,
-                           material::SurfacePoint& sp) const;
 
     const Scene& scene_;
     const SceneGeometry& geometry_;

@@ -2,6 +2,7 @@
 #include "render/clip_set.h"
 
 #include "material/material_table.h"
+#include "material/type_traits.h"
 
 namespace rp::render {
 
@@ -10,7 +11,7 @@ AntimatterTable::AntimatterTable(const Scene& scene, bool warnUnknown) {
     of_.assign(prims.size(), -1);
     std::vector<int32_t> listOf(prims.size(), -1);  // by antimatter material
     for (size_t i = 0; i < prims.size(); ++i) {
-        if (prims[i].type != PrimType::Antimatter) continue;
+        if (!material::typeTraits(prims[i].type).antimatter) continue;
         listOf[i] = int32_t(lists_.size());
         lists_.push_back(material::antimatterClips(scene, int32_t(i), warnUnknown));
     }

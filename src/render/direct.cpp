@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/source_polygon.h"
 #include "render/source_sampling.h"
 #include "util/small_sort.h"
 
@@ -37,6 +38,21 @@ constexpr int kMaxShadowSurfaces = 64;  // transmitting surfaces crossed per leg
 
 }  // namespace
 
+struct DirectScratch::Buffers {
+    std::vector<Candidate> cands;
+    std::vector<Vec3> crossings;  // where candidates' paths cross their relays
+    std::vector<SourceSample> samples;
+    std::vector<double> tail;  // suffix sums of the candidates' estimates
+    PolygonScratch polygon;
+    // n^dc for the last n seen: the same few candidate counts recur at every shaded
+    // point, and pow was a visible share of the direct calculation (bench/README_profile.md).
+    size_t powN = 0;
+    double powCertainty = -1, powValue = 0;
+};
+
+DirectScratch::DirectScratch() : b_(std::make_unique<Buffers>()) {}
+DirectScratch::~DirectScratch() = default;
+
 struct DirectLighting::Impl {
     const SceneGeometry& geometry;
     DirectOptions options;
@@ -48,6 +64,19 @@ struct DirectLighting::Impl {
     // `end` (may be null) receives how it ended when it reached the source.
     Color trace(const DirectPoint& at, const Candidate& c, const Vec3* crossings,
                 ShadowOracle& oracle, ShadowEnd* end = nullptr) const;
+
+    // compute's phases: every source's samples as candidates (with their coefficient and,
+    // unless every sample is tested, their unoccluded estimate), then RADIANCE's sorted
+    // shadow test of them.
+    void collect(const DirectPoint& at, const DirectCoefficient& coefficient, ShadowOracle& oracle,
+                 Rng& rng, DirectScratch::Buffers& b) const;
+    // Candidate `c` toward virtual source `src`: the path must cross each relay inside its
+    // polygon; false if it does not. Appends the crossings and sets `colour` to what the
+    // relays pass.
+    bool crossRelays(const DirectPoint& at, const DirectSource& src, const Candidate& c,
+                     ShadowOracle& oracle, std::vector<Vec3>& crossings, Color& colour) const;
+    Color test(const DirectPoint& at, ShadowOracle& oracle, DirectScratch::Buffers& b) const;
+    bool testAll() const { return !(options.threshold > 0); }
 };
 
 DirectLighting::DirectLighting(const Scene& scene, const SceneGeometry& geometry,
@@ -88,10 +117,7 @@ bool DirectLighting::isDistantSource(int32_t source) const {
 // secondary source must not relay another's light twice).
 namespace {
 bool passesIllum(const DirectSource& src, const Hit& hit) {
-    const auto kind = src.light.params.kind;
-    const bool weak =
-        kind == material::LightParams::Kind::Illum || kind == material::LightParams::Kind::Glow;
-    return !src.relays.empty() || !weak || !hit.front;
+    return !src.relays.empty() || !src.light.params.secondary() || !hit.front;
 }
 }  // namespace
 
@@ -100,7 +126,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c, con
     const DirectSource& src = list.sources[size_t(c.source)];
     const size_t legs = src.relays.size() + 1;
     Vec3 dir = c.toLight;
-    oracle.beginShadowRay();
+    ShadowPath path = at.shadow;
     Ray ray = at.hit ? spawnRay(*at.hit, dir) : Ray{at.point, dir, HUGE_VAL};
     // How far spawn offsets may have moved the ray off the straight line to the goal.
     double shift = at.hit ? at.hit->offset : 0;
@@ -154,7 +180,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c, con
                 absorb(remaining);
                 const Hit h =
                     sourceSurfaceHit(src, geometry.shapes(), list.regions, goal, dir, remaining);
-                ShadowEvent ev = oracle.event(h, dir);
+                ShadowEvent ev = oracle.event(h, dir, path);
                 return ev.kind == ShadowEvent::Kind::Emit ? reached(ev.colour, h.modifier, h.point)
                                                           : Color{};
             }
@@ -169,7 +195,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c, con
                     dir = r.dir;
                     redirected = true;
                 } else {
-                    ShadowEvent ev = oracle.event(*hit, dir);
+                    ShadowEvent ev = oracle.event(*hit, dir, path);
                     if (ev.kind != ShadowEvent::Kind::Reflect) return {};
                     through *= ev.colour;
                     dir = relay->reflectDir(dir);
@@ -180,7 +206,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c, con
                 continue;
             }
             const bool target = last && !escape && hit->prim == src.light.prim;
-            ShadowEvent ev = oracle.event(*hit, dir, !target && passesIllum(src, *hit));
+            ShadowEvent ev = oracle.event(*hit, dir, path, !target && passesIllum(src, *hit));
             if (target)
                 return ev.kind == ShadowEvent::Kind::Emit
                            ? reached(ev.colour, hit->modifier, hit->point)
@@ -212,7 +238,8 @@ Color DirectLighting::sampleWhole(size_t source, const DirectPoint& at, ShadowOr
     DirectOptions whole = im.options;
     whole.sampling = 0;  // RADIANCE nopart: the whole source is one sample
     std::vector<SourceSample> samples;
-    sampleSource(im.list, src, im.geometry.shapes(), at.point, whole, 1, rng, samples);
+    PolygonScratch unused;  // no subdivision
+    sampleSource(im.list, src, im.geometry.shapes(), at.point, whole, 1, rng, unused, samples);
     if (samples.empty()) return {};
     Candidate c;
     c.source = int32_t(source);
@@ -223,22 +250,19 @@ Color DirectLighting::sampleWhole(size_t source, const DirectPoint& at, ShadowOr
 }
 
 Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& coefficient,
-                              ShadowOracle& oracle, Rng& rng) const {
-    const Impl& im = *impl_;
-    const SourceList& list = im.list;
-    const ShapeSet& shapes = im.geometry.shapes();
-    // Scratch kept per thread (compute is not re-entered: shadow rays do not shade).
-    thread_local std::vector<Candidate> cands;
-    thread_local std::vector<Vec3> crossings;
-    thread_local std::vector<SourceSample> samples;
-    thread_local std::vector<double> tail;
-    cands.clear();
-    crossings.clear();
-    samples.clear();
-    // -dt 0 (rcontrib's setting) tests every sample: no estimate is needed to order them
-    // or to stand in for untested ones.
-    const bool testAll = !(im.options.threshold > 0);
+                              ShadowOracle& oracle, Rng& rng, DirectScratch& scratch) const {
+    DirectScratch::Buffers& b = *scratch.b_;
+    b.cands.clear();
+    b.crossings.clear();
+    impl_->collect(at, coefficient, oracle, rng, b);
+    if (b.cands.empty()) return {};
+    return impl_->test(at, oracle, b);
+}
 
+void DirectLighting::Impl::collect(const DirectPoint& at, const DirectCoefficient& coefficient,
+                                   ShadowOracle& oracle, Rng& rng,
+                                   DirectScratch::Buffers& b) const {
+    const ShapeSet& shapes = geometry.shapes();
     for (size_t si = 0; si < list.sources.size(); ++si) {
         const DirectSource& src = list.sources[si];
         // Virtual sources: the point must be on a mirror's reflecting side, and the
@@ -251,9 +275,9 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
             for (const RelayStep& st : src.relays)
                 from = st.unproject(list.relays[size_t(st.relay)].region, from);
         }
-        samples.clear();
-        sampleSource(list, src, shapes, from, im.options, at.weight, rng, samples);
-        for (SourceSample& s : samples) {
+        b.samples.clear();
+        sampleSource(list, src, shapes, from, options, at.weight, rng, b.polygon, b.samples);
+        for (SourceSample& s : b.samples) {
             // Direction leaving the point: the sample direction through the relays'
             // maps, last to first. A local sample's solid angle changes by the maps'
             // Jacobian |det L| / |L u|^3 (1 for mirrors); a distant source keeps its
@@ -273,65 +297,20 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
             c.source = int32_t(si);
             c.sample = s;
             c.toLight = d;
-            c.crossings = uint32_t(crossings.size());
-            // The path must cross each relay inside its polygon (RADIANCE traces the
-            // virtual source's ray into the relay object).
-            Color mirrorColour{1, 1, 1};
-            Vec3 p = at.point, dir = d;
-            bool ok = true;
-            for (const RelayStep& st : src.relays) {
-                const RelayPlane& m = list.relays[size_t(st.relay)];
-                double denom = dot(m.region.normal, dir);
-                double t = denom != 0 ? -m.region.signedDistance(p) / denom : -1;
-                if (!(t > 0)) {
-                    ok = false;
-                    break;
-                }
-                Vec3 x = p + dir * t;
-                Vec3 rel = x - m.region.origin;
-                if (!m.region.contains(dot(rel, m.region.uAxis), dot(rel, m.region.vAxis))) {
-                    ok = false;
-                    break;
-                }
-                Hit h = relaySurfaceHit(m, x, dir, t);
-                if (m.isPrism()) {
-                    material::Redirection r =
-                        oracle.redirect(h, dir, st.projection, st.toTarget(x));
-                    if (!r.ok || !(r.coef > 0)) {
-                        ok = false;
-                        break;
-                    }
-                    mirrorColour *= Color::grey(r.coef);
-                    crossings.push_back(x);
-                    p = x;
-                    dir = r.dir;
-                    continue;
-                }
-                ShadowEvent ev = oracle.event(h, dir);
-                if (ev.kind != ShadowEvent::Kind::Reflect) {
-                    ok = false;
-                    break;
-                }
-                mirrorColour *= ev.colour;
-                crossings.push_back(x);
-                p = x;
-                dir = m.reflectDir(dir);
-            }
-            if (!ok) {
-                crossings.resize(c.crossings);
-                continue;
-            }
+            c.crossings = uint32_t(b.crossings.size());
+            Color relayColour{1, 1, 1};
             // The coefficient is per unit solid angle (BRDF x cos, material::evaluate):
             // the sample's solid angle makes it RADIANCE's coef.
-            c.coef = coefficient(d, s.omega) * s.omega;
+            if (crossRelays(at, src, c, oracle, b.crossings, relayColour))
+                c.coef = coefficient(d, s.omega) * s.omega;
             if (c.coef.brightness() <= 0) {
-                crossings.resize(c.crossings);
+                b.crossings.resize(c.crossings);
                 continue;
             }
-            if (testAll) {
-                c.estimate = c.coef * mirrorColour;
+            if (testAll()) {
+                c.estimate = c.coef * relayColour;
                 c.brt = 1;
-                cands.push_back(c);
+                b.cands.push_back(c);
                 continue;
             }
             // Unoccluded value (RADIANCE srcvalue): the source's radiance toward us.
@@ -339,53 +318,87 @@ Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& co
             if (src.distant()) {
                 radiance = oracle.distantRadiance(src.light.shapeIndex, s.dir);
             } else {
+                ShadowPath probe = at.shadow;
                 ShadowEvent ev = oracle.event(
-                    sourceSurfaceHit(src, shapes, list.regions, s.target, s.dir, s.dist), s.dir);
+                    sourceSurfaceHit(src, shapes, list.regions, s.target, s.dir, s.dist), s.dir,
+                    probe);
                 if (ev.kind == ShadowEvent::Kind::Emit) radiance = ev.colour;
             }
-            c.estimate = c.coef * radiance * mirrorColour;
+            c.estimate = c.coef * radiance * relayColour;
             c.brt = c.estimate.brightness();
             if (c.brt <= 0) {
-                crossings.resize(c.crossings);
+                b.crossings.resize(c.crossings);
                 continue;
             }
-            cands.push_back(c);
+            b.cands.push_back(c);
         }
     }
-    if (cands.empty()) return {};
+}
 
+bool DirectLighting::Impl::crossRelays(const DirectPoint& at, const DirectSource& src,
+                                       const Candidate& c, ShadowOracle& oracle,
+                                       std::vector<Vec3>& crossings, Color& colour) const {
+    // RADIANCE traces the virtual source's ray into the relay object.
+    Vec3 p = at.point, dir = c.toLight;
+    for (const RelayStep& st : src.relays) {
+        const RelayPlane& m = list.relays[size_t(st.relay)];
+        double denom = dot(m.region.normal, dir);
+        double t = denom != 0 ? -m.region.signedDistance(p) / denom : -1;
+        if (!(t > 0)) return false;
+        Vec3 x = p + dir * t;
+        Vec3 rel = x - m.region.origin;
+        if (!m.region.contains(dot(rel, m.region.uAxis), dot(rel, m.region.vAxis))) return false;
+        Hit h = relaySurfaceHit(m, x, dir, t);
+        if (m.isPrism()) {
+            material::Redirection r = oracle.redirect(h, dir, st.projection, st.toTarget(x));
+            if (!r.ok || !(r.coef > 0)) return false;
+            colour *= Color::grey(r.coef);
+            dir = r.dir;
+        } else {
+            ShadowPath probe = at.shadow;
+            ShadowEvent ev = oracle.event(h, dir, probe);
+            if (ev.kind != ShadowEvent::Kind::Reflect) return false;
+            colour *= ev.colour;
+            dir = m.reflectDir(dir);
+        }
+        crossings.push_back(x);
+        p = x;
+    }
+    return true;
+}
+
+Color DirectLighting::Impl::test(const DirectPoint& at, ShadowOracle& oracle,
+                                 DirectScratch::Buffers& b) const {
+    std::vector<Candidate>& cands = b.cands;
     // RADIANCE compat (source.c direct): test the brightest first; stop when the next
     // nshadcheck = n^dc estimates together fall below dt/weight times what has been
     // found so far. Stable sort: ties keep source order, so results are reproducible.
     // A handful of candidates is usual (stableSortSmall: no buffer allocated per call).
-    if (!testAll)
+    if (!testAll())
         stableSortSmall(cands.begin(), cands.end(),
                         [](const Candidate& a, const Candidate& b) { return a.brt > b.brt; });
     const size_t n = cands.size();
-    tail.assign(n + 1, 0.0);
-    for (size_t i = n; i-- > 0;) tail[i] = tail[i + 1] + cands[i].brt;
-    // n^dc for the last n seen (the same few counts recur at every shaded point).
-    thread_local size_t powN = 0;
-    thread_local double powCertainty = -1, powValue = 0;
-    const double certainty = std::clamp(im.options.certainty, 0.0, 1.0);
-    if (n != powN || certainty != powCertainty) {
-        powN = n;
-        powCertainty = certainty;
-        powValue = std::pow(double(n), certainty);
+    b.tail.assign(n + 1, 0.0);
+    for (size_t i = n; i-- > 0;) b.tail[i] = b.tail[i + 1] + cands[i].brt;
+    const double certainty = std::clamp(options.certainty, 0.0, 1.0);
+    if (n != b.powN || certainty != b.powCertainty) {
+        b.powN = n;
+        b.powCertainty = certainty;
+        b.powValue = std::pow(double(n), certainty);
     }
-    const size_t nshadcheck = size_t(powValue + 0.5);
-    const double threshold = im.options.threshold / std::fmax(at.weight, 1e-9);
+    const size_t nshadcheck = size_t(b.powValue + 0.5);
+    const double threshold = options.threshold / std::fmax(at.weight, 1e-9);
 
     Color total;
     double testedEstimate = 0, testedFound = 0;
     size_t sn = 0;
     for (; sn < n; ++sn) {
-        double window = sn + nshadcheck >= n ? tail[sn] : tail[sn] - tail[sn + nshadcheck];
+        double window = sn + nshadcheck >= n ? b.tail[sn] : b.tail[sn] - b.tail[sn + nshadcheck];
         if (window < threshold * total.brightness()) break;
         const Candidate& c = cands[sn];
         ShadowEnd end;
-        Color value = c.coef * im.trace(at, c, crossings.data() + c.crossings, oracle,
-                                        at.contrib ? &end : nullptr);
+        Color value = c.coef * trace(at, c, b.crossings.data() + c.crossings, oracle,
+                                     at.contrib ? &end : nullptr);
         // RADIANCE compat (source.c direct, rcontrib.c trace_contrib): the shadow ray that
         // reached its source tells rcontrib its coefficient and the source's radiance.
         if (at.contrib && end.modifier >= 0 && at.contrib->tracks(end.modifier))

@@ -15,6 +15,7 @@
 
 #include "geometry/scene_geometry.h"
 #include "material/material.h"
+#include "render/clip_set.h"
 #include "render/render_options.h"
 #include "render/renderer.h"
 #include "render/source_list.h"
@@ -25,20 +26,17 @@
 
 namespace rp::render {
 
-// What a shadow ray does where it meets a surface (answered by the renderer core).
-struct ShadowEvent {
-    enum class Kind : uint8_t {
-        Opaque,    // blocked: the sample contributes nothing
-        Transmit,  // continue straight on, light multiplied by `colour` (glass, trans)
-        Reflect,   // planar mirror: continue reflected, light multiplied by `colour`
-        Emit,      // a light source surface: `colour` is its radiance toward the ray origin
-    } kind = Kind::Opaque;
-    Color colour;
-    // Transmit through a refracting dielectric: the new direction (zero: straight on)
-    // and the medium the ray enters (its extinction applies up to the next surface).
-    Vec3 bent;
-    material::MediumChange medium;
-    const material::MistParams* mist = nullptr;  // the mist a medium change crosses
+// What a shadow ray does where it meets a surface (material::shadowPass, answered by the
+// renderer core through its modifier chain; never Alternate here).
+using ShadowEvent = material::ShadowPass;
+
+// What a shadow ray carries from surface to surface: each shadow ray starts with its lit
+// point's DirectPoint::shadow.
+struct ShadowPath {
+    ClipSet clip;  // the antimatter volumes it is inside (clip_set.h)
+    // PhotonMode::shadowsStopAtTransparent: the photons carry what transparent surfaces
+    // would pass.
+    bool transparentBlocks = false;
 };
 
 // Per-thread access to materials for shadow rays. Implemented by the renderer core.
@@ -47,14 +45,12 @@ public:
     virtual ~ShadowOracle() = default;
     // The first surface along `ray` (t < ray.tmax).
     virtual std::optional<Hit> closestHit(const Ray& ray) = 0;
-    // A shadow ray is about to be traced from the point being lit: events that follow
-    // belong to it (the renderer resets what antimatter it is inside).
-    virtual void beginShadowRay() {}
-    // What a shadow ray travelling in `dir` does at `hit` (antimatter passes it, Transmit).
-    // `passIllum`: the ray is aimed at another source, so an illum it meets is its
-    // alternate material (RADIANCE source.c passillum: a window's illum passes the sun
-    // through its glass).
-    virtual ShadowEvent event(const Hit& hit, const Vec3& dir, bool passIllum = false) = 0;
+    // What a shadow ray travelling in `dir` along `path` does at `hit` (antimatter passes
+    // it, Transmit, and changes path.clip). `passIllum`: the ray is aimed at another
+    // source, so an illum it meets is its alternate material (RADIANCE source.c
+    // passillum: a window's illum passes the sun through its glass).
+    virtual ShadowEvent event(const Hit& hit, const Vec3& dir, ShadowPath& path,
+                              bool passIllum = false) = 0;
     // Radiance of distant source `source` (index into SceneGeometry::sources()) seen in
     // unit direction `dir` (patterns applied); zero if it is not a light source.
     virtual Color distantRadiance(int32_t source, const Vec3& dir) = 0;
@@ -88,6 +84,7 @@ struct DirectPoint {
     // shadow path transmits (RADIANCE: the shadow ray's trace_contrib call).
     ContributionSink* contrib = nullptr;
     Color contribCoef{1, 1, 1};
+    ShadowPath shadow;  // what each shadow ray from here starts with
 };
 
 // RADIANCE's coefficient function for one source sample: the material's BRDF*cos for
@@ -96,6 +93,22 @@ struct DirectPoint {
 // compute() multiplies it by omega: a sample contributes
 // coefficient(toLight, omega) * omega * radiance (so a coefficient of cos gives irradiance).
 using DirectCoefficient = std::function<Color(const Vec3& toLight, double omega)>;
+
+// Working memory of DirectLighting::compute (candidate samples, relay crossings, the
+// subdivision of sources), kept per thread by the caller so that shading a point does
+// not allocate.
+class DirectScratch {
+public:
+    DirectScratch();
+    ~DirectScratch();
+    DirectScratch(const DirectScratch&) = delete;
+    DirectScratch& operator=(const DirectScratch&) = delete;
+
+private:
+    friend class DirectLighting;
+    struct Buffers;
+    std::unique_ptr<Buffers> b_;
+};
 
 // Where we differ from RADIANCE, and why (details beside the code):
 //  - subdivision (source_sampling.h): polygon cells are clipped exactly against the
@@ -134,7 +147,7 @@ public:
     // coefficient(toLight, omega) * radiance arriving along the shadow ray, honouring
     // -dt/-dc (untested sources estimated as RADIANCE does) and -dj.
     Color compute(const DirectPoint& at, const DirectCoefficient& coefficient, ShadowOracle& oracle,
-                  Rng& rng) const;
+                  Rng& rng, DirectScratch& scratch) const;
 
     // One sample of real source `source` as a whole (no subdivision) seen from `at.point`
     // in a medium (RADIANCE srcscatter: nopart, srcray with no parent surface): the

@@ -12,11 +12,16 @@
 #include <string>
 
 #include "light/light_sources.h"
+#include "render/source_polygon.h"
 #include "render/source_sampling.h"
 #include "scene/reader.h"
 
 namespace rp::render {
 namespace {
+
+// The per-thread working memory the renderer keeps (one thread here).
+DirectScratch scratch;
+PolygonScratch polygon;
 
 class TestOracle : public ShadowOracle {
 public:
@@ -25,7 +30,7 @@ public:
         ++rays;
         return geo_.closestHit(ray);
     }
-    ShadowEvent event(const Hit& hit, const Vec3&, bool) override {
+    ShadowEvent event(const Hit& hit, const Vec3&, ShadowPath&, bool) override {
         int32_t mat = light::findMaterial(scene_, hit.prim);
         if (mat == kVoid) return {};
         const Primitive& m = scene_.prims[size_t(mat)];
@@ -99,7 +104,7 @@ struct Fixture {
         at.point = p;
         at.normal = at.geomNormal = n;
         Rng rng(seed, RngDomain::Test, 0);
-        Color c = direct.compute(at, cosine(n), oracle, rng);
+        Color c = direct.compute(at, cosine(n), oracle, rng, scratch);
         if (rays) *rays = oracle.rays;
         return c;
     }
@@ -175,7 +180,7 @@ TEST(DirectSquare, ConcavePolygonCellsCoverItsArea) {
     Vec3 from{0.1, 0.1, 0};
     opt.jitter = 1;
     sampleSource(direct.sourceList(), direct.sourceList().sources[0], f.geo.shapes(), from, opt, 1,
-                 rng, samples);
+                 rng, polygon, samples);
     double sum = 0, area = 0;
     for (const auto& s : samples) {
         sum += s.omega;
@@ -294,7 +299,7 @@ TEST(DirectDistant, PenumbraOfAStraightEdgeIsAUniformDisk) {
             open.point = {5, 0, 0};
             open.normal = open.geomNormal = {0, 0, 1};
             Rng rng0(1, RngDomain::Test, 7);
-            const double full = direct.compute(open, cosine(open.normal), oracle, rng0).r;
+            const double full = direct.compute(open, cosine(open.normal), oracle, rng0, scratch).r;
             ASSERT_GT(full, 0);
             for (double s : {-0.9, -0.5, -0.2, 0.0, 0.3, 0.7}) {
                 DirectPoint at;
@@ -303,7 +308,7 @@ TEST(DirectDistant, PenumbraOfAStraightEdgeIsAUniformDisk) {
                 double sum = 0;
                 for (int i = 0; i < c.calls; ++i) {
                     Rng rng(uint64_t(i), RngDomain::Test, 7);
-                    sum += direct.compute(at, cosine(at.normal), oracle, rng).r / full;
+                    sum += direct.compute(at, cosine(at.normal), oracle, rng, scratch).r / full;
                 }
                 const double want = exact(s);
                 const double sigma =
@@ -527,7 +532,7 @@ TEST(DirectPointOnSurface, SpawnsOffTheHitSurface) {
     at.normal = at.geomNormal = {0, 0, 1};
     at.hit = &*hit;
     Rng rng(1, RngDomain::Test, 0);
-    double e = direct.compute(at, cosine(at.normal), oracle, rng).r;
+    double e = direct.compute(at, cosine(at.normal), oracle, rng, scratch).r;
     double exact = rectIrradiance(100, -0.35, 0.15, -0.25, 0.25, 1);
     EXPECT_NEAR(e, exact, 0.005 * exact);
 }
@@ -552,9 +557,11 @@ TEST(DirectJitter, StaysWithinTheCell) {
     const DirectSource& src = direct.sourceList().sources[0];
     std::vector<SourceSample> centred, jittered;
     Rng rng(5, RngDomain::Test, 0);
-    sampleSource(direct.sourceList(), src, f.geo.shapes(), {0, 0, 0}, opt, 1, rng, centred);
+    sampleSource(direct.sourceList(), src, f.geo.shapes(), {0, 0, 0}, opt, 1, rng, polygon,
+                 centred);
     opt.jitter = 0.5;
-    sampleSource(direct.sourceList(), src, f.geo.shapes(), {0, 0, 0}, opt, 1, rng, jittered);
+    sampleSource(direct.sourceList(), src, f.geo.shapes(), {0, 0, 0}, opt, 1, rng, polygon,
+                 jittered);
     ASSERT_EQ(centred.size(), 64u);
     ASSERT_EQ(jittered.size(), centred.size());
     for (size_t i = 0; i < centred.size(); ++i) {
@@ -626,7 +633,7 @@ TEST(DirectVirtual, DistantSourceThroughAPrism) {
     at.normal = at.geomNormal = n;
     Rng rng(1, RngDomain::Test, 0);
     film.toSource.clear();
-    EXPECT_NEAR(direct.compute(at, cosine(n), oracle, rng).r, exact, 1e-6 * exact);
+    EXPECT_NEAR(direct.compute(at, cosine(n), oracle, rng, scratch).r, exact, 1e-6 * exact);
     // DxA DyA DzA aim at the sun (m_direct.c: the source the virtual one was made from).
     ASSERT_FALSE(film.toSource.empty());
     for (const Vec3& a : film.toSource) EXPECT_NEAR(dot(a, sun), 1, 1e-12);
@@ -637,7 +644,7 @@ TEST(DirectVirtual, DistantSourceThroughAPrism) {
     // Above the film the sun is seen directly, not its image.
     at.point = {0, 0, 1};
     double sunDirect = 1000 * omega * dot(sun, n);
-    EXPECT_NEAR(direct.compute(at, cosine(n), oracle, rng).r, sunDirect, 1e-6 * sunDirect);
+    EXPECT_NEAR(direct.compute(at, cosine(n), oracle, rng, scratch).r, sunDirect, 1e-6 * sunDirect);
 }
 
 TEST(DirectVirtual, Prism2MakesAnImagePerRedirection) {
@@ -664,7 +671,7 @@ TEST(DirectVirtual, Prism2MakesAnImagePerRedirection) {
     at.point = {0, 0, -1};
     at.normal = at.geomNormal = n;
     Rng rng(1, RngDomain::Test, 0);
-    EXPECT_NEAR(direct.compute(at, cosine(n), oracle, rng).r, exact, 1e-6 * exact);
+    EXPECT_NEAR(direct.compute(at, cosine(n), oracle, rng, scratch).r, exact, 1e-6 * exact);
 }
 
 }  // namespace

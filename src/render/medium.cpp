@@ -29,7 +29,7 @@ Color Renderer::Context::participate(const Ray& ray, double t, const RayState& s
     const material::Medium& m = mediumOf(state);
     transmit = m.transmittance(t);
     if (!m.scatters()) return {};
-    if (impl.photons.hasVolume() && photonLookups) return volumeScatter(ray, t, state);
+    if (impl.photonMode.volumeFromPhotons() && photonLookups) return volumeScatter(ray, t, state);
     Color in;
     // Indirect light scattered in: the ambient value over the segment (rayparticipate).
     in += m.albedo * impl.options.ambient.value * (Color{1, 1, 1} - transmit);
@@ -73,7 +73,7 @@ Color Renderer::Context::sourceScatter(const Ray& ray, double t, const RayState&
     at.transmits = true;
     at.weight = state.weight;
     at.medium = &m;
-    shadowBlockedByTransparent_ = shadowInPhotonMap(state);
+    at.shadow = shadowStart(state);
     for (int i = 0; i < sources.count; ++i) {
         const size_t source = size_t(sources.index[size_t(i)]);
         for (int j = 0; j < n; ++j) {
@@ -82,7 +82,6 @@ Color Renderer::Context::sourceScatter(const Ray& ray, double t, const RayState&
             if (toPoint.brightness() <= kFtiny) break;  // too far in
             at.point = ray.origin + ray.dir * tj;
             at.normal = at.geomNormal = -ray.dir;
-            shadowBase_ = shadowClip_ = state.clip;
             Vec3 toLight;
             Color l = impl.direct.sampleWhole(source, at, *this, rng, toLight);
             if (l.brightness() <= kFtiny) continue;
@@ -100,7 +99,7 @@ void Renderer::Context::cross(MediaState& state, const Passage& passage,
     using K = material::MediumChange::Kind;
     const material::MediumChange& c = passage.crossing;
     const std::vector<int32_t>& mine = impl.mistSources.at(passage.mist);
-    const auto* mist = &std::get<material::MistParams>(*impl.material(passage.mist).params);
+    const material::MistParams* mist = passage.mistParams;
     if (c.kind == K::EnterMist) {
         state.mists.enter(passage.mist);
         state.medium = material::changeMedium(state.medium, c, impl.globalMedium, mist);

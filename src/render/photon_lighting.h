@@ -19,6 +19,7 @@
 #include "pmap/density.h"
 #include "pmap/photon_map.h"
 #include "pmap/photon_store.h"
+#include "render/photon_mode.h"
 #include "render/render_options.h"
 #include "render/renderer.h"
 #include "scene/primitive.h"
@@ -55,6 +56,10 @@ public:
     // Caustic photons at the hits of non-ambient rays: a caustic map's, or those of a
     // contribution map that arrived through specular surfaces (RADIANCE ambPmapCaustic).
     bool hasCausticLight() const { return caustic_ >= 0 || contribCaustic_; }
+    // Which kinds are loaded (PhotonMode's input).
+    PhotonMapKinds kinds() const {
+        return {hasGlobal(), hasCaustic(), hasDirect(), hasVolume(), hasContrib(), contribCaustic_};
+    }
 
     // Per-thread lookup state (adaptive radius, result buffers); adds its lookup counts
     // to the owner's when destroyed.

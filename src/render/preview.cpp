@@ -8,6 +8,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "material/type_traits.h"
+
 namespace rp {
 
 Pixel previewColour(const Scene& scene, int32_t modifier) {
@@ -17,33 +19,18 @@ Pixel previewColour(const Scene& scene, int32_t modifier) {
     if (m.rargs.size() < 3) return grey;
     Pixel c{float(m.rargs[0]), float(m.rargs[1]), float(m.rargs[2])};
     auto [r, g, b] = c;
-    switch (m.type) {
-        case PrimType::Light:
-        case PrimType::Glow:
-        case PrimType::Spotlight:
-        case PrimType::Illum: {
+    switch (material::typeTraits(m.type).preview) {
+        case material::TypeTraits::Preview::Emitter: {
             // Emitters show as white-ish, keeping their colour balance.
             float mx = std::max({r, g, b});
             return mx > 0 ? Pixel{r / mx, g / mx, b / mx} : grey;
         }
-        case PrimType::Plastic:
-        case PrimType::Metal:
-        case PrimType::Trans:
-        case PrimType::Plastic2:
-        case PrimType::Metal2:
-        case PrimType::Trans2:
-        case PrimType::Ashik2:
-        case PrimType::Mirror:
-        case PrimType::Glass:
-        case PrimType::Dielectric:
-        case PrimType::Interface:
-        case PrimType::Plasfunc:
-        case PrimType::Metfunc:
-        case PrimType::Transfunc:
+        case material::TypeTraits::Preview::Reflectance:
             return c;
-        default:
+        case material::TypeTraits::Preview::Grey:
             return grey;
     }
+    return grey;
 }
 
 Picture renderPreview(const Scene& scene, const SceneGeometry& geometry,

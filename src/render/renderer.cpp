@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "material/mist_probe.h"
+#include "material/type_traits.h"
 #include "render/rcontrib.h"
 #include "render/renderer_impl.h"
 #include "util/error.h"
@@ -28,7 +29,7 @@ std::unordered_map<int32_t, std::vector<int32_t>> mistSourceLists(const Scene& s
     const SourceList& list = direct.sourceList();
     for (size_t i = 0; i < scene.prims.size(); ++i) {
         const Primitive& p = scene.prims[i];
-        if (p.type != PrimType::Mist) continue;
+        if (!material::typeTraits(p.type).mist) continue;
         std::vector<int32_t>& ids = out[int32_t(i)];
         for (const std::string& name : p.sargs) {
             int32_t found = -1;
@@ -54,13 +55,10 @@ std::unordered_map<int32_t, std::vector<int32_t>> mistSourceLists(const Scene& s
     return out;
 }
 
-// Photon-map mode with a global map (manual 5.1, RADIANCE 5.4): the ambient calculation
-// makes one bounce (final gather) whose sample hits read the global map; any positive
-// -ab acts as 1, and so does -ab 0 (RADIANCE 5.4 raises it to 1, see the caustic and mist
-// validation READMEs); a negative -ab reads the map at the primary hit (no gather).
-AmbientOptions photonAmbientOptions(const RenderOptions& o, const PhotonLighting& photons) {
+// The -a options as used: photon-map mode fixes -ab (PhotonMode::ambientBounces).
+AmbientOptions ambientOptionsIn(const RenderOptions& o, const PhotonMode& mode) {
     AmbientOptions a = o.ambient;
-    if (photons.active()) a.bounces = a.bounces < 0 ? -1 : 1;
+    a.bounces = mode.ambientBounces();
     return a;
 }
 
@@ -98,14 +96,14 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
       trackedSources(trackedLightSources(s, g, o)),
       photons(o.photonMaps, o.photonMaxRadius, s, o.contributions ? &trackedSources : nullptr,
               photonStoreOptions(o)),
-      ambientOptions(photonAmbientOptions(o, photons)),
-      // RADIANCE compat (source.c): in photon-map mode virtual sources are not made;
-      // light from mirrors (and prisms) then arrives through caustic photons.
+      photonMode(photons.kinds(), o.ambient.bounces),
+      ambientOptions(ambientOptionsIn(o, photonMode)),
       direct(
-          s, g, o.direct, o.photonMaps.empty(),
+          s, g, o.direct, photonMode.virtualSources(),
           [this](const Hit& hit, const Vec3& dir, int projection, const Vec3& toSource) {
               material::MaterialCalcEvaluator ev(materialCalc);
-              return evalRedirect(scene, materialCalc, ev, hit, dir, projection, toSource);
+              return evalRedirect(chains.materials(), materialCalc, ev, hit, dir, projection,
+                                  toSource);
           },
           globalMediumOf(o.mist)),
       ambient(ambientOptions, g.sceneCube().size, s, o.limits.minWeight),
@@ -113,6 +111,11 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
       globalMedium(globalMediumOf(o.mist)),
       mistSources(mistSourceLists(s, direct)),
       hasMists(material::sceneHasMist(s)) {
+    prepares.resize(s.prims.size());
+    for (size_t i = 0; i < s.prims.size(); ++i)
+        prepares[i] = chains.materials().usable(int32_t(i)) &&
+                      material::needsPreparation(&materialCalc, int32_t(i),
+                                                 *chains.materials()[int32_t(i)].params);
     // Every surface's chain must be evaluable (RADIANCE checks modifiers as it loads).
     for (const Primitive& p : s.prims)
         if (isSurface(p.type) && p.type != PrimType::Source) chains.checkChain(p.modifier);

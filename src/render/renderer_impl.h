@@ -18,6 +18,7 @@
 #include "render/clip_set.h"
 #include "render/direct.h"
 #include "render/photon_lighting.h"
+#include "render/photon_mode.h"
 #include "render/renderer.h"
 #include "util/rng.h"
 
@@ -66,6 +67,7 @@ struct RayState {
     // rcoef). Participating media are not part of it, as in RADIANCE.
     ContributionSink* contrib = nullptr;
     Color contribCoef{1, 1, 1};
+    PathDepth pathDepth() const { return {ambientLevel, depth}; }
 };
 
 // One material record, checked once. `error` holds the message for a record that cannot
@@ -84,6 +86,7 @@ struct Renderer::Impl {
     // material; empty otherwise.
     std::vector<bool> trackedSources;
     PhotonLighting photons;         // -ap maps (inactive without)
+    PhotonMode photonMode;          // RADIANCE's photon-map mode rules for these maps
     AmbientOptions ambientOptions;  // -a options as used (photon mode adjusts -ab)
     DirectLighting direct;
     Ambient ambient;
@@ -101,22 +104,28 @@ struct Renderer::Impl {
     // Per mist material: its string arguments as direct source indices (m_mist.c).
     std::unordered_map<int32_t, std::vector<int32_t>> mistSources;
     bool hasMists = false;  // primary rays then probe for the mists around their origin
+    // By material index: whether its hits need material::prepareHit (needsPreparation,
+    // decided once: most materials need nothing and are shaded on every hit).
+    std::vector<bool> prepares;
 };
 
-class Renderer::Context : public ShadowOracle, public HemisphereTracer {
+class Renderer::Context : public ShadowOracle {
 public:
     Context(const Renderer& renderer, const Impl& impl);
 
     // ShadowOracle
     std::optional<Hit> closestHit(const Ray& ray) override;
-    ShadowEvent event(const Hit& hit, const Vec3& dir, bool passIllum = false) override;
-    void beginShadowRay() override { shadowClip_ = shadowBase_; }
+    ShadowEvent event(const Hit& hit, const Vec3& dir, ShadowPath& path,
+                      bool passIllum = false) override;
     Color distantRadiance(int32_t source, const Vec3& dir) override;
     material::Redirection redirect(const Hit& hit, const Vec3& dir, int projection,
                                    const Vec3& toSource) override;
-    // HemisphereTracer
-    Sample trace(const Vec3& origin, const Vec3& dir, int ambientLevel, double weight,
-                 double share) override;
+
+    // An ambient hemisphere sample of the ray in `parent` (HemisphereTracer::trace): it
+    // starts with the parent's depth, clip set and medium.
+    HemisphereTracer::Sample traceSample(const RayState& parent, const Vec3& origin,
+                                         const Vec3& dir, int ambientLevel, double weight,
+                                         double share);
 
     // Radiance arriving at ray.origin from ray.dir. `first` (may be null) receives what
     // the first surface hit was; `distance` the distance to it (1e10 if none).
@@ -134,12 +143,10 @@ public:
 
     const Renderer& renderer;
     const Impl& impl;
-    material::SurfaceChainEvaluator chains;
-    material::MaterialCalcEvaluator materialCalc;
-    // prism1/prism2 functions, apart from materialCalc: shadow rays through prisms are
-    // traced while a function-driven material's hit is set there.
-    material::MaterialCalcEvaluator prismCalc;
-    std::function<Color(const Vec3&)> directional;  // materialCalc.directional, for evaluate
+    // Pattern chains and material functions, for every hit this thread shades, lights or
+    // passes a shadow ray through (material::prepareHit).
+    material::HitEvaluators evaluators;
+    DirectScratch directScratch;  // the direct calculation's working memory
     Rng rng{0, RngDomain::Sampling, 0};
     std::vector<TracedRay>* tree = nullptr;
     int treeDepth = 0;
@@ -151,6 +158,7 @@ private:
     struct Passage {
         material::MediumChange crossing;
         int32_t mist = -1;
+        const material::MistParams* mistParams = nullptr;
         // A light seen where the direct calculation counts it (RADIANCE zeroes the ray's
         // coefficient): not a contribution.
         bool uncounted = false;
@@ -160,6 +168,17 @@ private:
     Color shadeLayer(const Ray& ray, const Hit& hit, const RayState& state,
                      const material::ShadingLayer& layer, RayResult* first, bool& passThrough,
                      Passage& passage);
+    // shadeLayer's phases: a light material; the ideal and sampled specular rays of `b`;
+    // direct light for a material that takes it.
+    Color shadeLight(const Ray& ray, const Hit& hit, const RayState& state,
+                     const material::ShadingLayer& layer, const material::MaterialRecord& e,
+                     const material::SurfacePoint& sp, RayResult* first, bool& passThrough,
+                     Passage& passage);
+    void addSpecularRays(const Hit& hit, const RayState& state, const material::BackwardResult& b,
+                         RayResult* first, Color& value);
+    void addDirect(const Hit& hit, const material::MaterialParams& params,
+                   const material::SurfacePoint& sp, const material::BackwardResult& b,
+                   const RayState& state, Color& value);
     // Shades with a mirror's or illum's alternate material (its whole modifier chain).
     Color shadeAlternate(const Ray& ray, const Hit& hit, const RayState& state, int32_t alternate,
                          RayResult* first, bool& passThrough, Passage& passage);
@@ -202,30 +221,40 @@ private:
     ShadowEvent layerEvent(const Hit& hit, const Vec3& dir, const material::ShadingLayer& l,
                            bool passIllum);
 
-    // Sets materialCalc for `material` at the hit (when it has functions) and fills the
-    // SurfacePoint fields they give: u orientation, BRTDfunc colours, directional part.
-    void applyMaterialCalc(int32_t material, const Hit& hit, const Vec3& dir,
-                           material::SurfacePoint& sp);
-    // The ray whose ambient samples are being traced: they start with its depth, clip
-    // set and medium.
-    const RayState* sampleParent_ = nullptr;
-    // Clip set of the shadow rays of the point being lit (set by directAt and
-    // irradianceAt), and of the shadow ray being traced (reset by beginShadowRay).
-    ClipSet shadowBase_, shadowClip_;
-    // RADIANCE compat (pmapmat.h shadowRayInPmap): in photon-map mode a shadow ray is
-    // stopped by transparent surfaces when the photons already carry that light.
-    bool shadowBlockedByTransparent_ = false;
-    bool shadowInPhotonMap(const RayState& state) const;
+    // The shading point of `layer` at `hit` for a ray travelling `dir` (RADIANCE
+    // raynormal: the perturbed normal turned to the ray), not yet prepared.
+    material::SurfacePoint surfaceAt(const Hit& hit, const Vec3& dir,
+                                     const material::ShadingLayer& layer) const {
+        const Vec3 ng = hit.front ? hit.normal : -hit.normal;
+        material::SurfacePoint sp = material::makeSurfacePoint(dir, ng, hit.front, layer.pattern);
+        if (lengthSquared(layer.perturbation) > 0) {
+            sp.normal = normalize(hit.normal + layer.perturbation);
+            if (!hit.front) sp.normal = -sp.normal;
+        }
+        sp.distance = hit.t;
+        return sp;
+    }
+    // material::prepareHit for `material` at the hit: what its functions, component
+    // modifiers or redirections give, into sp (pointing into `scratch`, made only where
+    // needed: most hits have nothing to prepare, and the scratch is large).
+    void prepare(int32_t material, const material::MaterialParams& params, const Hit& hit,
+                 const Vec3& dir, material::SurfacePoint& sp,
+                 std::optional<material::HitScratch>& scratch) {
+        if (impl.prepares[size_t(material)]) prepareHit(material, params, hit, dir, sp, scratch);
+    }
+    void prepareHit(int32_t material, const material::MaterialParams& params, const Hit& hit,
+                    const Vec3& dir, material::SurfacePoint& sp,
+                    std::optional<material::HitScratch>& scratch);
+    // What each shadow ray from a point reached by a ray in `state` starts with.
+    ShadowPath shadowStart(const RayState& state) const;
 };
 
 // m_direct.c: redirection `projection` of the prism1/prism2 material of the surface at
 // `hit` for a ray travelling `dir`, DxA DyA DzA along `toSource` (zero: none), evaluated
 // with `ev` (an evaluator of `calc`). Not ok if the surface's material is no prism.
-material::Redirection evalRedirect(const Scene& scene, const material::MaterialCalc& calc,
+material::Redirection evalRedirect(const material::MaterialTable& materials,
+                                   const material::MaterialCalc& calc,
                                    material::MaterialCalcEvaluator& ev, const Hit& hit,
                                    const Vec3& dir, int projection, const Vec3& toSource);
-
-// The record named `name` most recently defined before record `before` (RADIANCE
-// lastmod); kVoid for "void" or when none.
 
 }  // namespace rp::render

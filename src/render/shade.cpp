@@ -14,14 +14,6 @@ namespace {
 
 bool isPlanar(PrimType t) { return t == PrimType::Polygon || t == PrimType::Ring; }
 
-bool passesIrradiance(const material::MaterialParams& m) {
-    // RADIANCE irr_ignore: with -i, transparent materials are passed through so that the
-    // irradiance is computed on the first opaque surface behind them.
-    return std::holds_alternative<material::GlassParams>(m) ||
-           std::holds_alternative<material::DielectricParams>(m) ||
-           std::holds_alternative<material::AntimatterParams>(m);
-}
-
 constexpr double kNoHit = 1e10;
 
 // What rtrace reports of the first surface a ray meets (-o p n N s m M ...); `normal` is
@@ -58,32 +50,28 @@ material::PatternPoint patternPoint(const Hit& hit, const Vec3& dir) {
 
 }  // namespace
 
-material::Redirection evalRedirect(const Scene& scene, const material::MaterialCalc& calc,
+material::Redirection evalRedirect(const material::MaterialTable& materials,
+                                   const material::MaterialCalc& calc,
                                    material::MaterialCalcEvaluator& ev, const Hit& hit,
                                    const Vec3& dir, int projection, const Vec3& toSource) {
-    int32_t mat = chainMaterial(scene, hit.modifier);
-    if (mat == kVoid || !calc.uses(mat)) return {};
-    const PrimType t = scene.prims[size_t(mat)].type;
-    if (t != PrimType::Prism1 && t != PrimType::Prism2) return {};
-    if (projection > 0 && t != PrimType::Prism2) return {};
-    ev.setHit(mat, patternPoint(hit, dir));
-    return ev.redirect(projection, toSource);
+    const int32_t mat = chainMaterial(materials.scene(), hit.modifier);
+    if (!materials.usable(mat)) return {};
+    return material::prismRedirect(calc, ev, mat, *materials[mat].params, patternPoint(hit, dir),
+                                   projection, toSource);
 }
 
 Renderer::Context::Context(const Renderer& r, const Impl& i)
-    : renderer(r),
-      impl(i),
-      chains(i.chains),
-      materialCalc(i.materialCalc),
-      prismCalc(i.materialCalc) {
-    directional = [this](const Vec3& l) { return materialCalc.directional(l); };
+    : renderer(r), impl(i), evaluators(&i.materialCalc, i.chains) {}
+
+void Renderer::Context::prepareHit(int32_t material, const material::MaterialParams& params,
+                                   const Hit& hit, const Vec3& dir, material::SurfacePoint& sp,
+                                   std::optional<material::HitScratch>& scratch) {
+    material::prepareHit(evaluators, material, params, patternPoint(hit, dir), sp,
+                         scratch.emplace(), rng);
 }
 
-void Renderer::Context::applyMaterialCalc(int32_t material, const Hit& hit, const Vec3& dir,
-                                          material::SurfacePoint& sp) {
-    if (!impl.materialCalc.uses(material)) return;
-    material::prepareHit(impl.materialCalc, materialCalc, material, *impl.material(material).params,
-                         patternPoint(hit, dir), sp, &directional);
+ShadowPath Renderer::Context::shadowStart(const RayState& state) const {
+    return ShadowPath{state.clip, impl.photonMode.shadowsStopAtTransparent(state.pathDepth())};
 }
 
 material::ChainResult Renderer::Context::resolve(int32_t modifier, const Hit& hit,
@@ -91,7 +79,7 @@ material::ChainResult Renderer::Context::resolve(int32_t modifier, const Hit& hi
     material::ChainResult r =
         impl.chains.isPlain(modifier)
             ? material::ChainResult::plain(impl.chains.plainMaterial(modifier))
-            : chains.resolve(modifier, patternPoint(hit, dir), rng);
+            : evaluators.chains().resolve(modifier, patternPoint(hit, dir), rng);
     // RADIANCE compat (o_mesh.c): a mesh's vertex normals perturb the surface first,
     // textures add to that.
     if (lengthSquared(hit.perturbation) > 0)
@@ -210,124 +198,98 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
     }
     const material::MaterialRecord& e = impl.material(layer.material);
     const material::MaterialParams& params = *e.params;
-
-    // Shading point: RADIANCE raynormal (perturbed normal flipped to the ray's side).
-    Vec3 ng = hit.front ? hit.normal : -hit.normal;
-    Vec3 n = ng;
-    if (lengthSquared(layer.perturbation) > 0) {
-        n = normalize(hit.normal + layer.perturbation);
-        if (!hit.front) n = -n;
-    }
-    material::SurfacePoint sp = material::makeSurfacePoint(ray.dir, ng, hit.front, layer.pattern);
-    sp.normal = n;
+    material::SurfacePoint sp = surfaceAt(hit, ray.dir, layer);
     sp.flat = isPlanar(impl.scene.prims[size_t(hit.prim)].type);
     sp.scatteredRay = state.indirect;
-    // RADIANCE compat (pmapmat.h ambRayInPmap): specular direct light is in the photons
-    // only below the first gather bounce (rlvl > 1); at a final-gather hit itself the
-    // light a BSDF window or a glossy surface sends straight to the gathering point is
-    // not (issue 43: sensors beside a Klems window read half of RADIANCE's).
-    sp.specularInPhotons = impl.photons.active() && state.ambientLevel > 0 &&
-                           (impl.ambientOptions.bounces < 0 || state.depth > 1);
+    sp.specularInPhotons = impl.photonMode.specularDirectInPhotons(state.pathDepth());
     sp.rayWeight = state.weight;
     sp.specJitter = impl.shadeOptions.specJitter;
-
-    auto fillFirst = [&](RayResult* f) {
-        recordFirst(f, hit, hit.front || e.reorientsBackHits ? n : -n, layer.material);
-    };
-
-    if (e.isLight) {
-        const auto& light = std::get<material::LightParams>(params);
-        bool source = impl.direct.isSourceSurface(hit.prim, ray.origin);
-        // RADIANCE compat (source.c badcomponent, distglow): a ray descended from an
-        // ambient or sampled specular ray sees every light material from the front as
-        // black, source or not (lights inside instances are not), since the direct
-        // calculation counts sources; only a glow farther than its radius shows, and a
-        // glow with a negative radius never does (ray.html glow).
-        const bool distantGlow = light.kind == material::LightParams::Kind::Glow &&
-                                 light.glowMaxRadius >= -1e-6 && hit.t > light.glowMaxRadius;
-        if (state.indirect && hit.front && !distantGlow) {
-            fillFirst(first);
-            passage.uncounted = true;
-            return {};
-        }
-        if (light.kind == material::LightParams::Kind::Illum) {
-            // ray.html illum: seen directly (or by specular rays) it is its alternate.
-            return shadeAlternate(ray, hit, state, e.alternate, first, passThrough, passage);
-        }
-        fillFirst(first);
-        if (source && !impl.options.direct.visibility && !state.indirect) {  // -dv-
-            passage.uncounted = true;
-            return {};
-        }
-        material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
-        return b.emitted;
-    }
+    if (e.isLight) return shadeLight(ray, hit, state, layer, e, sp, first, passThrough, passage);
 
     if (state.irradianceHit) {
-        if (passesIrradiance(params)) {
+        if (e.passesIrradiance) {
             passThrough = true;
             return {};
         }
         // -i: the first surface is white Lambertian (RADIANCE's plastic Lamb, which faces
         // the ray); the value is its irradiance.
-        recordFirst(first, hit, n, layer.material);
-        return irradianceAt(hit, n, state);
+        recordFirst(first, hit, sp.normal, layer.material);
+        return irradianceAt(hit, sp.normal, state);
     }
 
-    if (e.hasAlternate && std::holds_alternative<material::MirrorParams>(params)) {
-        // ray.html mirror: with an alternate material the mirror only relays sources
-        // (virtual sources); every other ray sees the alternate.
+    std::optional<material::HitScratch> scratch;
+    prepare(layer.material, params, hit, ray.dir, sp, scratch);
+    const material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
+    // ray.html mirror: with an alternate material the mirror only relays sources
+    // (virtual sources); every other ray sees the alternate.
+    if (b.useAlternate)
         return shadeAlternate(ray, hit, state, e.alternate, first, passThrough, passage);
-    }
-    if (const auto* mist = std::get_if<material::MistParams>(&params)) {
-        // m_mist.c: the ray goes on in the medium it enters or returns to.
-        recordFirst(first, hit, hit.normal, layer.material);
-        passage.crossing = material::mistCrossing(*mist, hit.front, layer.pattern);
-        passage.mist = layer.material;
-        passThrough = true;
-        return {};
-    }
-
-    std::array<material::Redirection, 2> redirections{};
-    material::WgmdInputs wgmd;  // WGMDfunc's values at this hit (sp.wgmd)
-    if (const auto* prism = std::get_if<material::PrismParams>(&params)) {
-        // m_direct.c: a ray not aimed at a source follows each redirection, DxA DyA DzA
-        // zero. (Shadow rays toward a prism's virtual sources are direct.cpp's.)
-        prismCalc.setHit(layer.material, patternPoint(hit, ray.dir));
-        for (int k = 0; k < prism->redirections; ++k)
-            redirections[size_t(k)] = prismCalc.redirect(k, Vec3{});
-        sp.redirections = &redirections;
-    } else if (const auto* w = std::get_if<material::WgmdParams>(&params)) {
-        wgmd = material::wgmdHitInputs(impl.materialCalc, materialCalc, chains, layer.material, *w,
-                                       patternPoint(hit, ray.dir), sp, rng);
-        sp.wgmd = &wgmd;
-    } else {
-        applyMaterialCalc(layer.material, hit, ray.dir, sp);
-    }
-    material::BackwardResult b = material::shadeBackward(params, sp, impl.shadeOptions, rng);
     if (b.transparent) {
+        if (b.mist) {
+            // m_mist.c: the ray goes on in the medium it enters or returns to.
+            recordFirst(first, hit, hit.normal, layer.material);
+            passage.crossing = b.passMedium;
+            passage.mist = layer.material;
+            passage.mistParams = b.mist;
+        }
         passThrough = true;
         return {};
     }
-    fillFirst(first);
+    const Vec3& n = sp.normal;
+    recordFirst(first, hit, hit.front || e.reorientsBackHits ? n : -n, layer.material);
+    // Terms added one by one in RADIANCE's order (the sums' rounding is part of the result).
     Color value = b.emitted;
+    addSpecularRays(hit, state, b, first, value);
+    if (e.diffuseLike) addDirect(hit, params, sp, b, state, value);
     Hit farSide = hit;  // where light from behind is gathered (BackwardResult::transmitOffset)
     farSide.point += hit.normal * b.transmitOffset;
+    if (b.ambientReflect.max() > 0)
+        value += b.ambientReflect * ambientAt(hit, n, layer.material, state, b.ambientReflect);
+    if (b.ambientTransmit.max() > 0)
+        value +=
+            b.ambientTransmit * ambientAt(farSide, -n, layer.material, state, b.ambientTransmit);
+    if (first && first->prim == hit.prim && state.primary) {
+        first->unmirrored = value - first->mirrored;
+        first->unmirroredLength = hit.t;
+    }
+    return value;
+}
 
-    // Specular rays (RADIANCE rayorigin rules for -lr and -lw). RADIANCE compat
-    // (pmapmat.h ambRayInPmap): in photon-map mode an ambient ray's specular children are
-    // not traced where the photons already carry what they would find: with -ab < 0,
-    // below the first gather bounce, or whenever a caustic map holds the light that
-    // reaches the gathering point through specular surfaces. With a global map alone a
-    // final-gather ray does see through glass and mirrors (daylight README: the sky
-    // through the window, otherwise missing from the work plane; MARE 21 % -> 0.9 %).
+Color Renderer::Context::shadeLight(const Ray& ray, const Hit& hit, const RayState& state,
+                                    const material::ShadingLayer& layer,
+                                    const material::MaterialRecord& e,
+                                    const material::SurfacePoint& sp, RayResult* first,
+                                    bool& passThrough, Passage& passage) {
+    const Vec3& n = sp.normal;
+    const material::BackwardResult b =
+        material::shadeBackward(*e.params, sp, impl.shadeOptions, rng);
+    if (b.uncounted) {  // seen by an indirect ray: the direct calculation counts it
+        recordFirst(first, hit, hit.front || e.reorientsBackHits ? n : -n, layer.material);
+        passage.uncounted = true;
+        return {};
+    }
+    if (b.useAlternate || b.transparent) {
+        // ray.html illum: seen directly (or by specular rays) it is its alternate.
+        return shadeAlternate(ray, hit, state, e.alternate, first, passThrough, passage);
+    }
+    recordFirst(first, hit, hit.front || e.reorientsBackHits ? n : -n, layer.material);
+    if (!state.indirect && !impl.options.direct.visibility &&
+        impl.direct.isSourceSurface(hit.prim, ray.origin)) {  // -dv-
+        passage.uncounted = true;
+        return {};
+    }
+    return b.emitted;
+}
+
+void Renderer::Context::addSpecularRays(const Hit& hit, const RayState& state,
+                                        const material::BackwardResult& b, RayResult* first,
+                                        Color& value) {
+    // RADIANCE's rayorigin rules for -lr and -lw; in photon-map mode an ambient ray's
+    // specular children may be in the photons already (PhotonMode).
+    if (impl.photonMode.specularRaysInPhotons(state.pathDepth())) return;
     const LimitOptions& lim = impl.options.limits;
-    const PhotonLighting& pmaps = impl.photons;
-    const bool specularInPmap =
-        pmaps.active() && state.ambientLevel > 0 &&
-        (impl.ambientOptions.bounces < 0 || state.depth > 1 || pmaps.hasCausticLight());
     std::optional<MediaState> childMedia;  // of a child entering or leaving a dielectric
-    for (int i = 0; i < (specularInPmap ? 0 : b.numRays); ++i) {
+    for (int i = 0; i < b.numRays; ++i) {
         const material::SpecularRay& sr = b.rays[size_t(i)];
         Color rc = sr.weight;
         RayState child = state;  // the clip set too
@@ -360,45 +322,35 @@ Color Renderer::Context::shadeLayer(const Ray& ray, const Hit& hit, const RaySta
         if (sr.kind == material::ScatterKind::SpecularTransmission && b.transmitOffset != 0)
             out.origin += hit.normal * b.transmitOffset;
         double d = kNoHit;
-        Color c = radiance(out, child, nullptr, d);
-        Color contrib = rc * c;
+        Color contrib = rc * radiance(out, child, nullptr, d);
         value += contrib;
-        if (first && first->prim == hit.prim && state.primary) {
-            if (sr.kind == material::ScatterKind::SpecularReflection && !sr.sampled) {
-                first->mirrored += contrib;
-                first->mirroredLength = hit.t + d;
-            }
+        if (first && first->prim == hit.prim && state.primary &&
+            sr.kind == material::ScatterKind::SpecularReflection && !sr.sampled) {
+            first->mirrored += contrib;
+            first->mirroredLength = hit.t + d;
         }
     }
+}
 
-    if (e.diffuseLike) {
-        if (impl.photons.hasDirect()) {
-            // Direct photons replace the direct calculation (manual 5.4; a debug aid).
-            value += b.ambientReflect * impl.photons.directDensity(*photonLookups, hit.point, n);
-        } else {
-            bool transmits = b.ambientTransmit.max() > 0 || b.directFromBehind;
-            shadowBlockedByTransparent_ = shadowInPhotonMap(state);
-            // Specular children may have used the function evaluator: set this hit again.
-            if (sp.directional) applyMaterialCalc(layer.material, hit, ray.dir, sp);
-            if (b.transmitOffset == 0) {
-                value += directAt(hit, params, sp, transmits, state);
-            } else {
-                // m_bsdf.c: reflected light here, transmitted light from the far point.
-                value += directAt(hit, params, sp, false, state);
-                if (transmits) value += directAt(farSide, params, sp, true, state, true);
-            }
-        }
-    }
-    if (b.ambientReflect.max() > 0)
-        value += b.ambientReflect * ambientAt(hit, n, layer.material, state, b.ambientReflect);
-    if (b.ambientTransmit.max() > 0)
+void Renderer::Context::addDirect(const Hit& hit, const material::MaterialParams& params,
+                                  const material::SurfacePoint& sp,
+                                  const material::BackwardResult& b, const RayState& state,
+                                  Color& value) {
+    if (impl.photonMode.directFromPhotons()) {
         value +=
-            b.ambientTransmit * ambientAt(farSide, -n, layer.material, state, b.ambientTransmit);
-    if (first && first->prim == hit.prim && state.primary) {
-        first->unmirrored = value - first->mirrored;
-        first->unmirroredLength = hit.t;
+            b.ambientReflect * impl.photons.directDensity(*photonLookups, hit.point, sp.normal);
+        return;
     }
-    return value;
+    const bool transmits = b.ambientTransmit.max() > 0 || b.directFromBehind;
+    if (b.transmitOffset == 0) {
+        value += directAt(hit, params, sp, transmits, state);
+        return;
+    }
+    // m_bsdf.c: reflected light here, transmitted light from the far point.
+    Hit farSide = hit;
+    farSide.point += hit.normal * b.transmitOffset;
+    value += directAt(hit, params, sp, false, state);
+    if (transmits) value += directAt(farSide, params, sp, true, state, true);
 }
 
 Color Renderer::Context::shadeAlternate(const Ray& ray, const Hit& hit, const RayState& state,
@@ -429,8 +381,8 @@ Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams
     at.contrib = state.contrib;
     at.contribCoef = state.contribCoef;
     at.medium = &mediumOf(state);
-    at.scatterLoss = impl.photons.hasGlobal();
-    shadowBase_ = shadowClip_ = state.clip;  // shadow rays start with the ray's set
+    at.scatterLoss = impl.photonMode.mediumScatterInPhotons();
+    at.shadow = shadowStart(state);
     at.point = hit.point;
     at.normal = sp.normal;
     at.geomNormal = sp.geomNormal;
@@ -442,19 +394,19 @@ Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams
             if (behindOnly && dot(sp.normal, toLight) >= 0) return Color{};
             return material::evaluate(params, sp, toLight, omega);
         },
-        *this, rng);
+        *this, rng, directScratch);
 }
 
 namespace {
 
 // RADIANCE compat (ambient.c plugaleak): a cached record plugged by the first surface on
-// the test segment that stops light: one with a material that is neither transparent
-// (initotypes.c T_TRANSP) nor a thick BSDF's proxy, and not hidden by the query ray's
-// antimatter.
+// the test segment that stops light (MaterialRecord::plugsLeaks), unless the query
+// ray's antimatter hides it.
 class QueryLeakTest final : public LeakTest {
 public:
-    QueryLeakTest(const Scene& scene, const SceneGeometry& geometry, const ClipSet& clip)
-        : scene_(scene), geometry_(geometry), clip_(clip) {}
+    QueryLeakTest(const material::MaterialTable& materials, const SceneGeometry& geometry,
+                  const ClipSet& clip)
+        : materials_(materials), geometry_(geometry), clip_(clip) {}
     bool blocked(const Vec3& from, const Vec3& to) override {
         Vec3 d = to - from;
         const double length = rp::length(d);
@@ -475,22 +427,34 @@ public:
 private:
     bool stopsLight(int32_t modifier) const {
         if (clip_.contains(modifier)) return false;
-        const int32_t m = chainMaterial(scene_, modifier);
-        if (m == kVoid) return false;
-        const Primitive& p = scene_.prims[size_t(m)];
-        const bool bsdfProxy = p.type == PrimType::BSDF && !p.sargs.empty() && p.sargs[0] != "0";
-        return !isTransparentMaterial(p.type) && !bsdfProxy;
+        const int32_t m = chainMaterial(materials_.scene(), modifier);
+        return m != kVoid && materials_[m].plugsLeaks;
     }
-    const Scene& scene_;
+    const material::MaterialTable& materials_;
     const SceneGeometry& geometry_;
     const ClipSet& clip_;
+};
+
+// The ambient hemisphere's samples of one ray (HemisphereTracer for Ambient::indirect):
+// they start from `parent`, the ray whose hit is being lit.
+class SampleTracer final : public HemisphereTracer {
+public:
+    SampleTracer(Renderer::Context& ctx, const RayState& parent) : ctx_(ctx), parent_(parent) {}
+    Sample trace(const Vec3& origin, const Vec3& dir, int ambientLevel, double weight,
+                 double share) override {
+        return ctx_.traceSample(parent_, origin, dir, ambientLevel, weight, share);
+    }
+
+private:
+    Renderer::Context& ctx_;
+    const RayState& parent_;
 };
 
 }  // namespace
 
 Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t modifier,
                                    const RayState& state, const Color& coef) {
-    QueryLeakTest leaks(impl.scene, impl.geometry, state.clip);
+    QueryLeakTest leaks(impl.chains.materials(), impl.geometry, state.clip);
     AmbientPoint ap;
     ap.leaks = &leaks;
     ap.point = hit.point;
@@ -503,33 +467,22 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
     ap.coefficient = coef.max();
     Color c;
     const PhotonLighting& pm = impl.photons;
-    if (pm.active()) {
-        // RADIANCE pmapamb.c: a final-gather sample's hit (or any hit with -ab -1) reads
-        // the global map, which holds caustic light too; hits of other rays add the
-        // caustic map and gather the rest. Without a global map the caustic map fills in
-        // at the samples' hits as well (ambPmapCaustic), or that light would be lost.
-        // A contribution map plays both parts, its caustic photons the caustic map's.
-        if (pm.hasContrib()) {
-            const bool gather = state.ambientLevel > 0 || impl.ambientOptions.bounces < 0;
-            Color d = pm.contribDensity(*photonLookups, hit.point, normal, state.contribCoef * coef,
-                                        state.contrib, !gather);
-            if (gather) return d;
-            c += d;
-        }
-        if (pm.hasGlobal() && (state.ambientLevel > 0 || impl.ambientOptions.bounces < 0))
-            return pm.globalDensity(*photonLookups, hit.point, normal);
-        if (pm.hasCaustic() && (state.ambientLevel == 0 || !pm.hasGlobal()))
-            c += pm.causticDensity(*photonLookups, hit.point, normal);
+    const PhotonMode::AmbientReads reads = impl.photonMode.ambientReads(state.pathDepth());
+    if (reads.contribGather || reads.contribCaustic) {
+        Color d = pm.contribDensity(*photonLookups, hit.point, normal, state.contribCoef * coef,
+                                    state.contrib, reads.contribCaustic);
+        if (reads.contribGather) return d;
+        c += d;
     }
-    const RayState* saved = sampleParent_;
+    if (reads.global) return pm.globalDensity(*photonLookups, hit.point, normal);
+    if (reads.caustic) c += pm.causticDensity(*photonLookups, hit.point, normal);
     std::optional<RayState> parent;  // with the ambient coefficient in its path (rcontrib)
     if (state.contrib) {
         parent = state;
         parent->contribCoef = state.contribCoef * coef;
     }
-    sampleParent_ = parent ? &*parent : &state;
-    c += impl.ambient.indirect(ap, *this, rng);
-    sampleParent_ = saved;
+    SampleTracer samples(*this, parent ? *parent : state);
+    c += impl.ambient.indirect(ap, samples, rng);
     return c;
 }
 
@@ -545,13 +498,12 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, const 
     at.contrib = state.contrib;
     at.contribCoef = state.contribCoef;
     at.medium = &mediumOf(state);
-    at.scatterLoss = impl.photons.hasGlobal();
-    shadowBlockedByTransparent_ = shadowInPhotonMap(state);
-    shadowBase_ = shadowClip_ = state.clip;
+    at.scatterLoss = impl.photonMode.mediumScatterInPhotons();
+    at.shadow = shadowStart(state);
     // Direct photons replace the direct calculation here too (manual 5.4; RADIANCE's
     // direct() multiplies the receiver's coefficient at its normal, pi for this white
     // Lambertian one, by the direct photons' irradiance / pi).
-    Color e = impl.photons.hasDirect()
+    Color e = impl.photonMode.directFromPhotons()
                   ? impl.photons.directDensity(*photonLookups, hit.point, normal) * kPi
                   : impl.direct.compute(
                         at,
@@ -559,25 +511,16 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, const 
                             double c = dot(normal, toLight);
                             return c > 0 ? Color{c, c, c} : Color{};
                         },
-                        *this, rng);
+                        *this, rng, directScratch);
     RayState st;
     st.ambientLevel = state.ambientLevel;
     st.weight = state.weight;
-    st.depth = sampleParent_ ? sampleParent_->depth : 0;
+    st.depth = state.depth;
     st.clip = state.clip;
     st.media = state.media;
     st.contrib = state.contrib;
     st.contribCoef = state.contribCoef;
     return e + ambientAt(hit, normal, kVoid, st, Color::grey(kPi)) * kPi;
-}
-
-bool Renderer::Context::shadowInPhotonMap(const RayState& state) const {
-    // pmapmat.h shadowRayInPmap: with -ab < 0, or below an ambient ray in any photon
-    // mode, or on the primary path when a caustic map carries diffuse-specular-light.
-    const PhotonLighting& pm = impl.photons;
-    if (!pm.active()) return false;
-    if (impl.ambientOptions.bounces < 0) return true;
-    return state.ambientLevel > 0 ? true : pm.hasCausticLight();
 }
 
 }  // namespace rp::render

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "material/material.h"
+#include "material/type_traits.h"
 #include "render/clip_set.h"
 
 namespace rp::render {
@@ -74,22 +75,8 @@ ModifierSet passableModifiers(const Scene& scene, const ShapeSet& shapes) {
     auto consider = [&](int32_t prim, int32_t modifier) {
         int32_t mat = light::findMaterial(scene, prim);
         if (mat == kVoid) return;
-        switch (scene.prims[size_t(mat)].type) {
-            case PrimType::Plastic:
-            case PrimType::Metal:
-            case PrimType::Plastic2:
-            case PrimType::Metal2:
-            case PrimType::Ashik2:
-            case PrimType::Plasfunc:
-            case PrimType::Metfunc:
-            case PrimType::Plasdata:
-            case PrimType::Metdata:
-            case PrimType::Mirror:
-            case PrimType::Antimatter:  // the pretest follows it (clearPath)
-                return;
-            default:
-                skip.add(modifier);
-        }
+        if (!material::typeTraits(scene.prims[size_t(mat)].type).opaqueToPretest)
+            skip.add(modifier);
     };
     for (const auto& p : shapes.polygons) consider(p.prim, p.modifier);
     for (const auto& p : shapes.spheres) consider(p.prim, p.modifier);
@@ -317,7 +304,7 @@ SourceList buildSourceList(const Scene& scene, const SceneGeometry& geometry,
     search.illumEmits = true;
     for (const light::LightSource& ls : light::findLightSources(scene, geometry, search)) {
         if (ls.ambientOnly()) continue;  // sky or ground glow: SSKIP
-        const bool glow = ls.params.kind == material::LightParams::Kind::Glow;
+        const bool glow = ls.params.glow();
         DirectSource src;
         src.light = ls;
         if (glow) src.proximity = ls.params.glowMaxRadius;
@@ -345,13 +332,14 @@ SourceList buildSourceList(const Scene& scene, const SceneGeometry& geometry,
     for (size_t i = 0; i < shapes.polygons.size(); ++i) {
         int32_t mat = light::findMaterial(scene, shapes.polygons[i].prim);
         if (mat == kVoid) continue;
-        PrimType type = scene.prims[size_t(mat)].type;
+        const material::TypeTraits::Relay relay =
+            material::typeTraits(scene.prims[size_t(mat)].type).relay;
         RelayPlane m;
-        if (type == PrimType::Mirror) {
+        if (relay == material::TypeTraits::Relay::Mirror) {
             m.kind = RelayPlane::Kind::Mirror;
-        } else if ((type == PrimType::Prism1 || type == PrimType::Prism2) && redirect) {
+        } else if (relay != material::TypeTraits::Relay::None && redirect) {
             m.kind = RelayPlane::Kind::Prism;
-            m.projections = type == PrimType::Prism2 ? 2 : 1;
+            m.projections = relay == material::TypeTraits::Relay::Prism2 ? 2 : 1;
         } else {
             continue;
         }

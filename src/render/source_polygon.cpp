@@ -3,34 +3,26 @@
 
 #include <array>
 #include <cmath>
+#include <span>
 
 namespace rp::render {
 
 namespace {
 
-struct Cell {
-    double u0, u1, v0, v1;
-};
-
-// A convex piece of a cell: a triangle clipped by a rectangle has at most 7 corners.
-struct Piece {
-    std::array<double, 2 * 8> uv;
-    int n = 0;
-    double area = 0;
-    double cu = 0, cv = 0;  // centroid
-};
+using Cell = PolygonCell;
+using Piece = PolygonPiece;
 
 // RADIANCE compat (srcsamp.c flt_partit): halve the cell across its longer side while
 // it is larger than (ds / weight) times its distance, at most MAXSPART leaves.
 void partition(const PlanarRegion& r, const Vec3& from, const Cell& c, int maxParts, double scale,
-               std::vector<Cell>& leaves) {
+               PolygonScratch& leaves) {
     Vec3 centre = r.at(0.5 * (c.u0 + c.u1), 0.5 * (c.v0 + c.v1));
     double d2 = lengthSquared(from - centre);
     double du2 = (c.u1 - c.u0) * scale, dv2 = (c.v1 - c.v0) * scale;
     du2 *= du2;
     dv2 *= dv2;
     if (maxParts < 2 || (d2 >= du2 && d2 >= dv2)) {
-        leaves.push_back(c);
+        leaves.cells[size_t(leaves.cellCount++)] = c;  // maxParts halves: 64 leaves at most
         return;
     }
     Cell lo = c, hi = c;
@@ -143,22 +135,18 @@ void addSample(std::vector<SourceSample>& out, const Vec3& from, const Vec3& tar
 }  // namespace
 
 void samplePolygon(const PlanarRegion& r, const Vec3& from, double ds, double weight, double jitter,
-                   Rng& rng, std::vector<SourceSample>& out) {
-    // Scratch kept per thread: this runs for every shaded point.
-    thread_local std::vector<Cell> cells;
-    thread_local std::vector<Piece> pieces;
+                   Rng& rng, PolygonScratch& scratch, std::vector<SourceSample>& out) {
+    std::vector<Piece>& pieces = scratch.pieces;
     if (ds <= 0) {
         // RADIANCE compat (srcsamp.c nopart): without subdivision the whole source is one
         // sample at its centre (a 3 x 1 m window 1 m away: 3 sr instead of the true 1.5).
         addSample(out, from, r.centre, r.normal, r.area);
         return;
     }
-    cells.clear();
-    Cell whole{r.u0, r.u1, r.v0, r.v1};
-    if (ds > 0)
-        partition(r, from, whole, kMaxSourceParts, std::fmax(weight, 1e-6) / ds, cells);
-    else
-        cells.push_back(whole);
+    scratch.cellCount = 0;
+    const Cell whole{r.u0, r.u1, r.v0, r.v1};
+    partition(r, from, whole, kMaxSourceParts, std::fmax(weight, 1e-6) / ds, scratch);
+    const std::span<const Cell> cells(scratch.cells.data(), size_t(scratch.cellCount));
 
     // Fast path: a polygon that fills its bounding rectangle (the usual rectangular
     // luminaire or window) needs no clipping; each cell is a rectangle of the source.

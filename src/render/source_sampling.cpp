@@ -232,7 +232,7 @@ double triangleSolidAngle(const Vec3& o, const Vec3& a, const Vec3& b, const Vec
 
 void sampleSource(const SourceList& list, const DirectSource& src, const ShapeSet& shapes,
                   const Vec3& from, const DirectOptions& options, double weight, Rng& rng,
-                  std::vector<SourceSample>& out) {
+                  PolygonScratch& scratch, std::vector<SourceSample>& out) {
     const light::LightSource& ls = src.light;
     if (src.proximity > 0 && !ls.distant() && length(from - src.centre) > src.proximity)
         return;  // RADIANCE SPROX: a local glow lights only its neighbourhood
@@ -242,7 +242,7 @@ void sampleSource(const SourceList& list, const DirectSource& src, const ShapeSe
         case light::EmitterShape::Polygon: {
             const PlanarRegion& r = list.regions[size_t(src.region)];
             if (r.signedDistance(from) <= kFtiny) return;  // behind the source
-            samplePolygon(r, from, options.sampling, weight, options.jitter, rng, out);
+            samplePolygon(r, from, options.sampling, weight, options.jitter, rng, scratch, out);
             break;
         }
         case light::EmitterShape::Sphere:

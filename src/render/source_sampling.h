@@ -14,6 +14,8 @@
 
 namespace rp::render {
 
+struct PolygonScratch;  // source_polygon.h
+
 constexpr int kMaxSourceParts = 64;  // RADIANCE MAXSPART: cells per source at most
 
 struct SourceSample {
@@ -43,7 +45,7 @@ struct SourceSample {
 // are not produced.
 void sampleSource(const SourceList& list, const DirectSource& src, const ShapeSet& shapes,
                   const Vec3& from, const DirectOptions& options, double weight, Rng& rng,
-                  std::vector<SourceSample>& out);
+                  PolygonScratch& scratch, std::vector<SourceSample>& out);
 
 // The hit record a ray travelling in `dir` would get on `src`'s surface at point `p`
 // (distance `t` from its origin), as SceneGeometry::closestHit completes it: used to ask

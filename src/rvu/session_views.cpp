@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "material/type_traits.h"
 #include "rvu/session.h"
 #include "rvu/session_words.h"
 #include "rvu/view_moves.h"
@@ -23,22 +24,6 @@ std::optional<double> magnification(const std::vector<std::string>& words, size_
         return std::nullopt;
     }
     return m;
-}
-
-// RADIANCE's istransp: materials rvu looks through when picking a point.
-bool seeThrough(PrimType t) {
-    switch (t) {
-        case PrimType::Trans:
-        case PrimType::Trans2:
-        case PrimType::Dielectric:
-        case PrimType::Interface:
-        case PrimType::Mist:
-        case PrimType::Glass:
-        case PrimType::ABSDF:
-            return true;
-        default:
-            return false;
-    }
 }
 
 // An x y z triple at words[at..at+3), if all three are there.
@@ -70,9 +55,11 @@ std::optional<render::RayResult> Session::pickSurface(const Cursor& c, CommandRe
             renderer_->trace(*context_, org, ray->direction, 0, nullptr, aft - travelled);
         if (!r.hit) break;
         const bool invisible = r.material < 0;  // void: nothing to see
-        const bool through = invisible || seeThrough(scene.prims[size_t(r.material)].type);
+        const bool through =
+            invisible || isTransparentMaterial(scene.prims[size_t(r.material)].type);
         if (!skipTransparent || !through) return r;
-        if (!invisible && scene.prims[size_t(r.material)].type != PrimType::Mist && !weak) weak = r;
+        if (!invisible && !material::typeTraits(scene.prims[size_t(r.material)].type).mist && !weak)
+            weak = r;
         // Continue just past the surface (relative step: the scene may be far from 0).
         const double past = r.distance * (1 + 1e-9) + 1e-7;
         org = org + ray->direction * past;
