@@ -14,21 +14,10 @@
 #include "util/error.h"
 #include "util/header.h"
 
-// -defaults (tools/info_options.h).
-constexpr const char* kDefaults =
-    "-i  -\t\t\t\t# input picture (standard input)\n"
-    "-s  1000\t\t\t# top of the scale (-s a: from the picture)\n"
-    "-n  8\t\t\t\t# legend divisions\n"
-    "-l  cd/m2\t\t\t# legend label\n"
-    "-m  179\t\t\t\t# multiplier (luminous efficacy)\n"
-    "-d  3\t\t\t\t# decimals in legend numbers\n"
-    "-log 0\t\t\t\t# decades (0: linear scale)\n"
-    "-pal def\t\t\t# palette\n"
-    "-lw 100\t\t\t\t# legend width\n"
-    "-lh 200\t\t\t\t# legend height\n";
-
 int main(int argc, char** argv) {
-    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
+    rp::FalseColorOptions defaults;
+    if (rp::tools::printedInfo(argc, argv, rp::falseColorTable(defaults).formatDefaults()))
+        return 0;
     try {
         std::vector<std::string> args(argv + 1, argv + argc);
         rp::FalseColorOptions opt = rp::parseFalseColorArgs(args);

@@ -13,9 +13,9 @@ namespace rp::tools {
 
 // If any argument is -version (so at any option position, whichever the tool's are:
 // generators take theirs after the positional arguments), prints the version line; if
-// argv[1] is -defaults and the tool passes its `defaults` (its options with their default
-// values, or for a generator its synopsis), prints them. Returns true when it printed (the
-// tool then exits 0); false leaves the arguments to the tool.
+// argv[1] is -defaults and the tool passes its `defaults` (its option table's
+// formatDefaults(), or for a generator its synopsis), prints them. Returns true when it printed
+// (the tool then exits 0); false leaves the arguments to the tool.
 inline bool printedInfo(int argc, char** argv, std::string_view defaults) {
     if (argc < 2) return false;
     bool version = false;

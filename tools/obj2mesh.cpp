@@ -48,37 +48,44 @@ rp::OptionTable obj2meshTable(rp::MeshWriteOptions& opt, rp::SceneReader& materi
         return rp::customOption(name,
                                 [&v](rp::OptionReader& r) { v = int(r.integer(1, 1L << 30)); });
     };
-    t.add(positive("-n", opt.objlim));
-    t.add(positive("-r", opt.maxres));
-    t.add(rp::customOption("-a",
-                           [&materials](rp::OptionReader& r) { materials.readFile(r.word()); }));
-    t.add(rp::customOption("-l", [&materials](rp::OptionReader& r) {
-        const std::string& name = r.word();
-        auto dirs = rp::calc::defaultSearchPath(rp::projectLibDir());
-        auto path = rp::calc::findFile(name, dirs);
-        if (!path) throw rp::InputError("cannot find library material: '" + name + "'");
-        materials.readFile(*path);
-    }));
-    t.add(rp::customOption("-w", [&quiet](rp::OptionReader&) { quiet = true; }));
+    t.add(positive("-n", opt.objlim), [&opt] {
+        return rp::formatLine("-n  %d\t\t\t\t# triangles per octree leaf\n", opt.objlim);
+    });
+    t.add(positive("-r", opt.maxres),
+          [&opt] { return rp::formatLine("-r  %d\t\t\t# octree resolution limit\n", opt.maxres); });
+    t.add(
+        rp::customOption("-a", [&materials](rp::OptionReader& r) { materials.readFile(r.word()); }),
+        [] { return std::string("-a  file\t\t\t# material file\n"); });
+    t.add(rp::customOption("-l",
+                           [&materials](rp::OptionReader& r) {
+                               const std::string& name = r.word();
+                               auto dirs = rp::calc::defaultSearchPath(rp::projectLibDir());
+                               auto path = rp::calc::findFile(name, dirs);
+                               if (!path)
+                                   throw rp::InputError("cannot find library material: '" + name +
+                                                        "'");
+                               materials.readFile(*path);
+                           }),
+          [] { return std::string("-l  file\t\t\t# library material file (RAYPATH)\n"); });
+    t.add(rp::customOption("-w", [&quiet](rp::OptionReader&) { quiet = true; }),
+          [&quiet] { return rp::formatLine("-w%c\t\t\t\t# warnings on\n", quiet ? '+' : '-'); });
     t.add(rp::customOption("-v", [&verbose](rp::OptionReader&) { verbose = true; }));
     return t;
 }
 
 }  // namespace
 
-// -defaults (tools/info_options.h).
-constexpr const char* kDefaults =
-    "-n  9\t\t\t\t# triangles per octree leaf\n"
-    "-r  16384\t\t\t# octree resolution limit\n"
-    "-a  file\t\t\t# material file\n"
-    "-l  file\t\t\t# library material file (RAYPATH)\n"
-    "-w-\t\t\t\t# warnings on\n";
-
 int main(int argc, char** argv) {
-    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
+    bool quiet = false, verbose = false;
+    {
+        rp::MeshWriteOptions opt;
+        rp::SceneReader materials;
+        if (rp::tools::printedInfo(argc, argv,
+                                   obj2meshTable(opt, materials, quiet, verbose).formatDefaults()))
+            return 0;
+    }
     std::vector<const char*> args(argv, argv + argc);
     args[0] = "obj2mesh";  // a fixed name keeps the header independent of the install path
-    bool quiet = false, verbose = false;
     rp::setWarningSink([&quiet](const std::string& m) {
         if (!quiet) std::fprintf(stderr, "obj2mesh: warning: %s\n", m.c_str());
     });

@@ -38,35 +38,49 @@ rp::OptionTable oconvTable(rp::OconvRequest& request) {
         return "option " + opt + " needs a number, not '" + v + "'";
     };
     t.messages.unknown = [](const std::string& opt) { return "unknown option: '" + opt + "'"; };
-    t.add(rp::customOption("-f", [&request](rp::OptionReader&) { request.frozen = true; }));
+    t.add(rp::customOption("-f", [&request](rp::OptionReader&) { request.frozen = true; }),
+          [&request] {
+              return rp::formatLine(
+                  "-f%c\t\t\t\t# octree names the scene files (-f: holds the "
+                  "objects)\n",
+                  request.frozen ? '+' : '-');
+          });
     t.add(rp::customOption(
-        "-w", [](rp::OptionReader&) { rp::setWarningSink([](const std::string&) {}); }));
-    t.add(rp::customOption("-r", [&request](rp::OptionReader& r) {
-        request.maxres = static_cast<int>(r.real());
-        if (request.maxres < 1) throw rp::InputError("-r needs a resolution of at least 1");
-    }));
-    t.add(rp::customOption(
-        "-n", [&request](rp::OptionReader& r) { request.objlim = static_cast<int>(r.real()); }));
+              "-w", [](rp::OptionReader&) { rp::setWarningSink([](const std::string&) {}); }),
+          [] { return std::string("-w-\t\t\t\t# warnings on\n"); });
+    t.add(rp::customOption("-r",
+                           [&request](rp::OptionReader& r) {
+                               request.maxres = static_cast<int>(r.real());
+                               if (request.maxres < 1)
+                                   throw rp::InputError("-r needs a resolution of at least 1");
+                           }),
+          [&request] {
+              return rp::formatLine(
+                  "-r  %d\t\t\t# resolution: smallest cell is the cube / "
+                  "maxres\n",
+                  request.maxres);
+          });
+    t.add(
+        rp::customOption(
+            "-n", [&request](rp::OptionReader& r) { request.objlim = static_cast<int>(r.real()); }),
+        [&request] {
+            return rp::formatLine("-n  %d\t\t\t\t# objects in a leaf before it divides\n",
+                                  request.objlim);
+        });
     t.add(rp::customOption("-b", [&request](rp::OptionReader& r) {
         std::array<double, 4> b{};
         for (double& v : b) v = r.real();
         request.bounds = b;
     }));
     t.add(rp::valueOption("-i", request.addTo));
+    t.setDefaultsOrder({"-n", "-r", "-f", "-w"});
     return t;
 }
 }  // namespace
 
-// -defaults (tools/info_options.h).
-constexpr const char* kDefaults =
-    "-n  6\t\t\t\t# objects in a leaf before it divides\n"
-    "-r  16384\t\t\t# resolution: smallest cell is the cube / maxres\n"
-    "-f-\t\t\t\t# octree names the scene files (-f: holds the objects)\n"
-    "-w-\t\t\t\t# warnings on\n";
-
 int main(int argc, char** argv) {
-    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     rp::OconvRequest request;
+    if (rp::tools::printedInfo(argc, argv, oconvTable(request).formatDefaults())) return 0;
     // argv[0] as given, as RADIANCE's printargs() writes it on Unix.
     request.commandLine = rp::commandLine(argc, argv);
     std::vector<std::string> args(argv, argv + argc);

@@ -12,17 +12,11 @@
 #include "util/error.h"
 #include "util/header.h"
 
-// -defaults (tools/info_options.h).
-constexpr const char* kDefaults =
-    "-h+\t\t\t\t# header\n"
-    "-H+\t\t\t\t# resolution string\n"
-    "-o-\t\t\t\t# values after exposure\n"
-    "-b-\t\t\t\t# three values per pixel (-b+: brightness)\n"
-    "+da\t\t\t\t# ASCII values with pixel coordinates\n"
-    "-e  1\t\t\t\t# exposure\n";
-
 int main(int argc, char** argv) {
-    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
+    rp::PvalueOptions defaults;
+    rp::PvalueSize size;
+    if (rp::tools::printedInfo(argc, argv, rp::pvalueTable(defaults, size).formatDefaults()))
+        return 0;
     try {
         std::vector<std::string> args(argv + 1, argv + argc);
         rp::PvalueOptions opt = rp::parsePvalueArgs(args);

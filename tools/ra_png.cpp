@@ -25,27 +25,29 @@ rp::OptionTable raPngTable(rp::DisplayOptions& opt) {
         return "unknown option '" + a + "' (" + kUsage + ")";
     };
     t.messages.missing = t.messages.unknown;
+    // Without -e or -g the picture decides (tonemap.h): the -defaults lines say how.
     t.add(rp::customOption(
-        "-e", [&opt](rp::OptionReader& r) { opt.exposure = rp::parseExposureArg(r.word()); }));
-    t.add(rp::customOption("-g", [&opt](rp::OptionReader& r) {
-        const std::string& v = r.word();
-        const std::optional<double> g = rp::parseReal(v);
-        if (!g || !(*g > 0)) throw rp::InputError("-g: bad gamma '" + v + "'");
-        opt.gamma = *g;
-    }));
+              "-e", [&opt](rp::OptionReader& r) { opt.exposure = rp::parseExposureArg(r.word()); }),
+          [] {
+              return std::string("-e  auto\t\t\t# exposure: log-average brightness to mid grey\n");
+          });
+    t.add(rp::customOption("-g",
+                           [&opt](rp::OptionReader& r) {
+                               const std::string& v = r.word();
+                               const std::optional<double> g = rp::parseReal(v);
+                               if (!g || !(*g > 0))
+                                   throw rp::InputError("-g: bad gamma '" + v + "'");
+                               opt.gamma = *g;
+                           }),
+          [] { return std::string("-g  sRGB\t\t\t# gamma: the sRGB transfer curve\n"); });
     return t;
 }
 
 }  // namespace
 
-// -defaults (tools/info_options.h).
-constexpr const char* kDefaults =
-    "-e  auto\t\t\t# exposure: log-average brightness to mid grey\n"
-    "-g  sRGB\t\t\t# gamma: the sRGB transfer curve\n";
-
 int main(int argc, char** argv) {
-    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
     rp::DisplayOptions opt;
+    if (rp::tools::printedInfo(argc, argv, raPngTable(opt).formatDefaults())) return 0;
     std::string files[2];
     int nfiles = 0;
     try {

@@ -31,12 +31,19 @@ rp::OptionTable rpreviewTable(rp::PreviewOptions& opt, std::string& out) {
         return "bad value for " + o + ": '" + v + "'";
     };
     t.add(rp::viewOptionSpec(opt.view));
-    auto resolution = [](const char* name, int& v) {
-        return rp::customOption(name, [&v](rp::OptionReader& r) { v = int(r.integer(1, 100000)); });
+    auto resolution = [&t](const char* name, int& v) {
+        t.add(rp::customOption(name, [&v](rp::OptionReader& r) { v = int(r.integer(1, 100000)); }),
+              [name, &v] {
+                  return rp::formatLine("%s  %d\t\t\t\t# %c resolution\n", name, v, name[1]);
+              });
     };
-    t.add(resolution("-x", opt.xres));
-    t.add(resolution("-y", opt.yres));
-    t.add(rp::valueOption("-o", out));
+    resolution("-x", opt.xres);
+    resolution("-y", opt.yres);
+    t.add(rp::valueOption("-o", out), [&out] {
+        return rp::formatLine("-o  %s\t\t\t\t# output picture (standard output)\n",
+                              out.empty() ? "-" : out.c_str());
+    });
+    t.setDefaultsOrder({"-x", "-y", "-o"});
     return t;
 }
 
@@ -77,14 +84,12 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-// -defaults (tools/info_options.h).
-constexpr const char* kDefaults =
-    "-x  512\t\t\t\t# x resolution\n"
-    "-y  512\t\t\t\t# y resolution\n"
-    "-o  -\t\t\t\t# output picture (standard output)\n";
-
 int main(int argc, char** argv) {
-    if (rp::tools::printedInfo(argc, argv, kDefaults)) return 0;
+    {
+        rp::PreviewOptions opt;
+        std::string out;
+        if (rp::tools::printedInfo(argc, argv, rpreviewTable(opt, out).formatDefaults())) return 0;
+    }
     try {
         return run(argc, argv);
     } catch (...) {

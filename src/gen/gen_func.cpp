@@ -87,20 +87,14 @@ std::string GenFunctions::mathWarning() const {
            " evaluated as 0";
 }
 
-std::vector<std::string> takeCalcOptions(const std::vector<std::string>& words,
-                                         std::vector<CalcSource>& sources) {
-    std::vector<std::string> rest;
-    for (size_t i = 0; i < words.size(); ++i) {
-        const std::string& w = words[i];
-        if (w == "-e" || w == "-f") {
-            if (i + 1 >= words.size()) throw InputError("option " + w + " needs a value");
-            sources.push_back(
-                {w == "-e" ? CalcSource::Kind::Expression : CalcSource::Kind::File, words[++i]});
-        } else {
-            rest.push_back(w);
-        }
+void addCalcOptions(OptionTable& table, std::vector<CalcSource>& sources) {
+    for (const char* name : {"-e", "-f"}) {
+        const CalcSource::Kind kind =
+            name[1] == 'e' ? CalcSource::Kind::Expression : CalcSource::Kind::File;
+        table.add(customOption(name, [&sources, kind](OptionReader& r) {
+            sources.push_back({kind, r.word()});
+        }));
     }
-    return rest;
 }
 
 }  // namespace rp::gen

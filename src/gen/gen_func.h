@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "calc/program.h"
+#include "util/options.h"
 
 namespace rp::gen {
 
@@ -70,10 +71,8 @@ private:
     std::vector<calc::Function> functions_;  // resolved after build(), per GenFunctionId
 };
 
-// Splits a generator's trailing options: -e expr and -f file go to `sources`; every other
-// word is returned (in order) for the caller to interpret. Throws InputError when -e or
-// -f has no value.
-std::vector<std::string> takeCalcOptions(const std::vector<std::string>& words,
-                                         std::vector<CalcSource>& sources);
+// Adds the .cal options of genrev, gensurf and genworm to their table: -e expr and
+// -f file go to `sources`, in order.
+void addCalcOptions(OptionTable& table, std::vector<CalcSource>& sources);
 
 }  // namespace rp::gen

@@ -1,12 +1,11 @@
-// Text helpers for the generators: printf-style formatting, header line, number parsing.
+// Text helpers for the generators: printf-style formatting, header line, number parsing,
+// option tables.
 #include "gen/gen_text.h"
 
 #include <cctype>
-#include <cerrno>
-#include <cmath>
 #include <cstdarg>
 #include <cstdio>
-#include <cstdlib>
+#include <optional>
 
 #include "util/error.h"
 
@@ -58,29 +57,40 @@ std::string vertexLine(const Vec3& p) {
 }
 
 double parseReal(const std::string& word, const std::string& what) {
-    const char* s = word.c_str();
-    char* end = nullptr;
-    errno = 0;
-    double v = std::strtod(s, &end);
-    if (word.empty() || end == s || *end != '\0' || !std::isfinite(v))
-        throw InputError("bad " + what + " '" + word + "': expected a number");
-    return v;
+    const std::optional<double> v = rp::parseReal(word);
+    if (!v) throw InputError("bad " + what + " '" + word + "': expected a number");
+    return *v;
 }
 
 int parseInt(const std::string& word, const std::string& what) {
-    const char* s = word.c_str();
-    char* end = nullptr;
-    errno = 0;
-    long v = std::strtol(s, &end, 10);
-    if (word.empty() || end == s || *end != '\0' || errno == ERANGE || v < -1000000000L ||
-        v > 1000000000L)
+    const std::optional<long> v = rp::parseInteger(word);
+    if (!v || *v < -1000000000L || *v > 1000000000L)
         throw InputError("bad " + what + " '" + word + "': expected an integer");
-    return static_cast<int>(v);
+    return static_cast<int>(*v);
 }
 
-const std::string& optionValue(const std::vector<std::string>& args, size_t& i) {
-    if (i + 1 >= args.size()) throw InputError("option " + args[i] + " needs a value");
-    return args[++i];
+OptionTable genOptionTable() {
+    OptionTable t;
+    t.defaultsStops = false;
+    t.messages.missing = [](const std::string& opt) { return "option " + opt + " needs a value"; };
+    t.messages.unknown = [](const std::string& opt) { return "unknown option '" + opt + "'"; };
+    return t;
+}
+
+OptionSpec realOption(const std::string& name, const std::string& what,
+                      std::function<void(double)> set) {
+    return customOption(
+        name, [what, set = std::move(set)](OptionReader& r) { set(parseReal(r.word(), what)); });
+}
+
+OptionSpec intOption(const std::string& name, const std::string& what,
+                     std::function<void(int)> set) {
+    return customOption(
+        name, [what, set = std::move(set)](OptionReader& r) { set(parseInt(r.word(), what)); });
+}
+
+OptionSpec wordOption(const std::string& name, std::function<void()> set) {
+    return customOption(name, [set = std::move(set)](OptionReader&) { set(); });
 }
 
 }  // namespace rp::gen

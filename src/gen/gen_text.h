@@ -1,13 +1,15 @@
 // Small pieces shared by the generators (genbox, gensky, gendaylit, genprism): the
 // surface record the geometric generators produce (GenSurface), printf-style formatting
 // (output must match RADIANCE's printf digit for digit), the "# prog args" header line,
-// and strict number parsing of command words. The generators live in genbox.h, gensky.h,
-// gendaylit.h and genprism.h.
+// strict number parsing of positional words, and the generators' option tables
+// (util/options.h). The generators live in genbox.h, gensky.h, gendaylit.h, genprism.h, ...
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "util/options.h"
 #include "util/vec.h"
 
 namespace rp::gen {
@@ -43,7 +45,17 @@ std::string vertexLine(const Vec3& p);
 double parseReal(const std::string& word, const std::string& what);
 int parseInt(const std::string& word, const std::string& what);
 
-// The word after option args[i], advancing i; an InputError when the line ends first.
-const std::string& optionValue(const std::vector<std::string>& args, size_t& i);
+// A generator's option table: its options follow the positional arguments (parse them
+// with OptionTable::parseAll), "option -r needs a value" and "unknown option '-q'" as
+// the generators have always said; -version is the tool's main's (info_options.h).
+OptionTable genOptionTable();
+// An option with one number, checked as parseReal/parseInt check (their message names
+// `what`), then handed to `set` (which may check its range).
+OptionSpec realOption(const std::string& name, const std::string& what,
+                      std::function<void(double)> set);
+OptionSpec intOption(const std::string& name, const std::string& what,
+                     std::function<void(int)> set);
+// An option without a value.
+OptionSpec wordOption(const std::string& name, std::function<void()> set);
 
 }  // namespace rp::gen

@@ -75,15 +75,21 @@ GenblindsOptions parseGenblindsArgs(const std::vector<std::string>& args) {
     opt.slats = parseInt(args[6], "nslats");
     if (opt.slats < 1) throw InputError("nslats must be at least 1, got " + args[6]);
     opt.angleDeg = parseReal(args[7], "angle");
-    if (args.size() == 10) {
-        if (args[8] != "-r" && args[8] != "+r")
-            throw InputError("unknown option '" + args[8] + "' (expected -r or +r)");
-        double r = parseReal(args[9], "curvature radius");
-        opt.curvature = args[8] == "-r" ? r : -r;
-        if (r != 0 && 2 * std::fabs(r) < opt.depth)
-            throw InputError(cformat("curvature radius %g is less than half the depth (%g)",
-                                     std::fabs(r), opt.depth));
-    }
+    // The one option: -r (or +r, the other way round) and the curvature radius.
+    OptionTable table = genOptionTable();
+    table.plusWords = true;
+    table.messages.unknown = [](const std::string& w) {
+        return "unknown option '" + w + "' (expected -r or +r)";
+    };
+    for (const double sign : {1.0, -1.0})
+        table.add(realOption(sign > 0 ? "-r" : "+r", "curvature radius", [&opt, sign](double r) {
+            opt.curvature = sign * r;
+            if (r != 0 && 2 * std::fabs(r) < opt.depth)
+                throw InputError(cformat("curvature radius %g is less than half the depth (%g)",
+                                         std::fabs(r), opt.depth));
+        }));
+    std::vector<std::string> words = args;
+    table.parseAll(words, 8);
     return opt;
 }
 

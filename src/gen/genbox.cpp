@@ -222,26 +222,34 @@ GenboxOptions parseGenboxArgs(const std::vector<std::string>& args) {
             throw InputError(std::string(kAxis[i]) + " must be positive, got " + args[3 + i]);
     }
     bool sawEdge = false;
-    for (size_t i = 6; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a == "-i") {
-            opt.inward = true;
-        } else if (a == "-r" || a == "-b") {
-            if (sawEdge) throw InputError("-r and -b may be given only once, not both");
-            sawEdge = true;
-            opt.edgeSize = parseReal(optionValue(args, i), a == "-r" ? "radius" : "bevel");
-            if (opt.edgeSize < 0) throw InputError(a + " value must not be negative");
-            if (opt.edgeSize > 0) opt.edges = a == "-r" ? BoxEdges::Round : BoxEdges::Bevel;
-        } else if (a == "-n") {
-            opt.segments = parseInt(optionValue(args, i), "segment count");
-            if (opt.segments < 1) throw InputError("-n needs at least 1 segment");
-        } else if (a == "-s" || a == "-o") {
-            throw InputError("option " + a + " (" + (a == "-s" ? "smoothed facets" : "OBJ output") +
-                             ") is not supported yet");
-        } else {
-            throw InputError("unknown option '" + a + "'");
-        }
-    }
+    auto edge = [&](const std::string& name, BoxEdges kind) {
+        return realOption(name, kind == BoxEdges::Round ? "radius" : "bevel",
+                          [&, name, kind](double v) {
+                              if (sawEdge)
+                                  throw InputError("-r and -b may be given only once, not both");
+                              sawEdge = true;
+                              if (v < 0) throw InputError(name + " value must not be negative");
+                              opt.edgeSize = v;
+                              if (v > 0) opt.edges = kind;
+                          });
+    };
+    auto notYet = [](const std::string& name, const std::string& what) {
+        return wordOption(name, [name, what] {
+            throw InputError("option " + name + " (" + what + ") is not supported yet");
+        });
+    };
+    OptionTable table = genOptionTable();
+    table.add(wordOption("-i", [&] { opt.inward = true; }));
+    table.add(edge("-r", BoxEdges::Round));
+    table.add(edge("-b", BoxEdges::Bevel));
+    table.add(intOption("-n", "segment count", [&](int n) {
+        if (n < 1) throw InputError("-n needs at least 1 segment");
+        opt.segments = n;
+    }));
+    table.add(notYet("-s", "smoothed facets"));
+    table.add(notYet("-o", "OBJ output"));
+    std::vector<std::string> words = args;
+    table.parseAll(words, 6);
     double smallest = std::min({opt.size.x, opt.size.y, opt.size.z});
     if (opt.edges != BoxEdges::Square && 2 * opt.edgeSize >= smallest)
         throw InputError(cformat("%s %g must be less than half the smallest size (%g)",

@@ -272,64 +272,58 @@ GendaylitOptions parseGendaylitArgs(const std::vector<std::string>& args) {
         if (opt.hour < 0 || opt.hour >= 24)
             throw InputError("bad hour '" + args[3] + "': expected 0 <= hour < 24");
     }
-    auto two = [&](size_t& i, DaylitInput in, const char* what) {
-        if (i + 2 >= args.size()) throw InputError("option " + args[i] + " needs two values");
-        opt.haveInput = true;
-        opt.input = in;
-        opt.value1 = parseReal(optionValue(args, i), what);
-        opt.value2 = parseReal(optionValue(args, i), what);
-    };
-    for (size_t i = 4; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a == "-s" || a == "+s") {
-            opt.sun = a[0] == '+';
-            continue;
-        }
-        if (a == "-c" || a == "+c") {
+    OptionTable table = genOptionTable();
+    table.plusWords = true;
+    table.add(wordOption("-s", [&opt] { opt.sun = false; }));
+    table.add(wordOption("+s", [&opt] { opt.sun = true; }));
+    for (const char* cloudy : {"-c", "+c"})
+        table.add(wordOption(cloudy, [&opt] {
             opt.sun = false;
             opt.cloudy = true;
-            continue;
-        }
-        if (a == "-w") {
-            opt.quiet = true;
-            continue;
-        }
-        if (a == "-y") {
-            opt.year = parseInt(optionValue(args, i), "year");
-            if (opt.year < 1950 || opt.year > 2050)
-                throw InputError("year " + std::to_string(opt.year) +
-                                 " outside 1950..2050 (Michalsky's almanac algorithm)");
-        } else if (a == "-a") {
-            opt.site.latitude = parseReal(optionValue(args, i), "latitude") * kDegree;
-        } else if (a == "-o") {
-            opt.site.longitude = parseReal(optionValue(args, i), "longitude") * kDegree;
-        } else if (a == "-m") {
-            opt.site.meridian = parseReal(optionValue(args, i), "meridian") * kDegree;
-        } else if (a == "-g") {
-            opt.groundReflectance = parseReal(optionValue(args, i), "ground reflectance");
-        } else if (a == "-d") {
-            double td = parseReal(optionValue(args, i), "dew point");
-            opt.dewPoint = (td < -40 || td > 40) ? 10.97353115 : td;  // RADIANCE compat
-        } else if (a == "-O") {
-            opt.output = parseInt(optionValue(args, i), "output unit");
-            if (opt.output < 0 || opt.output > 2)
-                throw InputError("-O must be 0 (visible W), 1 (solar W) or 2 (lumen)");
-        } else if (a == "-W") {
-            two(i, DaylitInput::DirectNormal, "irradiance");
-        } else if (a == "-G") {
-            two(i, DaylitInput::DirectHorizontal, "irradiance");
-        } else if (a == "-L") {
-            two(i, DaylitInput::Illuminance, "illuminance");
-        } else if (a == "-P") {
-            two(i, DaylitInput::Perez, "Perez parameter");
-        } else if (a == "-E") {
+        }));
+    table.add(wordOption("-w", [&opt] { opt.quiet = true; }));
+    table.add(intOption("-y", "year", [&opt](int year) {
+        if (year < 1950 || year > 2050)
+            throw InputError("year " + std::to_string(year) +
+                             " outside 1950..2050 (Michalsky's almanac algorithm)");
+        opt.year = year;
+    }));
+    table.add(realOption("-a", "latitude", [&opt](double v) { opt.site.latitude = v * kDegree; }));
+    table.add(
+        realOption("-o", "longitude", [&opt](double v) { opt.site.longitude = v * kDegree; }));
+    table.add(realOption("-m", "meridian", [&opt](double v) { opt.site.meridian = v * kDegree; }));
+    table.add(
+        realOption("-g", "ground reflectance", [&opt](double v) { opt.groundReflectance = v; }));
+    table.add(realOption("-d", "dew point", [&opt](double td) {
+        opt.dewPoint = (td < -40 || td > 40) ? 10.97353115 : td;  // RADIANCE compat
+    }));
+    table.add(intOption("-O", "output unit", [&opt](int unit) {
+        if (unit < 0 || unit > 2)
+            throw InputError("-O must be 0 (visible W), 1 (solar W) or 2 (lumen)");
+        opt.output = unit;
+    }));
+    // The sky measurements: two values, or -E's one.
+    auto two = [&](const char* name, DaylitInput in, const char* what) {
+        table.add(customOption(name, [&opt, in, what](OptionReader& r) {
+            if (r.next() + 1 >= r.args().size())
+                throw InputError("option " + r.option() + " needs two values");
             opt.haveInput = true;
-            opt.input = DaylitInput::Global;
-            opt.value1 = parseReal(optionValue(args, i), "irradiance");
-        } else {
-            throw InputError("unknown option '" + a + "'");
-        }
-    }
+            opt.input = in;
+            opt.value1 = parseReal(r.word(), what);
+            opt.value2 = parseReal(r.word(), what);
+        }));
+    };
+    two("-W", DaylitInput::DirectNormal, "irradiance");
+    two("-G", DaylitInput::DirectHorizontal, "irradiance");
+    two("-L", DaylitInput::Illuminance, "illuminance");
+    two("-P", DaylitInput::Perez, "Perez parameter");
+    table.add(realOption("-E", "irradiance", [&opt](double v) {
+        opt.haveInput = true;
+        opt.input = DaylitInput::Global;
+        opt.value1 = v;
+    }));
+    std::vector<std::string> words = args;
+    table.parseAll(words, 4);
     if (!opt.haveInput) throw InputError("no sky measurements: give -W, -G, -L, -P or -E");
     return opt;
 }

@@ -188,23 +188,20 @@ GenprismOptions parseGenprismArgs(const std::vector<std::string>& args, std::ist
         opt.vertices = readVertices(f);
     }
     if (opt.vertices.size() < 3) throw InputError("not enough vertices (need at least 3)");
-    for (; an < args.size(); ++an) {
-        const std::string& a = args[an];
-        if (a == "-l") {
-            for (int k = 0; k < 3; ++k)
-                opt.extrude[k] = parseReal(optionValue(args, an), "extrusion vector component");
-            if (length(opt.extrude) <= kTiny) throw InputError("zero extrusion vector");
-        } else if (a == "-r") {
-            opt.radius = parseReal(optionValue(args, an), "radius");
-            if (opt.radius < 0) throw InputError("-r radius must not be negative");
-        } else if (a == "-e") {
-            opt.ends = !opt.ends;
-        } else if (a == "-c") {
-            opt.complete = !opt.complete;
-        } else {
-            throw InputError("unknown option '" + a + "'");
-        }
-    }
+    OptionTable table = genOptionTable();
+    table.add(customOption("-l", [&opt](OptionReader& r) {
+        for (int k = 0; k < 3; ++k)
+            opt.extrude[k] = parseReal(r.word(), "extrusion vector component");
+        if (length(opt.extrude) <= kTiny) throw InputError("zero extrusion vector");
+    }));
+    table.add(realOption("-r", "radius", [&opt](double v) {
+        if (v < 0) throw InputError("-r radius must not be negative");
+        opt.radius = v;
+    }));
+    table.add(wordOption("-e", [&opt] { opt.ends = !opt.ends; }));
+    table.add(wordOption("-c", [&opt] { opt.complete = !opt.complete; }));
+    std::vector<std::string> words = args;
+    table.parseAll(words, an);
     if (opt.radius > kTiny && opt.radius > std::fabs(opt.extrude.z))
         throw InputError("rounding greater than height");
     return opt;

@@ -43,14 +43,11 @@ GenrevOptions parseGenrevArgs(const std::vector<std::string>& args) {
     opt.segments = parseInt(args[5], "nseg");
     if (opt.segments <= 0)
         throw InputError("nseg must be positive, got " + std::to_string(opt.segments));
-    std::vector<std::string> rest =
-        takeCalcOptions(std::vector<std::string>(args.begin() + 6, args.end()), opt.sources);
-    for (const std::string& w : rest) {
-        if (w == "-s")
-            opt.smooth = true;
-        else
-            throw InputError("unknown option '" + w + "'");
-    }
+    OptionTable table = genOptionTable();
+    table.add(wordOption("-s", [&opt] { opt.smooth = true; }));
+    addCalcOptions(table, opt.sources);
+    std::vector<std::string> words = args;
+    table.parseAll(words, 6);
     return opt;
 }
 

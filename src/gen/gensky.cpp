@@ -98,71 +98,59 @@ GenskyOptions parseGenskyArgs(const std::vector<std::string>& args) {
         checkDate(opt.month, opt.day);
         zoneMeridian = parseTime(args[3], opt);
     }
-    for (size_t i = 4; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a.size() != 2 || (a[0] != '-' && a[0] != '+'))
-            throw InputError("bad option '" + a + "'");
-        bool plus = a[0] == '+';
-        switch (a[1]) {
-            case 's':
-                opt.type = SkyType::Clear;
-                opt.sun = plus;
-                continue;
-            case 'i':
-                opt.type = SkyType::Intermediate;
-                opt.sun = plus;
-                continue;
-            case 'c':
-                opt.type = SkyType::Overcast;
-                continue;
-            case 'u':
-                opt.type = SkyType::Uniform;
-                continue;
-            default:
-                break;
-        }
-        if (plus) throw InputError("unknown option '" + a + "'");
-        switch (a[1]) {
-            case 'r':
-            case 'R':
-                opt.solarGiven = a[1] == 'R' ? GivenAs::Irradiance : GivenAs::Radiance;
-                opt.solar = parseReal(optionValue(args, i), "solar value");
-                if (opt.solar < 0) throw InputError(a + " value must not be negative");
-                break;
-            case 'b':
-            case 'B':
-                opt.zenithGiven = a[1] == 'B' ? GivenAs::Irradiance : GivenAs::Radiance;
-                opt.zenith = parseReal(optionValue(args, i), "zenith value");
-                if (opt.zenith < 0) throw InputError(a + " value must not be negative");
-                break;
-            case 't':
-                opt.turbidity = parseReal(optionValue(args, i), "turbidity");
-                break;
-            case 'g':
-                opt.groundReflectance = parseReal(optionValue(args, i), "ground reflectance");
-                break;
-            case 'a':
-                opt.site.latitude = parseReal(optionValue(args, i), "latitude") * kDegree;
-                break;
-            case 'o':
-                opt.site.longitude = parseReal(optionValue(args, i), "longitude") * kDegree;
-                break;
-            case 'm': {
-                // RADIANCE compat: a time zone on the hour overrides -m.
-                double m = parseReal(optionValue(args, i), "meridian") * kDegree;
-                if (!zoneMeridian) opt.site.meridian = m;
-                break;
-            }
-            case 'y':
-                opt.year = parseInt(optionValue(args, i), "year");
-                if (opt.year < 1950 || opt.year > 2050)
-                    throw InputError("year " + std::to_string(opt.year) +
-                                     " outside 1950..2050 (Michalsky's almanac algorithm)");
-                break;
-            default:
-                throw InputError("unknown option '" + a + "'");
-        }
-    }
+    OptionTable table = genOptionTable();
+    table.plusWords = true;
+    table.messages.unknown = [](const std::string& w) {
+        // RADIANCE compat (gensky.c): a word that cannot be an option is a "bad option".
+        const bool optionLike = w.size() == 2 && (w[0] == '-' || w[0] == '+');
+        return (optionLike ? "unknown option '" : "bad option '") + w + "'";
+    };
+    // The sky type: "+s" and "+i" with a sun, "-s" and "-i" without.
+    auto sky = [&](const std::string& name, SkyType type) {
+        table.add(wordOption(name, [&opt, type, sun = name[0] == '+'] {
+            opt.type = type;
+            if (type == SkyType::Clear || type == SkyType::Intermediate) opt.sun = sun;
+        }));
+    };
+    sky("-s", SkyType::Clear);
+    sky("+s", SkyType::Clear);
+    sky("-i", SkyType::Intermediate);
+    sky("+i", SkyType::Intermediate);
+    sky("-c", SkyType::Overcast);
+    sky("+c", SkyType::Overcast);
+    sky("-u", SkyType::Uniform);
+    sky("+u", SkyType::Uniform);
+    // -r/-R solar and -b/-B zenith brightness, as radiance or as irradiance.
+    auto given = [&](const std::string& name, const char* what, double& value, GivenAs& as,
+                     GivenAs kind) {
+        table.add(realOption(name, what, [name, &value, &as, kind](double v) {
+            as = kind;
+            if (v < 0) throw InputError(name + " value must not be negative");
+            value = v;
+        }));
+    };
+    given("-r", "solar value", opt.solar, opt.solarGiven, GivenAs::Radiance);
+    given("-R", "solar value", opt.solar, opt.solarGiven, GivenAs::Irradiance);
+    given("-b", "zenith value", opt.zenith, opt.zenithGiven, GivenAs::Radiance);
+    given("-B", "zenith value", opt.zenith, opt.zenithGiven, GivenAs::Irradiance);
+    table.add(realOption("-t", "turbidity", [&opt](double v) { opt.turbidity = v; }));
+    table.add(
+        realOption("-g", "ground reflectance", [&opt](double v) { opt.groundReflectance = v; }));
+    table.add(realOption("-a", "latitude", [&opt](double v) { opt.site.latitude = v * kDegree; }));
+    table.add(
+        realOption("-o", "longitude", [&opt](double v) { opt.site.longitude = v * kDegree; }));
+    table.add(realOption("-m", "meridian", [&opt, zoneMeridian](double v) {
+        // RADIANCE compat: a time zone on the hour overrides -m.
+        if (!zoneMeridian) opt.site.meridian = v * kDegree;
+    }));
+    table.add(intOption("-y", "year", [&opt](int year) {
+        if (year < 1950 || year > 2050)
+            throw InputError("year " + std::to_string(year) +
+                             " outside 1950..2050 (Michalsky's almanac algorithm)");
+        opt.year = year;
+    }));
+    std::vector<std::string> words = args;
+    table.parseAll(words, 4);
     return opt;
 }
 

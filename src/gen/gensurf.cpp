@@ -146,16 +146,12 @@ GensurfOptions parseGensurfArgs(const std::vector<std::string>& args) {
     opt.n = parseInt(args[7], "n");
     if (opt.m <= 0) throw InputError("m must be positive, got " + std::to_string(opt.m));
     if (opt.n <= 0) throw InputError("n must be positive, got " + std::to_string(opt.n));
-    std::vector<std::string> rest =
-        takeCalcOptions(std::vector<std::string>(args.begin() + 8, args.end()), opt.sources);
-    for (const std::string& w : rest) {
-        if (w == "-s")
-            opt.smooth = true;
-        else if (w == "-o")
-            opt.obj = true;
-        else
-            throw InputError("unknown option '" + w + "'");
-    }
+    OptionTable table = genOptionTable();
+    table.add(wordOption("-s", [&opt] { opt.smooth = true; }));
+    table.add(wordOption("-o", [&opt] { opt.obj = true; }));
+    addCalcOptions(table, opt.sources);
+    std::vector<std::string> words = args;
+    table.parseAll(words, 8);
     if (opt.zExpr == "-" || std::ifstream(opt.zExpr).good())
         opt.data = opt.xExpr == opt.zExpr && opt.yExpr == opt.zExpr ? GensurfOptions::Data::Points
                                                                     : GensurfOptions::Data::Z;

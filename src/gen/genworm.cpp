@@ -31,9 +31,10 @@ GenwormOptions parseGenwormArgs(const std::vector<std::string>& args) {
     opt.segments = parseInt(args[7], "nseg");
     if (opt.segments <= 0)
         throw InputError("nseg must be positive, got " + std::to_string(opt.segments));
-    std::vector<std::string> rest =
-        takeCalcOptions(std::vector<std::string>(args.begin() + 8, args.end()), opt.sources);
-    if (!rest.empty()) throw InputError("unknown option '" + rest.front() + "'");
+    OptionTable table = genOptionTable();
+    addCalcOptions(table, opt.sources);
+    std::vector<std::string> words = args;
+    table.parseAll(words, 8);
     return opt;
 }
 

@@ -355,19 +355,24 @@ std::string mgf2rad(const std::vector<std::string>& args, const std::string& inp
     Mgf2radOptions opt;
     std::string prog = args.empty() ? "mgf2rad" : args[0];
     std::string header = "## " + prog;
-    size_t i = 1;
-    for (; i < args.size() && args[i].size() > 1 && args[i][0] == '-'; ++i) {
-        const std::string& a = args[i];
-        if (a == "-g" || a == "-e") {
-            double v = parseReal(optionValue(args, i), a == "-g" ? "glow distance" : "multiplier");
-            (a == "-g" ? opt.glowDistance : opt.emitterMultiplier) = v;
-            header += " " + a + " " + args[i];
-        } else if (a == "-m") {
-            throw notSupportedYet(SourceLoc{}, "mgf2rad -m (a separate materials file)");
-        } else {
-            throw InputError("usage: mgf2rad [-g dist][-e mult] [file.mgf] ..");
-        }
-    }
+    OptionTable table = genOptionTable();
+    table.messages.unknown = [](const std::string&) {
+        return "usage: mgf2rad [-g dist][-e mult] [file.mgf] ..";
+    };
+    auto number = [&](const char* name, const char* what, double& v) {
+        table.add(customOption(name, [&header, &v, what](OptionReader& r) {
+            v = parseReal(r.word(), what);
+            header += " " + r.option() + " " + r.args()[r.next() - 1];
+        }));
+    };
+    number("-g", "glow distance", opt.glowDistance);
+    number("-e", "multiplier", opt.emitterMultiplier);
+    table.add(wordOption("-m", [] {
+        throw notSupportedYet(SourceLoc{}, "mgf2rad -m (a separate materials file)");
+    }));
+    std::vector<std::string> words = args;
+    size_t i = table.parse(words, 1).next;
+    if (i < args.size() && args[i] == "-version") throw InputError(table.messages.unknown(args[i]));
     Conversion c(opt);
     c.out = "## Translated from MGF Version 2.0\n" + header + "\n";
     MgfReader& reader = c.writer.reader();

@@ -10,6 +10,7 @@
 #include "scene/scene_load.h"
 #include "util/error.h"
 #include "util/file_write.h"
+#include "util/options.h"
 
 namespace rp::gen {
 
@@ -101,15 +102,20 @@ std::string pkgBSDF(const std::vector<std::string>& args, std::vector<std::strin
     (void)warnings;
     const std::string usage = "usage: pkgBSDF [-i][-s] input.xml ..";
     bool instance = false, toStdout = false;
-    size_t i = 1;
-    for (; i < args.size() && !args[i].empty() && args[i][0] == '-'; ++i) {
-        if (args[i] == "-i")
-            instance = true;
-        else if (args[i] == "-s")
-            toStdout = true;
-        else
-            throw InputError("unknown option '" + args[i] + "'; " + usage);
-    }
+    OptionTable table;
+    table.defaultsStops = false;
+    table.messages.unknown = [usage](const std::string& w) {
+        return "unknown option '" + w + "'; " + usage;
+    };
+    table.add(customOption("-i", [&instance](OptionReader&) { instance = true; }));
+    table.add(customOption("-s", [&toStdout](OptionReader&) { toStdout = true; }));
+    std::vector<std::string> words = args;
+    const size_t i0 = table.parse(words, 1).next;
+    // RADIANCE compat (pkgBSDF): every word starting with '-' before the inputs is an
+    // option, a lone "-" and -version among them.
+    if (i0 < args.size() && !args[i0].empty() && args[i0][0] == '-')
+        throw InputError(table.messages.unknown(args[i0]));
+    size_t i = i0;
     if (i >= args.size()) throw InputError("missing XML input; " + usage);
     if (toStdout && i + 1 < args.size()) throw InputError("cannot send multiple BSDFs to stdout");
     std::string out;

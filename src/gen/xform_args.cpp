@@ -8,6 +8,7 @@
 
 #include "gen/xform_scene.h"
 #include "scene/lexer.h"
+#include "util/options.h"
 
 namespace rp {
 
@@ -23,32 +24,37 @@ size_t transformValues(const std::string& opt) {
     return 1;
 }
 
+// xform's initial options (util/options.h): any other word starts the transform, and
+// so does a -m or -n without its value (RADIANCE xform.c main), which the transform
+// then refuses.
+OptionTable initialOptions(XformRun& run) {
+    OptionTable t;
+    t.defaultsStops = false;
+    t.unknownEnds = true;
+    t.messages.missing = [](const std::string& opt) {
+        return "command line error at '" + opt + "'";
+    };
+    t.add(customOption("-m", [&run](OptionReader& r) {
+        const std::string& v = r.word();
+        if (run.newModifier.empty()) run.newModifier = v;  // RADIANCE: first -m wins
+    }));
+    t.add(customOption("-n", [&run](OptionReader& r) {
+        const std::string& v = r.word();
+        run.idPrefix = run.idPrefix.empty() ? v : run.idPrefix + "." + v;
+    }));
+    t.add(customOption("-c", [&run](OptionReader&) { run.expand = false; }));
+    t.add(customOption("-e", [&run](OptionReader&) { run.expand = true; }));
+    t.add(customOption("-I", [&run](OptionReader&) { run.invert = !run.invert; }));
+    return t;
+}
+
 // RADIANCE main() without -a/-f: initial options, transform, files.
 XformRun parseRun(const std::vector<std::string>& av) {
     XformRun run;
     run.argv = av;
-    size_t a = 1;
-    for (; a < av.size(); ++a) {
-        const std::string& o = av[a];
-        if (o.size() < 2 || o[0] != '-') break;
-        bool bare = o.size() == 2;
-        if ((o[1] == 'm' || o[1] == 'n') && bare && a + 1 < av.size()) {
-            const std::string& v = av[++a];
-            if (o[1] == 'm') {
-                if (run.newModifier.empty()) run.newModifier = v;  // RADIANCE: first -m wins
-            } else {
-                run.idPrefix = run.idPrefix.empty() ? v : run.idPrefix + "." + v;
-            }
-        } else if (o[1] == 'c' && bare) {
-            run.expand = false;
-        } else if (o[1] == 'e' && bare) {
-            run.expand = true;
-        } else if (o[1] == 'I' && bare) {
-            run.invert = !run.invert;
-        } else {
-            break;
-        }
-    }
+    std::vector<std::string> words = av;
+    // -version (answered by the tool's main) stops the options too, as any other word.
+    size_t a = initialOptions(run).parse(words, 1).next;
     run.xfBegin = a;
     while (a < av.size() && isTransformOption(av[a]) && a + transformValues(av[a]) < av.size())
         a += 1 + transformValues(av[a]);

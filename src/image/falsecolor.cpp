@@ -11,6 +11,7 @@
 #include "calc/program.h"
 #include "image/legend_font.h"
 #include "util/error.h"
+#include "util/options.h"
 
 namespace rp {
 
@@ -23,17 +24,12 @@ double clip01(double x) { return x > 1 ? 1 : (x > 0 ? x : 0); }
 constexpr double kEps = 1e-7;
 bool differ(double a, double b) { return a - b - kEps > 0 || b - a - kEps > 0; }
 
-double parseNumber(const std::string& opt, const std::string& v) {
-    char* end = nullptr;
-    double d = std::strtod(v.c_str(), &end);
-    if (v.empty() || *end || !std::isfinite(d)) throw InputError(opt + ": bad number '" + v + "'");
-    return d;
-}
-
-int parseInt(const std::string& opt, const std::string& v) {
-    double d = parseNumber(opt, v);
+// -n, -d, -lw, -lh: a whole number, which falsecolor.pl takes in any real's spelling.
+int wholeNumber(OptionReader& r) {
+    const double d = r.real();
     if (d != std::floor(d) || std::abs(d) > 1e6)
-        throw InputError(opt + ": expected an integer, got '" + v + "'");
+        throw InputError(r.option() + ": expected an integer, got '" + r.args()[r.next() - 1] +
+                         "'");
     return static_cast<int>(d);
 }
 
@@ -41,67 +37,89 @@ int parseInt(const std::string& opt, const std::string& v) {
 
 // ---- options -------------------------------------------------------------------------
 
+OptionTable falseColorTable(FalseColorOptions& o) {
+    OptionTable t;
+    t.defaultsStops = false;  // -defaults is the tool's, at argv[1] (tools/info_options.h)
+    t.messages.missing = [](const std::string& opt) { return "option " + opt + " needs a value"; };
+    t.messages.bad = [](const std::string& opt, const std::string& v, ValueKind) {
+        return opt + ": bad number '" + v + "'";
+    };
+    t.messages.unknown = [](const std::string& opt) { return "bad option '" + opt + "'"; };
+    auto whole = [](const char* name, int& v) {
+        return customOption(name, [&v](OptionReader& r) { v = wholeNumber(r); });
+    };
+    auto real = [](const char* name, double& v) {
+        return customOption(name, [&v](OptionReader& r) { v = r.real(); });
+    };
+    auto flag = [](const char* name, std::function<void()> set) {
+        return customOption(name, [set = std::move(set)](OptionReader&) { set(); });
+    };
+    t.add(whole("-lw", o.legendWidth),
+          [&o] { return formatLine("-lw %d\t\t\t\t# legend width\n", o.legendWidth); });
+    t.add(whole("-lh", o.legendHeight),
+          [&o] { return formatLine("-lh %d\t\t\t\t# legend height\n", o.legendHeight); });
+    t.add(real("-m", o.multiplier), [&o] {
+        return formatLine("-m  %g\t\t\t\t# multiplier (luminous efficacy)\n", o.multiplier);
+    });
+    t.add(flag("-spec", [] { throw InputError("deprecated option '-spec': use '-pal spec'"); }));
+    t.add(customOption("-s",
+                       [&o](OptionReader& r) {
+                           const std::string& v = r.word();
+                           // RADIANCE compat: falsecolor.pl takes any value starting with a
+                           // or A as auto.
+                           if (!v.empty() && (v[0] == 'a' || v[0] == 'A')) {
+                               o.autoScale = true;
+                           } else {
+                               const std::optional<double> d = parseReal(v);
+                               if (!d) r.bad(v, ValueKind::kReal);
+                               o.scale = *d;
+                           }
+                       }),
+          [&o] {
+              return formatLine("-s  %g\t\t\t# top of the scale (-s a: from the picture)\n",
+                                o.scale);
+          });
+    t.add(whole("-d", o.decimals),
+          [&o] { return formatLine("-d  %d\t\t\t\t# decimals in legend numbers\n", o.decimals); });
+    t.add(valueOption("-l", o.label),
+          [&o] { return formatLine("-l  %s\t\t\t# legend label\n", o.label.c_str()); });
+    t.add(real("-log", o.decades),
+          [&o] { return formatLine("-log %g\t\t\t\t# decades (0: linear scale)\n", o.decades); });
+    t.add(valueOption("-r", o.channelExpr[0]));
+    t.add(valueOption("-g", o.channelExpr[1]));
+    t.add(valueOption("-b", o.channelExpr[2]));
+    t.add(customOption("-pal",
+                       [&o](OptionReader& r) {
+                           const std::string& v = r.word();
+                           auto p = paletteByName(v);
+                           if (!p) throw InputError("invalid palette '" + v + "'");
+                           o.palette = *p;
+                       }),
+          [&o] {
+              return formatLine("-pal %s\t\t\t# palette\n",
+                                paletteNames()[size_t(o.palette)].c_str());
+          });
+    t.add(valueOption("-i", o.input), [&o] {
+        return formatLine("-i  %s\t\t\t\t# input picture (standard input)\n", o.input.c_str());
+    });
+    t.add(valueOption("-p", o.background));
+    t.add(customOption([](const std::string& w) { return w == "-ip" || w == "-pi"; }, "-ip",
+                       [&o](OptionReader& r) { o.input = o.background = r.word(); }));
+    t.add(whole("-n", o.ndivs),
+          [&o] { return formatLine("-n  %d\t\t\t\t# legend divisions\n", o.ndivs); });
+    t.add(flag("-cl", [&o] { o.contour = ContourMode::kLines; }));
+    t.add(flag("-cb", [&o] { o.contour = ContourMode::kBands; }));
+    t.add(flag("-cp", [&o] { o.contour = ContourMode::kPosterize; }));
+    t.add(flag("-palettes", [&o] { o.showPalettes = true; }));
+    t.add(flag("-e", [&o] { o.extrema = true; }));
+    t.setDefaultsOrder({"-i", "-s", "-n", "-l", "-m", "-d", "-log", "-pal", "-lw", "-lh"});
+    return t;
+}
+
 FalseColorOptions parseFalseColorArgs(const std::vector<std::string>& args) {
     FalseColorOptions o;
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) throw InputError("option " + a + " needs a value");
-            return args[++i];
-        };
-        if (a == "-lw")
-            o.legendWidth = parseInt(a, value());
-        else if (a == "-lh")
-            o.legendHeight = parseInt(a, value());
-        else if (a == "-m")
-            o.multiplier = parseNumber(a, value());
-        else if (a == "-spec")
-            throw InputError("deprecated option '-spec': use '-pal spec'");
-        else if (a == "-s") {
-            const std::string& v = value();
-            // RADIANCE compat: falsecolor.pl takes any value starting with a or A as auto.
-            if (!v.empty() && (v[0] == 'a' || v[0] == 'A'))
-                o.autoScale = true;
-            else
-                o.scale = parseNumber(a, v);
-        } else if (a == "-d")
-            o.decimals = parseInt(a, value());
-        else if (a == "-l")
-            o.label = value();
-        else if (a == "-log")
-            o.decades = parseNumber(a, value());
-        else if (a == "-r")
-            o.channelExpr[0] = value();
-        else if (a == "-g")
-            o.channelExpr[1] = value();
-        else if (a == "-b")
-            o.channelExpr[2] = value();
-        else if (a == "-pal") {
-            const std::string& v = value();
-            auto p = paletteByName(v);
-            if (!p) throw InputError("invalid palette '" + v + "'");
-            o.palette = *p;
-        } else if (a == "-i")
-            o.input = value();
-        else if (a == "-p")
-            o.background = value();
-        else if (a == "-ip" || a == "-pi")
-            o.input = o.background = value();
-        else if (a == "-n")
-            o.ndivs = parseInt(a, value());
-        else if (a == "-cl")
-            o.contour = ContourMode::kLines;
-        else if (a == "-cb")
-            o.contour = ContourMode::kBands;
-        else if (a == "-cp")
-            o.contour = ContourMode::kPosterize;
-        else if (a == "-palettes")
-            o.showPalettes = true;
-        else if (a == "-e")
-            o.extrema = true;
-        else
-            throw InputError("bad option '" + a + "'");
-    }
+    std::vector<std::string> words = args;
+    falseColorTable(o).parseAll(words, 0);
     if (o.ndivs < 1) throw InputError("-n: need at least one division");
     if (o.decimals < 0) throw InputError("-d: decimal places must be 0 or more");
     if (!o.autoScale && !(o.scale > 0)) throw InputError("-s: scale must be positive");

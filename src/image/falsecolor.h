@@ -12,6 +12,7 @@
 
 #include "image/falsecolor_palette.h"
 #include "image/picture.h"
+#include "util/options.h"
 
 namespace rp {
 
@@ -36,6 +37,9 @@ struct FalseColorOptions {
     int legendWidth = 100;      // -lw
     int legendHeight = 200;     // -lh
 };
+
+// falsecolor's options (util/options.h), reading into `o`; its -defaults lists o's values.
+OptionTable falseColorTable(FalseColorOptions& o);
 
 // Parses falsecolor's arguments (without the program name). Throws InputError naming the
 // option for unknown options, missing or bad values.

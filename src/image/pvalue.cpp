@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "util/error.h"
+#include "util/options.h"
 
 namespace rp {
 namespace {
@@ -25,15 +26,13 @@ const char* formatName(ValueFormat f) {
 }
 
 // Positive integer option value; anything else names the option.
-int sizeValue(const std::vector<std::string>& args, size_t& i) {
-    const std::string opt = args[i];
-    if (i + 1 >= args.size()) throw InputError("missing value for option '" + opt + "'");
-    const std::string& v = args[++i];
-    char* end = nullptr;
-    long n = std::strtol(v.c_str(), &end, 10);
-    if (v.empty() || *end != '\0' || n <= 0 || n > (1 << 24))
-        throw InputError("bad size '" + v + "' for option '" + opt + "'");
-    return static_cast<int>(n);
+// -x, -y and their capital and '+' forms: a picture size.
+int sizeValue(OptionReader& r) {
+    const std::string& v = r.word();
+    const std::optional<long> n = parseInteger(v);
+    if (!n || *n <= 0 || *n > (1 << 24))
+        throw InputError("bad size '" + v + "' for option '" + r.option() + "'");
+    return static_cast<int>(*n);
 }
 
 bool parseNumber(const std::string& s, double& v) {
@@ -191,60 +190,107 @@ void readBinaryPixels(std::istream& in, PixelSink& sink, const std::string& what
 
 }  // namespace
 
-PvalueOptions parsePvalueArgs(const std::vector<std::string>& args) {
-    PvalueOptions opt;
-    bool haveInput = false;
-    int xres = 0, yres = 0;
-    Resolution res;
-    bool first = true;
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a.size() < 2 || (a[0] != '-' && a[0] != '+')) {
-            if (haveInput) throw InputError("more than one input file ('" + a + "')");
-            opt.input = a;
-            haveInput = true;
-            continue;
-        }
-        const bool minus = a[0] == '-';
-        const std::string name = a.substr(1);
-        if (name == "h")
-            opt.header = !minus;
-        else if (name == "H")
-            opt.resolution = !minus;
-        else if (name == "o")
-            opt.original = minus;
-        else if (name == "b")
-            opt.brightness = minus;
-        else if (name == "r")
-            opt.reverse = minus;
-        else if (name == "d" || name == "da" || name == "df" || name == "dd") {
-            // As pvalue.c: "-d?" drops the coordinates, "+d?" keeps them; ? picks the type.
+OptionTable pvalueTable(PvalueOptions& opt, PvalueSize& size) {
+    OptionTable t;
+    t.defaultsStops = false;  // -defaults is the tool's, at argv[1] (tools/info_options.h)
+    t.plusWords = true;
+    t.messages.unknown = [](const std::string& a) { return "bad option '" + a + "'"; };
+    // Every option is "-x" or "+x"; `read` gets whether it was '-'.
+    auto both = [&t](std::vector<std::string> names, std::function<void(OptionReader&, bool)> read,
+                     std::function<std::string()> defaults = {}) {
+        auto matches = [names](const std::string& w) {
+            for (const std::string& n : names)
+                if (w.size() == n.size() + 1 && (w[0] == '-' || w[0] == '+') && w.substr(1) == n)
+                    return true;
+            return false;
+        };
+        t.add(customOption(
+                  matches, "-" + names[0],
+                  [read = std::move(read)](OptionReader& r) { read(r, r.option()[0] == '-'); }),
+              std::move(defaults));
+    };
+    auto sign = [](bool plus) { return plus ? '+' : '-'; };
+    both(
+        {"h"}, [&opt](OptionReader&, bool minus) { opt.header = !minus; },
+        [&opt, sign] { return formatLine("-h%c\t\t\t\t# header\n", sign(opt.header)); });
+    both(
+        {"H"}, [&opt](OptionReader&, bool minus) { opt.resolution = !minus; },
+        [&opt, sign] {
+            return formatLine("-H%c\t\t\t\t# resolution string\n", sign(opt.resolution));
+        });
+    both(
+        {"o"}, [&opt](OptionReader&, bool minus) { opt.original = minus; },
+        [&opt, sign] {
+            return formatLine("-o%c\t\t\t\t# values after exposure\n", sign(opt.original));
+        });
+    both(
+        {"b"}, [&opt](OptionReader&, bool minus) { opt.brightness = minus; },
+        [&opt, sign] {
+            return formatLine("-b%c\t\t\t\t# three values per pixel (-b+: brightness)\n",
+                              sign(opt.brightness));
+        });
+    both({"r"}, [&opt](OptionReader&, bool minus) { opt.reverse = minus; });
+    // As pvalue.c: "-d?" drops the coordinates, "+d?" keeps them; ? picks the type.
+    both(
+        {"d", "da", "df", "dd"},
+        [&opt](OptionReader& r, bool minus) {
             opt.coordinates = !minus;
-            opt.format = name == "df"   ? ValueFormat::kFloat
-                         : name == "dd" ? ValueFormat::kDouble
-                                        : ValueFormat::kAscii;
-        } else if (name == "e") {
-            if (i + 1 >= args.size()) throw InputError("missing value for option '-e'");
-            const std::string& v = args[++i];
+            const std::string& a = r.option();
+            opt.format = a == "-df" || a == "+df"   ? ValueFormat::kFloat
+                         : a == "-dd" || a == "+dd" ? ValueFormat::kDouble
+                                                    : ValueFormat::kAscii;
+        },
+        [&opt, sign] {
+            const char type = opt.format == ValueFormat::kFloat    ? 'f'
+                              : opt.format == ValueFormat::kDouble ? 'd'
+                                                                   : 'a';
+            return formatLine("%cd%c\t\t\t\t# ASCII values with pixel coordinates\n",
+                              sign(opt.coordinates), type);
+        });
+    both(
+        {"e"},
+        [&opt](OptionReader& r, bool) {
+            if (!r.hasNext()) throw InputError("missing value for option '-e'");
+            const std::string& v = r.word();
             double e;
             if (!parseNumber(v, e)) throw InputError("bad exposure '" + v + "' for option '-e'");
             // RADIANCE: a signed exposure is in f-stops, an unsigned one a multiplier.
             opt.exposure = (v[0] == '+' || v[0] == '-') ? std::pow(2.0, e) : e;
             if (!(opt.exposure > 0)) throw InputError("bad exposure '" + v + "' for option '-e'");
-        } else if (name == "x" || name == "X") {
-            xres = sizeValue(args, i);
-            res.xDecreasing = minus;
-            if (first) res.yMajor = false;
-            first = false;
-        } else if (name == "y" || name == "Y") {
-            yres = sizeValue(args, i);
-            res.yDecreasing = minus;
-            if (first) res.yMajor = true;
-            first = false;
-        } else {
-            throw InputError("bad option '" + a + "'");
-        }
+        },
+        [&opt] { return formatLine("-e  %g\t\t\t\t# exposure\n", opt.exposure); });
+    // The first of x and y given is the major (scanline) one.
+    both({"x", "X"}, [&size](OptionReader& r, bool minus) {
+        size.x = sizeValue(r);
+        size.res.xDecreasing = minus;
+        if (size.first) size.res.yMajor = false;
+        size.first = false;
+    });
+    both({"y", "Y"}, [&size](OptionReader& r, bool minus) {
+        size.y = sizeValue(r);
+        size.res.yDecreasing = minus;
+        if (size.first) size.res.yMajor = true;
+        size.first = false;
+    });
+    return t;
+}
+
+PvalueOptions parsePvalueArgs(const std::vector<std::string>& args) {
+    PvalueOptions opt;
+    PvalueSize size;
+    const OptionTable table = pvalueTable(opt, size);
+    bool haveInput = false;
+    // Options may stand on either side of the input file.
+    std::vector<std::string> words = args;
+    for (size_t i = table.parse(words, 0).next; i < words.size();
+         i = table.parse(words, i + 1).next) {
+        if (words[i] == "-version") throw InputError("bad option '-version'");
+        if (haveInput) throw InputError("more than one input file ('" + words[i] + "')");
+        opt.input = words[i];
+        haveInput = true;
     }
+    const int xres = size.x, yres = size.y;
+    Resolution res = size.res;
     if ((xres > 0) != (yres > 0)) throw InputError("give both the x and the y resolution");
     if (xres > 0) {
         res.xres = xres;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "image/picture.h"
+#include "util/options.h"
 
 namespace rp {
 
@@ -26,6 +27,17 @@ struct PvalueOptions {
     double exposure = 1;             // -e: multiplier, or +/-stops when signed
     std::optional<Resolution> size;  // -y N +x M (any of +-x +-y, first is major)
 };
+
+// The picture size options (-y N +x M) as they are read, before both are checked.
+struct PvalueSize {
+    int x = 0, y = 0;
+    Resolution res;
+    bool first = true;  // no size given yet
+};
+
+// pvalue's options (util/options.h), reading into `opt` and `size`; its -defaults lists
+// opt's values.
+OptionTable pvalueTable(PvalueOptions& opt, PvalueSize& size);
 
 // Parses pvalue's arguments (without the program name): options, then at most one input
 // file. Throws InputError naming the option for unknown options, missing or bad values.

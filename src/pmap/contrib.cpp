@@ -53,16 +53,16 @@ PrimaryRay primaryRay(const light::EmissionPlan& plan, uint64_t seed, uint64_t i
 class Reporter {
 public:
     explicit Reporter(const ContribSettings& s)
-        : s_(s), start_(Clock::now()), next_(s.reportSeconds) {}
+        : s_(s), start_(Clock::now()), next_(s.pass.reportSeconds) {}
     void add(uint64_t emitted, uint64_t stored) {
         emitted_.fetch_add(emitted, std::memory_order_relaxed);
         stored_.fetch_add(stored, std::memory_order_relaxed);
-        if (s_.reportSeconds <= 0 || !s_.progress) return;
+        if (s_.pass.reportSeconds <= 0 || !s_.progress) return;
         double t = std::chrono::duration<double>(Clock::now() - start_).count();
         if (t < next_.load(std::memory_order_relaxed)) return;
         std::lock_guard<std::mutex> lock(mutex_);
         if (t < next_.load()) return;
-        next_.store(t + s_.reportSeconds);
+        next_.store(t + s_.pass.reportSeconds);
         uint64_t st = stored_.load();
         double pct = s_.target ? std::min(100.0, 100.0 * double(st) / double(s_.target)) : 100.0;
         char line[256];
@@ -107,7 +107,7 @@ PathBatch traceRange(const PhotonTracer& tracer, tbb::task_arena& arena, const C
     all.fill(1.0);
     const uint64_t chunks = (end - begin + kPhotonsPerChunk - 1) / kPhotonsPerChunk;
     streamChunks<PathBatch>(
-        s.cluster, arena, s.threads, chunks,
+        s.cluster, arena, s.pass.threads, chunks,
         [&](uint64_t c) {
             const uint64_t i0 = begin + c * kPhotonsPerChunk;
             const uint64_t i1 = std::min(end, i0 + kPhotonsPerChunk);
@@ -153,7 +153,7 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
     ContribResult result;
     result.emitted.assign(nsrc, 0);
     result.stored.assign(nsrc, 0);
-    tbb::task_arena arena(std::max(1, settings.threads));
+    tbb::task_arena arena(std::max(1, settings.pass.threads));
     Reporter reporter(settings);
     // RADIANCE: the target is shared equally by all sources (pmapcontrib.c).
     const double srcTarget = double(settings.target) / double(nsrc);
@@ -166,14 +166,15 @@ ContribResult distributeContrib(const Scene& scene, const SceneGeometry& geometr
         light::EmissionPlan single(geometry, {sources[s]}, emission);
         PhotonTracer tracer(scene, geometry, single, trace, chains, materialCalc);
         const light::EmissionPlan* rays = settings.primaryRays ? &single : nullptr;
-        const uint64_t seed = mix64(settings.seed + 0x632be59bd9b4e019ULL * (s + 1));
+        const uint64_t seed = mix64(settings.pass.seed + 0x632be59bd9b4e019ULL * (s + 1));
 
         // Prepass: a fraction of the source's share, doubled while nothing is stored.
         PathBatch batch;
         uint64_t emitted = 0;
-        uint64_t pass = std::max<uint64_t>(1, uint64_t(std::ceil(settings.preDistrib * srcTarget)));
+        uint64_t pass =
+            std::max<uint64_t>(1, uint64_t(std::ceil(settings.pass.preDistrib * srcTarget)));
         uint64_t stored = 0;  // the root's count, known to every rank
-        for (int prepass = 1; prepass <= settings.maxPrepass; ++prepass, pass *= 2) {
+        for (int prepass = 1; prepass <= settings.pass.maxPrepass; ++prepass, pass *= 2) {
             batch.append(
                 traceRange(tracer, arena, settings, seed, emitted, emitted + pass, reporter, rays));
             emitted += pass;

@@ -15,6 +15,7 @@
 
 #include "geometry/scene_geometry.h"
 #include "light/emitter.h"
+#include "pmap/pass_settings.h"
 #include "pmap/photon.h"
 #include "pmap/trace.h"
 #include "scene/primitive.h"
@@ -23,12 +24,8 @@
 namespace rp::pmap {
 
 struct ContribSettings {
-    uint64_t target = 0;       // -apC nphotons, over all sources
-    double preDistrib = 0.25;  // -apD: prepass size as a fraction of a source's share
-    int maxPrepass = 4;        // -apM: doublings of an empty prepass before giving up
-    uint64_t seed = 0;         // -apr
-    int threads = 1;           // -n
-    int reportSeconds = 0;     // -t (manual 4.4 line, stored photons under "global")
+    uint64_t target = 0;  // -apC nphotons, over all sources
+    PassSettings pass;    // -apD -apM -apr -n -t (manual 4.4 line, photons as "global")
     std::ostream* progress = nullptr;
     bool primaryRays = false;  // -apCPD: keep where each primary left its source
     // The ranks tracing together (null: this process alone); photons, primaries and

@@ -33,7 +33,7 @@ constexpr uint64_t kMinPrepassStored = 2000;
 class Progress {
 public:
     explicit Progress(const DistributionSettings& s)
-        : settings_(s), start_(Clock::now()), next_(s.reportSeconds) {}
+        : settings_(s), start_(Clock::now()), next_(s.pass.reportSeconds) {}
 
     void setPass(uint64_t passBegin, uint64_t passEnd) {
         passBegin_ = passBegin;
@@ -43,7 +43,7 @@ public:
         emitted_.fetch_add(emitted, std::memory_order_relaxed);
         for (size_t t = 0; t < stored.size(); ++t)
             stored_[t].fetch_add(stored[t], std::memory_order_relaxed);
-        if (settings_.reportSeconds > 0 && settings_.progress) maybeReport();
+        if (settings_.pass.reportSeconds > 0 && settings_.progress) maybeReport();
     }
     void setStored(const std::array<uint64_t, kNumPhotonMapTypes>& counts) {
         for (size_t t = 0; t < counts.size(); ++t) stored_[t].store(counts[t]);
@@ -55,7 +55,7 @@ private:
         if (elapsed < next_.load(std::memory_order_relaxed)) return;
         std::lock_guard<std::mutex> lock(mutex_);
         if (elapsed < next_.load()) return;
-        next_.store(elapsed + settings_.reportSeconds);
+        next_.store(elapsed + settings_.pass.reportSeconds);
         uint64_t e = emitted_.load();
         double pct = passEnd_ > passBegin_
                          ? 100.0 * double(std::min(e, passEnd_) - std::min(e, passBegin_)) /
@@ -153,14 +153,14 @@ double traceStreamed(const PhotonTracer& tracer, tbb::task_arena& arena,
     if (end <= begin) return 0;
     const uint64_t chunks = (end - begin + kPhotonsPerChunk - 1) / kPhotonsPerChunk;
     return streamChunks<Traced>(
-        s.cluster, arena, s.threads, chunks,
+        s.cluster, arena, s.pass.threads, chunks,
         [&](uint64_t c) {
             Traced t;
             const uint64_t i0 = begin + c * kPhotonsPerChunk;
             const uint64_t i1 = std::min(end, i0 + kPhotonsPerChunk);
             t.photons = i1 - i0;
             reserveFor(t.bins, perPhoton, t.photons);
-            for (uint64_t i = i0; i < i1; ++i) tracer.trace(s.seed, i, prob, t.bins);
+            for (uint64_t i = i0; i < i1; ++i) tracer.trace(s.pass.seed, i, prob, t.bins);
             if (scale)
                 for (size_t m = 0; m < t.final.size(); ++m) {
                     auto& raw = t.bins.maps[m];
@@ -233,7 +233,7 @@ Prepass runPrepass(const PhotonTracer& tracer, tbb::task_arena& arena,
     std::array<double, kNumPhotonMapTypes> perPhoton{};
     for (size_t t : active) perPhoton[t] = 2;
     uint64_t passSize =
-        std::max<uint64_t>(1, uint64_t(std::ceil(settings.preDistrib * double(minTarget))));
+        std::max<uint64_t>(1, uint64_t(std::ceil(settings.pass.preDistrib * double(minTarget))));
     for (;;) {
         progress.setPass(pre.emitted, pre.emitted + passSize);
         pre.storingSeconds +=
@@ -260,7 +260,7 @@ Prepass runPrepass(const PhotonTracer& tracer, tbb::task_arena& arena,
             storedTotal += stored;
         }
         if (anyEmpty) {
-            if (pre.passes >= settings.maxPrepass) {
+            if (pre.passes >= settings.pass.maxPrepass) {
                 std::string empty;
                 for (size_t t : active)
                     if (pre.stored[t] == 0)
@@ -293,7 +293,7 @@ DistributionResult distributePhotons(const PhotonTracer& tracer,
         if (targets[t] > 0) active.push_back(t);
     RP_CHECK(!active.empty());
 
-    tbb::task_arena arena(std::max(1, settings.threads));
+    tbb::task_arena arena(std::max(1, settings.pass.threads));
     Progress progress(settings);
     DistributionResult result;
     Prepass pre = runPrepass(tracer, arena, settings, active, progress);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "pmap/pass_settings.h"
 #include "pmap/photon.h"
 #include "pmap/record_store.h"
 #include "pmap/trace.h"
@@ -20,12 +21,8 @@ namespace rp::pmap {
 
 struct DistributionSettings {
     std::array<uint64_t, kNumPhotonMapTypes> targets{};  // 0 = map not requested
-    double preDistrib = 0.25;          // -apD: prepass size as a fraction of the smallest target
-    int maxPrepass = 4;                // -apM
-    uint64_t seed = 0;                 // -apr
-    int threads = 1;                   // -n
-    int reportSeconds = 0;             // -t (0 = no progress reports)
-    std::ostream* progress = nullptr;  // where -t reports go
+    PassSettings pass;                                   // -apD -apM -apr -n -t
+    std::ostream* progress = nullptr;                    // where -t reports go
     // With a budget (mkpmap -aC), the photons held in memory (prepass deposits and final
     // records, all maps together) stay within it; map t's photons beyond it are spilled to
     // a temporary file beside files[t], which errors name. Without, all stay in memory.

@@ -21,6 +21,7 @@
 #include "light/pattern_emission.h"
 #include "material/material_calc.h"
 #include "material/surface_chain.h"
+#include "material/type_traits.h"
 #include "pmap/contrib.h"
 #include "pmap/distribute.h"
 #include "pmap/map_output.h"
@@ -64,7 +65,7 @@ void checkVolumeMedium(const MkpmapOptions& o, const Scene& scene) {
     if (!o.wants(PhotonMapType::Volume)) return;
     if (o.trace.medium.scatters()) return;
     for (const Primitive& p : scene.prims) {
-        if (p.type != PrimType::Mist) continue;
+        if (!material::typeTraits(p.type).mist) continue;
         const bool ownAlbedo = p.rargs.size() >= 6;
         if (!ownAlbedo && o.trace.medium.albedo.max() > 1e-6) return;
         if (ownAlbedo && std::max({p.rargs[3], p.rargs[4], p.rargs[5]}) > 1e-6) return;
@@ -102,9 +103,7 @@ std::vector<Photon> precompute(const MkpmapOptions& o, size_t t, MapPhotons& m,
     PrecompSettings ps;
     ps.fraction = o.precompFraction;
     ps.bandwidth = o.maps[t]->bandwidth;
-    ps.seed = uint64_t(o.seed);
-    ps.threads = o.nproc;
-    ps.reportSeconds = o.reportSeconds;
+    ps.pass = o.pass;
     ps.progress = &diag;
     const size_t globalCount = m.inMemory.size();
     std::vector<Photon> pre = precomputeGlobal(std::move(m.inMemory), ps);
@@ -133,20 +132,20 @@ void saveMaps(const MkpmapOptions& o, std::array<MapPhotons, kNumPhotonMapTypes>
             out.primaries = primaries;
             out.primaryRays = primaryRays;
         }
-        out.parallel = o.nproc > 1;
+        out.parallel = o.pass.threads > 1;
         return out;
     };
     auto saveInMemory = [&](size_t t) {
         report.stored[t] = saveMapInMemory(photons[t].inMemory, outputOf(t));
         std::vector<Photon>().swap(photons[t].inMemory);  // freed once written
     };
-    tbb::task_arena arena(std::max(1, o.nproc));
+    tbb::task_arena arena(std::max(1, o.pass.threads));
     auto tb = Clock::now();
     arena.execute([&] {
         tbb::task_group group;
         for (size_t t = 0; t < o.maps.size(); ++t) {
             if (!o.maps[t] || photons[t].spilled) continue;
-            if (o.nproc > 1)
+            if (o.pass.threads > 1)
                 group.run([&saveInMemory, t] { saveInMemory(t); });
             else
                 saveInMemory(t);
@@ -162,98 +161,104 @@ void saveMaps(const MkpmapOptions& o, std::array<MapPhotons, kNumPhotonMapTypes>
     report.buildSeconds = secondsSince(tb);
 }
 
-}  // namespace
-
-MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
-                       std::ostream& diag, const LoadOptions& load, Cluster* cluster) {
-    MkpmapOptions o = withoutIgnoredMaps(options);
-    checkRequest(o);
-    MkpmapReport report;
-
-    Scene scene = loadScene(o.sceneFiles, load);
-    checkVolumeMedium(o, scene);
-    SceneGeometry geometry(scene);
-    std::vector<light::LightSource> sources = light::findLightSources(scene, geometry);
-    if (sources.empty()) throw InputError("no light sources found");
-
-    light::EmissionOptions eo;
-    eo.partitionSize = o.partitionSize;
-    eo.samplesPerSr = o.pdfSamples;
-    if (!o.portSpecs.empty()) eo.ports = light::findPhotonPorts(scene, geometry, o.portSpecs);
-    // Pattern-modified sources (gensky's skyfunc, luminaire data) emit through their
-    // pattern chain.
-    material::SurfaceChains chains(scene, calc::defaultSearchPath(projectLibDir()));
-    eo.modifierFor = light::patternModifiers(chains);
-    // The plan's tables are built in parallel; -n bounds that as every other phase.
-    tbb::task_arena planArena(std::max(1, o.nproc));
-    std::optional<light::EmissionPlan> planHolder;
-    planArena.execute([&] { planHolder.emplace(geometry, std::move(sources), eo); });
-    const light::EmissionPlan& plan = *planHolder;
-
-    TraceSettings& ts = o.trace;  // as parsed; which maps follows from the requests
-    for (size_t t = 0; t < o.maps.size(); ++t) ts.maps[t] = o.maps[t].has_value();
+// The scene and what emits into it: sources and ports, pattern chains (gensky's skyfunc,
+// luminaire data), BRTDfunc's expressions, and the emission plan, made in RADIANCE's
+// order (so a scene with several faults names the same one first). Built in place: the
+// geometry, the chains and the plan refer to the scene.
+struct EmittingScene {
+    Scene scene;
+    SceneGeometry geometry;
+    std::optional<material::SurfaceChains> chains;
     // BRTDfunc's specular expressions at photon hits (pmapmat.c brdfPhotonScatter).
-    material::MaterialCalc functions(scene, calc::defaultSearchPath(projectLibDir()));
-    auto t0 = Clock::now();
-    DistributionResult dist;
-    std::vector<PhotonPrimary> primaries;  // contribution map only
-    std::vector<PrimaryRay> primaryRays;   // with -apCPD
-    std::vector<Photon> contribPhotons;    // contribution maps stay in memory
-    // Photons in memory, all maps together (mkpmap -aC); the rest goes to temporary files.
-    MemoryBudget budget(o.memoryPhotons * sizeof(Photon));
-    if (o.wants(PhotonMapType::Contrib)) {
-        ContribSettings cs;
-        cs.target = o.maps[size_t(PhotonMapType::Contrib)]->target;
-        cs.preDistrib = o.preDistrib;
-        cs.maxPrepass = o.maxPrepass;
-        cs.seed = uint64_t(o.seed);
-        cs.threads = o.nproc;
-        cs.reportSeconds = o.reportSeconds;
-        cs.progress = &diag;
-        cs.primaryRays = o.maps[size_t(PhotonMapType::Contrib)]->primaryRays;
-        cs.cluster = cluster;
-        ContribResult cr = distributeContrib(scene, geometry, plan, eo, ts, cs, chains, &functions);
-        contribPhotons = std::move(cr.photons);
-        primaries = std::move(cr.primaries);
-        primaryRays = std::move(cr.primaryRays);
-        dist.emitted = cr.totalEmitted;
-        dist.runaways = cr.runaways;
-    } else {
-        PhotonTracer tracer(scene, geometry, plan, ts, chains, &functions);
-        DistributionSettings ds;
-        for (size_t t = 0; t < o.maps.size(); ++t)
-            if (o.maps[t]) ds.targets[t] = o.maps[t]->target;
-        ds.preDistrib = o.preDistrib;
-        ds.maxPrepass = o.maxPrepass;
-        ds.seed = uint64_t(o.seed);
-        ds.threads = o.nproc;
-        ds.reportSeconds = o.reportSeconds;
-        ds.progress = &diag;
-        ds.budget = &budget;
-        ds.cluster = cluster;
-        for (size_t t = 0; t < o.maps.size(); ++t)
-            if (o.maps[t]) ds.files[t] = o.maps[t]->file;
-        dist = distributePhotons(tracer, ds);
-    }
-    report.traceSeconds = secondsSince(t0);
-    // The other ranks have traced their share; the root builds and writes the maps.
-    if (cluster && !cluster->isRoot()) return report;
-    report.emitted = dist.emitted;
-    report.storingSeconds = dist.storingSeconds;
-    report.prepassEmitted = dist.prepassEmitted;
-    report.prepasses = dist.prepasses;
-    report.runaways = dist.runaways;
-    if (dist.runaways > 0)
-        warn(std::to_string(dist.runaways) + " runaway photons terminated after " +
-             std::to_string(o.trace.maxBounce) + " bounces (manual 4.3)");
+    std::optional<material::MaterialCalc> functions;
+    light::EmissionOptions emission;
+    std::optional<light::EmissionPlan> plan;
 
+    EmittingScene(const MkpmapOptions& o, const LoadOptions& load)
+        : scene(loadCheckedScene(o, load)), geometry(scene) {
+        std::vector<light::LightSource> sources = light::findLightSources(scene, geometry);
+        if (sources.empty()) throw InputError("no light sources found");
+        emission.partitionSize = o.partitionSize;
+        emission.samplesPerSr = o.pdfSamples;
+        if (!o.portSpecs.empty())
+            emission.ports = light::findPhotonPorts(scene, geometry, o.portSpecs);
+        // Pattern-modified sources emit through their pattern chain.
+        chains.emplace(scene, calc::defaultSearchPath(projectLibDir()));
+        emission.modifierFor = light::patternModifiers(*chains);
+        // The plan's tables are built in parallel; -n bounds that as every other phase.
+        tbb::task_arena arena(std::max(1, o.pass.threads));
+        arena.execute([&] { plan.emplace(geometry, std::move(sources), emission); });
+        functions.emplace(scene, calc::defaultSearchPath(projectLibDir()));
+    }
+
+    static Scene loadCheckedScene(const MkpmapOptions& o, const LoadOptions& load) {
+        Scene s = loadScene(o.sceneFiles, load);
+        checkVolumeMedium(o, s);
+        return s;
+    }
+};
+
+// What the distribution leaves: the photons of every map but a contribution map, which
+// has its own (in memory, with its primaries).
+struct Distributed {
+    DistributionResult dist;
+    std::vector<Photon> contribPhotons;
+    std::vector<PhotonPrimary> primaries;
+    std::vector<PrimaryRay> primaryRays;  // with -apCPD
+};
+
+// Manual 4.5: a contribution map's own distribution, per source.
+Distributed distributeContribution(const MkpmapOptions& o, EmittingScene& es, std::ostream& diag,
+                                   Cluster* cluster) {
+    const MapRequest& request = *o.maps[size_t(PhotonMapType::Contrib)];
+    ContribSettings cs;
+    cs.target = request.target;
+    cs.pass = o.pass;
+    cs.progress = &diag;
+    cs.primaryRays = request.primaryRays;
+    cs.cluster = cluster;
+    ContribResult cr = distributeContrib(es.scene, es.geometry, *es.plan, es.emission, o.trace, cs,
+                                         *es.chains, &*es.functions);
+    Distributed d;
+    d.contribPhotons = std::move(cr.photons);
+    d.primaries = std::move(cr.primaries);
+    d.primaryRays = std::move(cr.primaryRays);
+    d.dist.emitted = cr.totalEmitted;
+    d.dist.runaways = cr.runaways;
+    return d;
+}
+
+// Every other map: one distribution for all of them (pmap.c distribPhotons), photons
+// beyond the memory budget (-aC) spilled beside their map files.
+Distributed distributeMaps(const MkpmapOptions& o, EmittingScene& es, MemoryBudget& budget,
+                           std::ostream& diag, Cluster* cluster) {
+    PhotonTracer tracer(es.scene, es.geometry, *es.plan, o.trace, *es.chains, &*es.functions);
+    DistributionSettings ds;
+    for (size_t t = 0; t < o.maps.size(); ++t)
+        if (o.maps[t]) {
+            ds.targets[t] = o.maps[t]->target;
+            ds.files[t] = o.maps[t]->file;
+        }
+    ds.pass = o.pass;
+    ds.progress = &diag;
+    ds.budget = &budget;
+    ds.cluster = cluster;
+    Distributed d;
+    d.dist = distributePhotons(tracer, ds);
+    return d;
+}
+
+// Each map's photons for its last step: the contribution photons, a spilled file, or
+// the photons in memory (precomputed for -app).
+std::array<MapPhotons, kNumPhotonMapTypes> collectPhotons(const MkpmapOptions& o, Distributed& d,
+                                                          std::ostream& diag) {
     std::array<MapPhotons, kNumPhotonMapTypes> photons;
     for (size_t t = 0; t < o.maps.size(); ++t) {
         if (!o.maps[t]) continue;
         MapPhotons& m = photons[t];
-        RecordStore<Photon>& store = dist.photons[t];
+        RecordStore<Photon>& store = d.dist.photons[t];
         if (PhotonMapType(t) == PhotonMapType::Contrib) {
-            m.inMemory = std::move(contribPhotons);
+            m.inMemory = std::move(d.contribPhotons);
         } else if (store.spilled() && PhotonMapType(t) != PhotonMapType::PreComp) {
             m.spilledCount = store.size();
             m.spilled = store.takeFile();
@@ -262,8 +267,24 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
         }
         if (PhotonMapType(t) == PhotonMapType::PreComp) m.inMemory = precompute(o, t, m, diag);
     }
-    saveMaps(o, photons, commandLine, primaries, primaryRays, budget.limit() / sizeof(Photon),
-             report);
+    return photons;
+}
+
+// The distribution's numbers in the report, and its runaway warning.
+void reportDistribution(const MkpmapOptions& o, const DistributionResult& dist,
+                        MkpmapReport& report) {
+    report.emitted = dist.emitted;
+    report.storingSeconds = dist.storingSeconds;
+    report.prepassEmitted = dist.prepassEmitted;
+    report.prepasses = dist.prepasses;
+    report.runaways = dist.runaways;
+    if (dist.runaways > 0)
+        warn(std::to_string(dist.runaways) + " runaway photons terminated after " +
+             std::to_string(o.trace.maxBounce) + " bounces (manual 4.3)");
+}
+
+// The closing lines on the diagnostics stream: each map, then the totals.
+void printSummary(const MkpmapOptions& o, const MkpmapReport& report, std::ostream& diag) {
     char line[160];
     for (size_t t = 0; t < o.maps.size(); ++t) {
         if (!o.maps[t]) continue;
@@ -282,6 +303,33 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
                   report.prepasses, report.prepasses == 1 ? "" : "es", report.traceSeconds,
                   report.buildSeconds);
     diag << line << std::flush;
+}
+
+}  // namespace
+
+MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
+                       std::ostream& diag, const LoadOptions& load, Cluster* cluster) {
+    MkpmapOptions o = withoutIgnoredMaps(options);
+    checkRequest(o);
+    // The tracer's settings as parsed; which maps it fills follows from the requests.
+    for (size_t t = 0; t < o.maps.size(); ++t) o.trace.maps[t] = o.maps[t].has_value();
+    MkpmapReport report;
+
+    EmittingScene es(o, load);
+    // Photons in memory, all maps together (mkpmap -aC); the rest goes to temporary files.
+    MemoryBudget budget(o.memoryPhotons * sizeof(Photon));
+    const auto t0 = Clock::now();
+    Distributed d = o.wants(PhotonMapType::Contrib) ? distributeContribution(o, es, diag, cluster)
+                                                    : distributeMaps(o, es, budget, diag, cluster);
+    report.traceSeconds = secondsSince(t0);
+    // The other ranks have traced their share; the root builds and writes the maps.
+    if (cluster && !cluster->isRoot()) return report;
+    reportDistribution(o, d.dist, report);
+
+    std::array<MapPhotons, kNumPhotonMapTypes> photons = collectPhotons(o, d, diag);
+    saveMaps(o, photons, commandLine, d.primaries, d.primaryRays, budget.limit() / sizeof(Photon),
+             report);
+    printSummary(o, report, diag);
     return report;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "pmap/mkpmap_options.h"
+#include "pmap/pass_settings.h"
 #include "pmap/photon.h"
 #include "pmap/trace.h"
 #include "scene/reader.h"
@@ -22,10 +23,10 @@ struct MkpmapOptions {
     // instance of the same type replaces an earlier one.
     std::array<std::optional<MapRequest>, kNumPhotonMapTypes> maps;
 
-    double preDistrib = 0.25;       // -apD
-    int maxPrepass = 4;             // -apM
+    // -apD -apM -apr -n -t: what every photon pass reads (distribution, contribution
+    // photons, precomputation), handed to each as this one struct.
+    PassSettings pass;
     double precompFraction = 0.25;  // -apP
-    int64_t seed = 0;               // -apr
     // What the tracer reads, parsed straight into its settings (trace.h): -bv (on, as
     // RADIANCE's backvis = 1), -lr/-apm, -ld, -api (cumulative), -aps/-apS, ambient
     // include (-ai/-aI/-al) or exclude (-ae/-aE), mutually exclusive, and the global
@@ -36,8 +37,6 @@ struct MkpmapOptions {
     double partitionSize = 0.01;             // -ds
     std::string diagnosticsFile;             // -e
     bool overwrite = false;                  // -fo
-    int nproc = 1;                           // -n
-    int reportSeconds = 0;                   // -t
     // -aC N (a radphoton extension; RADIANCE's rtrace -aC sizes its out-of-core cache):
     // hold about N photons in memory at most while building, all maps together (prepass
     // deposits, collected photons, kd-tree parts). Photons beyond it go to temporary files

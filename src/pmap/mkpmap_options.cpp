@@ -4,6 +4,7 @@
 
 #include <climits>
 #include <cstdio>
+#include <string>
 
 #include "calc/search_path.h"
 #include "pmap/mkpmap.h"
@@ -77,12 +78,14 @@ void addMapOptions(OptionTable& t, MkpmapOptions& o) {
     t.add(mapOption("-apCPD", PhotonMapType::Contrib, o));
     t.add(mapOption("-app", PhotonMapType::PreComp, o));
     t.add(countOption("-aC", o.memoryPhotons));
-    t.add(valueOption("-apD", o.preDistrib, positive, "predistribution factor must be > 0"));
-    t.add(valueOption("-apM", o.maxPrepass, positive, "max predistribution passes must be > 0"));
+    t.add(valueOption("-apD", o.pass.preDistrib, positive, "predistribution factor must be > 0"));
+    t.add(
+        valueOption("-apM", o.pass.maxPrepass, positive, "max predistribution passes must be > 0"));
     t.add(valueOption(
         "-apP", o.precompFraction, [](double v) { return v > 0 && v <= 1; },
         "global photon precomputation factor must be in range ]0, 1]"));
-    t.add(customOption("-apr", [&o](OptionReader& r) { o.seed = r.integer(LONG_MIN, LONG_MAX); }));
+    t.add(customOption(
+        "-apr", [&o](OptionReader& r) { o.pass.seed = uint64_t(r.integer(LONG_MIN, LONG_MAX)); }));
     t.add(customOption("-api", [&o](OptionReader& r) {
         RegionOfInterest roi;
         for (int k = 0; k < 3; ++k) roi.min[k] = r.real();
@@ -147,13 +150,137 @@ void addOtherOptions(OptionTable& t, MkpmapOptions& o) {
     t.add(customOption("-n", [&o](OptionReader& r) {
         const long n = r.integer(LONG_MIN, LONG_MAX);
         r.require(n > 0, "number of processes must be > 0");
-        o.nproc = int(n);
+        o.pass.threads = int(n);
     }));
     t.add(customOption("-t", [&o](OptionReader& r) {
         const long s = r.integer(LONG_MIN, LONG_MAX);
         r.require(s >= 0, "report interval must be >= 0");
-        o.reportSeconds = int(s);
+        o.pass.reportSeconds = int(s);
     }));
+}
+
+// One -defaults line: the option and its value, padded to RADIANCE's comment column.
+std::string defaultsLine(const std::string& option, const char* what) {
+    std::string out = option;
+    for (size_t width = option.size(); width < 40; width += 8 - width % 8) out += '\t';
+    out += "# ";
+    out += what;
+    out += '\n';
+    return out;
+}
+
+std::string fixed(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+std::string mapLine(const MkpmapOptions& o, PhotonMapType t, const char* opt) {
+    const auto& m = o.maps[size_t(t)];
+    if (!m)
+        return std::string(opt) + " file nPhotons" + (t == PhotonMapType::PreComp ? " bwidth" : "");
+    std::string s = std::string(opt) + " " + m->file + " " + std::to_string(m->target);
+    if (t == PhotonMapType::PreComp) s += " " + std::to_string(m->bandwidth);
+    return s;
+}
+
+// Each option's -defaults line (RADIANCE mkpmap's layout and order), from the values in
+// `o`: those given before -defaults are the ones listed, as in RADIANCE.
+void addDefaults(OptionTable& t, const MkpmapOptions& o) {
+    const auto sign = [](bool b) { return b ? std::string("+") : std::string("-"); };
+    const auto colour = [](const Color& c, int digits) {
+        return fixed(c[0], digits) + " " + fixed(c[1], digits) + " " + fixed(c[2], digits);
+    };
+    const auto fixedLine = [&t](const char* name, std::string text, const char* what) {
+        t.setDefaults(name, [text = std::move(text), what] { return defaultsLine(text, what); });
+    };
+    fixedLine("-ae", "-ae  mod", "exclude modifier");
+    fixedLine("-aE", "-aE  file", "exclude modifiers from file");
+    fixedLine("-ai", "-ai  mod", "include modifier");
+    fixedLine("-aI", "-aI  file", "include modifiers from file");
+    t.setDefaults("-aC", [&o] {
+        return defaultsLine("-aC  " + std::to_string(o.memoryPhotons), "photons held in memory");
+    });
+    fixedLine("-api", "-api xmin ymin zmin xmax ymax zmax", "rectangular region of interest");
+    const auto map = [&](const char* name, PhotonMapType type, const char* what) {
+        t.setDefaults(
+            name, [&o, name, type, what] { return defaultsLine(mapLine(o, type, name), what); });
+    };
+    map("-apg", PhotonMapType::Global, "global photon map");
+    map("-apc", PhotonMapType::Caustic, "caustic photon map");
+    map("-apd", PhotonMapType::Direct, "direct photon map");
+    map("-app", PhotonMapType::PreComp, "precomputed global photon map");
+    map("-apv", PhotonMapType::Volume, "volume photon map");
+    map("-apC", PhotonMapType::Contrib, "contribution photon map");
+    t.setDefaults("-apD", [&o] {
+        return defaultsLine("-apD " + fixed(o.pass.preDistrib, 6), "predistribution factor");
+    });
+    t.setDefaults("-apM", [&o] {
+        return defaultsLine("-apM " + std::to_string(o.pass.maxPrepass), "max predistrib passes");
+    });
+    t.setDefaults("-apm", [&o] {
+        return defaultsLine("-apm " + std::to_string(o.trace.maxBounce), "limit photon bounces");
+    });
+    t.setDefaults("-apo", [] {
+        return defaultsLine("-apo+ mod", "photon port modifier") +
+               defaultsLine("-apO+ file", "photon ports from file");
+    });
+    t.setDefaults("-apP", [&o] {
+        return defaultsLine("-apP " + fixed(o.precompFraction, 6), "precomputation factor");
+    });
+    t.setDefaults("-apr", [&o] {
+        return defaultsLine("-apr " + std::to_string(int64_t(o.pass.seed)), "random seed");
+    });
+    fixedLine("-aps", "-aps mod", "antimatter sensor modifier");
+    fixedLine("-apS", "-apS file", "antimatter sensors from file");
+    t.setDefaults("-bv", [&o, sign] {
+        return defaultsLine("-bv" + sign(o.trace.backVisible), o.trace.backVisible
+                                                                   ? "back face visibility on"
+                                                                   : "back face visibility off");
+    });
+    t.setDefaults(
+        "-dp", [&o] { return defaultsLine("-dp  " + fixed(o.pdfSamples, 1), "PDF samples / sr"); });
+    t.setDefaults("-ds", [&o] {
+        return defaultsLine("-ds  " + fixed(o.partitionSize, 6), "source partition size ratio");
+    });
+    t.setDefaults("-e", [&o] {
+        return defaultsLine(
+            "-e   " + (o.diagnosticsFile.empty() ? std::string("(null)") : o.diagnosticsFile),
+            "diagnostics output file");
+    });
+    t.setDefaults("-fo", [&o, sign] {
+        return defaultsLine("-fo" + sign(o.overwrite),
+                            o.overwrite ? "overwrite" : "do not overwrite");
+    });
+    t.setDefaults("-ld", [&o] {
+        return defaultsLine("-ld " + fixed(o.trace.maxDistance, 1), "limit photon distance");
+    });
+    t.setDefaults("-lr", [&o] {
+        return defaultsLine("-lr " + std::to_string(o.trace.maxBounce), "limit photon bounces");
+    });
+    t.setDefaults("-ma", [&o, colour] {
+        return defaultsLine("-ma  " + colour(o.trace.medium.albedo, 2), "scattering albedo");
+    });
+    t.setDefaults("-me", [&o] {
+        const Color& e = o.trace.medium.extinction;
+        return defaultsLine(formatLine("-me  %.2e %.2e %.2e", e[0], e[1], e[2]),
+                            "extinction coefficient");
+    });
+    t.setDefaults("-mg", [&o] {
+        return defaultsLine("-mg  " + fixed(o.trace.medium.eccentricity, 2),
+                            "scattering eccentricity");
+    });
+    t.setDefaults("-n", [&o] {
+        return defaultsLine("-n   " + std::to_string(o.pass.threads),
+                            "number of parallel processes");
+    });
+    t.setDefaults("-t", [&o] {
+        return defaultsLine("-t   " + std::to_string(o.pass.reportSeconds), "time between reports");
+    });
+    t.setDefaultsOrder({"-ae",  "-aE",  "-ai",  "-aI",  "-aC",  "-api", "-apg", "-apc",
+                        "-apd", "-app", "-apv", "-apC", "-apD", "-apM", "-apm", "-apo",
+                        "-apP", "-apr", "-aps", "-apS", "-bv",  "-dp",  "-ds",  "-e",
+                        "-fo",  "-ld",  "-lr",  "-ma",  "-me",  "-mg",  "-n",   "-t"});
 }
 
 OptionTable mkpmapTable(MkpmapOptions& o) {
@@ -164,6 +291,7 @@ OptionTable mkpmapTable(MkpmapOptions& o) {
     addPortOptions(t, o);
     addModifierOptions(t, o);
     addOtherOptions(t, o);
+    addDefaults(t, o);
     return t;
 }
 
@@ -186,84 +314,9 @@ MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
     return o;
 }
 
-}  // namespace rp::pmap
-
-namespace rp::pmap {
-
-namespace {
-
-// One -defaults line: the option and its value, padded to RADIANCE's comment column.
-void defaultsLine(std::string& out, const std::string& option, const char* what) {
-    out += option;
-    for (size_t width = option.size(); width < 40; width += 8 - width % 8) out += '\t';
-    out += "# ";
-    out += what;
-    out += '\n';
-}
-
-std::string fixed(double v, int digits) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
-
-std::string mapLine(const MkpmapOptions& o, PhotonMapType t, const char* opt) {
-    const auto& m = o.maps[size_t(t)];
-    if (!m)
-        return std::string(opt) + " file nPhotons" + (t == PhotonMapType::PreComp ? " bwidth" : "");
-    std::string s = std::string(opt) + " " + m->file + " " + std::to_string(m->target);
-    if (t == PhotonMapType::PreComp) s += " " + std::to_string(m->bandwidth);
-    return s;
-}
-
-}  // namespace
-
 std::string formatMkpmapDefaults(const MkpmapOptions& o) {
-    std::string out;
-    const auto sign = [](bool b) { return b ? std::string("+") : std::string("-"); };
-    const auto colour = [&](const Color& c, int digits) {
-        return fixed(c[0], digits) + " " + fixed(c[1], digits) + " " + fixed(c[2], digits);
-    };
-    defaultsLine(out, "-ae  mod", "exclude modifier");
-    defaultsLine(out, "-aE  file", "exclude modifiers from file");
-    defaultsLine(out, "-ai  mod", "include modifier");
-    defaultsLine(out, "-aI  file", "include modifiers from file");
-    defaultsLine(out, "-aC  " + std::to_string(o.memoryPhotons), "photons held in memory");
-    defaultsLine(out, "-api xmin ymin zmin xmax ymax zmax", "rectangular region of interest");
-    defaultsLine(out, mapLine(o, PhotonMapType::Global, "-apg"), "global photon map");
-    defaultsLine(out, mapLine(o, PhotonMapType::Caustic, "-apc"), "caustic photon map");
-    defaultsLine(out, mapLine(o, PhotonMapType::Direct, "-apd"), "direct photon map");
-    defaultsLine(out, mapLine(o, PhotonMapType::PreComp, "-app"), "precomputed global photon map");
-    defaultsLine(out, mapLine(o, PhotonMapType::Volume, "-apv"), "volume photon map");
-    defaultsLine(out, mapLine(o, PhotonMapType::Contrib, "-apC"), "contribution photon map");
-    defaultsLine(out, "-apD " + fixed(o.preDistrib, 6), "predistribution factor");
-    defaultsLine(out, "-apM " + std::to_string(o.maxPrepass), "max predistrib passes");
-    defaultsLine(out, "-apm " + std::to_string(o.trace.maxBounce), "limit photon bounces");
-    defaultsLine(out, "-apo+ mod", "photon port modifier");
-    defaultsLine(out, "-apO+ file", "photon ports from file");
-    defaultsLine(out, "-apP " + fixed(o.precompFraction, 6), "precomputation factor");
-    defaultsLine(out, "-apr " + std::to_string(o.seed), "random seed");
-    defaultsLine(out, "-aps mod", "antimatter sensor modifier");
-    defaultsLine(out, "-apS file", "antimatter sensors from file");
-    defaultsLine(out, "-bv" + sign(o.trace.backVisible),
-                 o.trace.backVisible ? "back face visibility on" : "back face visibility off");
-    defaultsLine(out, "-dp  " + fixed(o.pdfSamples, 1), "PDF samples / sr");
-    defaultsLine(out, "-ds  " + fixed(o.partitionSize, 6), "source partition size ratio");
-    defaultsLine(out,
-                 "-e   " + (o.diagnosticsFile.empty() ? std::string("(null)") : o.diagnosticsFile),
-                 "diagnostics output file");
-    defaultsLine(out, "-fo" + sign(o.overwrite), o.overwrite ? "overwrite" : "do not overwrite");
-    defaultsLine(out, "-ld " + fixed(o.trace.maxDistance, 1), "limit photon distance");
-    defaultsLine(out, "-lr " + std::to_string(o.trace.maxBounce), "limit photon bounces");
-    defaultsLine(out, "-ma  " + colour(o.trace.medium.albedo, 2), "scattering albedo");
-    char ext[96];
-    std::snprintf(ext, sizeof ext, "-me  %.2e %.2e %.2e", o.trace.medium.extinction[0],
-                  o.trace.medium.extinction[1], o.trace.medium.extinction[2]);
-    defaultsLine(out, ext, "extinction coefficient");
-    defaultsLine(out, "-mg  " + fixed(o.trace.medium.eccentricity, 2), "scattering eccentricity");
-    defaultsLine(out, "-n   " + std::to_string(o.nproc), "number of parallel processes");
-    defaultsLine(out, "-t   " + std::to_string(o.reportSeconds), "time between reports");
-    return out;
+    MkpmapOptions values = o;
+    return mkpmapTable(values).formatDefaults();
 }
 
 }  // namespace rp::pmap

@@ -45,9 +45,9 @@ TEST(MkpmapOptions, ParsesRadianceCommandLine) {
     EXPECT_EQ(o.maps[size_t(PhotonMapType::Caustic)]->target, 1000000u);
     EXPECT_EQ(o.maps[size_t(PhotonMapType::Direct)]->target, 2500u);
     EXPECT_FALSE(o.wants(PhotonMapType::Volume));
-    EXPECT_DOUBLE_EQ(o.preDistrib, 0.5);
-    EXPECT_EQ(o.maxPrepass, 6);
-    EXPECT_EQ(o.seed, 3);
+    EXPECT_DOUBLE_EQ(o.pass.preDistrib, 0.5);
+    EXPECT_EQ(o.pass.maxPrepass, 6);
+    EXPECT_EQ(o.pass.seed, 3u);
     ASSERT_EQ(o.trace.rois.size(), 1u);
     EXPECT_EQ(o.trace.rois[0].max.z, 3);
     EXPECT_EQ(o.trace.maxBounce, 100);
@@ -60,8 +60,8 @@ TEST(MkpmapOptions, ParsesRadianceCommandLine) {
     EXPECT_FALSE(o.trace.backVisible);
     EXPECT_TRUE(o.overwrite);
     EXPECT_DOUBLE_EQ(o.partitionSize, 0.02);
-    EXPECT_EQ(o.nproc, 2);
-    EXPECT_EQ(o.reportSeconds, 10);
+    EXPECT_EQ(o.pass.threads, 2);
+    EXPECT_EQ(o.pass.reportSeconds, 10);
     EXPECT_EQ(o.sceneFiles, (std::vector<std::string>{"a.rad", "b.rad"}));
 }
 
@@ -95,12 +95,12 @@ TEST(MkpmapOptions, PortOrientationIsTheOptionsSuffix) {
 
 TEST(MkpmapOptions, Defaults) {
     MkpmapOptions o = parse({"-apg", "g.pm", "1000", "x.oct"});
-    EXPECT_DOUBLE_EQ(o.preDistrib, 0.25);
-    EXPECT_EQ(o.maxPrepass, 4);
+    EXPECT_DOUBLE_EQ(o.pass.preDistrib, 0.25);
+    EXPECT_EQ(o.pass.maxPrepass, 4);
     EXPECT_DOUBLE_EQ(o.partitionSize, 0.01);
     EXPECT_TRUE(o.trace.backVisible);  // RADIANCE mkpmap.c: backvis = 1
     EXPECT_FALSE(o.overwrite);
-    EXPECT_EQ(o.nproc, 1);
+    EXPECT_EQ(o.pass.threads, 1);
     EXPECT_EQ(parse({"-bv", "-apg", "g", "1", "x"}).trace.backVisible, false);  // bare flag toggles
     EXPECT_EQ(parse({"-apm", "9", "-apg", "g", "1", "x"}).trace.maxBounce, 9);
 }

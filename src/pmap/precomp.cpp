@@ -35,15 +35,16 @@ std::vector<uint64_t> precompSelection(uint64_t n, double fraction, uint64_t see
 }
 
 std::vector<Photon> precomputeGlobal(std::vector<Photon> global, const PrecompSettings& s) {
-    const std::vector<uint64_t> sel = precompSelection(global.size(), s.fraction, s.seed);
+    const std::vector<uint64_t> sel = precompSelection(global.size(), s.fraction, s.pass.seed);
     std::vector<Photon> out(sel.size());
     for (size_t i = 0; i < sel.size(); ++i) out[i] = global[sel[i]];
     if (out.empty()) return out;
 
-    tbb::task_arena arena(std::max(1, s.threads));
+    tbb::task_arena arena(std::max(1, s.pass.threads));
     PhotonMap map;
     arena.execute([&] {
-        map = PhotonMap::searchableFrom(PhotonMapType::Global, std::move(global), s.threads > 1);
+        map =
+            PhotonMap::searchableFrom(PhotonMapType::Global, std::move(global), s.pass.threads > 1);
     });
     LookupParams lp;
     lp.bandwidth = std::max(1, s.bandwidth);
@@ -51,14 +52,14 @@ std::vector<Photon> precomputeGlobal(std::vector<Photon> global, const PrecompSe
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     std::atomic<uint64_t> done{0};
-    std::atomic<double> nextReport{double(s.reportSeconds)};
+    std::atomic<double> nextReport{double(s.pass.reportSeconds)};
     std::mutex reportMutex;
     auto report = [&] {
         double t = std::chrono::duration<double>(Clock::now() - start).count();
         if (t < nextReport.load(std::memory_order_relaxed)) return;
         std::lock_guard<std::mutex> lock(reportMutex);
         if (t < nextReport.load()) return;
-        nextReport.store(t + s.reportSeconds);
+        nextReport.store(t + s.pass.reportSeconds);
         uint64_t d = done.load();
         char line[128];
         std::snprintf(line, sizeof line, "%llu precomputed, %.1f%% after %.3f hours\n",
@@ -88,12 +89,12 @@ std::vector<Photon> precomputeGlobal(std::vector<Photon> global, const PrecompSe
                         p.primary = 0;
                     }
                     done.fetch_add(i1 - i0, std::memory_order_relaxed);
-                    if (s.reportSeconds > 0 && s.progress) report();
+                    if (s.pass.reportSeconds > 0 && s.progress) report();
                 }
             },
             tbb::simple_partitioner());
     });
-    if (s.reportSeconds > 0 && s.progress) {
+    if (s.pass.reportSeconds > 0 && s.progress) {
         char line[128];
         std::snprintf(line, sizeof line, "%llu precomputed, 100.0%% after %.3f hours\n",
                       (unsigned long long)out.size(),

@@ -9,6 +9,7 @@
 #include <iosfwd>
 #include <vector>
 
+#include "pmap/pass_settings.h"
 #include "pmap/photon.h"
 
 namespace rp::pmap {
@@ -16,9 +17,9 @@ namespace rp::pmap {
 struct PrecompSettings {
     double fraction = 0.25;  // -apP, in ]0, 1]
     int bandwidth = 40;      // -app's bwidth: photons per density estimate
-    uint64_t seed = 0;       // -apr: the subset is a function of (seed, photon count) only
-    int threads = 1;         // -n
-    int reportSeconds = 0;   // -t: "N_p precomputed, P% after T hours" (manual 4.4)
+    // -apr (the subset is a function of seed and photon count only), -n, -t ("N_p
+    // precomputed, P% after T hours", manual 4.4); -apD and -apM are not used here.
+    PassSettings pass;
     std::ostream* progress = nullptr;
 };
 

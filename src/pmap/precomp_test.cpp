@@ -56,10 +56,10 @@ TEST(Precomp, StoresTheDensityEstimateOverTheFullMap) {
     PrecompSettings s;
     s.fraction = 0.25;
     s.bandwidth = 50;
-    s.seed = 4;
+    s.pass.seed = 4;
     std::vector<Photon> pre = precomputeGlobal(all, s);
     ASSERT_EQ(pre.size(), 10000u);
-    s.threads = 2;
+    s.pass.threads = 2;
     EXPECT_EQ(precomputeGlobal(all, s), pre) << "depends on the thread count";
 
     PhotonMap global(PhotonMapType::Global, all, {}, false);

@@ -79,8 +79,8 @@ TEST(TraceDistribution, SamePhotonsOverRanks) {
             DistributionSettings ds;
             ds.targets[size_t(PhotonMapType::Global)] = 30000;
             ds.targets[size_t(PhotonMapType::Direct)] = 3000;
-            ds.seed = 5;
-            ds.threads = 1 + c.rank() % 2;
+            ds.pass.seed = 5;
+            ds.pass.threads = 1 + c.rank() % 2;
             ds.cluster = &c;
             DistributionResult r = distributePhotons(*run->tracer, ds);
             EXPECT_EQ(r.emitted, one.emitted);
@@ -107,8 +107,8 @@ TEST(TraceStorage, RegionOfInterestKeepsPhotonsInside) {
     // over seeds) too wide for a 5 % check on one seed.
     DistributionSettings ds;
     ds.targets[size_t(PhotonMapType::Global)] = 20000;
-    ds.preDistrib = 1.0;
-    ds.seed = 1;
+    ds.pass.preDistrib = 1.0;
+    ds.pass.seed = 1;
     DistributionResult r = distributePhotons(*run->tracer, ds);
     const auto& g = mapOf(r, PhotonMapType::Global);
     EXPECT_NEAR(double(g.size()), 20000, 0.05 * 20000);
@@ -293,8 +293,8 @@ pane polygon glazing 0 0 12  -1 -1 2  5 -1 2  5 5 2  -1 5 2
         auto run = makeRun(sceneWith(trans), mapsFor(true, false, false), {}, true);
         DistributionSettings ds;
         ds.targets[size_t(PhotonMapType::Global)] = 4000;
-        ds.seed = 5;
-        ds.maxPrepass = 3;
+        ds.pass.seed = 5;
+        ds.pass.maxPrepass = 3;
         try {
             return sumRed(mapOf(distributePhotons(*run->tracer, ds), PhotonMapType::Global));
         } catch (const InputError&) {
@@ -402,7 +402,7 @@ TEST(TraceStorage, CausticMapFailsWithoutSpecularSurfaces) {
     auto run = makeRun(sceneFromText(boxRoom()), mapsFor(false, true, false));
     DistributionSettings ds;
     ds.targets[size_t(PhotonMapType::Caustic)] = 2000;
-    ds.maxPrepass = 2;
+    ds.pass.maxPrepass = 2;
     try {
         distributePhotons(*run->tracer, ds);
         FAIL() << "expected the 4.2 failure";

@@ -66,8 +66,8 @@ inline DistributionResult distribute(const Run& r, uint64_t global, uint64_t cau
     ds.targets[size_t(PhotonMapType::Global)] = global;
     ds.targets[size_t(PhotonMapType::Caustic)] = caustic;
     ds.targets[size_t(PhotonMapType::Direct)] = direct;
-    ds.seed = seed;
-    ds.threads = threads;
+    ds.pass.seed = seed;
+    ds.pass.threads = threads;
     return distributePhotons(*r.tracer, ds);
 }
 

@@ -195,16 +195,25 @@ OptionParse OptionTable::parse(std::vector<std::string>& args, size_t first) con
         if (expandArgs) expandArgAt(args, i);
         if (i >= args.size()) return {i, OptionStop::kEnd};
         const std::string& w = args[i];
-        if (w.size() < 2 || w[0] != '-') return {i, OptionStop::kEnd};
+        if (w.size() < 2 || (w[0] != '-' && !(plusWords && w[0] == '+')))
+            return {i, OptionStop::kEnd};
         if (w == "-version") return {i, OptionStop::kVersion};
         if (defaultsStops && (w == "-defaults" || (helpIsDefaults && w == "-help")))
             return {i, OptionStop::kDefaults};
         const OptionSpec* spec = find(w);
-        if (!spec) throw InputError(messages.unknown(w));
+        if (!spec) {
+            if (unknownEnds) return {i, OptionStop::kEnd};
+            throw InputError(messages.unknown(w));
+        }
         OptionReader reader(args, i, spec->messages ? *spec->messages : messages);
         spec->read(reader);
         i = reader.next();
     }
+}
+
+void OptionTable::parseAll(std::vector<std::string>& args, size_t first) const {
+    const OptionParse p = parse(args, first);
+    if (p.next < args.size()) throw InputError(messages.unknown(args[p.next]));
 }
 
 std::string OptionTable::formatDefaults() const {

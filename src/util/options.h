@@ -129,6 +129,8 @@ public:
     bool expandArgs = false;      // @file and $EVAR at option positions (rtrace, rpict, ...)
     bool helpIsDefaults = false;  // -help prints the defaults too (RADIANCE's renderers)
     bool defaultsStops = true;    // -defaults stops parsing (else it is an unknown option)
+    bool plusWords = false;       // "+x" words are options too (gensky +s, pvalue +d, ...)
+    bool unknownEnds = false;     // an unknown option ends the options (xform: the transform)
 
     // Adds `spec` after the others (earlier ones are tried first); when its name is taken
     // the earlier option stays, so a tool adds its own options before shared ones.
@@ -140,11 +142,15 @@ public:
 
     const OptionSpec* find(const std::string& word) const;
     // Parses options from args[first]: stops at the first word that is not an option
-    // (shorter than 2 or not starting with '-'), at -version and at -defaults (and -help
-    // if helpIsDefaults), which may stand at any option position. Throws InputError with
-    // the table's messages.
+    // (shorter than 2 or not starting with '-', or '+' with plusWords), at -version and at
+    // -defaults (and -help if helpIsDefaults), which may stand at any option position. Throws
+    // InputError with the table's messages.
     OptionParse parse(std::vector<std::string>& args, size_t first) const;
     std::string formatDefaults() const;
+    // For tools whose options follow positional arguments (the generators): parses from
+    // args[first] to the end, where a word that is not an option (or -version, which
+    // the tool's main has answered) is the table's unknown option.
+    void parseAll(std::vector<std::string>& args, size_t first) const;
 
 private:
     std::vector<OptionSpec> specs_;
