@@ -298,6 +298,13 @@ int CodeGen::gen(const Node* n, int dst) {
             emit(Code::CallId, d, base, n->index, n->nkids, n->info);
             return d;
         }
+        case Op::Chan: {
+            int a = gen(n->a, -1);
+            top_ = mark;
+            int d = target(dst);
+            emit(Code::Chan, d, a, n->index, 0, n->info);
+            return d;
+        }
         case Op::Error: {
             emit(Code::Error, 0, 0, 0, 0, n->info);
             return place(constant(0), dst);

@@ -5,6 +5,8 @@
 // RADIANCE reports undefined names at evaluation time. Folding runs the VM on a scratch
 // block; at the end every variable, function and expression gets its code (codegen.h).
 #include <cmath>
+#include <cstdlib>
+#include <deque>
 
 #include "calc/builtins.h"
 #include "calc/codegen.h"
@@ -27,11 +29,21 @@ public:
             Scope scope{&e.context, nullptr, nullptr, e.loc.file};
             p_->expressions_.push_back(compile(*e.expr, scope));
         }
+        std::vector<const Node*> outputs;
+        for (const auto& [n, d] : outputDefs_) {
+            Scope scope{&d->context, nullptr, nullptr, d->loc.file};
+            outputs.push_back(compile(*d->body, scope));
+        }
         // Code for everything: every variable, function and expression gets a block.
         CodeImage& img = p_->image_;
         for (const auto& v : p_->vars_) img.varBlock[v->slot] = gen_.emitBlock(v->body, v->slot);
         generateFunctions();
         for (const Node* e : p_->expressions_) p_->expressionBlocks_.push_back(gen_.emitBlock(e));
+        std::size_t k = 0;
+        for (const auto& [n, d] : outputDefs_) {
+            const Node* body = outputs[k++];
+            p_->outputs_.push_back(OutputChannel{n, Entry{body, gen_.emitBlock(body)}});
+        }
         return std::shared_ptr<const Program>(std::move(p_));
     }
 
@@ -44,17 +56,30 @@ private:
         std::string file;
         bool pure = true;  // no ray, modifier or non-constant variable dependence
     };
-    enum class RefKind { None, Var, Func, Ray, Builtin, If, Select, Arg };
+    enum class RefKind { None, Var, Func, Ray, Builtin, If, Select, Arg, Chan, In };
     struct Ref {
         RefKind kind = RefKind::None;
         int index = 0;
     };
 
     void collect() {
+        std::vector<const Definition*> all;
+        for (const auto& d : b_.defs_) all.push_back(d.get());
+        for (const std::string& name : b_.externals_) {  // externals win over definitions
+            auto& d = externalDefs_.emplace_back();
+            d.name = name;
+            d.external = true;
+            d.loc = SourceLoc{"", 0};
+            all.push_back(&d);
+        }
         std::map<std::string, int> last;  // later definitions win
-        for (int i = 0; i < static_cast<int>(b_.defs_.size()); ++i) last[b_.defs_[i]->name] = i;
+        for (int i = 0; i < static_cast<int>(all.size()); ++i) last[all[i]->name] = i;
         for (const auto& [name, i] : last) {
-            const Definition& d = *b_.defs_[i];
+            const Definition& d = *all[i];
+            if (isChannelName(d.name)) {  // output channel, kept in channel order
+                outputDefs_.emplace(std::atoi(d.name.c_str() + 1), &d);
+                continue;
+            }
             if (d.isFunction) {
                 auto f = std::make_unique<FunctionInfo>();
                 f->name = d.name;
@@ -126,7 +151,14 @@ private:
         varState_[i] = State::Busy;
         const Definition& d = *varDefs_[i];
         Scope scope{&d.context, nullptr, nullptr, d.loc.file};
-        p_->vars_[i]->body = compile(*d.body, scope);
+        // An external variable has no body: it must be given its value (Evaluator::set).
+        if (d.external) {  // not a problem of the program's: listed in no problems()
+            Node* n = newNode(evError);
+            n->info = newInfo(d.loc, "undefined variable '" + d.name + "'");
+            p_->vars_[i]->body = n;
+        } else {
+            p_->vars_[i]->body = compile(*d.body, scope);
+        }
         varState_[i] = State::Done;
     }
 
@@ -151,6 +183,8 @@ private:
                 return {RefKind::Func, it->second};
         }
         if (name.find(kContextMark) != std::string::npos) return {};
+        if (isChannelName(name)) return {RefKind::Chan};
+        if (name == "in" && b_.channels_) return {RefKind::In};
         if (name == "if") return {RefKind::If};
         if (name == "select") return {RefKind::Select};
         if (name == "arg") return {RefKind::Arg};
@@ -319,6 +353,9 @@ private:
             case RefKind::None:
                 s.pure = false;
                 return error(s, e.line, "undefined variable '" + e.name + "'");
+            case RefKind::Chan:
+                s.pure = false;
+                return channel(constant(std::atoi(e.name.c_str() + 1)), 0, e, s);
             default:
                 s.pure = false;
                 return error(s, e.line, "'" + e.name + "' is a function; it needs arguments");
@@ -370,6 +407,17 @@ private:
         }
         if (c->fn == &evAdd || c->fn == &evSub || c->fn == &evMul) return withConstant(c);
         return c;
+    }
+
+    // Input channel `index` ($N: flavour 0, in(n): 1), where the Builder allows channels.
+    const Node* channel(const Node* index, int flavour, const Expr& e, Scope& s) {
+        if (!b_.channels_)
+            return error(s, e.line, "input channel '" + e.name + "' is not available here");
+        Node* n = newNode(evChan);
+        n->a = index;
+        n->index = flavour;
+        n->info = newInfo({s.file, e.line}, e.name);
+        return n;
     }
 
     // An argument passed to a parameter that the callee calls: must name a function.
@@ -470,6 +518,12 @@ private:
                 n->info = site;
                 return n;
             }
+            case RefKind::In: {
+                if (nargs != 1) return error(s, e.line, "in() takes 1 argument");
+                args(nullptr);
+                s.pure = false;
+                return channel(kids[0], 1, e, s);
+            }
             case RefKind::Builtin: {
                 const Builtin& b = builtins()[r.index];
                 if (nargs < b.minArgs || nargs > b.maxArgs)
@@ -487,6 +541,7 @@ private:
             }
             case RefKind::Var:
             case RefKind::Ray:
+            case RefKind::Chan:
                 s.pure = false;
                 return error(s, e.line, "'" + e.name + "' is a variable, not a function");
             case RefKind::None:
@@ -499,6 +554,8 @@ private:
     const Builder& b_;
     std::unique_ptr<Program> p_;
     std::vector<const Definition*> varDefs_, funcDefs_;
+    std::map<int, const Definition*> outputDefs_;  // output channels by number
+    std::deque<Definition> externalDefs_;
     std::vector<State> varState_, funcState_;
     CodeGen gen_{p_->image_};
     Machine fold_;

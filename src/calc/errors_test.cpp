@@ -34,8 +34,10 @@ std::string evalError(const std::string& defs, const std::string& expr) {
 TEST(CalcErrors, SyntaxErrorsNameFileAndLine) {
     EXPECT_EQ(loadError("a = 1;\nb = (2 + 3;\n"),
               "bad.cal:2: syntax error: ')' expected, found ';'");
+    EXPECT_EQ(loadError("a = 1;\n\nb = 2 # 3;"),
+              "bad.cal:3: syntax error: unexpected character '#'");
     EXPECT_EQ(loadError("a = 1;\n\nb = 2 $ 3;"),
-              "bad.cal:3: syntax error: unexpected character '$'");
+              "bad.cal:3: syntax error: channel number expected after '$'");
     EXPECT_EQ(loadError("a 1;"), "bad.cal:1: syntax error: '=' or ':' expected after 'a'");
     EXPECT_EQ(loadError("a = 1\nb = 2;"), "bad.cal:2: syntax error: ';' expected, found name 'b'");
     EXPECT_EQ(loadError("a = --2;"), "bad.cal:1: syntax error: unexpected '-'");

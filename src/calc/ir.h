@@ -65,6 +65,7 @@ enum class Op : std::uint8_t {
     Select,
     CallUser,
     CallParamFn,
+    Chan,
     Error
 };
 struct NodeKind {
@@ -96,6 +97,7 @@ inline constexpr NodeKind evSelect{Op::Select};      // kids[0] = index
 inline constexpr NodeKind evCallUser{Op::CallUser};  // ptr = FunctionInfo, kids
 inline constexpr NodeKind evCallParamFn{
     Op::CallParamFn};                          // index = parameter holding a function id
+inline constexpr NodeKind evChan{Op::Chan};    // input channel a ($N: index 0, in(): 1)
 inline constexpr NodeKind evError{Op::Error};  // info->text is the message
 
 struct Node {

@@ -2,7 +2,9 @@
 // RADIANCE calexpr.c as documented in calc(1):
 //   E1 -> E1 (+|-) E2 | E2          E2 -> E2 (*|/) E3 | E3
 //   E3 -> E4 ^ E3 | E4  (right-associative)
-//   E4 -> -E5 | +E5 | E5            E5 -> (E1) | number | name | name(E1, ...)
+//   E4 -> -E5 | +E5 | E5            E5 -> (E1) | number | name | name(E1, ...) | $N
+// `$N` is channel N: an input column in expressions, an output column when defined
+// (`$2 = $1*2;`, rcalc).
 // RADIANCE compat: unary minus binds tighter than '^', so -2^2 is 4 and 2^-2 is 0.25;
 // "--x" is a syntax error. Comments are { ... } and nest.
 #include "calc/parser.h"
@@ -72,11 +74,13 @@ private:
         if (tok_.kind != Tok::Name) fail("expected a name to define, found " + describe(tok_));
         std::string name = tok_.text;
         advance();
+        if (isChannelName(name) && isPunct('(')) fail("channel '" + name + "' takes no arguments");
         if (isPunct('(')) {
             def->isFunction = true;
             do {
                 advance();
-                if (tok_.kind != Tok::Name) fail("expected a parameter name");
+                if (tok_.kind != Tok::Name || isChannelName(tok_.text))
+                    fail("expected a parameter name");
                 def->params.push_back(tok_.text);
                 advance();
             } while (isPunct(','));
@@ -91,6 +95,10 @@ private:
         def->body = e1();
         params_ = nullptr;
         if (tok_.kind != Tok::End) expect(';');
+        if (isChannelName(name)) {  // channels are global
+            def->name = name;
+            return def;
+        }
         auto q = qualifiedName(name, context, 0);
         if (!q || q->empty()) fail(def->loc.line, "bad name '" + name + "'");
         def->name = *q;
@@ -173,7 +181,7 @@ private:
             auto e = node(Expr::Kind::Name, line);
             e->name = tok_.text;
             advance();
-            if (!isPunct('(')) return e;
+            if (!isPunct('(') || isChannelName(e->name)) return e;
             e->kind = Expr::Kind::Call;
             if (params_) {  // note parameters used as functions: dot(v1,v2) : v1(1)*...
                 for (std::size_t i = 0; i < params_->size(); ++i)
@@ -259,6 +267,15 @@ private:
             tok_.text = std::string(text_.substr(start, pos_ - start));
             if (tok_.text == ".") fail("unexpected '.'");
             tok_.number = std::strtod(tok_.text.c_str(), nullptr);
+            return;
+        }
+        if (c == '$') {  // channel: '$' and its number, as one name
+            ++pos_;
+            while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_])))
+                ++pos_;
+            if (pos_ == start + 1) fail("channel number expected after '$'");
+            tok_.kind = Tok::Name;
+            tok_.text = std::string(text_.substr(start, pos_ - start));
             return;
         }
         if (isNameStart(c)) {

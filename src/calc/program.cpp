@@ -44,6 +44,8 @@ int Builder::addExpression(std::string_view text, const SourceLoc& loc) {
     return static_cast<int>(exprs_.size()) - 1;
 }
 
+void Builder::addExternal(const std::string& name) { externals_.push_back(name); }
+
 std::optional<Entry> Program::variable(std::string_view name, std::string_view context) const {
     std::string ctx = contextString(context);
     for (int level = 0;; ++level) {
@@ -136,6 +138,11 @@ double Evaluator::eval(Entry e) {
     double v;
     if (e.slot >= 0 && machine_.cached(e.slot, v)) return v;
     return machine_.run(e.block);
+}
+
+void Evaluator::set(Entry e, double value) {
+    RP_CHECK(e.slot >= 0);
+    machine_.setCached(e.slot, value);
 }
 
 double Evaluator::call(const Function& f, std::span<const double> args) {

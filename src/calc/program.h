@@ -38,6 +38,12 @@ struct Entry {
     int slot = -1;   // cache slot of a variable
 };
 
+// An output channel `$N = expr;` (rcalc's output columns).
+struct OutputChannel {
+    int channel = 0;
+    Entry entry;
+};
+
 // A function to call with arguments: user-defined (index >= 0) or builtin.
 struct Function {
     double id = 0;    // see builtinFunctionId
@@ -62,6 +68,13 @@ public:
     // Registers a bare expression (a modifier's coordinate argument) to be compiled in
     // the current context; returns its id for Program::expression().
     int addExpression(std::string_view text, const SourceLoc& loc);
+    // A variable whose value the program sets per evaluation (Evaluator::set), replacing
+    // any definition of `name`, earlier or later (rcalc's recno, outno and input-format
+    // fields, which RADIANCE sets with varset). Unset, it is an undefined variable.
+    void addExternal(const std::string& name);
+    // Lets expressions read input channels: `$N` and in(n) (rcalc). Without it, `$N` is
+    // an error where it is evaluated and in() is an undefined function.
+    void enableChannels() { channels_ = true; }
 
     // Compiles everything loaded so far. May be called again after loading more.
     std::shared_ptr<const Program> build() const;
@@ -78,6 +91,8 @@ private:
     std::string context_;
     std::vector<std::shared_ptr<const Definition>> defs_;
     std::vector<PendingExpr> exprs_;
+    std::vector<std::string> externals_;
+    bool channels_ = false;
     friend class Linker;
 };
 
@@ -103,6 +118,9 @@ public:
     // as "file:line: message". Each is also raised as an InputError if evaluated.
     const std::vector<std::string>& problems() const { return problems_; }
 
+    // The output channels defined, in channel order (a later `$N` replaces an earlier one).
+    const std::vector<OutputChannel>& outputChannels() const { return outputs_; }
+
     int variableSlots() const { return static_cast<int>(vars_.size()); }
 
 private:
@@ -124,6 +142,7 @@ private:
     std::vector<int> expressionBlocks_;
     CodeImage image_;
     std::vector<std::string> problems_;
+    std::vector<OutputChannel> outputs_;
 };
 
 // Per-thread evaluation state: the variable cache and the call stack. Cheap to create;
@@ -137,6 +156,10 @@ public:
     void setRay(const RayContext& ray);
 
     double eval(Entry e);
+    // Gives the variable of `e` (an external one) `value` until the next setRay.
+    void set(Entry e, double value);
+    // Where `$N` and in(n) read (kept by pointer; null: none).
+    void setChannels(ChannelSource* channels) { machine_.setChannels(channels); }
     double call(const Function& f, std::span<const double> args);
 
     // Divisions by zero and library calls with non-finite results so far (each gave 0).

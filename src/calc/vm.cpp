@@ -148,7 +148,7 @@ double Machine::run(int blockId, const double* args, int nargs) {
         &&op_Div,   &&op_Pow,      &&op_PowI,    &&op_Math1,      &&op_BuiltinN, &&op_Jmp,
         &&op_JNP,   &&op_JNPSub,   &&op_Sel,     &&op_JCached,    &&op_StVar,    &&op_NeedVar,
         &&op_LdArg, &&op_LdArgDyn, &&op_LdParam, &&op_LdParamDyn, &&op_Call,     &&op_CallId,
-        &&op_Ret,   &&op_RetVar,   &&op_Error};
+        &&op_Ret,   &&op_RetVar,   &&op_Chan,    &&op_Error};
 #define CASE(name) op_##name : case Code::name
 #define NEXT                                       \
     do {                                           \
@@ -281,6 +281,12 @@ double Machine::run(int blockId, const double* args, int nargs) {
                 prm = f.prm;
                 nprm = f.nprm;
                 if (f.dst >= 0) r[f.dst] = v;
+                NEXT;
+            }
+            CASE(Chan) : {
+                const int n = indexOf(V(in->a));
+                if (!channels_) runtimeError(in->p, "no input channels");
+                r[in->d] = in->b == 1 && n == 0 ? channels_->channelCount() : channels_->channel(n);
                 NEXT;
             }
             CASE(Error) : runtimeError(in->p, static_cast<const NodeInfo*>(in->p)->text);

@@ -20,6 +20,16 @@
 
 namespace rp::calc {
 
+// Where `$N` and in(n) read their values (rcalc's input columns); set on an Evaluator.
+class ChannelSource {
+public:
+    virtual ~ChannelSource() = default;
+    // Value of channel n (n may be < 1: the source reports it as illegal).
+    virtual double channel(int n) = 0;
+    // in(0): the number of channels in the current record.
+    virtual double channelCount() = 0;
+};
+
 enum class Code : std::uint8_t {
     Mov,  // d = a
     Neg,  // d = -a
@@ -49,6 +59,7 @@ enum class Code : std::uint8_t {
     CallId,      // d = function whose id is argument b (arguments as Call). p = NodeInfo
     Ret,         // return a
     RetVar,      // cache a as variable b, return it
+    Chan,        // d = input channel round(a) (b = 1: in(), whose channel 0 is the count)
     Error,       // throw p = NodeInfo (text is the message)
 };
 
@@ -119,6 +130,13 @@ public:
     // Calls any function by id (see builtinFunctionId).
     double call(double id, const double* args, int nargs);
 
+    // Gives variable `slot` a value for the current ray (an external variable).
+    void setCached(int slot, double v) {
+        r_[CodeImage::varOperand(slot)] = v;
+        stamps_[slot] = clock_;
+    }
+    void setChannels(ChannelSource* channels) { channels_ = channels; }
+
     // Cached value of a variable for the current ray, if any.
     bool cached(int slot, double& v) const {
         if (stamps_[slot] != clock_) return false;
@@ -141,6 +159,7 @@ private:
     const CodeImage* image_ = nullptr;
     const RayContext* ray_ = nullptr;
     RayContext defaultRay_;
+    ChannelSource* channels_ = nullptr;
     std::vector<double> mem_;  // globals, then the registers
     double* r_ = nullptr;      // register 0; globals at negative indices
     // Callers' registers and function arguments: kSavedCapacity doubles, allocated once and

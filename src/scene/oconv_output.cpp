@@ -13,6 +13,7 @@
 
 #include "calc/search_path.h"
 #include "scene/octree_file.h"
+#include "scene/placed_cubes.h"
 #include "scene/scene_file.h"
 #include "scene/scene_load.h"
 #include "util/file_read.h"
@@ -24,25 +25,6 @@ namespace rp {
 namespace {
 
 constexpr double kMargin = 10 * radgeom::kTiny;  // oconv.c OMARGIN
-
-// getcone() makes a cone or cup whose radii are equal a cylinder or tube of 7 arguments,
-// in the object itself (so a frozen octree stores it so).
-void conesAsRadianceSeesThem(Scene& scene, size_t first) {
-    for (size_t i = first; i < scene.prims.size(); ++i) {
-        Primitive& p = scene.prims[i];
-        if ((p.type != PrimType::Cone && p.type != PrimType::Cup) || p.rargs.size() != 8) continue;
-        if (std::fabs(p.rargs[7] - p.rargs[6]) > radgeom::kTiny) continue;
-        p.type = p.type == PrimType::Cone ? PrimType::Cylinder : PrimType::Tube;
-        p.rargs.resize(7);
-    }
-}
-
-// A cube value written as oconv writes it ("%.12g") and read back.
-double throughText(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.12g", v);
-    return std::strtod(buf, nullptr);
-}
 
 // RADIANCE's readoct() consistency checks on an octree whose scene files were read again.
 void checkReread(const RadianceOctreeFile& old, const Scene& scene, const std::string& path) {
@@ -57,10 +39,11 @@ void checkReread(const RadianceOctreeFile& old, const Scene& scene, const std::s
 class Oconv {
 public:
     Oconv(const OconvRequest& request, const LoadOptions& options)
-        : request_(request), options_(radianceNumbered(options)), reader_(options_) {
-        dirs_ = request.searchPath.empty() ? calc::defaultSearchPath(projectLibDir())
-                                           : request.searchPath;
-    }
+        : request_(request),
+          options_(radianceNumbered(options)),
+          reader_(options_),
+          placedCubes_(request.searchPath.empty() ? calc::defaultSearchPath(projectLibDir())
+                                                  : request.searchPath) {}
 
     std::string run() {
         std::vector<std::string> lines;
@@ -84,7 +67,7 @@ public:
         conesAsRadianceSeesThem(scene, first);
         const auto end = int32_t(scene.prims.size());
         octree::Shapes shapes(scene, size_t(end),
-                              [this](const Primitive& p) { return placedCube(p); });
+                              [this](const Primitive& p) { return placedCubes_(p); });
         setCube(shapes, int32_t(first), end);
         octree::addObjects(tree_, shapes, scene.prims, int32_t(first), end,
                            {request_.objlim, request_.maxres});
@@ -162,81 +145,12 @@ private:
         }
     }
 
-    // getinstance()/getmeshinst() with IO_BOUNDS: the cube of the file placed.
-    octree::Cube placedCube(const Primitive& p) {
-        const bool mesh = p.type == PrimType::Mesh;
-        const std::string path = findPlacedFile(p, dirs_);
-        const std::string key = (mesh ? "m:" : "o:") + path;
-        if (auto it = cubes_.find(key); it != cubes_.end()) return it->second;
-        octree::Cube cube;
-        try {
-            cube = mesh ? fileCube(path, true) : octreeCube(path);
-        } catch (const InputError& e) {
-            throw InputError(p.loc,
-                             std::string(primTypeName(p.type)) + " '" + p.name + "': " + e.what());
-        }
-        cubes_[key] = cube;
-        return cube;
-    }
-
-    // The cube stored at the start of an octree or mesh file.
-    static octree::Cube fileCube(const std::string& path, bool mesh) {
-        for (size_t limit : {size_t(65536), size_t(0)}) {
-            const std::string bytes = readFileBytes(path, limit);
-            Header header;
-            std::string_view rest;
-            const bool whole = limit == 0 || bytes.size() < limit;
-            if (!splitHeader(bytes, header, rest)) {
-                if (!whole) continue;
-                throw InputError(SourceLoc{path, 0}, mesh ? "not a mesh" : "not an octree");
-            }
-            const char* want = mesh ? "Radiance_tmesh" : kRadianceOctreeFormat;
-            if (header.format() != want)
-                throw InputError(SourceLoc{path, 0},
-                                 std::string(mesh ? "not a mesh" : "not an octree") +
-                                     " (FORMAT=" + header.format() + ")");
-            try {
-                const RadianceCube c = radianceCube(rest, mesh, path);
-                return {c.origin, c.size};
-            } catch (const InputError&) {
-                if (whole) throw;
-            }
-        }
-        return {};
-    }
-
-    // An instance's octree: RADIANCE's, or our older scene file, whose cube is the one
-    // oconv would have made for its records.
-    octree::Cube octreeCube(const std::string& path) {
-        const std::string head = readFileBytes(path, 4096);
-        Header header;
-        std::string_view rest;
-        if (!splitHeader(head, header, rest) || header.format() != kSceneFileFormat)
-            return fileCube(path, false);
-        if (!loading_.insert(path).second)
-            throw InputError(SourceLoc{path, 0}, "octree places itself");
-        const std::string bytes = readFileBytes(path);
-        splitHeader(bytes, header, rest);
-        Scene s = decodeScene(rest, path);
-        conesAsRadianceSeesThem(s, 0);
-        const octree::Shapes shapes(s, s.prims.size(),
-                                    [this](const Primitive& q) { return placedCube(q); });
-        octree::Cube cube = octree::sceneCube(shapes, 0, int32_t(s.prims.size()));
-        loading_.erase(path);
-        // As RADIANCE would read it back from the octree oconv would have written.
-        for (double& c : cube.org) c = throughText(c);
-        cube.size = throughText(cube.size);
-        return cube;
-    }
-
     const OconvRequest& request_;
     LoadOptions options_;
     SceneReader reader_;
-    std::vector<std::string> dirs_;
     std::vector<std::string> files_;
     octree::Octree tree_;
-    std::map<std::string, octree::Cube> cubes_;
-    std::set<std::string> loading_;
+    PlacedCubes placedCubes_;
 };
 
 }  // namespace
