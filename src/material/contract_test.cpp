@@ -81,7 +81,10 @@ MaterialParams wgmd(std::vector<double> r, const char* rs, const char* ru, const
 std::vector<Case> allCases() {
     std::vector<Case> cs;
     auto add = [&](std::string n, MaterialParams m) -> Case& {
-        cs.push_back(Case{std::move(n), std::move(m)});
+        Case c;
+        c.name = std::move(n);
+        c.m = std::move(m);
+        cs.push_back(std::move(c));
         return cs.back();
     };
     // Rough Ward lobes: RADIANCE (and we, both directions) samples them with unit weight
@@ -424,8 +427,9 @@ TEST_P(MaterialContract, ShadowColourWithinUnit) {
                     ShadeOptions opt;
                     opt.backVisible = backVisible;
                     const ShadowPass s = shadowPass(c.m, sp, passIllum, opt, rng);
-                    if (blocksShadows(c.m, sp.front, backVisible))
+                    if (blocksShadows(c.m, sp.front, backVisible)) {
                         EXPECT_EQ(s.kind, ShadowPass::Kind::Opaque) << c.name << ": blocksShadows";
+                    }
                     const std::string where =
                         c.name + " at " + std::to_string(theta) + (front ? " front" : " back");
                     if (s.kind == ShadowPass::Kind::Emit) {
@@ -464,7 +468,9 @@ TEST_P(MaterialContract, ShadowColourWithinUnit) {
     static const std::set<std::string> kPassing{"trans",     "mirror",     "glass", "dielectric",
                                                 "interface", "antimatter", "mist",  "brtdfunc",
                                                 "wgmdfunc",  "illum",      "bsdf"};
-    if (kPassing.count(c.name)) EXPECT_GT(passed, 0) << c.name << " never passes a shadow ray";
+    if (kPassing.count(c.name)) {
+        EXPECT_GT(passed, 0) << c.name << " never passes a shadow ray";
+    }
 }
 
 TEST(MaterialShadow, FamiliesAnswerAsRadiance) {
