@@ -8,35 +8,11 @@ DATA="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/tests/data/data_tools"
 : "${RP_BIN:?RP_BIN not set}"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib/cases.sh"
 cd "$DATA" || exit 1
 fail=0
-n=0
-while IFS= read -r line; do
-    n=$((n + 1))
-    tool=${line%% *}
-    [ "$tool" = "$line" ] && rest="" || rest=${line#* }
-    want="expected/$(printf %02d $n).out"
-    if ! eval "\"\$RP_BIN/$tool\" $rest" > "$tmp/out" 2> "$tmp/err"; then
-        echo "FAIL line $n ($line): exit status $?"; cat "$tmp/err"; fail=1; continue
-    fi
-    if ! cmp -s "$want" "$tmp/out"; then
-        echo "FAIL line $n ($line): output differs from $want"
-        diff <(od -c "$want" | head -20) <(od -c "$tmp/out" | head -20) | head -10
-        fail=1
-    fi
-done < cases.txt
-[ "$n" -ge 50 ] || { echo "FAIL: only $n cases read"; fail=1; }
+run_cases 50
 
-expect_error() {  # pattern, then the command (tool and arguments)
-    local pattern=$1; shift
-    local tool=$1; shift
-    if "$RP_BIN/$tool" "$@" > "$tmp/out" 2> "$tmp/err" < /dev/null; then
-        echo "FAIL: $tool $* should fail"; fail=1; return
-    fi
-    if [ "$(wc -l < "$tmp/err")" -ne 1 ] || ! grep -q "$pattern" "$tmp/err"; then
-        echo "FAIL: $tool $*: stderr '$(cat "$tmp/err")', expected /$pattern/"; fail=1
-    fi
-}
 expect_error "^rcalc: missing.txt: cannot open$" rcalc -e '$1=$1' missing.txt
 expect_error "^rcalc: in.txt: record 1: line 1: undefined variable 'nothing'$" rcalc -e '$1=nothing' in.txt
 expect_error "^rcalc: line 1: syntax error" rcalc -e '$1=(2' in.txt
