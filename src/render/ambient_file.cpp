@@ -2,9 +2,12 @@
 #include "render/ambient_file.h"
 
 #include <fmt/format.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <bit>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -155,6 +158,29 @@ AmbientFileContents readAmbientFile(const std::string& path) {
     return out;
 }
 
+namespace {
+
+// Appends `data` under an exclusive lock with whole write() calls, so renderers sharing
+// one file (rad -N, RADIANCE's practice) neither interleave nor tear records.
+void appendLocked(const std::string& path, const std::vector<unsigned char>& data) {
+    const SourceLoc loc{path, 0};
+    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND);
+    if (fd < 0) throw InputError(loc, "can't open ambient file");
+    ::flock(fd, LOCK_EX);
+    size_t done = 0;
+    while (done < data.size()) {
+        const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        done += size_t(n);
+    }
+    ::flock(fd, LOCK_UN);
+    if (::close(fd) != 0 || done < data.size())
+        throw InputError(loc, "error writing to ambient file");
+}
+
+}  // namespace
+
 void appendAmbientFile(const std::string& path, const std::string& options,
                        const std::vector<AmbientRecord>& records) {
     SourceLoc loc{path, 0};
@@ -164,20 +190,18 @@ void appendAmbientFile(const std::string& path, const std::string& options,
             encodeAmbientRecord(records[i], data.data() + i * bytes, bytes);
         return data;
     };
-    if (std::filesystem::exists(path)) {
+    auto appendToExisting = [&] {
         size_t bytes = 0;
         {
             std::ifstream in(path, std::ios::binary);
             if (!in) throw InputError(loc, "can't open ambient file");
             checkHeader(in, path, bytes);  // a legacy file keeps its record size
         }
-        const std::vector<unsigned char> data = encode(bytes);
-        std::ofstream out(path, std::ios::binary | std::ios::app);
-        out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
-        out.flush();
-        if (!out) throw InputError(loc, "error writing to ambient file");
-        return;
-    }
+        appendLocked(path, encode(bytes));
+    };
+    if (std::filesystem::exists(path)) return appendToExisting();
+    // A new file is written aside and linked into place (a crash leaves no half header);
+    // if another process made it meanwhile, the records go at its end instead.
     const std::vector<unsigned char> data = encode(kAmbientRecordBytes);
     std::string tmp = fmt::format("{}.{}.tmp", path, ::getpid());
     {
@@ -191,9 +215,17 @@ void appendAmbientFile(const std::string& path, const std::string& options,
             throw InputError(loc, "error writing to ambient file");
         }
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int linkError = ::link(tmp.c_str(), path.c_str()) == 0 ? 0 : errno;
+    if (linkError == 0 || linkError == EEXIST) {
         std::remove(tmp.c_str());
-        throw InputError(loc, fmt::format("can't create ambient file: {}", std::strerror(errno)));
+        if (linkError == EEXIST) appendToExisting();
+        return;
+    }
+    // A file system without hard links: renamed into place as before.
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        const int err = errno;
+        std::remove(tmp.c_str());
+        throw InputError(loc, fmt::format("can't create ambient file: {}", std::strerror(err)));
     }
 }
 

@@ -59,12 +59,14 @@ const OptionMessages& rvuMessages() {
 }
 
 void setDevice(RvuOptions& o, const std::string& spec) {
-    const std::string name = spec.substr(0, spec.find(':'));
+    std::string name = spec.substr(0, spec.find(':'));
+    // RADIANCE's window devices (rad -o x11, objview) open the one display there is here.
+    if (name == "x11" || name == "qt" || name == "x11dev") name = "web";
     if (name != "web")
         throw InputError("unknown output device \"" + name + "\" (rvu -devices lists them)");
     o.device = name;
-    if (spec.size() > name.size()) {
-        const std::string port = spec.substr(name.size() + 1);
+    if (const std::size_t colon = spec.find(':'); colon != std::string::npos) {
+        const std::string port = spec.substr(colon + 1);
         const std::optional<long> v = parseInteger(port);
         if (port.find_first_not_of("0123456789") != std::string::npos || !v || *v < 0 || *v > 65535)
             throw InputError("bad port in -o " + spec + " (expected web:PORT, 0 to 65535)");
@@ -85,6 +87,7 @@ void addRvuOptions(OptionTable& t, RvuCommand& cmd) {
         const std::string d = o.port > 0 ? fmt::format("{}:{}", o.device, o.port) : o.device;
         return fmt::format("-o {}\t\t\t\t# output device\n", d);
     });
+    t.add(customOption("-R", [&o](OptionReader& r) { o.radFile = r.word(); }));
     OptionSpec exposure =
         customOption("-pe", [&o](OptionReader& r) { o.exposure = exposureValue(r.word()); });
     exposure.messages = &rvuMessages();

@@ -19,6 +19,7 @@ struct RvuOptions {
     bool greyscale = false;        // -b
     std::string device = "web";    // -o
     int port = 0;                  // -o web:PORT (0: any free port)
+    std::string radFile;           // -R: the rad file of the L and V commands (rad -o)
 };
 
 // RADIANCE 5.4 rvmain.c's defaults: -ps 8 -pt .15, and for rendering -dt .1 -dc .25

@@ -125,9 +125,13 @@ TEST(RvuOptions, WebDeviceWithOptionalPort) {
     EXPECT_EQ(o.port, 8123);
     EXPECT_EQ(parseRvuCommand({"-o", "web:65535"}).options.port, 65535);
     EXPECT_EQ(parseRvuCommand({"-o", "web:0"}).options.port, 0);
-    const std::string x11 = errorOf({"-o", "x11"});
-    EXPECT_TRUE(contains(x11, "\"x11\"")) << x11;
-    EXPECT_TRUE(contains(errorOf({"-o", "x11:1"}), "\"x11\""));
+    // RADIANCE's window devices (rad -o x11, objview) open the web display.
+    EXPECT_EQ(parseRvuCommand({"-o", "x11"}).options.device, "web");
+    EXPECT_EQ(parseRvuCommand({"-o", "qt:8124"}).options.port, 8124);
+    const std::string bad = errorOf({"-o", "tty"});
+    EXPECT_TRUE(contains(bad, "\"tty\"")) << bad;
+    EXPECT_TRUE(contains(errorOf({"-o", "tty:1"}), "\"tty\""));
+    EXPECT_EQ(parseRvuCommand({"-R", "x.rif", "-o", "x11"}).options.radFile, "x.rif");
     EXPECT_TRUE(contains(errorOf({"-o", "webgl"}), "\"webgl\""));
     for (const char* bad : {"web:99999", "web:65536", "web:", "web:-1", "web:8o", "web:1:2"})
         EXPECT_TRUE(contains(errorOf({"-o", bad}), "bad port")) << bad;

@@ -22,7 +22,8 @@ Session::Session(SessionSetup setup)
     : setup_(std::move(setup)),
       view_(setup_.options.picture.view),
       exposure_(setup_.options.exposure),
-      greyscale_(setup_.options.greyscale) {
+      greyscale_(setup_.options.greyscale),
+      radFile_(setup_.options.radFile) {
     RP_CHECK(setup_.scene && setup_.geometry);
     ViewRays check(view_);  // before the (slower) renderer
     rebuildRenderer();

@@ -152,6 +152,7 @@ int32_t SceneReader::resolveModifier(const std::string& name, const SourceLoc& l
         throw InputError(loc, "'" + name + "' is a " +
                                   std::string(primTypeName(scene_.prims[s->second].type)) +
                                   ", a surface, and cannot be used as a modifier");
+    if (options_.geometryOnly) return kVoid;
     throw InputError(loc, "undefined modifier '" + name + "'");
 }
 

@@ -28,6 +28,9 @@ struct LoadOptions {
     // a modifier redefined equal to the one its name stands for keeps the earlier one
     // (modifier_table.h).
     bool radianceNumbering = false;
+    // Geometry only (getbbox): a modifier that is not defined reads as void, as RADIANCE's
+    // readobj2 never looks modifiers up.
+    bool geometryOnly = false;
 };
 
 // Accumulates primitives from any number of inputs, in order, into one Scene.

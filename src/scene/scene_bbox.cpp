@@ -19,6 +19,7 @@ BoundingBox sceneBoundingBox(const std::vector<std::string>& inputs, const LoadO
                              const std::vector<std::string>& searchPath) {
     LoadOptions o = options;
     o.radianceNumbering = true;  // keep what RADIANCE keeps (polygons without area count)
+    o.geometryOnly = true;       // materials may be in other files (rad: getbbox of its scene)
     SceneReader reader(o);
     for (const std::string& f : inputs) {
         if (f == "-" || f[0] == '!') {

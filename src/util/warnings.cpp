@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <mutex>
+#include <utility>
 
 namespace rp {
 
@@ -16,6 +17,16 @@ WarningSink& sink() {
 
 // An empty sink restores the default (tests reset theirs that way).
 void setWarningSink(WarningSink s) { sink() = s ? std::move(s) : WarningSink(toStderr); }
+
+QuietWarnings::QuietWarnings() {
+    std::lock_guard<std::mutex> lock(sinkMutex);
+    saved_ = std::exchange(sink(), [](const std::string&) {});
+}
+
+QuietWarnings::~QuietWarnings() {
+    std::lock_guard<std::mutex> lock(sinkMutex);
+    sink() = std::move(saved_);
+}
 
 void warn(const std::string& message) {
     std::lock_guard<std::mutex> lock(sinkMutex);

@@ -17,6 +17,19 @@ using WarningSink = std::function<void(const std::string&)>;
 // while other threads warn; tools set it once at start-up.
 void setWarningSink(WarningSink sink);
 
+// Silences warnings while it lives and then puts the sink it found back (getbbox -w
+// inside another tool).
+class QuietWarnings {
+public:
+    QuietWarnings();
+    ~QuietWarnings();
+    QuietWarnings(const QuietWarnings&) = delete;
+    QuietWarnings& operator=(const QuietWarnings&) = delete;
+
+private:
+    WarningSink saved_;
+};
+
 void warn(const std::string& message);
 void warn(const SourceLoc& loc, const std::string& message);
 

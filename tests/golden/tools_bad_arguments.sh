@@ -15,7 +15,7 @@ check() {  # description, command...
         fail=1
     fi
 }
-for t in genblinds genbox gendaylit genprism genrev gensky gensurf genworm mkpmap oconv pmapdump \
+for t in genblinds genbox gendaylit genprism genrev gensky gensurf genworm mkpmap oconv pcond pmapdump rad \
          ra_png rpreview rvu xform; do
     check "$t unknown option" "$RP_BIN/$t" -zzz
 done
@@ -27,7 +27,9 @@ check "pmapdump missing map" "$RP_BIN/pmapdump" "$tmp/none.pm"
 check "ra_png missing picture" "$RP_BIN/ra_png" "$tmp/none.hdr" "$tmp/out.png"
 check "xform missing file" "$RP_BIN/xform" -t 1 0 0 "$tmp/none.rad"
 check "rvu missing scene" "$RP_BIN/rvu" "$tmp/none.rad"
-check "rvu unknown device" "$RP_BIN/rvu" -o x11 "$tmp/none.rad"
+check "rvu unknown device" "$RP_BIN/rvu" -o nodev "$tmp/none.rad"
+check "rad missing RIF" "$RP_BIN/rad" "$tmp/none.rif"
+check "pcond missing picture" "$RP_BIN/pcond" "$tmp/none.hdr"
 check "rvu refused rpict option" "$RP_BIN/rvu" -z depth.z "$tmp/none.rad"
 printf 'void plastic red\n0\n0\n4 1 0 0 0\n' > "$tmp/bad.rad"
 check "rvu bad scene" "$RP_BIN/rvu" "$tmp/bad.rad"

@@ -6,9 +6,9 @@
 set -euo pipefail
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fail=0
-tools=$(cd "$RP_BIN" && ls cnt falsecolor gen* getbbox getinfo mkpmap obj2mesh oconv pcomb pfilt pmapdump pvalue radcompare rcalc \
+tools=$(cd "$RP_BIN" && ls cnt falsecolor gen* getbbox getinfo mkillum mkpmap obj2mesh oconv pcomb pcond pfilt pmapdump pvalue rad radcompare rcalc \
         ra_png rcontrib rlam rpict rpreview rtrace rvu total vwrays xform 2> /dev/null)
-[ "$(echo "$tools" | wc -w)" -ge 25 ] || { echo "FAIL: tools missing from $RP_BIN"; exit 1; }
+[ "$(echo "$tools" | wc -w)" -ge 27 ] || { echo "FAIL: tools missing from $RP_BIN"; exit 1; }
 for t in $tools; do
     rc=0; "$RP_BIN/$t" -version > "$tmp/out" 2> "$tmp/err" < /dev/null || rc=$?
     if [ "$rc" -ne 0 ] || [ "$(wc -l < "$tmp/out")" -ne 1 ] || [ -s "$tmp/err" ] ||
