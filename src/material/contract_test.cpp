@@ -47,6 +47,10 @@ struct Case {
     double evalTol = 0, indirectTol = 0;
     // (a) The forward flux absorbs this much of what evaluate() integrates to (plasfunc).
     double absorbedSpecular = 0;
+    // (a) ... and this much of the indirect response: RADIANCE's ambient for the *func
+    // types meets the whole reflectance, its specular fraction in the material's colour
+    // included (m_brdf.c m_brdf2), where photons scatter the diffuse part alone.
+    Color absorbedIndirect;
     // (a) evaluate() scales the diffuse parts by 1 - F(light) as well (roughness-0
     // plastic/metal/trans, normal.c dirnorm); photons and the ambient only by 1 - F(view).
     bool lightFresnelOnDiffuse = false;
@@ -155,6 +159,7 @@ std::vector<Case> allCases() {
         Case& c = add("plasfunc", mk(PrimType::Plasfunc, {.6, .5, .4, .1}, {"refl", "."}));
         c.function = true;
         c.absorbedSpecular = .1;
+        c.absorbedIndirect = Color{.6, .5, .4} * .1;
         c.reciprocal = true;
     }
     add("transfunc", mk(PrimType::Transfunc, {.6, .6, .6, 0, .4, 0}, {"refl", "."})).reciprocal =
@@ -346,7 +351,7 @@ TEST_P(MaterialContract, EnergyMatchesBackward) {
             // The light-side Fresnel factor averages to 1 - kappa over the cosine-weighted
             // hemisphere; undone here to give what photons carry.
             if (k.lightFresnelOnDiffuse) eval += b.diffuse[ch] * kappa;
-            double indirect = b.indirect.mean[ch] + pass;
+            double indirect = b.indirect.mean[ch] + pass - k.absorbedIndirect[ch];
             if (const auto* a = std::get_if<AshikParams>(&k.m)) {
                 const double x = 1 + dir.z;  // 1 - cos(incidence), Schlick's F
                 indirect -= a->diffuse[ch] * x * x * x * x * x;

@@ -53,9 +53,11 @@ BackwardResult shadeFunc(const FuncParams& m, const SurfacePoint& sp, const Shad
         return r;
     }
     // ray.html plasfunc: only direct light is considered for the specular part, so no
-    // specular rays are spawned; the diffuse part takes indirect light as usual.
-    if (m.rdiff > kFtiny) r.ambientReflect = m.diffuseReflectance * sp.pattern;
-    if (m.tdiff > kFtiny) r.ambientTransmit = m.diffuseTransmittance * sp.pattern;
+    // specular rays are spawned. Indirect light, though, meets the whole reflectance and
+    // transmittance, specular fraction included (RADIANCE 5.4 m_brdf.c m_brdf2: the
+    // material colour times 1 - trans, and times trans from the other side).
+    if (m.trans < 1 - kFtiny) r.ambientReflect = m.color * sp.pattern * (1 - m.trans);
+    if (m.trans > kFtiny) r.ambientTransmit = m.color * sp.pattern * m.trans;
     return r;
 }
 
