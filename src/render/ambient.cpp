@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 #include <unordered_set>
 #include <vector>
 
@@ -52,8 +53,9 @@ struct Ambient::Impl {
         }
     }
 
-    Color fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) const;
-    Color makeRecord(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng);
+    // Both give nothing when no sample could be traced (RADIANCE then uses -av).
+    std::optional<Color> fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) const;
+    std::optional<Color> makeRecord(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng);
     uint32_t corralFlags(const HemisphereEstimate& est, double reach, int columns) const;
     // Ward radius R of a new record (its reach is aa R); may cap the relative gradient.
     double recordRadius(const HemisphereEstimate& est, double brightness, double wt,
@@ -126,7 +128,8 @@ Color Ambient::ambientValue() const {
     return Color::grey(std::exp(sum / double(n)));
 }
 
-Color Ambient::Impl::fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) const {
+std::optional<Color> Ambient::Impl::fresh(const AmbientPoint& at, HemisphereTracer& tracer,
+                                          Rng& rng) const {
     // RADIANCE compat (ambcomp.c samp_hemi): without the cache the division count follows
     // the ray weight, lowered so that samples stay above -lw; each sample carries its
     // share of the weight times the material's ambient coefficient.
@@ -141,7 +144,9 @@ Color Ambient::Impl::fresh(const AmbientPoint& at, HemisphereTracer& tracer, Rng
         at.weight * std::min(1.0, at.coefficient / (double(p.thetaDivisions) * p.phiDivisions));
     p.gradients = false;
     if (p.superSamples <= 8) p.superSamples = 0;  // RADIANCE 5: not worth it below 9
-    return sampleHemisphere(at.offsetOrigin, at.normal, p, tracer, rng).value;
+    const HemisphereEstimate est = sampleHemisphere(at.offsetOrigin, at.normal, p, tracer, rng);
+    if (est.untraced == est.divisions) return std::nullopt;
+    return est.value;
 }
 
 // The curvature term may use this share of -aa: the rest is left to the records' Monte
@@ -223,7 +228,8 @@ uint32_t Ambient::Impl::corralFlags(const HemisphereEstimate& est, double reach,
     return flags;
 }
 
-Color Ambient::Impl::makeRecord(const AmbientPoint& at, HemisphereTracer& tracer, Rng& rng) {
+std::optional<Color> Ambient::Impl::makeRecord(const AmbientPoint& at, HemisphereTracer& tracer,
+                                               Rng& rng) {
     // RADIANCE compat (ambient.c makeambient): a record's weight is AVGREFL per level,
     // unless the ray is much lighter already; it sets the division count and radius.
     double wt = std::pow(kAverageReflectance, at.ambientLevel);
@@ -235,6 +241,11 @@ Color Ambient::Impl::makeRecord(const AmbientPoint& at, HemisphereTracer& tracer
     p.sampleWeight = at.weight * kAverageReflectance;
     if (p.superSamples <= 8) p.superSamples = 0;
     HemisphereEstimate est = sampleHemisphere(at.offsetOrigin, at.normal, p, tracer, rng);
+    // RADIANCE compat (ambient.c makeambient): a value some of whose samples were lost
+    // (the ray was lighter than -lw allows for them) is used here but not cached, where
+    // every later ray would reuse its shortfall; with none traced there is no value.
+    if (est.untraced == est.divisions) return std::nullopt;
+    if (est.untraced > 0) return est.value;
 
     AmbientRecord rec;
     rec.position = at.point;
@@ -258,12 +269,12 @@ Color Ambient::indirect(const AmbientPoint& at, HemisphereTracer& tracer, Rng& r
     const Impl& m = *impl_;
     if (at.ambientLevel >= m.opt.bounces || m.opt.divisions <= 0 || m.isExcluded(at.modifier))
         return ambientValue();
-    if (!m.cache) return m.fresh(at, tracer, rng);
+    if (!m.cache) return m.fresh(at, tracer, rng).value_or(ambientValue());
     CacheQuery q{at.point, at.normal, at.ambientLevel, at.weight, at.offsetOrigin, at.leaks};
     Color c;
     if (m.cache->lookup(q, &rng, c)) return c;
     // Inserting is thread-safe; the Impl is logically the shared cache.
-    return const_cast<Impl&>(m).makeRecord(at, tracer, rng);
+    return const_cast<Impl&>(m).makeRecord(at, tracer, rng).value_or(ambientValue());
 }
 
 void Ambient::save() const {

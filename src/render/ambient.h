@@ -27,6 +27,9 @@ public:
         Color radiance;          // radiance arriving back along the ray
         double distance = 1e10;  // distance to the surface hit (1e10 if none)
         Vec3 normal;             // geometric normal there, either sign (zero: unknown)
+        // False when the ray was not traced (lighter than -lw, lost at Russian roulette,
+        // past -lr): RADIANCE's failed ambsample, which keeps a value from being cached.
+        bool traced = true;
     };
     // `ambientLevel` is the level of the new ray (1 for rays from a primary hit);
     // `weight` its RADIANCE ray weight (for -lw and the division count at deeper levels);

@@ -79,6 +79,7 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
     std::vector<Division> div(size_t(M) * N);
     HemisphereEstimate est;
     const double share = 1.0 / (double(M) * N);  // of a division's only sample
+    int firstPassUntraced = 0;
 
     // One jittered sample in division (j, k): sin^2(theta) is uniform for a cosine
     // density, so rows of equal sin^2 width carry equal weight (Ward et al. 1988).
@@ -91,6 +92,7 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
         HemisphereTracer::Sample s =
             tracer.trace(origin, dir, params.sampleLevel, params.sampleWeight, share);
         Division& d = div[size_t(j) * N + k];
+        if (!s.traced && d.n == 0) ++firstPassUntraced;
         double b = s.radiance.brightness();
         d.sum += s.radiance;
         d.sumB += b;
@@ -132,10 +134,13 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
 
     for (int j = 0; j < M; ++j)
         for (int k = 0; k < N; ++k) shoot(j, k);
+    est.divisions = M * N;
+    est.untraced = firstPassUntraced;
 
     // RADIANCE compat (ambcomp.c samp_hemi): no super-sampling of 49 divisions or fewer
     // (MINADIV^2), where the neighbours' differences say little.
-    if (params.superSamples > 0 && M * N > 49) {
+    // Nor where samples were lost (ambcomp.c: a "soft failure" is not super-sampled).
+    if (params.superSamples > 0 && M * N > 49 && est.untraced == 0) {
         // How much radiance varies around each division: the spread of its neighbours'
         // samples (phi wraps around), not counting its own. RADIANCE (ambcomp.c
         // getambdiffs) uses the differences to the division's own sample; then a bright

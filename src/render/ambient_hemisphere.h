@@ -38,6 +38,10 @@ struct HemisphereEstimate {
     double sumInverseDistance = 0;  // sum of 1/distance over every sample (radius: harmonic mean)
     int samples = 0;                // rays traced
     int hits = 0;                   // of which met a surface (the others escaped to sources/sky)
+    // Divisions whose first sample was not traced (HemisphereTracer::Sample::traced): a
+    // value with any is not cached, one with all of them not used (ambcomp.c sampOK).
+    int untraced = 0;
+    int divisions = 0;
     // Gradients of brightness(value) (Color::brightness), not yet normalised:
     Vec3 gradPosition;   // d value / d position (tangent plane), per unit length
     Vec3 gradDirection;  // rotation vector gradient: value(N') ~ value + g . (N x N')

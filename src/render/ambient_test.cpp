@@ -321,3 +321,44 @@ TEST(AmbientTest, RecordsGrowAsOneOverAccuracy) {
 
 }  // namespace
 }  // namespace rp::render
+
+namespace rp::render {
+namespace {
+
+// RADIANCE compat (ambient.c makeambient, ambcomp.c sampOK): samples a ray is too light
+// to trace keep its value out of the cache, where every later ray would reuse the
+// shortfall (black patches on a floor seen through a mirror); with no sample traced the
+// ray gets -av.
+TEST(AmbientTest, LostSamplesAreNotCached) {
+    Scene scene;
+    for (double aa : {0.0, 0.1}) {
+        Ambient amb(options(1, aa), 10, scene);
+        FunctionTracer none([](const Vec3&, const Vec3&) {
+            HemisphereTracer::Sample s;
+            s.traced = false;
+            return s;
+        });
+        Rng rng(5, RngDomain::Test, 0);
+        EXPECT_EQ(amb.indirect(pointAt({0, 0, 0}, {0, 0, 1}), none, rng),
+                  (Color{0.01, 0.02, 0.03}));
+        EXPECT_EQ(amb.recordCount(), 0);
+        // Every other sample lost: the value counts them as black, and is not kept.
+        int n = 0;
+        FunctionTracer half([&n](const Vec3&, const Vec3&) {
+            HemisphereTracer::Sample s{Color::grey(2), 1, {}};
+            s.traced = (n++ % 2) == 0;
+            if (!s.traced) s.radiance = Color{};
+            return s;
+        });
+        const Color c = amb.indirect(pointAt({0, 0, 0}, {0, 0, 1}), half, rng);
+        EXPECT_GT(c.r, 0.5);
+        EXPECT_LT(c.r, 1.5);
+        EXPECT_EQ(amb.recordCount(), 0);
+        FunctionTracer all(constantRadiance(Color::grey(2)));
+        amb.indirect(pointAt({0, 0, 0}, {0, 0, 1}), all, rng);
+        EXPECT_EQ(amb.recordCount(), aa > 0 ? 1 : 0);
+    }
+}
+
+}  // namespace
+}  // namespace rp::render

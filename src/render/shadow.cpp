@@ -187,13 +187,15 @@ HemisphereTracer::Sample Renderer::Context::traceSample(const RayState& parent, 
     // not at all (-lr > 0); -lr < 0 also limits the depth.
     const LimitOptions& lim = impl.options.limits;
     double promote = 1;
+    HemisphereTracer::Sample lost;
+    lost.traced = false;
     if (lim.maxDepth > 0) {
-        if (st.depth > lim.maxDepth || weight < lim.minWeight) return HemisphereTracer::Sample{};
+        if (st.depth > lim.maxDepth || weight < lim.minWeight) return lost;
     } else if (lim.maxDepth < 0 && st.depth > -lim.maxDepth) {
-        return HemisphereTracer::Sample{};
+        return lost;
     } else if (weight < lim.minWeight) {
         const double p = weight / lim.minWeight;
-        if (!(rng.uniform() < p)) return HemisphereTracer::Sample{};
+        if (!(rng.uniform() < p)) return lost;
         promote = 1 / p;
         weight = lim.minWeight;
     }
