@@ -44,15 +44,21 @@ OptionTable pfiltTable(PfiltOptions& o) {
         return "unknown option '" + a + "' (" + kUsage + ")";
     };
     auto line = [](const char* s) { return [s] { return std::string(s); }; };
-    t.add(customOption("-x", [&o](OptionReader& r) { readResolution(r, o.xres, o.xRatio); }),
-          line("-x  same\t\t\t# output x resolution (N, or /f: input divided by f)\n"));
-    t.add(customOption("-y", [&o](OptionReader& r) { readResolution(r, o.yres, o.yRatio); }),
-          line("-y  same\t\t\t# output y resolution (N or /f)\n"));
-    t.add(valueOption(
-              "-p", o.pixelAspect, [](double v) { return v >= 0; }, "must be >= 0"),
-          line("-p  0\t\t\t\t# output pixel aspect (0: as the sizes give)\n"));
-    t.add(customOption("-c", [&o](OptionReader&) { o.correctAspect = !o.correctAspect; }),
-          line("-c  off\t\t\t\t# aspect corrected: no PIXASPECT= line\n"));
+    // RADIANCE compat (pfilt.c): an option is known by its second character, so the
+    // renders Makefile's "-pa 1" is -p (-e keeps its -er -eg -eb).
+    auto addLoose = [&t](OptionSpec spec, std::function<std::string()> defaults = {}) {
+        spec.matches = prefix(spec.name);
+        t.add(std::move(spec), std::move(defaults));
+    };
+    addLoose(customOption("-x", [&o](OptionReader& r) { readResolution(r, o.xres, o.xRatio); }),
+             line("-x  same\t\t\t# output x resolution (N, or /f: input divided by f)\n"));
+    addLoose(customOption("-y", [&o](OptionReader& r) { readResolution(r, o.yres, o.yRatio); }),
+             line("-y  same\t\t\t# output y resolution (N or /f)\n"));
+    addLoose(valueOption(
+                 "-p", o.pixelAspect, [](double v) { return v >= 0; }, "must be >= 0"),
+             line("-p  0\t\t\t\t# output pixel aspect (0: as the sizes give)\n"));
+    addLoose(customOption("-c", [&o](OptionReader&) { o.correctAspect = !o.correctAspect; }),
+             line("-c  off\t\t\t\t# aspect corrected: no PIXASPECT= line\n"));
     for (int k = -1; k < 3; ++k) {
         static const char* const names[] = {"-er", "-eg", "-eb"};
         const std::string name = k < 0 ? "-e" : names[k];
@@ -66,31 +72,31 @@ OptionTable pfiltTable(PfiltOptions& o) {
               k < 0 ? line("-e  1\t\t\t\t# exposure (times the 0.5 average unless -1)\n")
                     : std::function<std::string()>{});
     }
-    t.add(customOption("-1", [&o](OptionReader&) { o.singlePass = true; }),
-          line("-2\t\t\t\t# two passes (-1: one, no automatic exposure)\n"));
-    t.add(customOption("-2", [&o](OptionReader&) { o.singlePass = false; }));
-    t.add(customOption("-n",
-                       [&o](OptionReader& r) {
-                           o.starPoints = static_cast<int>(r.integer(0, 1000000)) / 2;
-                       }),
-          line("-n  0\t\t\t\t# star points on hot pixels\n"));
-    t.add(valueOption(
-              "-s", o.spread, [](double v) { return v >= 0; }, "must be >= 0"),
-          line("-s  0.0001\t\t\t# star spread\n"));
-    t.add(customOption("-a", [&o](OptionReader&) { o.averageHot = !o.averageHot; }),
-          line("-a  off\t\t\t\t# average hot pixels too\n"));
-    t.add(valueOption("-h", o.hotLevel), line("-h  100\t\t\t\t# hot level\n"));
-    t.add(valueOption(
-              "-r", o.radius, [](double v) { return v >= 0; }, "must be >= 0"),
-          line("-r  0\t\t\t\t# Gaussian radius (0: box filter)\n"));
-    t.add(customOption("-m",
-                       [&o](OptionReader& r) {
-                           o.threshold = r.real();
-                           r.require(o.threshold >= 0, "must be >= 0");
-                           if (o.radius <= 1e-6) o.radius = 0.6;
-                       }),
-          line("-m  0\t\t\t\t# threshold filter limit\n"));
-    t.add(customOption("-b", [&o](OptionReader&) { o.radius = o.threshold = 0; }));
+    addLoose(customOption("-1", [&o](OptionReader&) { o.singlePass = true; }),
+             line("-2\t\t\t\t# two passes (-1: one, no automatic exposure)\n"));
+    addLoose(customOption("-2", [&o](OptionReader&) { o.singlePass = false; }));
+    addLoose(customOption("-n",
+                          [&o](OptionReader& r) {
+                              o.starPoints = static_cast<int>(r.integer(0, 1000000)) / 2;
+                          }),
+             line("-n  0\t\t\t\t# star points on hot pixels\n"));
+    addLoose(valueOption(
+                 "-s", o.spread, [](double v) { return v >= 0; }, "must be >= 0"),
+             line("-s  0.0001\t\t\t# star spread\n"));
+    addLoose(customOption("-a", [&o](OptionReader&) { o.averageHot = !o.averageHot; }),
+             line("-a  off\t\t\t\t# average hot pixels too\n"));
+    addLoose(valueOption("-h", o.hotLevel), line("-h  100\t\t\t\t# hot level\n"));
+    addLoose(valueOption(
+                 "-r", o.radius, [](double v) { return v >= 0; }, "must be >= 0"),
+             line("-r  0\t\t\t\t# Gaussian radius (0: box filter)\n"));
+    addLoose(customOption("-m",
+                          [&o](OptionReader& r) {
+                              o.threshold = r.real();
+                              r.require(o.threshold >= 0, "must be >= 0");
+                              if (o.radius <= 1e-6) o.radius = 0.6;
+                          }),
+             line("-m  0\t\t\t\t# threshold filter limit\n"));
+    addLoose(customOption("-b", [&o](OptionReader&) { o.radius = o.threshold = 0; }));
     return t;
 }
 

@@ -159,3 +159,21 @@ TEST(Pfilt, Errors) {
 
 }  // namespace
 }  // namespace rp
+
+namespace rp {
+namespace {
+
+// RADIANCE's pfilt knows an option by its second character: RADIANCE's own test Makefile
+// reduces pictures with "pfilt -1 -r 1 -x 128 -y 128 -pa 1".
+TEST(Pfilt, OptionsAreKnownByTheirSecondCharacter) {
+    const PfiltOptions o = parse({"-1", "-r", "1", "-x", "128", "-y", "128", "-pa", "1"});
+    EXPECT_EQ(o.pixelAspect, 1);
+    EXPECT_TRUE(o.singlePass);
+    EXPECT_EQ(o.radius, 1);
+    EXPECT_EQ(parse({"-rad", ".6", "-m", ".2"}).radius, .6);
+    EXPECT_EQ(parse({"-er", "2"}).exposure[0], 2);  // -e keeps its colour forms
+    EXPECT_THROW(parse({"-q"}), InputError);
+}
+
+}  // namespace
+}  // namespace rp

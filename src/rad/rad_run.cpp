@@ -642,4 +642,16 @@ void runRad(const RadCommand& cmd, std::ostream& out, const Shell& shell) {
     Executive(cmd, out, shell).run();
 }
 
+void putOwnFolderFirstOnPath() {
+    std::vector<char> buf(4096);
+    const ssize_t n = ::readlink("/proc/self/exe", buf.data(), buf.size() - 1);
+    if (n <= 0) return;
+    const std::string self(buf.data(), std::size_t(n));
+    const std::size_t slash = self.rfind('/');
+    if (slash == std::string::npos) return;
+    const char* path = std::getenv("PATH");
+    const std::string value = self.substr(0, slash) + (path ? ":" + std::string(path) : "");
+    ::setenv("PATH", value.c_str(), 1);
+}
+
 }  // namespace rp::rad

@@ -51,4 +51,8 @@ using Shell = std::function<int(const std::string& command)>;
 // InputError for bad RIF input (file and line), missing files, and a failed command.
 void runRad(const RadCommand& cmd, std::ostream& out, const Shell& shell);
 
+// The commands rad runs find radphoton's tools first: the folder of the running program
+// goes ahead of PATH (a RADIANCE installation later on PATH is not mixed in).
+void putOwnFolderFirstOnPath();
+
 }  // namespace rp::rad

@@ -183,6 +183,10 @@ std::vector<std::string> valueWords(const std::string& value) {
 void RifVars::load(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(SourceLoc{path, 0}, "cannot open rad input file");
+    load(in, path);
+}
+
+void RifVars::load(std::istream& in, const std::string& path) {
     std::string line;
     int lineNo = 1, newlines = 0;
     while (readLine(in, line, newlines)) {

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,8 @@ class RifVars {
 public:
     // Reads a RIF file; unknown variables are an InputError at their line.
     void load(const std::string& path);
+    // The same from a stream whose lines are named `path` in errors.
+    void load(std::istream& in, const std::string& path);
     // One assignment "NAME= value" (or "NAME value"), as from a RIF line or rad's command
     // line. Returns false for an unknown name; an empty name or value assigns nothing.
     bool assign(const std::string& text, const SourceLoc& loc);

@@ -412,6 +412,9 @@ void addRpictHeader(Picture& picture, const std::string& commandLine, std::time_
     };
     lines.push_back(stamp("CAPDATE=", local));
     lines.push_back(stamp("GMT=", gmt));
+    // RADIANCE 5.4a's rpict names its (standard) primaries; radcompare compares headers'
+    // settings, so a picture without the line differs from RADIANCE's.
+    lines.push_back("PRIMARIES= 0.6400 0.3300 0.2900 0.6000 0.1500 0.0600 0.3333 0.3333");
 }
 
 }  // namespace rp::render
