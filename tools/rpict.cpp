@@ -24,6 +24,7 @@
 #include "render/rpict_options.h"
 #include "render/rpict_run.h"
 #include "render/rpict_tracer.h"
+#include "render/source_draw.h"
 #include "scene/scene_load.h"
 #include "util/command_args.h"
 #include "util/error.h"
@@ -100,6 +101,8 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp:
     io.views = &std::cin;
     io.out = &std::cout;
     io.commandLine = commandLine;
+    // RADIANCE compat (rpict.c render, -dv): sources too small for the pixel rays.
+    io.finishRows = [&](const RpictOptions& frame) { return bittySourcePass(renderer, frame); };
     io.frameStarted = [&](int frame, const rp::View& view) {
         // RADIANCE compat (rpict.c): with -t, each frame is announced with its view.
         if (o.reportInterval > 0)

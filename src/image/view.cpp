@@ -394,6 +394,100 @@ std::optional<ViewRays::Ray> ViewRays::ray(double x, double y) const {
     return r;
 }
 
+bool ViewRays::locateFisheye(const Vec3& dir, Location& loc) const {
+    const View& v = view_;
+    loc.x = 0.5 - v.shift;
+    loc.y = 0.5 - v.lift;
+    const double d = dot(dir, dir_);
+    if (d >= 1 - kTiny) return true;  // straight ahead: the centre
+    if (v.type == ViewType::kAngular) {
+        if (d <= -(1 - kTiny)) {  // straight behind: the circle's edge
+            loc.x += 180 / v.horizontal;
+            return true;
+        }
+        // Image radius proportional to the angle off the view direction.
+        const double s = (180 / kPi) * std::acos(d) / std::sqrt(1 - d * d);
+        loc.x += dot(dir, hvec_) * s / v.horizontal;
+        loc.y += dot(dir, vvec_) * s / v.vertical;
+        return true;
+    }
+    if (d <= -(1 - kTiny)) return false;  // the planisphere's pole
+    loc.x += dot(dir, hvec_) / ((1 + d) * std::sqrt(hn2_));
+    loc.y += dot(dir, vvec_) / ((1 + d) * std::sqrt(vn2_));
+    return true;
+}
+
+std::optional<ViewRays::Location> ViewRays::locate(const Vec3& p) const {
+    const View& v = view_;
+    const bool aftClip = v.aft > kTiny;
+    Vec3 disp = p - v.point;
+    Location loc;
+    bool plane = true;  // x and y from the image-plane vectors (types v, l, h)
+    switch (v.type) {
+        case ViewType::kParallel:
+            loc.depth = dot(disp, dir_) - v.fore;
+            break;
+        case ViewType::kPerspective: {
+            double d = dot(disp, dir_);
+            loc.beyond = aftClip && d >= v.aft;
+            loc.depth = length(disp);
+            // RADIANCE compat (viewloc): a point behind the view is mirrored through it
+            // (the pyramid folded back) and flagged behind by a negative depth.
+            if (d < -kTiny) {
+                loc.depth = -loc.depth;
+                d = -d;
+            } else if (d <= kTiny) {
+                return std::nullopt;  // in the plane of the view point
+            }
+            disp *= 1 / d;  // onto the image plane one unit ahead
+            // ray() starts at the fore plane: the depth is what lies past it.
+            loc.depth *= 1 - v.fore / (loc.depth < 0 ? -d : d);
+            break;
+        }
+        case ViewType::kHemispherical: {
+            const double len = length(disp);
+            if (len == 0) return std::nullopt;
+            disp *= 1 / len;
+            loc.depth = (dot(disp, dir_) < 0 ? -len : len) - v.fore;
+            break;
+        }
+        case ViewType::kCylindrical: {
+            const double across = dot(disp, hvec_), ahead = dot(disp, dir_);
+            const double r2 = across * across + ahead * ahead;
+            if (r2 <= kTiny * kTiny) return std::nullopt;  // on the panorama's axis
+            loc.beyond = aftClip && r2 >= v.aft * v.aft;
+            const double inv = 1 / std::sqrt(r2);
+            loc.x = (180 / kPi) * std::atan2(across, ahead) / v.horizontal + 0.5 - v.shift;
+            loc.y = dot(disp, vvec_) * inv / vn2_ + 0.5 - v.lift;
+            loc.depth = length(disp) * (1 - v.fore * inv);
+            plane = false;
+            break;
+        }
+        case ViewType::kAngular:
+        case ViewType::kPlanisphere: {
+            const double len = length(disp);
+            if (len == 0) return std::nullopt;
+            loc.depth = len - v.fore;
+            if (!locateFisheye(disp * (1 / len), loc)) return std::nullopt;
+            plane = false;
+            break;
+        }
+        default:
+            return std::nullopt;
+    }
+    if (plane) {
+        loc.x = dot(disp, hvec_) / hn2_ + 0.5 - v.shift;
+        loc.y = dot(disp, vvec_) / vn2_ + 0.5 - v.lift;
+    }
+    if (loc.depth <= 0) {
+        loc.behind = true;
+    } else if (v.type != ViewType::kPerspective && v.type != ViewType::kCylindrical) {
+        loc.beyond = aftClip && loc.depth >= v.aft - v.fore;
+    }
+    loc.outside = !(loc.x > 0 && loc.x < 1 && loc.y > 0 && loc.y < 1);
+    return loc;
+}
+
 namespace {
 
 // Shirley & Chiu's concentric map ("A Low Distortion Map Between Disk and Square",

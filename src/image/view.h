@@ -115,12 +115,31 @@ public:
     // is degenerate. No change for diameter <= 1e-6.
     bool jitterAperture(Ray& ray, double diameter, double u1, double u2, double u3) const;
 
+    // Where world point `p` appears (RADIANCE's viewloc, the inverse of ray()): image
+    // coordinates as ray() takes them (-vs/-vl included) and the distance along its ray
+    // from the fore clipping plane (negative behind the view). nullopt where the point
+    // has no image: on the perspective view's plane, behind a planisphere, at the
+    // panorama's axis.
+    struct Location {
+        double x = 0, y = 0;
+        double depth = 0;
+        bool behind = false;   // depth <= 0
+        bool beyond = false;   // past the aft clipping plane
+        bool outside = false;  // not strictly inside the image square (0,1)^2
+        bool good() const { return !behind && !beyond && !outside; }
+    };
+    std::optional<Location> locate(const Vec3& p) const;
+
     const View& view() const { return view_; }
     const Vec3& horizontalVector() const { return hvec_; }
     const Vec3& verticalVector() const { return vvec_; }
     double focalDistance() const { return focalDistance_; }
 
 private:
+    // locate() for the angular and planispheric fisheyes: x and y of unit direction `dir`
+    // from the view point; false where it has no image.
+    bool locateFisheye(const Vec3& dir, Location& loc) const;
+
     View view_;
     Vec3 dir_;                  // unit view direction
     Vec3 hvec_;                 // right vector, scaled by the image-plane width except for a, s, c

@@ -238,5 +238,52 @@ TEST(ViewRays, CylindricalPanorama) {
     expectVec(dirAt(v, 0, 0), normalize({-1, 0, -1}), "lower left");
 }
 
+// locate() inverts ray(): points along the rays through a grid of image positions come
+// back to those positions, at the distance travelled from the ray's origin, for every view
+// type with shift, lift and clipping planes (1e-9: a few roundings of acos/atan2).
+TEST(ViewRays, LocateInvertsRay) {
+    const char* views[] = {
+        "-vtv -vp 1 2 3 -vd 0.3 1 0.2 -vh 70 -vv 50 -vs 0.1 -vl -0.2 -vo 0.5",
+        "-vtl -vp 1 2 3 -vd 1 0 0 -vh 4 -vv 2 -vs 0.2 -vo 1",
+        "-vth -vd 0 1 0.3 -vh 170 -vv 160 -vo 0.2",
+        "-vta -vd 1 1 0 -vh 200 -vv 180 -vs 0.05 -vo 0.3",
+        "-vts -vd 0 0 1 -vu 0 1 0 -vh 200 -vv 150",
+        "-vtc -vd 0 1 0 -vh 300 -vv 100 -vl 0.1 -vo 0.4",
+    };
+    for (const char* text : views) {
+        ViewRays rays(parse(text));
+        for (double x : {0.1, 0.37, 0.5, 0.83})
+            for (double y : {0.12, 0.5, 0.64, 0.9}) {
+                auto r = rays.ray(x, y);
+                if (!r) continue;  // outside a fisheye's circle
+                auto loc = rays.locate(r->origin + 3.5 * r->direction);
+                ASSERT_TRUE(loc) << text;
+                EXPECT_NEAR(loc->x, x, 1e-9) << text << " at " << x << "," << y;
+                EXPECT_NEAR(loc->y, y, 1e-9) << text << " at " << x << "," << y;
+                EXPECT_NEAR(loc->depth, 3.5, 1e-9) << text;
+                EXPECT_TRUE(loc->good()) << text;
+            }
+    }
+}
+
+TEST(ViewRays, LocateFlags) {
+    ViewRays rays(parse("-vp 0 0 0 -vd 0 1 0 -vh 90 -vv 90 -va 10"));
+    auto ahead = rays.locate({0.5, 4, -0.5});
+    ASSERT_TRUE(ahead);
+    EXPECT_NEAR(ahead->x, 0.5 + 0.5 / 4 / 2, 1e-12);  // half-width tan(45) = 1 at distance 1
+    EXPECT_NEAR(ahead->y, 0.5 - 0.5 / 4 / 2, 1e-12);
+    EXPECT_TRUE(ahead->good());
+    EXPECT_TRUE(rays.locate({0, -4, 0})->behind);
+    EXPECT_TRUE(rays.locate({0, 12, 0})->beyond);
+    EXPECT_TRUE(rays.locate({5, 4, 0})->outside);
+    EXPECT_FALSE(rays.locate({1, 0, 0}));  // in the view point's plane
+    ViewRays fish(parse("-vta -vd 0 1 0 -vh 180 -vv 180"));
+    auto back = fish.locate({0, -1, 0});  // straight behind: the edge of the circle
+    ASSERT_TRUE(back);
+    EXPECT_NEAR(back->x, 1.5, 1e-12);
+    EXPECT_TRUE(back->outside);
+    EXPECT_FALSE(ViewRays(parse("-vts -vd 0 1 0")).locate({0, -1, 0}));
+}
+
 }  // namespace
 }  // namespace rp

@@ -24,6 +24,9 @@ struct Candidate {
     Color estimate;          // coef * unoccluded radiance (relays included)
     double brt = 0;          // brightness of estimate (sort key)
     uint32_t crossings = 0;  // first index into the relay crossing points
+    // Aimed at the source as a whole, through no sample point (traceToward): the ray
+    // meets it wherever it does, as after a prism.
+    bool unaimed = false;
 };
 
 // Where a shadow path that reached its source ended, for contributions.
@@ -134,7 +137,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c, con
     // After a prism the ray goes where the prism's functions send it (m_direct.c), not
     // necessarily through the sample: it must meet the source itself (a distant one
     // within its disk, RADIANCE sourcehit), wherever that is.
-    bool redirected = false;
+    bool redirected = c.unaimed;
     material::Medium medium = at.medium ? *at.medium : material::Medium{};
     // Loss over `t` in the current medium (DirectPoint::scatterLoss).
     auto absorb = [&](double t) {
@@ -247,6 +250,24 @@ Color DirectLighting::sampleWhole(size_t source, const DirectPoint& at, ShadowOr
     c.toLight = c.sample.dir;
     toLight = c.toLight;
     return im.trace(at, c, nullptr, oracle) * c.sample.omega;
+}
+
+Color DirectLighting::traceToward(size_t source, const DirectPoint& at, const Vec3& dir,
+                                  ShadowOracle& oracle, double* distance) const {
+    const Impl& im = *impl_;
+    const DirectSource& src = im.list.sources[source];
+    if (src.isVirtual()) return {};  // its path through the relays needs a sample point
+    // RADIANCE compat (srcdraw.c, m_light spotout): no light outside a spotlight's cone.
+    const material::LightParams& lp = src.light.params;
+    if (lp.spotlight() && lp.spotSolidAngle < 2 * kPi * (1 + dot(lp.spotAim, dir))) return {};
+    Candidate c;
+    c.source = int32_t(source);
+    c.sample.dir = c.toLight = dir;
+    c.unaimed = true;
+    ShadowEnd end;
+    const Color value = im.trace(at, c, nullptr, oracle, &end);
+    if (distance) *distance = value.isBlack() ? HUGE_VAL : length(end.point - at.point);
+    return value;
 }
 
 Color DirectLighting::compute(const DirectPoint& at, const DirectCoefficient& coefficient,

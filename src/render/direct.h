@@ -156,6 +156,15 @@ public:
     Color sampleWhole(size_t source, const DirectPoint& at, ShadowOracle& oracle, Rng& rng,
                       Vec3& toLight) const;
 
+    // A shadow ray aimed at source `source` as a whole (RADIANCE: a SHADOW ray with rsrc
+    // set, as rpict's srcdraw.c traces from the view): the radiance reaching `at.point`
+    // along unit `dir`, through what passes light, from wherever the ray meets the source
+    // (a distant one within its disk); zero if it is blocked, misses the source, leaves a
+    // spotlight outside its cone, or the source is virtual. `distance` (may be null):
+    // how far away it met the source (HUGE_VAL for zero).
+    Color traceToward(size_t source, const DirectPoint& at, const Vec3& dir, ShadowOracle& oracle,
+                      double* distance = nullptr) const;
+
     // Whether `prim` is the surface of a (real) direct source: rays descended from
     // ambient or sampled specular rays must not count its emission again
     // (RADIANCE badcomponent). A local glow counts only within its radius of `from`.

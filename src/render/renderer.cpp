@@ -166,6 +166,22 @@ RayResult Renderer::trace(Context& ctx, const Vec3& origin, const Vec3& dir, uin
     return result;
 }
 
+Color Renderer::traceToSource(Context& ctx, size_t source, const Vec3& origin, const Vec3& dir,
+                              uint64_t rayIndex, double* distance) const {
+    ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);
+    impl_->rays.fetch_add(1, std::memory_order_relaxed);
+    RayState state;  // a primary ray's: no clipping, no ambient level
+    const std::optional<MediaState> media = ctx.mediaAt(origin);
+    DirectPoint at;
+    at.point = origin;
+    at.normal = at.geomNormal = dir;
+    at.medium = media ? &media->medium : &impl_->globalMedium;
+    at.shadow = ctx.shadowStart(state);
+    return impl_->direct.traceToward(source, at, dir, ctx, distance);
+}
+
+const SourceList& Renderer::directSources() const { return impl_->direct.sourceList(); }
+
 RayResult Renderer::irradiance(Context& ctx, const Vec3& point, const Vec3& normal,
                                uint64_t rayIndex, ContributionSink* contrib) const {
     ctx.rng = Rng(impl_->seed, RngDomain::Sampling, rayIndex);

@@ -53,6 +53,7 @@ struct TracedRay {
 };
 
 class DirectLighting;
+struct SourceList;
 class Ambient;
 class PhotonLighting;
 
@@ -126,6 +127,16 @@ public:
     static constexpr double kIrradianceOffset = 1e-4;
     RayResult irradiance(Context& ctx, const Vec3& point, const Vec3& normal, uint64_t rayIndex,
                          ContributionSink* contrib = nullptr) const;
+
+    // rpict's bitty sources (source_draw.h): the radiance reaching `origin` along unit
+    // `dir` from direct source `source` (index into directSources().sources), traced as
+    // a shadow ray aimed at it (DirectLighting::traceToward) in the medium around
+    // `origin`; zero if blocked or missed. `distance` receives how far away it met the
+    // source. `rayIndex` keys the random streams, as trace's.
+    Color traceToSource(Context& ctx, size_t source, const Vec3& origin, const Vec3& dir,
+                        uint64_t rayIndex, double* distance) const;
+    // The direct calculation's light sources (source_list.h).
+    const SourceList& directSources() const;
 
     const Scene& scene() const { return scene_; }
     const SceneGeometry& geometry() const { return geometry_; }

@@ -141,6 +141,9 @@ public:
     // entered outermost first; nullopt in a scene without mists or outside every mist.
     std::optional<MediaState> mediaAt(const Vec3& p);
 
+    // What each shadow ray from a point reached by a ray in `state` starts with.
+    ShadowPath shadowStart(const RayState& state) const;
+
     const Renderer& renderer;
     const Impl& impl;
     // Pattern chains and material functions, for every hit this thread shades, lights or
@@ -245,8 +248,6 @@ private:
     void prepareHit(int32_t material, const material::MaterialParams& params, const Hit& hit,
                     const Vec3& dir, material::SurfacePoint& sp,
                     std::optional<material::HitScratch>& scratch);
-    // What each shadow ray from a point reached by a ray in `state` starts with.
-    ShadowPath shadowStart(const RayState& state) const;
 };
 
 // m_direct.c: redirection `projection` of the prism1/prism2 material of the surface at

@@ -388,8 +388,13 @@ Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& fac
                 if (rows[k] >= firstRow) report.advance(1);
                 if (k >= b0) report.advance(bandRowsAfter(rows, k, firstRow));
             }
-        const int end = rows[k1 - 1] + 1;
-        if (rowsIn.done && end > handed) rowsIn.done(pic, z, handed, end);
+        // The last sampled row is the top of the next band: kept until that is filled.
+        const int end = k1 < rows.size() ? rows[k1 - 1] : size.yres;
+        if (end > handed) {
+            if (rowsIn.finish && (!spread || cluster->isRoot()))
+                rowsIn.finish(pic, depth ? &z : nullptr, handed, end);
+            if (rowsIn.done) rowsIn.done(pic, z, handed, end);
+        }
         handed = std::max(handed, end);
     }
     report.finish();

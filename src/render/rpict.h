@@ -74,6 +74,11 @@ bool bigDiff(const Pixel& a, const Pixel& b, double threshold);
 // The largest -ps RADIANCE allows (MAXDIV); larger values are reduced with a warning.
 constexpr int kMaxSampleSpacing = 16;
 
+// Work done on rows [begin, end) of the picture once their pixels are final and before
+// they are handed over: rpict's bitty sources (source_draw.h). `depth`: null without -z.
+using RowsPass =
+    std::function<void(Picture& picture, std::vector<float>* depth, int begin, int end)>;
+
 // Where renderPicture starts, what it hands over while it works, the previous view, and
 // the ranks that share the work.
 struct RenderRows {
@@ -85,6 +90,11 @@ struct RenderRows {
     // (pixels and depths), so that they can be written while the rest is rendered; every
     // row from firstRow on is passed exactly once.
     std::function<void(const Picture&, const std::vector<float>& depth, int begin, int end)> done;
+    // Called with each range of rows `done` gets, just before it (on the root only,
+    // under MPI), whether or not there is a `done`. A sampled scanline is handed over
+    // only when the band below it is filled, so that what `finish` changes never feeds
+    // the sampling of other rows.
+    RowsPass finish;
     // -pm: the previous frame's view; each pixel's ray is moved towards the one this
     // view would trace by a random part of -pm (RADIANCE's motion blur). Null: none.
     const View* previousView = nullptr;

@@ -347,6 +347,7 @@ int runRpict(const RpictOptions& options, const PixelTracerFactory& factory,
             }
             out->write(data);
         };
+        if (io.finishRows) rows.finish = io.finishRows(frame);
         std::vector<float> depth;
         renderPicture(frame, factory, progress, zout ? &depth : nullptr, rows);
         if (zout) zout->close();

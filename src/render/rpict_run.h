@@ -26,6 +26,9 @@ struct RpictIo {
     // The ranks of an MPI run (null: this process alone): one picture (no -S, no -r),
     // traced by all, written by the root.
     Cluster* cluster = nullptr;
+    // What each frame (its options, view and size as rendered) does to its finished rows
+    // before they are written (RenderRows::finish; rpict's bitty sources). Empty: nothing.
+    std::function<RowsPass(const RpictOptions& frame)> finishRows;
 };
 
 // Renders as RADIANCE's rpict does with these options:
