@@ -268,9 +268,13 @@ protected:
 };
 
 struct SurfacePoint {
-    Vec3 dir;                // direction the ray/photon travels (towards the surface)
-    Vec3 normal;             // shading normal (texture-perturbed), flipped to the incoming side
-    Vec3 geomNormal;         // unperturbed normal on the incoming side (penetration checks)
+    Vec3 dir;         // direction the ray/photon travels (towards the surface)
+    Vec3 normal;      // shading normal (texture-perturbed), flipped to the incoming side
+    Vec3 geomNormal;  // unperturbed normal on the incoming side (penetration checks)
+    // A texture's raw displacement of the normal, turned with it to the incoming side
+    // (RADIANCE r->pert after flipsurface; zero without one): glass bends its transmitted
+    // ray by it, where `normal` may have had its orientation fixed (perturbedNormal).
+    Vec3 perturbation;
     bool front = true;       // the ray hit the surface's front (RADIANCE: rod > 0)
     bool flat = false;       // planar surface (RADIANCE SP_FLAT: source size widens highlights)
     Color pattern{1, 1, 1};  // pattern colour modulation (r->pcol)
@@ -308,6 +312,15 @@ WgmdInputs wgmdInputs(const WgmdParams& m, const SurfacePoint& sp);
 // A SurfacePoint whose shading normal is the geometric one.
 SurfacePoint makeSurfacePoint(const Vec3& dir, const Vec3& normalFacingRay, bool front,
                               const Color& pattern = {1, 1, 1});
+// RADIANCE raynormal: the unit normal `normal` (as the surface has it) plus a texture's
+// `perturbation`, turned to the side the ray `dir` comes from when the hit is on the back
+// (`front` false). A perturbed normal that would face away from the ray is reflected
+// about the plane across the ray (RADIANCE's orientation fix, which bump textures meet at
+// grazing incidence); a perturbation that cancels the normal leaves it unperturbed.
+Vec3 perturbedNormal(const Vec3& normal, const Vec3& perturbation, bool front, const Vec3& dir);
+// sp.normal and sp.perturbation for a texture's `perturbation` of the surface's `normal`
+// (sp.dir and sp.front already set).
+void perturbSurface(SurfacePoint& sp, const Vec3& normal, const Vec3& perturbation);
 // The fields makeSurfacePoint sets from the hit, the others left as they are: the photon
 // tracer reuses one SurfacePoint per path (constructing the whole struct per hit was a
 // visible part of its loop).
@@ -315,6 +328,7 @@ inline void setSurfaceHit(SurfacePoint& sp, const Vec3& dir, const Vec3& normalF
                           bool front) {
     sp.dir = dir;
     sp.normal = sp.geomNormal = normalFacingRay;
+    sp.perturbation = Vec3{};
     sp.front = front;
 }
 

@@ -532,10 +532,8 @@ WgmdInputs wgmdHitInputs(const MaterialCalc& calc, MaterialCalcEvaluator& ev,
         if (r.count <= 0) continue;
         const ShadingLayer& l = r.layers[0];
         in.pattern[size_t(c)] = l.pattern;
-        if (lengthSquared(l.perturbation) > 0) {
-            const Vec3 n = normalize(at.normal + l.perturbation);
-            in.normal[size_t(c)] = at.rdot < 0 ? -n : n;
-        }
+        if (lengthSquared(l.perturbation) > 0)
+            in.normal[size_t(c)] = perturbedNormal(at.normal, l.perturbation, at.rdot >= 0, at.dir);
     }
     // Even all-constant expressions go through the evaluator: u needs the transform.
     ev.setHit(material, at, sp.normal, sp.pattern);

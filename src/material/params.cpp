@@ -292,4 +292,21 @@ SurfacePoint makeSurfacePoint(const Vec3& dir, const Vec3& normalFacingRay, bool
     return sp;
 }
 
+Vec3 perturbedNormal(const Vec3& normal, const Vec3& perturbation, bool front, const Vec3& dir) {
+    const Vec3 facing = front ? normal : -normal;
+    Vec3 n = normal + perturbation;
+    const double len = length(n);
+    if (!(len > 0)) return facing;  // RADIANCE: "illegal normal perturbation"
+    n = n / len;
+    if (!front) n = -n;
+    const double newdot = -dot(n, dir);
+    if (!(newdot > 0)) n = n + dir * (2 * newdot);
+    return n;
+}
+
+void perturbSurface(SurfacePoint& sp, const Vec3& normal, const Vec3& perturbation) {
+    sp.normal = perturbedNormal(normal, perturbation, sp.front, sp.dir);
+    sp.perturbation = sp.front ? perturbation : -perturbation;
+}
+
 }  // namespace rp::material

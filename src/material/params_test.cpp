@@ -191,3 +191,31 @@ TEST(MaterialParams, StoresPhotons) {
 
 }  // namespace
 }  // namespace rp::material
+
+namespace rp::material {
+namespace {
+
+// RADIANCE raytrace.c raynormal. A smoothed triangle of RADIANCE's porsche.octf met from
+// behind at grazing incidence: the texture's normal (0.6, 0, 0.8) faces away from the
+// ray, and RADIANCE reflects it about the plane across the ray; rtrace -on prints
+// (0.721340, 0.119369, -0.682216) for it.
+TEST(PerturbedNormal, TurnedToTheRayAndFixedWhenItFacesAway) {
+    const Vec3 n = normalize(Vec3{-5.281701e-03, 3.735920e-01, -9.275781e-01});
+    const Vec3 dir = normalize(Vec3{-0.99204, -0.08962, -0.08843});
+    const Vec3 wanted{0.6, 0, 0.8};
+    const Vec3 p = perturbedNormal(n, wanted - n, dot(dir, n) < 0, dir);
+    EXPECT_NEAR(p.x, 0.721340, 2e-5);
+    EXPECT_NEAR(p.y, 0.119369, 2e-5);
+    EXPECT_NEAR(p.z, -0.682216, 2e-5);
+    EXPECT_GT(-dot(p, dir), 0);  // faces the ray
+    // A perturbation on the ray's side is only normalised and turned.
+    const Vec3 up{0, 0, 1};
+    const Vec3 q = perturbedNormal(up, Vec3{0.1, 0, 0}, false, Vec3{0, 0, 1});
+    EXPECT_NEAR(q.x, -0.1 / std::sqrt(1.01), 1e-12);
+    EXPECT_NEAR(q.z, -1 / std::sqrt(1.01), 1e-12);
+    // One that cancels the normal leaves it as it was.
+    EXPECT_EQ(perturbedNormal(up, Vec3{0, 0, -1}, true, Vec3{0, 0, -1}), up);
+}
+
+}  // namespace
+}  // namespace rp::material

@@ -107,7 +107,7 @@ namespace {
 // glass.c: a texture bends the transmitted ray by 2 (1 - n) pert.
 Vec3 glassTransmitDir(const GlassParams& m, const SurfacePoint& sp) {
     if (!perturbed(sp)) return sp.dir;
-    Vec3 t = normalize(sp.dir + (sp.normal - sp.geomNormal) * (2 * (1 - m.index)));
+    Vec3 t = normalize(sp.dir + sp.perturbation * (2 * (1 - m.index)));
     return lengthSquared(t) > 0 ? t : sp.dir;
 }
 }  // namespace

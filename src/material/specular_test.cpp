@@ -85,6 +85,29 @@ TEST(Glass, BothDirections) {
     test::expectMeanNear(st, refl + trans, "glass R+T");
 }
 
+// glass.c: a texture bends the transmitted ray by 2 (1 - n) pert with the raw
+// perturbation, and reflects about the perturbed normal (raynormal), which may have had its
+// orientation fixed; the two differ once the fix applies.
+TEST(Glass, TextureBendsTransmissionByTheRawPerturbation) {
+    MaterialParams m = makeMaterial(prim(PrimType::Glass, {.9, .9, .9}));
+    const Vec3 d = test::incident(50);
+    SurfacePoint sp = makeSurfacePoint(d, kUp, true);
+    const Vec3 pert{0.1, 0.05, 0};
+    perturbSurface(sp, kUp, pert);
+    Rng rng(3, RngDomain::Test, 0);
+    BackwardResult r = shadeBackward(m, sp, {}, rng);
+    ASSERT_EQ(r.numRays, 2);
+    const Vec3 t = normalize(d + pert * (2 * (1 - 1.52)));
+    EXPECT_NEAR(r.rays[0].dir.x, t.x, 1e-12);
+    EXPECT_NEAR(r.rays[0].dir.y, t.y, 1e-12);
+    EXPECT_NEAR(r.rays[0].dir.z, t.z, 1e-12);
+    // From behind, the perturbation turns with the normal.
+    SurfacePoint back = makeSurfacePoint(-d, -kUp, false);
+    perturbSurface(back, kUp, pert);
+    EXPECT_NEAR(back.perturbation.x, -0.1, 1e-15);
+    EXPECT_LT(dot(back.normal, -d), 0);  // faces the ray, which travels up into the back
+}
+
 double fresnel(double n1, double n2, double ci) {
     double si = std::sqrt(1 - ci * ci), st = n1 / n2 * si;
     if (st >= 1) return 1;

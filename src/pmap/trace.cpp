@@ -453,10 +453,8 @@ bool PhotonTracer::scatterAt(PhotonPath& p, const Hit& hit, const ChainHit& at,
     material::setSurfaceHit(sp, p.ray.dir, facing, hit.front);
     sp.backVisible = settings_.backVisible;
     sp.pattern = at.pattern;
-    if (lengthSquared(at.perturbation) > 0) {  // RADIANCE raynormal, turned to the photon
-        Vec3 n = normalize(hit.normal + at.perturbation);
-        sp.normal = hit.front ? n : -n;
-    }
+    if (lengthSquared(at.perturbation) > 0)  // RADIANCE raynormal, turned to the photon
+        material::perturbSurface(sp, hit.normal, at.perturbation);
     const bool prepared = roles_[size_t(at.material)] & kPrepare;
     if (prepared)
         material::prepareHit(p.evals, at.material, *mi.params,

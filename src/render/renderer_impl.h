@@ -230,10 +230,8 @@ private:
                                      const material::ShadingLayer& layer) const {
         const Vec3 ng = hit.front ? hit.normal : -hit.normal;
         material::SurfacePoint sp = material::makeSurfacePoint(dir, ng, hit.front, layer.pattern);
-        if (lengthSquared(layer.perturbation) > 0) {
-            sp.normal = normalize(hit.normal + layer.perturbation);
-            if (!hit.front) sp.normal = -sp.normal;
-        }
+        if (lengthSquared(layer.perturbation) > 0)
+            material::perturbSurface(sp, hit.normal, layer.perturbation);
         sp.distance = hit.t;
         return sp;
     }
