@@ -8,7 +8,7 @@ DATA="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/tests/data/lam_rays_bbox"
 : "${RP_BIN:?RP_BIN not set}"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-. "$(dirname "$0")/lib/cases.sh"
+. "$RP_SOURCE_DIR/tests/golden/lib/cases.sh"
 cd "$DATA" || exit 1
 fail=0
 run_cases 50

@@ -9,7 +9,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 data=$RP_SOURCE_DIR/tests/data/pcond
 cd "$data"
 fail=0
-. "$(dirname "$0")/lib/cases.sh"
+. "$RP_SOURCE_DIR/tests/golden/lib/cases.sh"
 # Run as "pcond" (found on PATH), so the header's command line reads as RADIANCE's did.
 pcond() { PATH="$RP_BIN:$PATH" command pcond "$@"; }
 

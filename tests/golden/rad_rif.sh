@@ -10,7 +10,7 @@
 set -euo pipefail
 . "$(dirname "$0")/lib/shared.sh"
 require_shared radiance-tests
-. "$(dirname "$0")/lib/cases.sh"
+. "$RP_SOURCE_DIR/tests/golden/lib/cases.sh"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 data=$RP_SOURCE_DIR/tests/data/rad
 cp -r "$RP_SHARED_DIR/radiance-tests/renders" "$tmp/renders"
