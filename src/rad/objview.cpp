@@ -10,6 +10,7 @@
 #include <istream>
 
 #include "util/error.h"
+#include "util/options.h"
 
 namespace rp::rad {
 
@@ -58,41 +59,36 @@ std::string rifWord(const std::string& w) {
 
 ObjviewCommand parseObjviewArgs(const std::vector<std::string>& args) {
     ObjviewCommand c;
-    std::size_t i = 0;
-    auto value = [&](const std::string& opt) -> const std::string& {
-        if (i + 1 >= args.size()) throw InputError("missing value for option '" + opt + "'");
-        return args[++i];
-    };
-    for (; i < args.size() && args[i].size() > 1 && args[i][0] == '-'; ++i) {
-        const std::string& a = args[i];
-        if (a == "-u") {
-            c.up = value(a);
-        } else if (a == "-v") {
-            c.view = value(a);
-        } else if (a == "-o") {
-            c.device = value(a);
-        } else if (a == "-r") {
-            c.picture = value(a);
-        } else if (a == "-n" || a == "-N") {
+    OptionTable t;
+    t.defaultsStops = false;
+    t.messages.unknown = [](const std::string& a) { return "bad option: " + a; };
+    t.add(valueOption("-u", c.up));
+    t.add(valueOption("-v", c.view));
+    t.add(valueOption("-o", c.device));
+    t.add(valueOption("-r", c.picture));
+    for (const char* n : {"-n", "-N"})
+        t.add(customOption(n, [&c](OptionReader& r) {
             c.radOptions.push_back("-N");
-            c.radOptions.push_back(value(a));
-        } else if (a == "-s" || a == "-w" || a.rfind("-w", 0) == 0 || a == "-V" || a == "-e") {
-            c.radOptions.push_back(a);
-        } else if (a.rfind("-b", 0) == 0) {
-            c.renderOptions += " -bv";
-        } else if (a == "-ap") {
-            c.renderOptions += " -ap " + value(a);
-            if (i + 1 < args.size() &&
-                args[i + 1].find_first_not_of("0123456789") == std::string::npos)
-                c.renderOptions += " " + args[++i];
-        } else if (a == "-g" || a == "-S") {
-            throw InputError("glrad output (" + a +
+            c.radOptions.push_back(r.word());
+        }));
+    for (const char* f : {"-s", "-V", "-e"})
+        t.add(customOption(f, [&c](OptionReader& r) { c.radOptions.push_back(r.option()); }));
+    t.add(customOption(prefix("-w"), "-w",
+                       [&c](OptionReader& r) { c.radOptions.push_back(r.option()); }));
+    t.add(customOption("-ap", [&c](OptionReader& r) {
+        c.renderOptions += " -ap " + r.word();
+        if (r.hasNext() && r.args()[r.next()].find_first_not_of("0123456789") == std::string::npos)
+            c.renderOptions += " " + r.word();  // the bandwidth
+    }));
+    t.add(customOption(prefix("-b"), "-b", [&c](OptionReader&) { c.renderOptions += " -bv"; }));
+    for (const char* g : {"-g", "-S"})
+        t.add(customOption(g, [](OptionReader& r) {
+            throw InputError("glrad output (" + r.option() +
                              ") is not available: objview shows the scene in rvu");
-        } else {
-            throw InputError("bad option: " + a);
-        }
-    }
-    c.inputs.assign(args.begin() + long(i), args.end());
+        }));
+    std::vector<std::string> words = args;
+    const std::size_t first = t.parse(words, 0).next;
+    c.inputs.assign(words.begin() + long(first), words.end());
     return c;
 }
 
