@@ -224,14 +224,14 @@ void Executive::checkFiles() {
 void Executive::setDefaults() {
     if (!vars_.defined(Var::kZone)) {
         const double size = cubeSize();
-        vars_.setDefault(
-            Var::kZone, cformat("E %g %g %g %g %g %g", cubeOrg_[0], cubeOrg_[0] + size, cubeOrg_[1],
-                                cubeOrg_[1] + size, cubeOrg_[2], cubeOrg_[2] + size));
+        vars_.setDefault(Var::kZone, formatLine("E %g %g %g %g %g %g", cubeOrg_[0],
+                                                cubeOrg_[0] + size, cubeOrg_[1], cubeOrg_[1] + size,
+                                                cubeOrg_[2], cubeOrg_[2] + size));
     }
     if (!vars_.defined(Var::kEyeSep)) {
         const Zone z = zoneOf(vars_);
-        vars_.setDefault(Var::kEyeSep, cformat("%f", 0.01 * (z.max[0] - z.min[0] + z.max[1] -
-                                                             z.min[1] + z.max[2] - z.min[2])));
+        vars_.setDefault(Var::kEyeSep, formatLine("%f", 0.01 * (z.max[0] - z.min[0] + z.max[1] -
+                                                                z.min[1] + z.max[2] - z.min[2])));
     }
     vars_.setDefault(Var::kIndirect, "0");
     vars_.setDefault(Var::kQuality, "L");
@@ -360,8 +360,8 @@ std::string reportOptions(const RifVars& vars) {
     double minutes = 0;
     char errfile[4096];
     const int n = std::sscanf(vars.value(Var::kReport).c_str(), "%lf %4095s", &minutes, errfile);
-    if (n == 2) return cformat(" -t %d -e %s", int(minutes * 60), errfile);
-    if (n == 1) return cformat(" -t %d", int(minutes * 60));
+    if (n == 2) return formatLine(" -t %d -e %s", int(minutes * 60), errfile);
+    if (n == 1) return formatLine(" -t %d", int(minutes * 60));
     throw InputError(vars.where(Var::kReport), "bad value for variable 'REPORT'");
 }
 
@@ -444,7 +444,7 @@ void Executive::runRvu(const std::string& render, const std::string& picture) {
     if (!vw) return;
     if (cmd_.sayView) printView(*vw);
     std::string c = programs_.rvu + " " + *vw + render + picture + " -R " + cmd_.rifFile + " ";
-    if (nprocs_ > 1) c += cformat("-n %d ", nprocs_);
+    if (nprocs_ > 1) c += formatLine("-n %d ", nprocs_);
     c += "-o " + cmd_.device + " ";
     if (vars_.defined(Var::kExposure)) c += "-pe " + vars_.value(Var::kExposure) + " ";
     c += oct1Name_;
@@ -486,7 +486,7 @@ void Executive::renderView(const ViewJob& job, const std::string& vw, const std:
         return;
     }
     const std::string rpict =
-        programs_.rpict + (job.threads ? cformat(" -n %d", job.threads) : "") + job.report;
+        programs_.rpict + (job.threads ? formatLine(" -n %d", job.threads) : "") + job.report;
     std::string c;
     if (rfdt >= oct1Date_) {
         c = rpict + job.render + job.picture + zopt + " -ro " + rawfile + " " + oct1Name_;
@@ -499,7 +499,8 @@ void Executive::renderView(const ViewJob& job, const std::string& vw, const std:
     }
     if (!runCommand(c)) fail("error rendering view " + vs);
     if (!raw || vars_.value(Var::kRawFile) != pictureRoot) {
-        const std::string size = job.mult > 1 ? cformat(" -x /%d -y /%d", job.mult, job.mult) : "";
+        const std::string size =
+            job.mult > 1 ? formatLine(" -x /%d -y /%d", job.mult, job.mult) : "";
         if (!runCommand(programs_.pfilt + job.pfilt + size + " " + rawfile + " > " + picfile)) {
             std::remove(picfile.c_str());
             fail("error filtering view " + vs + " (" + picfile + " removed)");
@@ -558,9 +559,11 @@ void Executive::runRpict(const std::string& render, const std::string& picture) 
     const int n =
         std::sscanf(vars_.value(Var::kResolution).c_str(), "%d %d %lf", &xres, &yres, &aspect);
     if (n == 3)
-        job.resolution = cformat("-x %d -y %d -pa %.3f", job.mult * xres, job.mult * yres, aspect);
+        job.resolution =
+            formatLine("-x %d -y %d -pa %.3f", job.mult * xres, job.mult * yres, aspect);
     else if (n >= 1)
-        job.resolution = cformat("-x %d -y %d", job.mult * xres, job.mult * (n == 1 ? xres : yres));
+        job.resolution =
+            formatLine("-x %d -y %d", job.mult * xres, job.mult * (n == 1 ? xres : yres));
     else
         throw InputError(vars_.where(Var::kResolution), "bad value for variable 'RESOLUTION'");
     job.report = reportOptions(vars_);

@@ -4,9 +4,10 @@
 
 #include <cctype>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
+
+#include "util/options.h"
 
 namespace rp::rad {
 
@@ -121,18 +122,18 @@ void qualityOptions(const RifVars& vars, double cubeSize, std::string& op, std::
     const DetailRow& row = t.detail[levelIndex(vars.letter(Var::kDetail))];
     addArg(po, penumbras ? row.pixelSample : row.pixelSampleSharp);
     addArg(op, row.directPretest);
-    op += cformat(" -ar %d", int(row.ambientResolution * d));
-    if (row.maxSampleDivisor > 0) op += cformat(" -ms %.2g", zs.meanSize / row.maxSampleDivisor);
+    op += formatLine(" -ar %d", int(row.ambientResolution * d));
+    if (row.maxSampleDivisor > 0) op += formatLine(" -ms %.2g", zs.meanSize / row.maxSampleDivisor);
     addArg(po, t.pixelTolerance);
     addArg(op, penumbras ? t.directPenumbra : t.directSharp);
     addArg(op, t.directRest);
     overture = false;
     if (q == 'M' && (overture = std::atoi(vars.value(Var::kIndirect).c_str()) != 0))
-        op += cformat(" -ab %d", std::atoi(vars.value(Var::kIndirect).c_str()));
+        op += formatLine(" -ab %d", std::atoi(vars.value(Var::kIndirect).c_str()));
     if (q == 'H') {
         const int ab = std::atoi(vars.value(Var::kIndirect).c_str()) + 1;
         overture = ab != 0;
-        op += cformat(" -ab %d", ab);
+        op += formatLine(" -ab %d", ab);
     }
     if (vars.defined(Var::kAmbFile))
         op += " -af " + vars.value(Var::kAmbFile);
@@ -141,7 +142,7 @@ void qualityOptions(const RifVars& vars, double cubeSize, std::string& op, std::
     addArg(op, t.ambient[levelIndex(vars.letter(Var::kVariability))]);
     if (q == 'L') addArg(op, "-as 0");
     const double av = ambientValue(vars);
-    op += cformat(" -av %.2g %.2g %.2g", av, av, av);
+    op += formatLine(" -av %.2g %.2g %.2g", av, av, av);
     addArg(op, t.limits);
 }
 
@@ -154,17 +155,6 @@ std::string photonMapOption(const std::string& value) {
 }
 
 }  // namespace
-
-std::string cformat(const char* format, ...) {
-    char buf[512];
-    va_list ap;
-    va_start(ap, format);
-    const int n = std::vsnprintf(buf, sizeof buf, format, ap);
-    va_end(ap);
-    return std::string(buf, n < 0                         ? 0
-                            : std::size_t(n) < sizeof buf ? std::size_t(n)
-                                                          : sizeof buf - 1);
-}
 
 Zone zoneOf(const RifVars& vars) {
     Zone z;
@@ -187,7 +177,7 @@ std::string toolOptions(const RifVars& vars, Var var, std::string& program) {
 }
 
 std::string parallelToolOptions(const RifVars& vars, Var var, int nprocs, std::string& program) {
-    std::string s = nprocs > 1 ? cformat(" -n %d", nprocs) : "";
+    std::string s = nprocs > 1 ? formatLine(" -n %d", nprocs) : "";
     return s + toolOptions(vars, var, program);
 }
 
@@ -259,9 +249,9 @@ std::string standardView(const RifVars& vars, const int pos[3], char type, int u
     }
     const double mult = z.type == 'E' ? 2. : .45;
     std::string s = std::string("-vt") + type;
-    s += cformat(" -vp %.3g %.3g %.3g -vd %.3g %.3g %.3g", cent[0] + pos[0] * mult * dim[0],
-                 cent[1] + pos[1] * mult * dim[1], cent[2] + pos[2] * mult * dim[2],
-                 -pos[0] * dim[0], -pos[1] * dim[1], -pos[2] * dim[2]);
+    s += formatLine(" -vp %.3g %.3g %.3g -vd %.3g %.3g %.3g", cent[0] + pos[0] * mult * dim[0],
+                    cent[1] + pos[1] * mult * dim[1], cent[2] + pos[2] * mult * dim[2],
+                    -pos[0] * dim[0], -pos[1] * dim[1], -pos[2] * dim[2]);
     // An up axis along the view direction is replaced.
     if (upax == 3 || upax == -3 || upax == 0) {
         if (!(pos[0] | pos[1])) upax = 2;
@@ -275,7 +265,7 @@ std::string standardView(const RifVars& vars, const int pos[3], char type, int u
         addArg(s, "-vh 45 -vv 45");
     } else if (type == 'l') {
         const double d = std::sqrt(dim[0] * dim[0] + dim[1] * dim[1] + dim[2] * dim[2]);
-        s += cformat(" -vh %.3g -vv %.3g", d, d);
+        s += formatLine(" -vh %.3g -vv %.3g", d, d);
     } else if (type == 'a' || type == 'h' || type == 's') {
         addArg(s, "-vh 180 -vv 180");
     } else if (type == 'c') {

@@ -68,7 +68,4 @@ struct Zone {
 };
 Zone zoneOf(const RifVars& vars);
 
-// printf into a string (RADIANCE's numbers are printf's).
-std::string cformat(const char* format, ...) __attribute__((format(printf, 1, 2)));
-
 }  // namespace rp::rad
