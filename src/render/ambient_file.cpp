@@ -1,8 +1,8 @@
 // The -af ambient file (see ambient_file.h).
 #include "render/ambient_file.h"
 
-#include <fmt/format.h>
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <sys/file.h>
 #include <unistd.h>
 
