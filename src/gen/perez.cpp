@@ -5,14 +5,17 @@
 
 #include <cmath>
 
+#include "util/error.h"
+
 namespace rp::gen {
 
 namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-// Single precision as in gendaylit (so printed coefficients agree to the last digit).
-constexpr float kLuminanceCoeffs[8][5][4] = {
+// Kept as the paper prints them; gendaylit reads them rounded to single precision (so its
+// printed coefficients agree to the last digit), gendaymtx as they are.
+constexpr double kLuminanceCoeffs[8][5][4] = {
     {{1.3525, -0.2576, -0.2690, -1.4366},
      {-0.7670, 0.0007, 1.2734, -0.1233},
      {2.8000, 0.6004, 1.2375, 1.000},
@@ -150,20 +153,27 @@ double globalEfficacy(double epsilon, double delta, double z, double w) {
            kGlobal.d[i] * std::log(delta);
 }
 
+int clearnessCategory(double epsilon) { return efficacyBin(epsilon, 12.01); }
+
 std::array<double, 5> perezCoefficients(double Z, double epsilon, double delta) {
+    return perezCoefficients(Z, epsilon, delta, perezBin(epsilon), PerezPrecision::Single);
+}
+
+std::array<double, 5> perezCoefficients(double Z, double epsilon, double delta, int bin,
+                                        PerezPrecision precision) {
+    RP_CHECK(bin >= 0 && bin < 8);
     if (epsilon > 1.065 && epsilon < 2.8 && delta < 0.2) delta = 0.2;
-    int bin = perezBin(epsilon);
-    const auto& x = kLuminanceCoeffs[bin];
-    std::array<double, 5> c;
+    double x[5][4];
     for (int i = 0; i < 5; ++i)
-        c[i] =
-            double(x[i][0]) + double(x[i][1]) * Z + delta * (double(x[i][2]) + double(x[i][3]) * Z);
+        for (int j = 0; j < 4; ++j) {
+            double v = kLuminanceCoeffs[bin][i][j];
+            x[i][j] = precision == PerezPrecision::Single ? double(static_cast<float>(v)) : v;
+        }
+    std::array<double, 5> c;
+    for (int i = 0; i < 5; ++i) c[i] = x[i][0] + x[i][1] * Z + delta * (x[i][2] + x[i][3] * Z);
     if (bin == 0) {  // Perez 1993: c and d take exponential forms in the overcast bin
-        c[2] =
-            std::exp(std::pow(delta * (double(x[2][0]) + double(x[2][1]) * Z), double(x[2][2]))) -
-            double(x[2][3]);
-        c[3] = -std::exp(delta * (double(x[3][0]) + double(x[3][1]) * Z)) + double(x[3][2]) +
-               delta * double(x[3][3]);
+        c[2] = std::exp(std::pow(delta * (x[2][0] + x[2][1] * Z), x[2][2])) - x[2][3];
+        c[3] = -std::exp(delta * (x[3][0] + x[3][1] * Z)) + x[3][2] + delta * x[3][3];
     }
     return c;
 }

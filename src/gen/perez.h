@@ -35,10 +35,22 @@ double diffuseEfficacy(double epsilon, double delta, double sunZenithDeg, double
 double directEfficacy(double epsilon, double delta, double sunZenithDeg, double water);
 double globalEfficacy(double epsilon, double delta, double sunZenithDeg, double water);
 
+// The clearness category of the efficacy models and of gendaymtx: 0..7 for epsilon in
+// [1, 12.01), -1 outside (compared in double precision, unlike perezBin).
+int clearnessCategory(double epsilon);
+
+// How the coefficient table is read: gendaylit keeps it in single precision, gendaymtx
+// in double precision.
+enum class PerezPrecision { Single, Double };
+
 // Coefficients a..e for sun zenith Z (radians). RADIANCE compat: in bins 2..4 (1.065 <
-// epsilon < 2.8) Delta below 0.2 is raised to 0.2 ("correction du modele de Perez");
-// the table is kept in single precision as gendaylit keeps it.
+// epsilon < 2.8) Delta below 0.2 is raised to 0.2 ("correction du modele de Perez").
+// This form is gendaylit's: the bin from perezBin, the table in single precision.
 std::array<double, 5> perezCoefficients(double sunZenith, double epsilon, double delta);
+// The same with the bin (0..7) and the table's precision given (gendaymtx passes
+// clearnessCategory and Double).
+std::array<double, 5> perezCoefficients(double sunZenith, double epsilon, double delta, int bin,
+                                        PerezPrecision precision);
 
 // Relative luminance (1 + a exp(b / cos zeta)) (1 + c exp(d gamma) + e cos^2 gamma) for a
 // sky point at zenith angle zeta and angle gamma from the sun.
