@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "bsdf/colour.h"
+#include "bsdf/klems_basis.h"
 #include "bsdf/multi_sample.h"
 #include "bsdf/xml_detail.h"
 
@@ -20,60 +21,19 @@ namespace rp::bsdf::detail {
 
 namespace {
 
-struct Latitude {
-    double thetaMin = 0;  // degrees
-    int nphis = 0;        // 0 ends the list (its thetaMin is 90)
-};
+using Latitude = KlemsLatitude;
+using AngleBasis = KlemsBasis;
 
-struct AngleBasis {
-    std::string name;
-    int nangles = 0;
-    std::vector<Latitude> lat;  // with the closing {90, 0}
-};
-
-// The three standard bases (bsdf_m.c abase_list); a file may define others.
-std::vector<AngleBasis> standardBases() {
-    auto make = [](const char* name, std::vector<Latitude> lat) {
-        AngleBasis b{name, 0, std::move(lat)};
-        for (const Latitude& l : b.lat) b.nangles += l.nphis;
-        return b;
-    };
-    return {
-        make("LBNL/Klems Full", {{0, 1},
-                                 {5, 8},
-                                 {15, 16},
-                                 {25, 20},
-                                 {35, 24},
-                                 {45, 24},
-                                 {55, 24},
-                                 {65, 16},
-                                 {75, 12},
-                                 {90, 0}}),
-        make(
-            "LBNL/Klems Half",
-            {{0, 1}, {6.5, 8}, {19.5, 12}, {32.5, 16}, {46.5, 20}, {61.5, 12}, {76.5, 4}, {90, 0}}),
-        make("LBNL/Klems Quarter", {{0, 1}, {9, 8}, {27, 12}, {46, 12}, {66, 8}, {90, 0}}),
-    };
-}
+std::vector<AngleBasis> standardBases() { return standardKlemsBases(); }
 
 double sq(double x) { return x * x; }
 
 constexpr double kDeg = kPi / 180;
 
-// Patch `ndx` of the +Z hemisphere, at fractional position (rx, ry) inside it (bsdf_m.c
-// fo_getvec: cos^2 of the polar angle is uniform over the band, so positions are uniform
-// in projected solid angle).
 Vec3 patchVector(const AngleBasis& b, int ndx, double rx, double ry) {
-    std::size_t li = 0;
-    while (ndx >= b.lat[li].nphis) ndx -= b.lat[li++].nphis;
-    const double c2 = (1 - rx) * sq(std::cos(kDeg * b.lat[li].thetaMin)) +
-                      rx * sq(std::cos(kDeg * b.lat[li + 1].thetaMin));
-    const double cz = std::sqrt(c2), sz = std::sqrt(std::max(0.0, 1 - c2));
-    const double azi = 2 * kPi * (ndx + ry - .5) / b.lat[li].nphis;
-    return {std::cos(azi) * sz, std::sin(azi) * sz, cz};
+    return klemsPatchVector(b, ndx, rx, ry);
 }
 
-// The patch of a +Z-hemisphere direction, or -1 (bsdf_m.c fo_getndx).
 int patchIndex(const AngleBasis& b, const Vec3& v) {
     if (v.z < 0 || v.z > 1.00001) return -1;
     const double pol = std::acos(std::min(v.z, 1.0)) / kDeg;

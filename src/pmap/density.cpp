@@ -153,12 +153,20 @@ std::array<double, 3> PhotonLookup::biasCompensatedDensity(const Vec3& pos, cons
     return r.density;
 }
 
-std::array<double, 3> PhotonLookup::precompDensity(const Vec3& pos, const Vec3& normal) {
-    if (map_->empty()) return {0, 0, 0};
+const FoundPhoton* PhotonLookup::nearestPhoton(const Vec3& pos, const Vec3& normal,
+                                               std::optional<bool> caustic) {
+    if (map_->empty()) return nullptr;
     // RADIANCE compat: find1Photon searches within the squared radius CoGdist.
-    const PhotonQuery query{pos, &normal, false, map_->stats().cogDist2, 1};
-    if (map_->store().findNearest(*cursor_, query, hits_) == 0) return {0, 0, 0};
-    const auto f = hits_[0].fluxRgb();
+    PhotonQuery query{pos, &normal, caustic.value_or(false), map_->stats().cogDist2, 1};
+    query.causticExcluded = caustic.has_value() && !*caustic;
+    if (map_->store().findNearest(*cursor_, query, hits_) == 0) return nullptr;
+    return &hits_[0];
+}
+
+std::array<double, 3> PhotonLookup::precompDensity(const Vec3& pos, const Vec3& normal) {
+    const FoundPhoton* p = nearestPhoton(pos, normal);
+    if (!p) return {0, 0, 0};
+    const auto f = p->fluxRgb();
     return {f[0], f[1], f[2]};
 }
 

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -82,6 +83,11 @@ public:
     // normal within squared radius CoGdist (precomputed maps store irradiance / pi there);
     // 0 if none.
     std::array<double, 3> precompDensity(const Vec3& pos, const Vec3& normal);
+    // That photon (precomputed maps), or null; valid until the next call. `caustic`: of
+    // the photons with the caustic flag, or (false) of those without (precomputed
+    // contribution maps, whose flag marks caustic estimates); unset: any.
+    const FoundPhoton* nearestPhoton(const Vec3& pos, const Vec3& normal,
+                                     std::optional<bool> caustic = std::nullopt);
 
     // Bias-compensated surfaceDensity (-ap file bwMin bwMax): gathers up to bwMax+1 photons
     // (findPhotons' search and adaptive radius, with a queue of bwMax+1) and returns E/pi at

@@ -46,6 +46,7 @@ std::array<float, 3> defaultDumpColour(PhotonMapType type) {
         case PhotonMapType::Direct:
             return {1.0f, 0.1f, 1.0f};
         case PhotonMapType::Contrib:
+        case PhotonMapType::PreCompContrib:
             return {1.0f, 1.0f, 0.1f};
     }
     RP_CHECK(false);
@@ -66,6 +67,8 @@ const char* dumpObjectName(PhotonMapType type) {
             return "direct";
         case PhotonMapType::Contrib:
             return "contrib";
+        case PhotonMapType::PreCompContrib:
+            return "pcontrib";
     }
     RP_CHECK(false);
     return "";

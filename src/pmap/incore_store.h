@@ -50,7 +50,8 @@ public:
         bool contrib = false;  // FoundPhoton::flags and ::primary (contribution maps)
     };
     static Attributes attributesFor(PhotonMapType type) {
-        return {type == PhotonMapType::Volume, type == PhotonMapType::Contrib};
+        return {type == PhotonMapType::Volume,
+                type == PhotonMapType::Contrib || type == PhotonMapType::PreCompContrib};
     }
 
     // Builds the store from `photons` (any order), which it reorders in place (midpoint

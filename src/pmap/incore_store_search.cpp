@@ -52,7 +52,8 @@ struct InCoreStore::Search {
     // kGuessMargin x guessK photons, reported in `bound`.
     size_t guessK = 0;
     float bound = 0;
-    const uint8_t* causticFlags = nullptr;  // non-null: only photons with the caustic bit
+    const uint8_t* causticFlags = nullptr;        // non-null: only photons whose caustic bit is
+    uint8_t causticWanted = Photon::kCausticBit;  // this
 };
 
 namespace {
@@ -258,7 +259,8 @@ void InCoreStore::searchNode(uint32_t root, float rootOff[3], Search& s) const {
         if (s.causticFlags)
             for (uint64_t m = mask; m; m &= m - 1) {
                 const uint32_t i = static_cast<uint32_t>(__builtin_ctzll(m));
-                if (!(s.causticFlags[b + i] & Photon::kCausticBit)) mask &= ~(uint64_t{1} << i);
+                if ((s.causticFlags[b + i] & Photon::kCausticBit) != s.causticWanted)
+                    mask &= ~(uint64_t{1} << i);
             }
         if (mask) {
             // Density estimates read the flux of the photons found (flux_, by slot) right
@@ -396,6 +398,9 @@ size_t InCoreStore::findNearestSlots(const PhotonQuery& query,
     if (query.causticOnly) {
         if (flags_.empty()) return 0;  // flags are kept for contribution maps only
         s.causticFlags = flags_.data();
+    } else if (query.causticExcluded && !flags_.empty()) {
+        s.causticFlags = flags_.data();
+        s.causticWanted = 0;
     }
     float rootOff[3];
     for (int a = 0; a < 3; ++a) {

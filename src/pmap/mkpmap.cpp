@@ -2,6 +2,7 @@
 // savePmaps), see mkpmap.h.
 #include "pmap/mkpmap.h"
 
+#include <fmt/format.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
@@ -23,14 +24,17 @@
 #include "material/surface_chain.h"
 #include "material/type_traits.h"
 #include "pmap/contrib.h"
+#include "pmap/contrib_coeffs.h"
 #include "pmap/distribute.h"
 #include "pmap/map_output.h"
 #include "pmap/photon_map.h"
 #include "pmap/precomp.h"
+#include "pmap/precomp_contrib.h"
 #include "pmap/record_store.h"
 #include "pmap/trace.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
+#include "util/file_write.h"
 #include "util/paths.h"
 #include "util/temp_file.h"
 #include "util/warnings.h"
@@ -55,6 +59,13 @@ void checkRequest(const MkpmapOptions& o) {
         std::error_code ec;
         if (!o.overwrite && std::filesystem::exists(m->file, ec))
             throw InputError("photon map file " + m->file + " exists, not overwritten");
+    }
+    if (!o.precomputedContrib()) return;
+    const std::string& file = o.maps[size_t(PhotonMapType::Contrib)]->file;
+    for (const std::string& f : {coeffFolder(file), optionFile(file)}) {
+        std::error_code ec;
+        if (!o.overwrite && std::filesystem::exists(f, ec))
+            throw InputError("precomputed contributions " + f + " exist, not overwritten");
     }
 }
 
@@ -128,7 +139,9 @@ void saveMaps(const MkpmapOptions& o, std::array<MapPhotons, kNumPhotonMapTypes>
         out.file = o.maps[t]->file;
         out.commandLine = commandLine;
         out.overwrite = o.overwrite;
-        if (out.type == PhotonMapType::Contrib) {
+        if (out.type == PhotonMapType::Contrib && o.precomputedContrib()) {
+            out.type = PhotonMapType::PreCompContrib;
+        } else if (out.type == PhotonMapType::Contrib) {
             out.primaries = primaries;
             out.primaryRays = primaryRays;
         }
@@ -215,7 +228,8 @@ Distributed distributeContribution(const MkpmapOptions& o, EmittingScene& es, st
     cs.target = request.target;
     cs.pass = o.pass;
     cs.progress = &diag;
-    cs.primaryRays = request.primaryRays;
+    // Precomputation bins photons by where they came from, as rcontrib does with -apCPD.
+    cs.primaryRays = request.primaryRays || o.precomputedContrib();
     cs.cluster = cluster;
     ContribResult cr = distributeContrib(es.scene, es.geometry, *es.plan, es.emission, o.trace, cs,
                                          *es.chains, &*es.functions);
@@ -248,16 +262,64 @@ Distributed distributeMaps(const MkpmapOptions& o, EmittingScene& es, MemoryBudg
     return d;
 }
 
+// The development branch's precomputed contributions (precomp_contrib.h): coefficient
+// files and file.opt written, the precomputed photons returned for the map file.
+std::vector<Photon> precomputeContribution(const MkpmapOptions& o, const EmittingScene& es,
+                                           Distributed& d, const std::string& commandLine,
+                                           std::ostream& diag) {
+    const MapRequest& request = *o.maps[size_t(PhotonMapType::Contrib)];
+    std::vector<ContribSource> sources;
+    for (const light::LightSource& s : es.plan->sources()) {
+        const Color& r = s.params.radiance;
+        sources.push_back({es.scene.prims[size_t(s.material)].name, {r.r, r.g, r.b}, s.distant()});
+    }
+    const ContribBins bins(o.contribModifiers, o.contribDefinitions);
+    PrecompContribSettings ps;
+    ps.fraction = o.precompFraction;
+    ps.bandwidth = request.bandwidth;
+    ps.compression = request.compression;
+    ps.contributions = o.contributions;
+    ps.pass = o.pass;
+    ps.progress = &diag;
+    ps.mapFile = request.file;
+    ps.commandLine = commandLine;
+    ps.overwrite = o.overwrite;
+    // manual rev 1.51: fewer photons per estimate than bins leaves bins empty.
+    for (size_t m = 0; m < bins.modifiers().size(); ++m)
+        if (request.bandwidth < bins.bins(m))
+            warn("bandwidth " + std::to_string(request.bandwidth) + " below the " +
+                 std::to_string(bins.bins(m)) + " bins of modifier " + bins.modifiers()[m].name +
+                 ": some bins will be zero");
+    PrecompContribResult r = precomputeContrib(std::move(d.contribPhotons), d.primaries,
+                                               d.primaryRays, sources, bins, ps);
+    for (size_t m = 0; m < r.emptyBins.size(); ++m)
+        if (r.emptyBins[m] > 0.5)
+            warn(
+                fmt::format("{:.0f}% of the bins of modifier {} are empty: contributions may be "
+                            "biased (more photons or a larger bandwidth)",
+                            100 * r.emptyBins[m], bins.modifiers()[m].name));
+    bins.badBins().report();
+    // checkRequest refused an existing one without -fo.
+    writeFileAtomically(
+        optionFile(request.file),
+        rcontribOptionText(o.contribModifiers, o.contribDefinitions, o.contributions));
+    return std::move(r.photons);
+}
+
 // Each map's photons for its last step: the contribution photons, a spilled file, or
 // the photons in memory (precomputed for -app).
-std::array<MapPhotons, kNumPhotonMapTypes> collectPhotons(const MkpmapOptions& o, Distributed& d,
+std::array<MapPhotons, kNumPhotonMapTypes> collectPhotons(const MkpmapOptions& o,
+                                                          const EmittingScene& es, Distributed& d,
+                                                          const std::string& commandLine,
                                                           std::ostream& diag) {
     std::array<MapPhotons, kNumPhotonMapTypes> photons;
     for (size_t t = 0; t < o.maps.size(); ++t) {
         if (!o.maps[t]) continue;
         MapPhotons& m = photons[t];
         RecordStore<Photon>& store = d.dist.photons[t];
-        if (PhotonMapType(t) == PhotonMapType::Contrib) {
+        if (PhotonMapType(t) == PhotonMapType::Contrib && o.precomputedContrib()) {
+            m.inMemory = precomputeContribution(o, es, d, commandLine, diag);
+        } else if (PhotonMapType(t) == PhotonMapType::Contrib) {
             m.inMemory = std::move(d.contribPhotons);
         } else if (store.spilled() && PhotonMapType(t) != PhotonMapType::PreComp) {
             m.spilledCount = store.size();
@@ -291,8 +353,13 @@ void printSummary(const MkpmapOptions& o, const MkpmapReport& report, std::ostre
         char frac[48] = "";
         if (PhotonMapType(t) == PhotonMapType::PreComp)
             std::snprintf(frac, sizeof frac, " x -apP %g", o.precompFraction);
+        PhotonMapType saved = PhotonMapType(t);
+        if (saved == PhotonMapType::Contrib && o.precomputedContrib())
+            saved = PhotonMapType::PreCompContrib;
+        if (saved == PhotonMapType::PreCompContrib)
+            std::snprintf(frac, sizeof frac, " x -apP %g", o.precompFraction);
         std::snprintf(line, sizeof line, "%llu %s photons stored in %s (target %llu%s)\n",
-                      (unsigned long long)report.stored[t], photonMapTypeName(PhotonMapType(t)),
+                      (unsigned long long)report.stored[t], photonMapTypeName(saved),
                       o.maps[t]->file.c_str(), (unsigned long long)o.maps[t]->target, frac);
         diag << line;
     }
@@ -326,7 +393,8 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
     if (cluster && !cluster->isRoot()) return report;
     reportDistribution(o, d.dist, report);
 
-    std::array<MapPhotons, kNumPhotonMapTypes> photons = collectPhotons(o, d, diag);
+    std::array<MapPhotons, kNumPhotonMapTypes> photons =
+        collectPhotons(o, es, d, commandLine, diag);
     saveMaps(o, photons, commandLine, d.primaries, d.primaryRays, budget.limit() / sizeof(Photon),
              report);
     printSummary(o, report, diag);

@@ -9,6 +9,7 @@
 #include <iosfwd>
 #include <string>
 
+#include "pmap/contrib_bins.h"
 #include "pmap/mkpmap_options.h"
 #include "pmap/pass_settings.h"
 #include "pmap/photon.h"
@@ -27,6 +28,13 @@ struct MkpmapOptions {
     // photons, precomputation), handed to each as this one struct.
     PassSettings pass;
     double precompFraction = 0.25;  // -apP
+    // Precomputed contribution maps (-apC file n bwidth [comp] with -m/-M; the
+    // development branch's precomp_contrib.h): rcontrib's binning options -m -M -p -b -bn,
+    // -f, -e with an assignment (otherwise RADIANCE's diagnostics file), and -V.
+    std::vector<ContribModifier> contribModifiers;
+    std::vector<CalcDefinition> contribDefinitions;
+    bool contributions = false;
+    bool precomputedContrib() const { return !contribModifiers.empty(); }
     // What the tracer reads, parsed straight into its settings (trace.h): -bv (on, as
     // RADIANCE's backvis = 1), -lr/-apm, -ld, -api (cumulative), -aps/-apS, ambient
     // include (-ai/-aI/-al) or exclude (-ae/-aE), mutually exclusive, and the global

@@ -57,10 +57,18 @@ OptionSpec mapOption(const std::string& name, PhotonMapType type, MkpmapOptions&
         MapRequest m;
         m.file = r.word();
         m.target = r.count();
-        if (type == PhotonMapType::PreComp) {
+        if (type == PhotonMapType::PreComp ||
+            (type == PhotonMapType::Contrib && r.nextIsInteger())) {
             const long b = r.integer(LONG_MIN, LONG_MAX);
             r.require(b > 0, "bandwidth for option '" + name + "' must be > 0");
             m.bandwidth = int(b);
+        }
+        // The development branch's comp after a precomputed contribution map's bandwidth.
+        if (type == PhotonMapType::Contrib && m.bandwidth > 0 && r.hasNext() &&
+            parseReal(r.args()[r.next()])) {
+            m.compression = r.real();
+            r.require(m.compression >= 0 && m.compression <= 1,
+                      "compression for option '" + name + "' must be in [0, 1]");
         }
         m.primaryRays = name == "-apCPD";
         o.maps[size_t(type)] = m;
@@ -143,7 +151,16 @@ void addOtherOptions(OptionTable& t, MkpmapOptions& o) {
     t.add(flagOption("-fo", o.overwrite));
     t.add(valueOption("-dp", o.pdfSamples, positive, "PDF samples must be > 0"));
     t.add(valueOption("-ds", o.partitionSize, positive, "source partition size ratio must be > 0"));
-    t.add(valueOption("-e", o.diagnosticsFile));
+    // RADIANCE 5.4's -e names the diagnostics file; rcontrib's -e is a definition, which
+    // the binning of a precomputed contribution map needs (-e MF:1 -f reinhart.cal -bn
+    // Nrbins). A word with an assignment (':' or '=') is taken as the latter.
+    t.add(customOption("-e", [&o](OptionReader& r) {
+        const std::string& w = r.word();
+        if (w.find_first_of(":=") != std::string::npos)
+            o.contribDefinitions.push_back({false, w});
+        else
+            o.diagnosticsFile = w;
+    }));
     t.add(valueOption("-ma", o.trace.medium.albedo));
     t.add(valueOption("-me", o.trace.medium.extinction));
     t.add(valueOption("-mg", o.trace.medium.eccentricity));
@@ -283,11 +300,22 @@ void addDefaults(OptionTable& t, const MkpmapOptions& o) {
                         "-fo",  "-ld",  "-lr",  "-ma",  "-me",  "-mg",  "-n",   "-t"});
 }
 
-OptionTable mkpmapTable(MkpmapOptions& o) {
+// Precomputed contribution maps: rcontrib's binning options (contrib_bins.h), -f for its
+// .cal files and -V.
+void addBinningOptions(OptionTable& t, MkpmapOptions& o, ModifierOptions& mods) {
+    mods.addTo(t, false);
+    t.add(customOption("-f", [&o](OptionReader& r) {
+        o.contribDefinitions.push_back({true, r.word()});
+    }));
+    t.add(flagOption("-V", o.contributions, 3));
+}
+
+OptionTable mkpmapTable(MkpmapOptions& o, ModifierOptions& mods) {
     OptionTable t;
     t.messages = mkpmapMessages();
     t.helpIsDefaults = true;
     addMapOptions(t, o);
+    addBinningOptions(t, o, mods);
     addPortOptions(t, o);
     addModifierOptions(t, o);
     addOtherOptions(t, o);
@@ -297,10 +325,28 @@ OptionTable mkpmapTable(MkpmapOptions& o) {
 
 }  // namespace
 
+// The development branch's precomputed contribution map: -apC with a bandwidth and -m/-M
+// go together.
+static void checkPrecomputedContrib(const MkpmapOptions& o) {
+    const auto& c = o.maps[size_t(PhotonMapType::Contrib)];
+    if (o.precomputedContrib() && !c)
+        throw InputError("modifiers (-m/-M) need a precomputed contribution map (-apC)");
+    if (!c) return;
+    if (o.precomputedContrib() && c->bandwidth <= 0)
+        throw InputError("precomputed contribution map " + c->file +
+                         " needs a bandwidth (-apC file nphotons bwidth [comp])");
+    if (!o.precomputedContrib() && c->bandwidth > 0)
+        throw InputError("contribution map " + c->file +
+                         " with a bandwidth is precomputed: name its modifiers (-m/-M)");
+    if (c->primaryRays && o.precomputedContrib())
+        throw InputError("-apCPD keeps primary rays of contribution maps, not of precomputed ones");
+}
+
 MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
     MkpmapOptions o;
     std::vector<std::string> args = argVector(argc, argv);
-    const OptionParse p = mkpmapTable(o).parse(args, 1);
+    ModifierOptions mods(o.contribModifiers, o.contribDefinitions, &evalBinCount);
+    const OptionParse p = mkpmapTable(o, mods).parse(args, 1);
     o.printVersion = p.stop == OptionStop::kVersion;
     o.printDefaults = p.stop == OptionStop::kDefaults;
     if (p.stop != OptionStop::kEnd) return o;
@@ -311,12 +357,14 @@ MkpmapOptions parseMkpmapArgs(int argc, const char* const* argv) {
     for (const auto& m : o.maps) any = any || m.has_value();
     if (!any) throw InputError("no photon maps specified");
     if (o.sceneFiles.empty()) throw InputError("missing octree argument");
+    checkPrecomputedContrib(o);
     return o;
 }
 
 std::string formatMkpmapDefaults(const MkpmapOptions& o) {
     MkpmapOptions values = o;
-    return mkpmapTable(values).formatDefaults();
+    ModifierOptions mods(values.contribModifiers, values.contribDefinitions, nullptr);
+    return mkpmapTable(values, mods).formatDefaults();
 }
 
 }  // namespace rp::pmap

@@ -21,8 +21,9 @@ namespace rp::pmap {
 // One requested map: -apg/-apc/-apv/-apd/-app/-apC file nphotons [bwidth].
 struct MapRequest {
     std::string file;
-    uint64_t target = 0;  // nphotons
-    int bandwidth = 0;    // -app only
+    uint64_t target = 0;     // nphotons
+    int bandwidth = 0;       // -app; -apC's optional one (precomputed contributions)
+    double compression = 0;  // -apC's optional comp, in [0, 1]
     // -apCPD: a contribution map that keeps where each primary left its source
     // (RADIANCE's 3.1kPD variant), so that rcontrib can bin photons by direction.
     bool primaryRays = false;

@@ -87,14 +87,15 @@ struct OutOfCoreStore::Reader {
     static constexpr bool kCheckOrder = true;
     const OutOfCoreStore& store;
     PageCache& cache;
-    bool causticOnly;
+    bool causticOnly, causticExcluded;
     const Photon& at(size_t i) const {
         const uint64_t r = store.resident_.size();
         return i < r ? store.resident_[i] : cache.at(i - r);
     }
     void prefetch(size_t) const {}
     bool accepts(const Photon& p) const {
-        return (!causticOnly || p.caustic()) && (!store.options_.keep || store.options_.keep(p));
+        return (!causticOnly || p.caustic()) && (!causticExcluded || !p.caustic()) &&
+               (!store.options_.keep || store.options_.keep(p));
     }
     [[noreturn]] void misplaced(size_t i) const {
         throw InputError(SourceLoc{store.path_, 0}, treeProblem(misplacedPhoton(i)));
@@ -182,7 +183,7 @@ size_t OutOfCoreStore::findNearest(Cursor& cursor, const PhotonQuery& q,
                                    std::vector<FoundPhoton>& out) const {
     PageCache& cache = static_cast<PageCache&>(cursor);
     if (cache.heap.size() < q.k) cache.heap.resize(q.k);
-    const Reader reader{*this, cache, q.causticOnly};
+    const Reader reader{*this, cache, q.causticOnly, q.causticExcluded};
     const size_t n = findNearestInKdTree(reader, n_, q.pos, q.normal, q.maxDist2,
                                          std::span<PhotonHit>(cache.heap.data(), q.k));
     // The heap's first entry is the furthest, as the interface asks. A hit's page may

@@ -6,8 +6,8 @@
 namespace rp::pmap {
 
 namespace {
-constexpr const char* kTypeNames[kNumPhotonMapTypes] = {"Global", "PreComp", "Caustic",
-                                                        "Volume", "Direct",  "Contrib"};
+constexpr const char* kTypeNames[kNumPhotonMapTypes] = {
+    "Global", "PreComp", "Caustic", "Volume", "Direct", "Contrib", "PreCompContrib"};
 }  // namespace
 
 const char* photonMapTypeName(PhotonMapType type) { return kTypeNames[static_cast<int>(type)]; }
@@ -36,6 +36,12 @@ Photon makePhoton(const Vec3& p, const Vec3& n, const std::array<double, 3>& rgb
     ph.setCaustic(caustic);
     ph.primary = primary;
     return ph;
+}
+
+Vec3 Photon::normal() const {
+    Vec3 n{norm[0] / 127.0, norm[1] / 127.0, norm[2] / 127.0};
+    const double len = length(n);
+    return len > 0 ? n / len : n;
 }
 
 }  // namespace rp::pmap

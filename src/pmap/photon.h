@@ -15,9 +15,19 @@
 namespace rp::pmap {
 
 // RADIANCE's photon map types, in RADIANCE's order (pmaptype.h), which the option letters
-// -apg, -app, -apc, -apv, -apd, -apC of mkpmap select.
-enum class PhotonMapType : uint8_t { Global, PreComp, Caustic, Volume, Direct, Contrib };
-constexpr int kNumPhotonMapTypes = 6;
+// -apg, -app, -apc, -apv, -apd, -apC of mkpmap select; then the precomputed contribution
+// map of the photon-map development branch (mkpmap -apC with -m/-M; precomp_contrib.h),
+// whose photons' `primary` is the index of their coefficient records.
+enum class PhotonMapType : uint8_t {
+    Global,
+    PreComp,
+    Caustic,
+    Volume,
+    Direct,
+    Contrib,
+    PreCompContrib
+};
+constexpr int kNumPhotonMapTypes = 7;
 
 // "Global", "PreComp", "Caustic", "Volume", "Direct", "Contrib" (RADIANCE's pmapName).
 const char* photonMapTypeName(PhotonMapType type);
@@ -56,6 +66,8 @@ struct Photon {
     void setFlux(double r, double g, double b) { flux = toColr(r, g, b); }
     // RADIANCE compat: newPhoton() stores 127.0 * n[i] truncated toward zero.
     void setNormal(const Vec3& n);
+    // The stored normal, renormalised (zero stays zero).
+    Vec3 normal() const;
 
     bool operator==(const Photon& o) const = default;
 };

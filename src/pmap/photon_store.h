@@ -40,6 +40,9 @@ struct PhotonQuery {
     bool causticOnly = false;      // only photons with the caustic flag
     float maxDist2 = 0;            // photons at squared distance < maxDist2
     size_t k = 1;                  // at most this many
+    // Only photons without the caustic flag (a precomputed contribution map's gather
+    // lookups: its flagged photons hold caustic light alone).
+    bool causticExcluded = false;
 };
 
 class PhotonStore {

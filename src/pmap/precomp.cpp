@@ -34,6 +34,48 @@ std::vector<uint64_t> precompSelection(uint64_t n, double fraction, uint64_t see
     return idx;
 }
 
+void forEachPrecompChunk(uint64_t count, const PassSettings& pass, std::ostream* progress,
+                         const std::function<void(uint64_t, uint64_t)>& work) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    const bool reporting = pass.reportSeconds > 0 && progress;
+    std::atomic<uint64_t> done{0};
+    std::atomic<double> nextReport{double(pass.reportSeconds)};
+    std::mutex reportMutex;
+    auto line = [&](uint64_t d, double t) {
+        char text[128];
+        std::snprintf(text, sizeof text, "%llu precomputed, %.1f%% after %.3f hours\n",
+                      (unsigned long long)d, count ? 100.0 * double(d) / double(count) : 100.0,
+                      t / 3600);
+        *progress << text << std::flush;
+    };
+    auto report = [&] {
+        double t = std::chrono::duration<double>(Clock::now() - start).count();
+        if (t < nextReport.load(std::memory_order_relaxed)) return;
+        std::lock_guard<std::mutex> lock(reportMutex);
+        if (t < nextReport.load()) return;
+        nextReport.store(t + pass.reportSeconds);
+        line(done.load(), t);
+    };
+    const uint64_t chunks = (count + kPrecompChunk - 1) / kPrecompChunk;
+    tbb::task_arena arena(std::max(1, pass.threads));
+    arena.execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<uint64_t>(0, chunks, 1),
+            [&](const tbb::blocked_range<uint64_t>& r) {
+                for (uint64_t c = r.begin(); c != r.end(); ++c) {
+                    const uint64_t i0 = c * kPrecompChunk;
+                    const uint64_t i1 = std::min<uint64_t>(count, i0 + kPrecompChunk);
+                    work(i0, i1);
+                    done.fetch_add(i1 - i0, std::memory_order_relaxed);
+                    if (reporting) report();
+                }
+            },
+            tbb::simple_partitioner());
+    });
+    if (reporting) line(count, std::chrono::duration<double>(Clock::now() - start).count());
+}
+
 std::vector<Photon> precomputeGlobal(std::vector<Photon> global, const PrecompSettings& s) {
     const std::vector<uint64_t> sel = precompSelection(global.size(), s.fraction, s.pass.seed);
     std::vector<Photon> out(sel.size());
@@ -48,59 +90,18 @@ std::vector<Photon> precomputeGlobal(std::vector<Photon> global, const PrecompSe
     });
     LookupParams lp;
     lp.bandwidth = std::max(1, s.bandwidth);
-
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
-    std::atomic<uint64_t> done{0};
-    std::atomic<double> nextReport{double(s.pass.reportSeconds)};
-    std::mutex reportMutex;
-    auto report = [&] {
-        double t = std::chrono::duration<double>(Clock::now() - start).count();
-        if (t < nextReport.load(std::memory_order_relaxed)) return;
-        std::lock_guard<std::mutex> lock(reportMutex);
-        if (t < nextReport.load()) return;
-        nextReport.store(t + s.pass.reportSeconds);
-        uint64_t d = done.load();
-        char line[128];
-        std::snprintf(line, sizeof line, "%llu precomputed, %.1f%% after %.3f hours\n",
-                      (unsigned long long)d, 100.0 * double(d) / double(out.size()), t / 3600);
-        *s.progress << line << std::flush;
-    };
-
-    const uint64_t chunks = (out.size() + kPrecompChunk - 1) / kPrecompChunk;
-    arena.execute([&] {
-        tbb::parallel_for(
-            tbb::blocked_range<uint64_t>(0, chunks, 1),
-            [&](const tbb::blocked_range<uint64_t>& r) {
-                for (uint64_t c = r.begin(); c != r.end(); ++c) {
-                    // A fresh lookup per chunk: its adaptive radius depends on the chunk only.
-                    PhotonLookup lookup(map, lp);
-                    const uint64_t i0 = c * kPrecompChunk;
-                    const uint64_t i1 = std::min<uint64_t>(out.size(), i0 + kPrecompChunk);
-                    for (uint64_t i = i0; i < i1; ++i) {
-                        Photon& p = out[i];
-                        Vec3 n{p.norm[0] / 127.0, p.norm[1] / 127.0, p.norm[2] / 127.0};
-                        double len = length(n);
-                        if (len > 0) n = n / len;
-                        std::array<double, 3> e = lookup.surfaceDensity(p.position(), n);
-                        p.setFlux(e[0], e[1], e[2]);
-                        p.setCaustic(false);
-                        p.setDiscr(0);
-                        p.primary = 0;
-                    }
-                    done.fetch_add(i1 - i0, std::memory_order_relaxed);
-                    if (s.pass.reportSeconds > 0 && s.progress) report();
-                }
-            },
-            tbb::simple_partitioner());
+    forEachPrecompChunk(out.size(), s.pass, s.progress, [&](uint64_t i0, uint64_t i1) {
+        // A fresh lookup per chunk: its adaptive radius depends on the chunk only.
+        PhotonLookup lookup(map, lp);
+        for (uint64_t i = i0; i < i1; ++i) {
+            Photon& p = out[i];
+            std::array<double, 3> e = lookup.surfaceDensity(p.position(), p.normal());
+            p.setFlux(e[0], e[1], e[2]);
+            p.setCaustic(false);
+            p.setDiscr(0);
+            p.primary = 0;
+        }
     });
-    if (s.pass.reportSeconds > 0 && s.progress) {
-        char line[128];
-        std::snprintf(line, sizeof line, "%llu precomputed, 100.0%% after %.3f hours\n",
-                      (unsigned long long)out.size(),
-                      std::chrono::duration<double>(Clock::now() - start).count() / 3600);
-        *s.progress << line << std::flush;
-    }
     return out;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <vector>
 
@@ -40,5 +41,11 @@ std::vector<Photon> precomputeGlobal(std::vector<Photon> global, const PrecompSe
 
 // Photons per precomputation work item (fixed: deterministic adaptive search radius).
 constexpr uint64_t kPrecompChunk = 512;
+
+// Runs work(i0, i1) over [0, count) in chunks of kPrecompChunk on pass.threads threads,
+// each chunk once (any order), with -t progress lines "N precomputed, P% after T hours"
+// on `progress` and a closing 100% line.
+void forEachPrecompChunk(uint64_t count, const PassSettings& pass, std::ostream* progress,
+                         const std::function<void(uint64_t i0, uint64_t i1)>& work);
 
 }  // namespace rp::pmap

@@ -69,7 +69,8 @@ int64_t fileMtime(const std::string& path) {
 
 PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double maxSearchRadius,
                                const Scene& scene, const std::vector<bool>* trackedSources,
-                               const pmap::StoreOptions& store)
+                               const pmap::StoreOptions& store,
+                               const std::vector<std::string>& trackedModifiers)
     : maxSearchRadius_(maxSearchRadius) {
     const bool contributions = trackedSources != nullptr;
     int64_t newestInput = 0;
@@ -103,28 +104,31 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         m.file = use.file;
         T type = m.map.type();
         const char* name = pmap::photonMapTypeName(type);
-        if (type == T::Contrib && !contributions)
+        const bool contribType = type == T::Contrib || type == T::PreCompContrib;
+        if (contribType && !contributions)
             throw InputError(use.file +
                              ": contribution photon maps are used by rcontrib, "
                              "not by the renderer");
         // RADIANCE compat (pmcontrib2.c initPmapContrib).
-        if (type != T::Contrib && contributions)
+        if (!contribType && contributions)
             throw InputError(use.file + ": " + lowerCase(name) +
                              " photon map does not support contributions");
         if (type == T::Volume && use.bandwidth2 > 0)
             throw InputError(use.file +
                              ": bias compensation is not available with volume photon maps");
-        int* slot = type == T::Caustic   ? &caustic_
-                    : type == T::Direct  ? &direct_
-                    : type == T::Volume  ? &volume_
-                    : type == T::Contrib ? &contrib_
-                                         : &global_;
+        int* slot = type == T::Caustic  ? &caustic_
+                    : type == T::Direct ? &direct_
+                    : type == T::Volume ? &volume_
+                    : contribType       ? &contrib_
+                                        : &global_;
         if (*slot >= 0)
             throw InputError(use.file + ": more than one " + std::string(name) +
                              " photon map given with -ap");
+        // Precomputed maps are read at their single nearest photon.
+        const bool precomputed = type == T::PreComp || type == T::PreCompContrib;
         if (m.use.bandwidth <= 0) {
-            m.use.bandwidth = type == T::PreComp ? 1 : kDefaultBandwidth;
-            if (type != T::PreComp)
+            m.use.bandwidth = precomputed ? 1 : kDefaultBandwidth;
+            if (!precomputed)
                 warn("no bandwidth given for " + std::string(name) + " photon map " + use.file +
                      ", using " + std::to_string(kDefaultBandwidth));
         }
@@ -132,7 +136,7 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
             throw InputError(use.file + ": bias compensation needs bwidth2 > bwidth1 (" +
                              std::to_string(m.use.bandwidth) + " " +
                              std::to_string(m.use.bandwidth2) + ")");
-        if (type == T::PreComp) m.use.bandwidth2 = 0;  // RADIANCE: precomputed maps use 1
+        if (precomputed) m.use.bandwidth2 = 0;  // RADIANCE: precomputed maps use 1
         int64_t mt = fileMtime(use.file);
         if (mt > 0 && newestInput > mt)
             throw InputError(use.file + ": photon map is older than scene file " + newestName +
@@ -141,9 +145,37 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         maps_.push_back(std::move(m));
         // RADIANCE compat (pmapamb.c ambPmapCaustic, pmapmat.h srcRayInPmap): with a
         // contribution map its caustic photons stand for light through specular surfaces.
-        if (type == T::Contrib) contribCaustic_ = true;
+        if (contribType) contribCaustic_ = true;
     }
     biasStats_.resize(maps_.size());
+    if (contrib_ >= 0 && maps_[size_t(contrib_)].map.type() == T::PreCompContrib)
+        openCoefficients(scene, trackedModifiers);
+}
+
+// Each tracked modifier's coefficient file; its name resolved to a scene record once.
+void PhotonLighting::openCoefficients(const Scene& scene,
+                                      const std::vector<std::string>& modifiers) {
+    const std::string& file = maps_[size_t(contrib_)].file;
+    for (const std::string& name : modifiers) {
+        const std::string path = pmap::coeffFile(file, name);
+        std::error_code ec;
+        if (!std::filesystem::exists(path, ec))
+            throw InputError(file + ": modifier '" + name + "' was not precomputed (no " + path +
+                             "; see " + pmap::optionFile(file) + ")");
+        Coefficients c{pmap::CoeffFile(path), -1};
+        if (c.file.info().modifier != name)
+            throw InputError(path + ": holds modifier '" + c.file.info().modifier + "', not '" +
+                             name + "'");
+        for (size_t i = 0; i < scene.prims.size() && c.modifier < 0; ++i)
+            if (scene.prims[i].name == name) c.modifier = int32_t(i);
+        coefficients_.push_back(std::move(c));
+    }
+}
+
+std::vector<pmap::CoeffInfo> PhotonLighting::precomputedModifiers() const {
+    std::vector<pmap::CoeffInfo> out;
+    for (const Coefficients& c : coefficients_) out.push_back(c.file.info());
+    return out;
 }
 
 std::string PhotonLighting::biasReport() const {
@@ -195,6 +227,8 @@ Color PhotonLighting::contribDensity(Lookups& l, const Vec3& pos, const Vec3& no
                                      bool caustic) const {
     if (contrib_ < 0) return {};
     const pmap::PhotonMap& map = maps_[size_t(contrib_)].map;
+    if (map.type() == pmap::PhotonMapType::PreCompContrib)
+        return precomputedContrib(l, pos, normal, coef, sink, caustic);
     const auto& primaries = map.primaries();
     const auto& rays = map.primaryRays();
     auto share = [&](const pmap::FoundPhoton& p, const std::array<double, 3>& v) {
@@ -213,6 +247,30 @@ Color PhotonLighting::contribDensity(Lookups& l, const Vec3& pos, const Vec3& no
     pmap::PhotonLookup& lookup = caustic ? *l.contribCaustic : l.lookups[size_t(contrib_)];
     auto d = lookup.contribDensity(pos, normal, share);
     return Color{d[0], d[1], d[2]};
+}
+
+// The development branch's lookup: the bins of the single nearest precomputed photon.
+Color PhotonLighting::precomputedContrib(Lookups& l, const Vec3& pos, const Vec3& normal,
+                                         const Color& coef, ContributionSink* sink,
+                                         bool caustic) const {
+    // Its caustic-flagged photons hold estimates of caustic photons alone.
+    const pmap::FoundPhoton* p = l.lookups[size_t(contrib_)].nearestPhoton(pos, normal, caustic);
+    if (!p) return {};
+    Color total;
+    for (const Coefficients& c : coefficients_) {
+        const size_t n = size_t(c.file.info().bins);
+        l.bins.resize(n);
+        l.binValues.resize(n);
+        if (!c.file.decode(p->primary, l.bins, l.scratch))
+            throw InputError(c.file.path() + ": no record for precomputed photon " +
+                             std::to_string(p->primary) + " (files of different runs?)");
+        for (size_t b = 0; b < n; ++b) {
+            l.binValues[b] = coef * Color{l.bins[b][0], l.bins[b][1], l.bins[b][2]};
+            total += l.binValues[b];
+        }
+        if (sink) sink->addBins(c.modifier, l.binValues);
+    }
+    return total;
 }
 
 Color PhotonLighting::volumeDensity(Lookups& l, const Vec3& pos, const Vec3& out, double g) const {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "pmap/bias_comp.h"
+#include "pmap/contrib_coeffs.h"
 #include "pmap/density.h"
 #include "pmap/photon_map.h"
 #include "pmap/photon_store.h"
@@ -42,9 +43,12 @@ public:
     // (light::findLightSources order) are left out, as RADIANCE's lookups skip them. An
     // empty `uses` gives an inactive set. `store` sizes the maps' stores (-ac, -aC, -n;
     // its bandwidth is set per map).
+    // A precomputed contribution map (mkpmap -apC with -m) is rcontrib's too: each of
+    // `trackedModifiers` needs its coefficient file beside the map (pmap/contrib_coeffs.h).
     PhotonLighting(const std::vector<PhotonMapUse>& uses, double maxSearchRadius,
                    const Scene& scene, const std::vector<bool>* trackedSources = nullptr,
-                   const pmap::StoreOptions& store = {});
+                   const pmap::StoreOptions& store = {},
+                   const std::vector<std::string>& trackedModifiers = {});
     ~PhotonLighting();
 
     bool active() const { return !maps_.empty(); }
@@ -71,6 +75,10 @@ public:
         // The contribution map's caustic photons, with their own adaptive radius.
         std::optional<pmap::PhotonLookup> contribCaustic;
         std::vector<pmap::BiasCompStats> biasStats;  // one per map
+        // A precomputed contribution map's decoded bins.
+        std::vector<pmap::Rgb> bins;
+        std::vector<Color> binValues;
+        pmap::CoeffCodec::Scratch scratch;
         // Called at the start of every primary ray (PhotonLookup::restartAdaptiveRadius).
         void startRay() {
             for (pmap::PhotonLookup& l : lookups) l.restartAdaptiveRadius();
@@ -94,6 +102,9 @@ public:
     // the source that emitted it (RADIANCE photonContrib). Zero without a contribution map.
     Color contribDensity(Lookups& l, const Vec3& pos, const Vec3& normal, const Color& coef,
                          ContributionSink* sink, bool caustic = false) const;
+    // The coefficient files of a precomputed contribution map, one per tracked modifier
+    // (empty otherwise).
+    std::vector<pmap::CoeffInfo> precomputedModifiers() const;
     // The contribution map (for the source list its primaries index); null without one.
     const pmap::PhotonMap* contribMap() const {
         return contrib_ >= 0 ? &maps_[size_t(contrib_)].map : nullptr;
@@ -117,11 +128,19 @@ private:
         std::string file;
     };
     Color density(Lookups& l, int index, const Vec3& pos, const Vec3& normal) const;
+    Color precomputedContrib(Lookups& l, const Vec3& pos, const Vec3& normal, const Color& coef,
+                             ContributionSink* sink, bool caustic) const;
+    void openCoefficients(const Scene& scene, const std::vector<std::string>& modifiers);
     pmap::LookupParams lookupParams(const Map& m) const;
 
     std::vector<Map> maps_;
     double maxSearchRadius_ = 0;
     int global_ = -1, caustic_ = -1, direct_ = -1, volume_ = -1, contrib_ = -1;
+    struct Coefficients {
+        pmap::CoeffFile file;
+        int32_t modifier = -1;  // a scene record of the modifier's name
+    };
+    std::vector<Coefficients> coefficients_;  // a precomputed contribution map's
     // Whether the contribution map holds caustic photons (searched with the caustic
     // filter, as RADIANCE's ambPmapCaustic does).
     bool contribCaustic_ = false;

@@ -13,7 +13,7 @@ PhotonMode::AmbientReads PhotonMode::activeReads(const PathDepth& p) const {
     const bool gather = gatherHit(p);
     if (maps_.contrib) {
         r.contribGather = gather;
-        r.contribCaustic = !gather;
+        r.contribCaustic = !gather && maps_.contribCaustic;
         if (gather) return r;
     }
     if (maps_.global && gather) {

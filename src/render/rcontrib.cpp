@@ -1,62 +1,25 @@
 // rcontrib's tally (see rcontrib.h).
 #include "render/rcontrib.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <map>
 #include <unordered_map>
 
-#include "calc/search_path.h"
 #include "light/light_sources.h"
 #include "util/error.h"
-#include "util/paths.h"
 
 namespace rp::render {
 
 struct ContribTargets::Target {
+    size_t index = 0;  // into bins().modifiers()
     size_t offset = 0;
-    int bins = 1;
-    int program = -1;  // index into programs(); -1: constant bin 0
-    calc::Entry expr;
-    bool constant() const { return program < 0; }
+    bool constant = true;
 };
 
 namespace {
 
-// RADIANCE compat (rcmain.c): initfunc loads rayinit.cal before the user's definitions.
-calc::Builder definitionsBuilder(const std::vector<CalcDefinition>& defs) {
-    calc::Builder b(calc::defaultSearchPath(projectLibDir()));
-    b.loadFile("rayinit.cal");
-    for (const CalcDefinition& d : defs) {
-        if (d.file)
-            b.loadFile(d.text);
-        else
-            b.loadString(d.text);
-    }
-    return b;
-}
-
-// -p "a=1,b=2:c=3;d=4" as definitions (RADIANCE set_eparams: commas, colons or
-// semicolons separate the assignments).
-std::string paramDefinitions(const std::string& params) {
-    std::string s;
-    for (char c : params) s += (c == ',' || c == ':') ? ';' : c;
-    if (!s.empty() && s.back() != ';') s += ';';
-    return s;
-}
-
-// Evaluates `e` once on a ray at the origin looking up: a bin expression that cannot be
-// evaluated is reported before any ray is traced.
-double tryEval(const std::shared_ptr<const calc::Program>& prog, calc::Entry e) {
-    calc::Evaluator ev(prog);
-    calc::RayContext ray;
-    ev.setRay(ray);
-    return ev.eval(e);
-}
-
 std::atomic<bool> warnedPhotonBins{false};
-
-constexpr size_t kMaxValues = size_t(50) << 20;  // 1.2 GB of RGB doubles
 
 }  // namespace
 
@@ -67,53 +30,34 @@ std::vector<PhotonSource> contributionSources(const Scene& scene, const SceneGeo
     return out;
 }
 
-double evalBinCount(const std::vector<CalcDefinition>& defs, const std::string& expr) {
-    calc::Builder b = definitionsBuilder(defs);
-    int id = b.addExpression(expr, SourceLoc{"-bn", 0});
-    auto prog = b.build();
-    return tryEval(prog, prog->expression(id));
+void checkPrecomputedBins(const std::vector<ContribModifier>& modifiers, bool contributions,
+                          const std::vector<pmap::CoeffInfo>& precomputed) {
+    for (size_t i = 0; i < precomputed.size() && i < modifiers.size(); ++i) {
+        const pmap::CoeffInfo& c = precomputed[i];
+        const ContribModifier& m = modifiers[i];
+        if (c.bins != m.bins)
+            throw InputError("modifier '" + m.name + "' was precomputed in " +
+                             std::to_string(c.bins) + " bins, -bn gives " + std::to_string(m.bins) +
+                             " (use the map's .opt file)");
+        if (c.contributions != contributions)
+            throw InputError(std::string("modifier '") + m.name + "' was precomputed as " +
+                             (c.contributions ? "contributions (-V+)" : "coefficients (-V-)") +
+                             " (use the map's .opt file)");
+    }
 }
 
 ContribTargets::ContribTargets(const Scene& scene, const std::vector<ContribModifier>& modifiers,
                                const std::vector<CalcDefinition>& defs, bool contributions,
                                const std::vector<PhotonSource>& photonSources)
-    : modifiers_(modifiers), photonSources_(photonSources), contributions_(contributions) {
+    : bins_(modifiers, defs), photonSources_(photonSources), contributions_(contributions) {
     std::unordered_map<std::string, const Target*> byName;
-    // Modifiers that share parameters share one program (a -M list of hundreds of lamps
-    // with one -p and -b compiles once).
-    std::map<std::string, int> programOf;
-    std::vector<calc::Builder> builders;
-    std::vector<std::pair<int, int>> pending;  // (target, expression id)
-    for (const ContribModifier& m : modifiers_) {
+    for (size_t i = 0; i < modifiers.size(); ++i) {
         auto t = std::make_unique<Target>();
-        t->offset = size_;
-        t->bins = m.bins;
-        offsets_.push_back(size_);
-        size_ += size_t(m.bins);
-        // Each thread keeps every bin, and each ray of a batch too: beyond this a run
-        // would exhaust memory rather than compute.
-        if (size_ > kMaxValues)
-            throw InputError("too many bins: " + std::to_string(size_) +
-                             " over all modifiers (at most " + std::to_string(kMaxValues) + ")");
-        if (!isConstantBin(m.binExpr)) {
-            auto [it, fresh] = programOf.try_emplace(m.params, int(builders.size()));
-            if (fresh) {
-                builders.push_back(definitionsBuilder(defs));
-                if (!m.params.empty()) builders.back().loadString(paramDefinitions(m.params), "-p");
-            }
-            t->program = it->second;
-            pending.emplace_back(int(targets_.size()),
-                                 builders[size_t(t->program)].addExpression(
-                                     m.binExpr, SourceLoc{"-b " + m.binExpr, 0}));
-        }
-        byName[m.name] = t.get();
+        t->index = i;
+        t->offset = bins_.offset(i);
+        t->constant = isConstantBin(modifiers[i].binExpr);
+        byName[modifiers[i].name] = t.get();
         targets_.push_back(std::move(t));
-    }
-    for (const calc::Builder& b : builders) programs_.push_back(b.build());
-    for (auto [target, id] : pending) {
-        Target& t = *targets_[size_t(target)];
-        t.expr = programs_[size_t(t.program)]->expression(id);
-        tryEval(programs_[size_t(t.program)], t.expr);
     }
     // RADIANCE compat (rcontrib.c trace_contrib): a surface is tracked by the name of its
     // own modifier.
@@ -135,41 +79,26 @@ ContribTargets::ContribTargets(const Scene& scene, const std::vector<ContribModi
 ContribTargets::~ContribTargets() = default;
 
 ContribTally::ContribTally(const ContribTargets& targets)
-    : targets_(targets), values_(targets.size()) {
-    for (const auto& p : targets.programs()) evaluators_.emplace_back(p);
-}
+    : targets_(targets), binner_(targets.bins()), values_(targets.size()) {}
 
 ContribTally::~ContribTally() = default;
 
 void ContribTally::reset() { std::fill(values_.begin(), values_.end(), Color{}); }
 
-int ContribTally::bin(const ContribTargets::Target& t, const Vec3& point, const Vec3& dir) {
-    if (t.constant()) return 0;
-    // RADIANCE compat (rcontrib.c trace_contrib): world coordinates of the hit and the
-    // ray's direction; the value rounds to the nearest bin, negatives are dropped
-    // silently and bins past -bn with a warning.
-    calc::RayContext ray;
-    ray.P = point;
-    ray.D = dir;
-    calc::Evaluator& ev = evaluators_[size_t(t.program)];
-    ev.setRay(ray);
-    const double v = ev.eval(t.expr);
-    if (!(v > -0.5)) return -1;
-    const double b = std::floor(v + 0.5);
-    if (b >= t.bins) {
-        targets_.badBins().add();
-        return -1;
-    }
-    return int(b);
-}
-
 void ContribTally::add(int32_t modifier, const Vec3& point, const Vec3& dir, const Color& coef,
                        const Color& value) {
     const ContribTargets::Target* t = targets_.targetOfModifier(modifier);
     if (!t) return;
-    const int b = bin(*t, point, dir);
+    const int b = binner_.bin(t->index, point, dir);
     if (b < 0) return;
     values_[t->offset + size_t(b)] += targets_.contributions() ? coef * value : coef;
+}
+
+void ContribTally::addBins(int32_t modifier, std::span<const Color> values) {
+    const ContribTargets::Target* t = targets_.targetOfModifier(modifier);
+    if (!t) return;
+    const size_t n = std::min(values.size(), size_t(targets_.modifiers()[t->index].bins));
+    for (size_t b = 0; b < n; ++b) values_[t->offset + b] += values[b];
 }
 
 void ContribTally::addPhotons(int32_t source, const PhotonOrigin* origin, const Color& value) {
@@ -177,7 +106,7 @@ void ContribTally::addPhotons(int32_t source, const PhotonOrigin* origin, const 
     if (!t) return;
     const PhotonSource& src = targets_.photonSource(source);
     int b = 0;
-    if (!t->constant()) {
+    if (!t->constant) {
         if (!origin) {
             // RADIANCE compat (pmcontrib2.c, default build): a map without primary rays
             // cannot place a photon in a bin. RADIANCE warns (its advice is to rebuild
@@ -196,7 +125,7 @@ void ContribTally::addPhotons(int32_t source, const PhotonOrigin* origin, const 
         // where the photon left it (RADIANCE gives a distant source's P as 0, and a local
         // one's where its ray toward the source meets it, from the position of the photon
         // emitted before, a slip we do not copy).
-        b = bin(*t, src.distant ? Vec3{} : origin->point, origin->toSource);
+        b = binner_.bin(t->index, src.distant ? Vec3{} : origin->point, origin->toSource);
         if (b < 0) return;
     }
     Color v = value;

@@ -8,8 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "calc/program.h"
 #include "geometry/scene_geometry.h"
+#include "pmap/contrib_bins.h"
+#include "pmap/contrib_coeffs.h"
 #include "render/rcontrib_options.h"
 #include "render/renderer.h"
 #include "scene/primitive.h"
@@ -18,9 +19,7 @@
 
 namespace rp::render {
 
-// Evaluates a -bn value: the definitions so far, then `expr` (rcmain.c eval). Throws
-// InputError if it does not evaluate.
-double evalBinCount(const std::vector<CalcDefinition>& defs, const std::string& expr);
+using pmap::evalBinCount;
 
 // A source a contribution map's primaries name (light::findLightSources order).
 struct PhotonSource {
@@ -33,6 +32,12 @@ struct PhotonSource {
 // (light::findLightSources).
 std::vector<PhotonSource> contributionSources(const Scene& scene, const SceneGeometry& geometry);
 
+// A precomputed contribution map's coefficient files (one per modifier, in modifier
+// order) against rcontrib's -bn and -V: InputError where mkpmap binned otherwise (the map's
+// .opt file gives rcontrib mkpmap's options).
+void checkPrecomputedBins(const std::vector<ContribModifier>& modifiers, bool contributions,
+                          const std::vector<pmap::CoeffInfo>& precomputed);
+
 class ContribTargets {
 public:
     // `modifiers` as parsed; `defs` the -e/-f definitions (loaded after rayinit.cal, each
@@ -44,13 +49,14 @@ public:
                    const std::vector<PhotonSource>& photonSources = {});
     ~ContribTargets();
 
-    const std::vector<ContribModifier>& modifiers() const { return modifiers_; }
+    const std::vector<ContribModifier>& modifiers() const { return bins_.modifiers(); }
     // Values per input ray: every modifier's bins, in modifier order (offset(m) + bin).
-    size_t size() const { return size_; }
-    size_t offset(size_t m) const { return offsets_[m]; }
+    size_t size() const { return bins_.size(); }
+    size_t offset(size_t m) const { return bins_.offset(m); }
+    const pmap::ContribBins& bins() const { return bins_; }
 
     // Bin numbers of the input that were too large for -bn (reported at the end).
-    WarningCounter& badBins() const { return badBins_; }
+    WarningCounter& badBins() const { return bins_.badBins(); }
 
     struct Target;
     const Target* targetOfModifier(int32_t prim) const {
@@ -63,20 +69,15 @@ public:
     const PhotonSource& photonSource(int32_t source) const {
         return photonSources_[size_t(source)];
     }
-    const std::vector<std::shared_ptr<const calc::Program>>& programs() const { return programs_; }
     bool contributions() const { return contributions_; }
 
 private:
-    std::vector<ContribModifier> modifiers_;
-    std::vector<size_t> offsets_;
-    size_t size_ = 0;
+    pmap::ContribBins bins_;
     std::vector<std::unique_ptr<Target>> targets_;
     std::vector<const Target*> byModifier_;  // per scene record
     std::vector<const Target*> bySource_;    // per photon source
     std::vector<PhotonSource> photonSources_;
-    std::vector<std::shared_ptr<const calc::Program>> programs_;
     bool contributions_ = false;
-    mutable WarningCounter badBins_{"bad bin numbers (ignored)"};
 };
 
 // One thread's tally of one input ray's contributions (reset between rays).
@@ -94,13 +95,11 @@ public:
     void add(int32_t modifier, const Vec3& point, const Vec3& dir, const Color& coef,
              const Color& value) override;
     void addPhotons(int32_t source, const PhotonOrigin* origin, const Color& value) override;
+    void addBins(int32_t modifier, std::span<const Color> values) override;
 
 private:
-    // The bin of `t` for a ray at `point` travelling `dir`; -1 to drop it.
-    int bin(const ContribTargets::Target& t, const Vec3& point, const Vec3& dir);
-
     const ContribTargets& targets_;
-    std::vector<calc::Evaluator> evaluators_;  // one per program
+    pmap::ContribBins::Binner binner_;
     std::vector<Color> values_;
 };
 

@@ -4,15 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <unordered_set>
 
-#include "calc/search_path.h"
 #include "render/rtrace_options.h"
 #include "util/command_args.h"
 #include "util/error.h"
 #include "util/options.h"
-#include "util/paths.h"
 
 namespace rp::render {
 
@@ -28,63 +24,7 @@ void parseFormat(const std::string& opt, RcontribOptions& o) {
     o.outputFormat = opt.size() == 4 ? opt[3] : opt[2];
 }
 
-// A number, or (RADIANCE rcmain.c: eval) an expression of what -e/-f defined so far.
-int binCount(const std::string& text, const RcontribOptions& o, BinCountEval eval) {
-    const std::optional<double> number = parseReal(text);
-    double v = number ? *number : 0;
-    if (!number) {
-        if (!eval) throw InputError("bad bin count '" + text + "'");
-        v = eval(o.definitions, text);
-    }
-    if (!std::isfinite(v) || std::fabs(v) > 1e9) throw InputError("bad bin count '" + text + "'");
-    return int(v + 0.5);
-}
-
-void addModifier(RcontribOptions& o, std::unordered_set<std::string>& seen, const std::string& name,
-                 const std::string& out, const std::string& params, const std::string& binExpr,
-                 int bins) {
-    // RADIANCE compat (rcontrib.c addmodifier): messages and the constant-bin rule.
-    if (!seen.insert(name).second) throw InputError("duplicate modifier '" + name + "'");
-    if (name == "void") throw InputError("cannot track 'void' modifier");
-    ContribModifier m;
-    m.name = name;
-    m.outSpec = out;
-    m.params = params;
-    m.binExpr = binExpr.empty() ? "0" : binExpr;
-    if (isConstantBin(m.binExpr)) {
-        if (int(std::strtod(m.binExpr.c_str(), nullptr) + 1.5) != 1)
-            throw InputError("illegal non-zero constant for bin (" + m.binExpr + ")");
-        m.bins = 1;
-    } else if (bins <= 0) {
-        throw InputError("unspecified or illegal bin count for modifier '" + name + "'");
-    } else {
-        m.bins = bins;
-    }
-    o.modifiers.push_back(std::move(m));
-}
-
-void addModifierFile(RcontribOptions& o, std::unordered_set<std::string>& seen,
-                     const std::string& file, const std::string& out, const std::string& params,
-                     const std::string& binExpr, int bins) {
-    const auto dirs = calc::defaultSearchPath(projectLibDir());
-    auto path = calc::findFile(file, dirs);
-    if (!path) throw InputError("cannot find modifier file '" + file + "'");
-    std::ifstream in(*path);
-    if (!in) throw InputError("cannot load modifier file '" + *path + "'");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    // RADIANCE fgetword: white-space separated words, quotes allowed.
-    for (const std::string& w : splitWords(text))
-        addModifier(o, seen, w, out, params, binExpr, bins);
-}
-
 }  // namespace
-
-bool isConstantBin(const std::string& e) {
-    char* end = nullptr;
-    std::strtod(e.c_str(), &end);
-    while (*end == ' ' || *end == '\t') ++end;
-    return !e.empty() && *end == '\0';
-}
 
 RcontribOptions rcontribDefaults() {
     RcontribOptions o;
@@ -107,17 +47,10 @@ RcontribOptions rcontribDefaults() {
 
 namespace {
 
-// Where each -m/-M stands: the most recent -o, -p, -b and -bn to its left.
-struct ModifierContext {
-    std::unordered_set<std::string> seen;
-    std::string out, params, binExpr;
-    int bins = 0;
-};
-
 // rcontrib's own options, ahead of the shared ones: -e, -f, -o, -t, -x, -y mean other
 // things to rtrace. In the order of its -defaults lines (rcmain.c printdefaults) where
 // they have one.
-void addOwnOptions(OptionTable& t, RcontribOptions& o, ModifierContext& m, BinCountEval eval) {
+void addOwnOptions(OptionTable& t, RcontribOptions& o, pmap::ModifierOptions& m) {
     t.add(valueOption("-c", o.accumulate), [&o] {
         return formatLine("-c %-5d\t\t\t# accumulated rays per record\n", o.accumulate);
     });
@@ -138,29 +71,19 @@ void addOwnOptions(OptionTable& t, RcontribOptions& o, ModifierContext& m, BinCo
     t.add(flagOption("-fo", o.force));
     t.add(customOption(prefix("-f"), "-f[io]",
                        [&o](OptionReader& r) { parseFormat(r.option(), o); }));
-    t.add(valueOption("-o", m.out));
-    t.add(valueOption("-p", m.params));
-    t.add(valueOption("-b", m.binExpr));
-    t.add(customOption("-bn",
-                       [&o, &m, eval](OptionReader& r) { m.bins = binCount(r.word(), o, eval); }));
-    t.add(customOption("-m", [&o, &m](OptionReader& r) {
-        addModifier(o, m.seen, r.word(), m.out, m.params, m.binExpr, m.bins);
-    }));
-    t.add(customOption("-M", [&o, &m](OptionReader& r) {
-        addModifierFile(o, m.seen, r.word(), m.out, m.params, m.binExpr, m.bins);
-    }));
+    m.addTo(t, true);
     t.add(valueOption("-t", o.reportSeconds));
     t.add(flagOption("-r", o.recover, 3));
 }
 
-OptionTable rcontribTable(RcontribOptions& o, ModifierContext& m, BinCountEval eval) {
+OptionTable rcontribTable(RcontribOptions& o, pmap::ModifierOptions& m) {
     OptionTable t;
     t.expandArgs = true;
     t.helpIsDefaults = true;
     t.messages.unknown = [](const std::string& opt) {
         return "command line error at '" + opt + "'";
     };
-    addOwnOptions(t, o, m, eval);
+    addOwnOptions(t, o, m);
     addRenderOptions(t, o.render);
     return t;
 }
@@ -181,8 +104,8 @@ RcontribOptions parseRcontribArgs(std::vector<std::string> args, BinCountEval ev
     RcontribOptions o = rcontribDefaults();
     o.commandWords = args;
     if (!o.commandWords.empty()) o.commandWords.pop_back();
-    ModifierContext m;
-    const OptionParse p = rcontribTable(o, m, evalCount).parse(args, 1);
+    pmap::ModifierOptions m(o.modifiers, o.definitions, evalCount);
+    const OptionParse p = rcontribTable(o, m).parse(args, 1);
     o.optionCount = p.next;
     o.printVersion = p.stop == OptionStop::kVersion;
     o.printDefaults = p.stop == OptionStop::kDefaults;
@@ -199,8 +122,8 @@ RcontribOptions parseRcontribArgs(std::vector<std::string> args, BinCountEval ev
 
 std::string formatRcontribDefaults(const RcontribOptions& opt) {
     RcontribOptions copy = opt;
-    ModifierContext m;
-    return rcontribTable(copy, m, nullptr).formatDefaults();
+    pmap::ModifierOptions m(copy.modifiers, copy.definitions, nullptr);
+    return rcontribTable(copy, m).formatDefaults();
 }
 
 }  // namespace rp::render

@@ -7,25 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "pmap/contrib_bins.h"
 #include "render/render_options.h"
 
 namespace rp::render {
 
-// One modifier to track (-m name, or a word of a -M file), with the most recent -o, -p,
-// -b and -bn to its left.
-struct ContribModifier {
-    std::string name;
-    std::string outSpec;        // -o: "" = standard output
-    std::string params;         // -p "a=1,b=2" ("" = none)
-    std::string binExpr = "0";  // -b (RADIANCE: "0", a single bin, unless given)
-    int bins = 1;               // -bn, or 1 for a constant bin expression
-};
-
-// A -e expression or -f file, in command-line order.
-struct CalcDefinition {
-    bool file = false;  // true: `text` names a .cal file
-    std::string text;
-};
+using pmap::CalcDefinition;
+using pmap::ContribModifier;
+using pmap::isConstantBin;
 
 struct RcontribOptions {
     RenderOptions render;  // rcontrib's defaults; see rcontribDefaults()
@@ -64,11 +53,8 @@ RcontribOptions rcontribDefaults();
 // track 'void' modifier", "unspecified or illegal bin count for modifier 'x'", "illegal
 // non-zero constant for bin (e)", "cannot find modifier file 'f'", unknown options,
 // "missing octree argument". -aa, -as and -dt are overridden after parsing, as RADIANCE's.
-using BinCountEval = double (*)(const std::vector<CalcDefinition>& defs, const std::string& expr);
+using pmap::BinCountEval;
 RcontribOptions parseRcontribArgs(std::vector<std::string> args, BinCountEval evalCount = nullptr);
-
-// Whether a -b expression is a plain number (one bin, no evaluation per ray).
-bool isConstantBin(const std::string& expr);
 
 // What `rcontrib -defaults` prints (rcmain.c printdefaults, then the common options).
 std::string formatRcontribDefaults(const RcontribOptions& opt);

@@ -95,7 +95,7 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
       materialCalc(s, std::move(searchPath)),
       trackedSources(trackedLightSources(s, g, o)),
       photons(o.photonMaps, o.photonMaxRadius, s, o.contributions ? &trackedSources : nullptr,
-              photonStoreOptions(o)),
+              photonStoreOptions(o), o.contribModifiers),
       photonMode(photons.kinds(), o.ambient.bounces),
       ambientOptions(ambientOptionsIn(o, photonMode)),
       direct(

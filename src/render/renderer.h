@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -86,6 +87,10 @@ public:
     // the map's source list, light::findLightSources order); `origin` null when the map
     // does not keep primary rays.
     virtual void addPhotons(int32_t source, const PhotonOrigin* origin, const Color& value) = 0;
+    // Binned contributions of a precomputed contribution map (already times the path
+    // coefficient, as irradiance / pi): values[b] for bin b of the tracked modifier
+    // `modifier` (a scene record of that name).
+    virtual void addBins(int32_t modifier, std::span<const Color> values) = 0;
 };
 
 class Renderer {
