@@ -25,27 +25,22 @@ int paddedLength(int bins) { return std::max(8, (bins + 7) / 8 * 8); }
 // The lengths the transform levels work on: halving while even and at least 4.
 bool nextLevel(size_t n) { return n >= 4 && n % 2 == 0; }
 
-// A coefficient triple with a shared exponent: mantissas in [-32767, 32767].
+// A coefficient triple in 4 bytes: a shared exponent and three signed 8-bit mantissas
+// (RADIANCE's RGBE with a sign), 1/127 of the largest component at worst, well below
+// the photon noise of a bin.
 void packTriple(const double v[3], uint8_t* out) {
     const double m = std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])});
     int e = 0;
     if (m > 0) std::frexp(m, &e);
     e = std::clamp(e, -127, 127);
     out[0] = uint8_t(int8_t(e));
-    for (int c = 0; c < 3; ++c) {
-        const long q = std::lround(std::ldexp(v[c], 15 - e));
-        const int16_t s = int16_t(std::clamp(q, -32767L, 32767L));
-        std::memcpy(out + 1 + 2 * c, &s, 2);
-    }
+    for (int c = 0; c < 3; ++c)
+        out[1 + c] = uint8_t(int8_t(std::clamp(std::lround(std::ldexp(v[c], 7 - e)), -127L, 127L)));
 }
 
 void unpackTriple(const uint8_t* in, double v[3]) {
     const int e = int8_t(in[0]);
-    for (int c = 0; c < 3; ++c) {
-        int16_t s;
-        std::memcpy(&s, in + 1 + 2 * c, 2);
-        v[c] = std::ldexp(double(s), e - 15);
-    }
+    for (int c = 0; c < 3; ++c) v[c] = std::ldexp(double(int8_t(in[1 + c])), e - 7);
 }
 
 }  // namespace
@@ -88,6 +83,15 @@ CoeffCodec::CoeffCodec(int bins, double comp) : bins_(bins), length_(paddedLengt
     if (comp > 0) kept_ = approx_ + int(std::lround((1 - comp) * (length_ - approx_)));
 }
 
+void CoeffCodec::putIndex(uint8_t* at, uint32_t i) const {
+    at[0] = uint8_t(i);
+    if (indexBytes() == 2) at[1] = uint8_t(i >> 8);
+}
+
+uint32_t CoeffCodec::getIndex(const uint8_t* at) const {
+    return indexBytes() == 2 ? uint32_t(at[0]) | uint32_t(at[1]) << 8 : at[0];
+}
+
 void CoeffCodec::encode(std::span<const Rgb> values, uint8_t* out, Scratch& s) const {
     if (raw()) {
         for (int b = 0; b < bins_; ++b)
@@ -127,10 +131,10 @@ void CoeffCodec::encode(std::span<const Rgb> values, uint8_t* out, Scratch& s) c
                       });
     for (int k = 0; k < kept_; ++k) {
         const uint32_t i = s.order[size_t(k)];
-        const uint16_t idx = uint16_t(i);
-        std::memcpy(out + size_t(k) * 9, &idx, 2);
+        uint8_t* at = out + size_t(k) * coefficientBytes();
+        putIndex(at, i);
         const double v[3] = {s.channels[0][i], s.channels[1][i], s.channels[2][i]};
-        packTriple(v, out + size_t(k) * 9 + 2);
+        packTriple(v, at + indexBytes());
     }
 }
 
@@ -147,11 +151,11 @@ void CoeffCodec::decode(const uint8_t* in, std::span<Rgb> values, Scratch& s) co
     const size_t n = size_t(length_);
     for (auto& x : s.channels) x.assign(n, 0.0);
     for (int k = 0; k < kept_; ++k) {
-        uint16_t idx;
-        std::memcpy(&idx, in + size_t(k) * 9, 2);
+        const uint8_t* at = in + size_t(k) * coefficientBytes();
+        const uint32_t idx = getIndex(at);
         if (idx >= n) continue;  // a damaged record reads as zero there
         double v[3];
-        unpackTriple(in + size_t(k) * 9 + 2, v);
+        unpackTriple(at + indexBytes(), v);
         for (int c = 0; c < 3; ++c) s.channels[size_t(c)][idx] = v[c];
     }
     for (int c = 0; c < 3; ++c) {

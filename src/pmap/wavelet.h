@@ -7,8 +7,9 @@
 // them is addressed by photon index alone (and read out of core through the page cache).
 // Our choices where the branch is silent: 1-D over the bins in their own order (a
 // Reinhart or Klems numbering runs along rows of neighbouring patches; the branch's
-// Shirley-Chiu square is 2-D), a coefficient as a 16-bit index and three 16-bit mantissas
-// with a shared exponent (9 bytes), the coarsest approximation always kept (the totals
+// Shirley-Chiu square is 2-D), a coefficient as its index (1 byte up to 256 coefficients)
+// and three signed 8-bit mantissas with a shared exponent (5 bytes), the coarsest
+// approximation always kept (the totals
 // stay unbiased), and the reconstruction not clamped at zero (clamping the ringing around
 // a sun bin biased totals by +13 % at comp 0.9). With comp 0 the bins are stored as
 // floats, untransformed.
@@ -41,7 +42,9 @@ public:
     int kept() const { return kept_; }      // coefficients per record; 0 when raw
     bool raw() const { return kept_ == 0; }
     int approximation() const { return approx_; }  // always among the kept
-    size_t recordBytes() const { return raw() ? size_t(bins_) * 12 : size_t(kept_) * 9; }
+    size_t recordBytes() const {
+        return raw() ? size_t(bins_) * 12 : size_t(kept_) * coefficientBytes();
+    }
 
     // Per-thread buffers.
     struct Scratch {
@@ -55,6 +58,13 @@ public:
     void decode(const uint8_t* in, std::span<Rgb> values, Scratch& s) const;
 
 private:
+    // A kept coefficient: its index (one byte up to 256 coefficients, else two), then
+    // its RGB values in 4 bytes.
+    size_t indexBytes() const { return length_ <= 256 ? 1 : 2; }
+    size_t coefficientBytes() const { return indexBytes() + 4; }
+    void putIndex(uint8_t* at, uint32_t i) const;
+    uint32_t getIndex(const uint8_t* at) const;
+
     int bins_ = 0, length_ = 0, kept_ = 0;
     int approx_ = 0;  // coefficients of the coarsest approximation, always kept
 };

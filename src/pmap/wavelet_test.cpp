@@ -74,8 +74,9 @@ TEST(Wavelet, AllCoefficientsKeptReconstructToQuantisation) {
     CoeffCodec::Scratch s;
     codec.encode(in, rec.data(), s);
     codec.decode(rec.data(), out, s);
-    // 16-bit mantissas: relative error near 2^-15 of the largest coefficient.
-    EXPECT_LT(relativeRms(in, out), 2e-4);
+    // 8-bit mantissas: each coefficient within 1/254 of its largest component.
+    EXPECT_LT(relativeRms(in, out), 4e-3);
+    EXPECT_EQ(codec.recordBytes(), 152u * 5);
 }
 
 TEST(Wavelet, ErrorGrowsAsCoefficientsAreDropped) {
@@ -90,11 +91,11 @@ TEST(Wavelet, ErrorGrowsAsCoefficientsAreDropped) {
         const double e = relativeRms(in, out);
         EXPECT_GE(e, last * 0.999) << comp;
         last = e;
-        // Measured 0.0011, 0.0046, 0.013, 0.18 (86, 46, 32, 23 of 152 kept, 19 of them the
-        // approximation): the sun bin and the smooth sky survive; the bounds leave room
-        // for quantisation only.
+        // Measured 0.0040, 0.0060, 0.013, 0.18 (86, 46, 32, 23 of 152 kept, 19 of them the
+        // approximation): the sun bin and the smooth sky survive; at 0.5 the error is the
+        // 8-bit mantissas' (4e-3 with all kept).
         if (comp == 0.5) {
-            EXPECT_LT(e, 0.003);
+            EXPECT_LT(e, 0.005);
         }
         if (comp == 0.8) {
             EXPECT_LT(e, 0.01);
@@ -111,8 +112,8 @@ TEST(Wavelet, OneBinAndZeroRecords) {
     CoeffCodec::Scratch s;
     codec.encode(in, rec.data(), s);
     codec.decode(rec.data(), out, s);
-    EXPECT_NEAR(out[0][0], 3, 1e-3);
-    EXPECT_NEAR(out[0][2], 1, 1e-3);
+    EXPECT_NEAR(out[0][0], 3, 0.02);
+    EXPECT_NEAR(out[0][2], 1, 0.02);
     std::vector<Rgb> zero(145, Rgb{0, 0, 0}), back(145);
     CoeffCodec c2(145, 0.9);
     rec.resize(c2.recordBytes());
