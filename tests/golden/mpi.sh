@@ -28,11 +28,15 @@ mpi() {  # ranks tool args...: the MPI build of tool, started by name so that th
 plain() { PATH="$BIN:$PATH" "$@"; }
 pixels() { sed '1,/^$/d' "$1" | od -An -tx1 | md5sum; }  # after the header (dates)
 
-# mkpmap: global + caustic, and a contribution map; the whole files identical (each run
-# in a folder of its own, so that the command lines in the headers are the same).
+# mkpmap: global + caustic, a contribution map and a precomputed one; the whole files
+# identical (each run in a folder of its own, so that the command lines in the headers
+# are the same).
 MK=(-apg g.pm 40k -apc c.pm 15k -apr 3 -n 2 "$SCENE")
 plain mkpmap "${MK[@]}" 2> log || bad "mkpmap: $(cat log)"
 plain mkpmap -apC k.pm 20k -apr 3 -n 2 "$SCENE" 2> log || bad "mkpmap -apC: $(cat log)"
+# A precomputed contribution map (bins by direction), its bins beside it.
+PC=(-apC p.pm 20k 40 0.5 -apr 3 -b "if(Dz,0,1)" -bn 2 -m ceiling_light -n 2 "$SCENE")
+plain mkpmap "${PC[@]}" 2> log || bad "mkpmap -apC precomputed: $(cat log)"
 for n in 1 2 3; do
     mkdir r$n && cd r$n || exit 1
     mpi $n mkpmap "${MK[@]}" 2> log || bad "mpirun -n $n mkpmap: $(cat log)"
@@ -40,6 +44,10 @@ for n in 1 2 3; do
     cmp -s ../c.pm c.pm || bad "$n ranks: caustic map differs"
     mpi $n mkpmap -apC k.pm 20k -apr 3 -n 2 "$SCENE" 2> /dev/null || bad "mpirun -n $n mkpmap -apC"
     cmp -s ../k.pm k.pm || bad "$n ranks: contribution map differs"
+    mpi $n mkpmap "${PC[@]}" 2> /dev/null || bad "mpirun -n $n mkpmap -apC (precomputed)"
+    cmp -s ../p.pm p.pm || bad "$n ranks: precomputed contribution map differs"
+    cmp -s ../p.pm.rc/ceiling_light.rc p.pm.rc/ceiling_light.rc ||
+        bad "$n ranks: precomputed contributions differ"
     cd .. && rm -rf r$n
 done
 # And the same photons as one thread without MPI.
