@@ -107,7 +107,7 @@ ColorMatrix skyProduct(const DctimestepOptions& o, int& steps) {
 }
 
 std::string headerStart(const DctimestepOptions& o) {
-    return std::string(kHeaderMagic) + "\n" + o.commandLine + "\n" + timeLines();
+    return std::string(kHeaderMagic) + "\n" + o.commandLine + "\n" + captureTimeLines();
 }
 
 std::string matrixHead(int rows, int cols, DataType type) {

@@ -3,7 +3,6 @@
 
 #include <bit>
 #include <cctype>
-#include <ctime>
 
 namespace rp::matrix {
 
@@ -58,19 +57,6 @@ bool parseByteOrderLine(const std::string& line, bool& swap) {
     const bool big = i < line.size() && line[i] == '1';
     swap = big != (std::endian::native == std::endian::big);
     return true;
-}
-
-std::string timeLines() {
-    const std::time_t now = std::time(nullptr);
-    std::tm t{};
-    char buf[80];
-    std::string s;
-    localtime_r(&now, &t);
-    std::strftime(buf, sizeof buf, "CAPDATE= %Y:%m:%d %H:%M:%S\n", &t);
-    s += buf;
-    gmtime_r(&now, &t);
-    std::strftime(buf, sizeof buf, "GMT= %Y:%m:%d %H:%M:%S\n", &t);
-    return s + buf;
 }
 
 }  // namespace rp::matrix

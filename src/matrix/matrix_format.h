@@ -1,7 +1,7 @@
 // The data formats of RADIANCE's matrix files (cmatrix.h's DTascii..DTdouble) and the
-// header lines every writer of them shares: FORMAT=, BigEndian=, CAPDATE=/GMT=. The
-// matrices themselves live in matrix.h (rmtxop's general matrices) and color_matrix.h
-// (dctimestep's RGB ones); reading inputs in matrix_input.h.
+// header lines every writer of them shares: FORMAT=, BigEndian= (CAPDATE=/GMT= are
+// util/header.h's). The matrices themselves live in matrix.h (rmtxop's general matrices) and
+// color_matrix.h (dctimestep's RGB ones); reading inputs in matrix_input.h.
 #pragma once
 
 #include <string>
@@ -30,9 +30,5 @@ std::string byteOrderLine();
 // True (with `swap` set) when `line` is a BigEndian= line (header.c isbigendian); `swap`
 // says whether data written that way must be byte-swapped here.
 bool parseByteOrderLine(const std::string& line, bool& swap);
-
-// "CAPDATE= 2024:01:02 03:04:05\nGMT= ...\n": the current local time and GMT, as
-// RADIANCE's fputnow writes them.
-std::string timeLines();
 
 }  // namespace rp::matrix

@@ -9,7 +9,6 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -36,20 +35,6 @@ size_t valueSize(char format) {
         default:
             return 0;
     }
-}
-
-// RADIANCE compat (fputnow, printheader): local capture time and GMT.
-std::string timeLines() {
-    std::time_t now = std::time(nullptr);
-    char buf[80];
-    std::tm tmv{};
-    std::string s;
-    localtime_r(&now, &tmv);
-    std::strftime(buf, sizeof buf, "CAPDATE= %Y:%m:%d %H:%M:%S\n", &tmv);
-    s += buf;
-    gmtime_r(&now, &tmv);
-    std::strftime(buf, sizeof buf, "GMT= %Y:%m:%d %H:%M:%S\n", &tmv);
-    return s + buf;
 }
 
 }  // namespace
@@ -194,7 +179,7 @@ ContribOutput::Stream& ContribOutput::open(size_t index) {
         for (const std::string& w : o_.commandWords) argv.push_back(w.c_str());
         h += commandLine(int(argv.size()), argv.data()) + "\n";
         h += "SOFTWARE= radphoton\n";
-        h += timeLines();
+        h += captureTimeLines();  // RADIANCE compat (printheader)
         h += "NCOMP=3\n";
         h += info;
         if (o_.outputFormat == 'f' || o_.outputFormat == 'd')

@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <ctime>
 
 #include "util/colr.h"
 #include "util/error.h"
+#include "util/header.h"
 
 namespace rp::render {
 
@@ -282,16 +282,7 @@ std::string rtraceHeader(const std::string& commandLine, char outputFormat) {
     std::string h = "#?RADIANCE\n";
     h += commandLine + "\n";
     h += "SOFTWARE= radphoton\n";
-    // RADIANCE compat (fputnow): local capture time and GMT.
-    std::time_t now = std::time(nullptr);
-    char buf[64];
-    std::tm tmv{};
-    localtime_r(&now, &tmv);
-    std::strftime(buf, sizeof buf, "CAPDATE= %Y:%m:%d %H:%M:%S\n", &tmv);
-    h += buf;
-    gmtime_r(&now, &tmv);
-    std::strftime(buf, sizeof buf, "GMT= %Y:%m:%d %H:%M:%S\n", &tmv);
-    h += buf;
+    h += captureTimeLines();
     h += "FORMAT=";
     h += outputFormat == 'a'   ? "ascii"
          : outputFormat == 'f' ? "float"

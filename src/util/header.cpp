@@ -1,6 +1,7 @@
 #include "util/header.h"
 
 #include <cctype>
+#include <ctime>
 
 #include "util/error.h"
 
@@ -65,6 +66,19 @@ void writeHeader(std::ostream& out, const Header& h) {
     out << kHeaderMagic << '\n';
     for (const auto& l : h.lines) out << l << '\n';
     out << '\n';
+}
+
+std::string captureTimeLines() {
+    const std::time_t now = std::time(nullptr);
+    std::tm t{};
+    char buf[80];
+    std::string s;
+    localtime_r(&now, &t);
+    std::strftime(buf, sizeof buf, "CAPDATE= %Y:%m:%d %H:%M:%S\n", &t);
+    s += buf;
+    gmtime_r(&now, &t);
+    std::strftime(buf, sizeof buf, "GMT= %Y:%m:%d %H:%M:%S\n", &t);
+    return s + buf;
 }
 
 std::string commandLine(int argc, const char* const* argv) {

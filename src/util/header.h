@@ -33,6 +33,10 @@ bool tryReadHeader(std::istream& in, Header& out);
 // Writes the magic line, each line, and the empty line.
 void writeHeader(std::ostream& out, const Header& h);
 
+// "CAPDATE= 2024:01:02 03:04:05\nGMT= ...\n": the current local time and GMT, as
+// RADIANCE's fputnow writes them into the headers of pictures and matrices.
+std::string captureTimeLines();
+
 // "prog arg1 arg2 ..." as RADIANCE's printargs writes a command line (fputword): a word
 // with white space goes in double quotes, or in single quotes when it holds a double
 // quote (not first or last), and in double quotes when it holds a single one.
