@@ -82,6 +82,7 @@ ColorMatrix readAsciiColors(DataReader& r, int rows, int cols) {
     // RADIANCE compat (cm_load): without a row count, rows are read to the end of the
     // data, 32000 at most.
     const int maxRows = rows > 0 ? rows : 32000;
+    checkDeclaredSize(r, rows > 0 ? rows : 1, cols, 3);
     ColorMatrix m(0, cols);
     for (int row = 0; row < maxRows; ++row) {
         m.values.resize(static_cast<size_t>(row + 1) * cols * 3);
@@ -114,6 +115,7 @@ ColorMatrix readBinaryColors(DataReader& r, int rows, int cols, DataType type, b
                                  " bytes, " + std::to_string(rowBytes) + " a row)");
         rows = static_cast<int>(r.remaining() / rowBytes);
     }
+    checkDeclaredSize(r, rows, cols, 3);
     ColorMatrix m(rows, cols);
     const size_t n = m.values.size();
     if (r.remaining() < n * size)

@@ -114,6 +114,16 @@ bool DataReader::nextDouble(double& v) { return nextNumber<double>(v, &std::strt
 
 bool DataReader::nextFloat(float& v) { return nextNumber<float>(v, &std::strtof); }
 
+void checkDeclaredSize(const DataReader& r, int64_t rows, int64_t cols, int64_t comps) {
+    const double values = double(rows) * double(cols) * double(comps);
+    const double bound = 2048.0 * double(r.remaining()) + 1024;
+    if (rows < 0 || cols < 0 || comps < 0 || values > double(int64_t(1) << 31) || values > bound)
+        throw InputError(SourceLoc{r.name(), r.line()},
+                         "header declares " + std::to_string(rows) + "x" + std::to_string(cols) +
+                             "x" + std::to_string(comps) + " values, but only " +
+                             std::to_string(r.remaining()) + " bytes of data follow");
+}
+
 bool DataReader::atEndIgnoringSpace() const {
     for (size_t i = pos_; i < in_.bytes.size(); ++i)
         if (!std::isspace(static_cast<unsigned char>(in_.bytes[i]))) return false;

@@ -67,6 +67,12 @@ private:
     size_t lastWord_ = 0;
 };
 
+// Refuses a size from a header that the data left cannot possibly hold, before anything
+// of that size is allocated: more than 2048 values a byte (RADIANCE's run-length pictures
+// compress no further), or 2^31 values. Data merely short are left to the readers, whose
+// messages say where they end. InputError naming the input.
+void checkDeclaredSize(const DataReader& r, int64_t rows, int64_t cols, int64_t comps);
+
 // Reverses the byte order of `count` values of `size` bytes each (4 or 8).
 void swapBytes(void* data, size_t size, size_t count);
 

@@ -119,6 +119,7 @@ Matrix parseMatrix(const InputData& in) {
             throw InputError(SourceLoc{in.name, 0}, "a picture must have NCOMP=3");
     }
     if (h.comps <= 0) throw InputError(SourceLoc{in.name, 0}, "missing NCOMP= in header");
+    checkDeclaredSize(r, h.rows, h.cols, h.comps);
     Matrix m(h.rows, h.cols, h.comps);
     m.info = h.info;
     m.type = h.type;

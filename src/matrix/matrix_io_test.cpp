@@ -7,6 +7,7 @@
 #include <cstring>
 #include <sstream>
 
+#include "matrix/color_matrix.h"
 #include "util/error.h"
 
 namespace rp::matrix {
@@ -77,6 +78,25 @@ TEST(MatrixIo, BadHeader) {
               "m.mtx: missing NCOMP= in header");
     EXPECT_EQ(errorOf("#?RADIANCE\nNCOMP=3\n\n1 2 3\n"),
               "m.mtx: missing NROWS= or NCOLS= in header (and no picture resolution)");
+}
+
+TEST(MatrixIo, ImpossibleSizeIsRefusedBeforeAllocating) {
+    // Fuzzing found it: 455555551 x 3 x 3 doubles (32 GB) for a few bytes of data.
+    EXPECT_EQ(errorOf("#?RADIANCE\nNROWS=455555551\nNCOLS=3\nNCOMP=3\nFORMAT=ascii\n\n1 2 3\n"),
+              "m.mtx:7: header declares 455555551x3x3 values, but only 6 bytes of data follow");
+    EXPECT_EQ(errorOf("#?RADIANCE\nNROWS=-2\nNCOLS=3\nNCOMP=3\nFORMAT=ascii\n\n1 2 3\n"),
+              "m.mtx: missing NROWS= or NCOLS= in header (and no picture resolution)");
+}
+
+TEST(MatrixIo, ImpossibleColumnCountIsRefusedByTheRgbReader) {
+    // Fuzzing found it too: dctimestep's reader grew a row of 798 million RGB values.
+    try {
+        parseColorMatrix({"m.mtx", "#?RADIANCE\nNCOLS=798000000\nNCOMP=3\nFORMAT=ascii\n\n1 2 3\n"},
+                         0, 0, DataType::FromHeader);
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("header declares"), std::string::npos) << e.what();
+    }
 }
 
 TEST(MatrixIo, ShortAsciiDataNamesTheLine) {

@@ -38,6 +38,7 @@ void writePictureData(std::ostream& out, int rows, int cols, const double* rgb) 
 }
 
 std::vector<Colr> readScanlines(DataReader& r, int rows, int cols, bool flat) {
+    checkDeclaredSize(r, rows, cols, 1);
     std::vector<Colr> pixels(static_cast<size_t>(rows) * cols);
     for (int i = 0; i < rows; ++i) {
         Colr* scan = pixels.data() + static_cast<size_t>(i) * cols;
