@@ -99,7 +99,9 @@ public:
     // The contribution map's irradiance / pi at a final-gather hit, as the global map's
     // (or with `caustic`, of its caustic photons only, at other hits, as a caustic map's);
     // each photon's share of it, times the path coefficient `coef`, goes to `sink` with
-    // the source that emitted it (RADIANCE photonContrib). Zero without a contribution map.
+    // the source that emitted it (RADIANCE photonContrib). A precomputed contribution map
+    // gives the bins of its nearest precomputed photon (caustic-flagged with `caustic`,
+    // unflagged otherwise) to `sink` instead. Zero without a contribution map.
     Color contribDensity(Lookups& l, const Vec3& pos, const Vec3& normal, const Color& coef,
                          ContributionSink* sink, bool caustic = false) const;
     // The coefficient files of a precomputed contribution map, one per tracked modifier
