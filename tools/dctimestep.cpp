@@ -18,21 +18,8 @@ constexpr const char* kSynopsis =
 
 int main(int argc, char** argv) {
     if (rp::tools::printedInfo(argc, argv, kSynopsis)) return 0;
-    try {
-        std::ios::sync_with_stdio(false);
-        rp::setWarningSink([](const std::string& m) {
-            std::cout.flush();
-            std::cerr << "dctimestep: warning - " << m << '\n';
-        });
+    return rp::tools::runFilter("dctimestep", "write error on output", [&] {
         const rp::matrix::DctimestepOptions o = rp::matrix::parseDctimestepArgs(argc, argv);
         rp::matrix::runDctimestep(o, std::cout);
-        std::cout.flush();
-        if (!std::cout) throw rp::InputError("write error on output");
-        return 0;
-    } catch (...) {
-        std::cout.flush();
-        const rp::tools::MainError e = rp::tools::currentMainError();
-        std::cerr << "dctimestep: " << e.line << '\n';
-        return e.exitCode;
-    }
+    });
 }

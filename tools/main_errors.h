@@ -3,10 +3,13 @@
 #pragma once
 
 #include <exception>
+#include <functional>
+#include <iostream>
 #include <new>
 #include <string>
 
 #include "util/error.h"
+#include "util/warnings.h"
 
 namespace rp::tools {
 
@@ -29,6 +32,28 @@ inline MainError currentMainError() {
         return {std::string("internal error: ") + e.what(), 2};
     } catch (...) {
         return {"internal error", 2};
+    }
+}
+
+// The main of a filter that writes standard output (the matrix tools): its warnings as
+// "name: warning - ..." after what it wrote so far, standard output flushed and checked
+// (`writeError` when it fails), and any exception as "name: ..." with its exit code.
+inline int runFilter(const char* name, const char* writeError, const std::function<void()>& body) {
+    try {
+        std::ios::sync_with_stdio(false);
+        setWarningSink([name](const std::string& m) {
+            std::cout.flush();
+            std::cerr << name << ": warning - " << m << '\n';
+        });
+        body();
+        std::cout.flush();
+        if (!std::cout) throw InputError(writeError);
+        return 0;
+    } catch (...) {
+        std::cout.flush();
+        const MainError e = currentMainError();
+        std::cerr << name << ": " << e.line << '\n';
+        return e.exitCode;
     }
 }
 

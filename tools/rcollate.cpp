@@ -20,24 +20,11 @@ constexpr const char* kSynopsis =
 
 int main(int argc, char** argv) {
     if (rp::tools::printedInfo(argc, argv, kSynopsis)) return 0;
-    try {
-        std::ios::sync_with_stdio(false);
-        rp::setWarningSink([](const std::string& m) {
-            std::cout.flush();
-            std::cerr << "rcollate: warning - " << m << '\n';
-        });
+    return rp::tools::runFilter("rcollate", "error writing standard output", [&] {
         const rp::matrix::RcollateOptions o = rp::matrix::parseRcollateArgs(argc, argv);
         const rp::matrix::InputData in =
             o.input.empty() ? rp::matrix::readInput("-")
                             : rp::matrix::InputData{o.input, rp::readFileBytes(o.input)};
         rp::matrix::runRcollate(o, in, std::cout);
-        std::cout.flush();
-        if (!std::cout) throw rp::InputError("error writing standard output");
-        return 0;
-    } catch (...) {
-        std::cout.flush();
-        const rp::tools::MainError e = rp::tools::currentMainError();
-        std::cerr << "rcollate: " << e.line << '\n';
-        return e.exitCode;
-    }
+    });
 }
