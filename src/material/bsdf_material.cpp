@@ -2,12 +2,13 @@
 // data in the BSDF's local frame (+Z the unperturbed-side normal, +Y the up vector).
 //
 // Backward: the non-diffuse part of reflection and of transmission is each sampled with
-// one ray per data component, weighted by its directional-hemispherical value (below -st
-// it goes to the ambient instead); the Lambertian parts (the data's and the arguments')
-// take ambient light; direct light is the BSDF averaged over the view direction jittered
-// within the data's resolution, minus the Lambertian part counted separately. A thick
-// BSDF is a proxy: only scattered rays see it, others pass to the geometry behind it.
-// aBSDF looks for a strong "through" peak, which passes view and shadow rays unscattered.
+// one ray per data component (several above -ss 1.5), weighted by its directional-
+// hemispherical value (below -st it goes to the ambient instead); the Lambertian parts
+// (the data's and the arguments') take ambient light; direct light is the BSDF averaged
+// over the view direction jittered within the data's resolution, minus the Lambertian
+// part counted separately. A thick BSDF is a proxy: only scattered rays see it, others
+// pass to the geometry behind it. aBSDF looks for a strong "through" peak, which passes
+// view and shadow rays unscattered.
 #include <algorithm>
 #include <atomic>
 #include <bit>
@@ -227,6 +228,14 @@ Color evaluateBsdf(const BsdfParams& m, const SurfacePoint& sp, const Vec3& l, d
 
 namespace {
 
+// m_bsdf.c sample_sdcomp: the samples per data component, 1 up to -ss 1.5, above it -ss
+// times the ray's weight rounded to the nearest (at least 1; at most kMaxRoughSamples).
+int bsdfSampleCount(double specJitter, double rayWeight) {
+    if (!(specJitter > 1.5)) return 1;
+    const double n = std::floor(specJitter * rayWeight + .5);
+    return n > 1 ? int(std::min(n, double(kMaxRoughSamples))) : 1;
+}
+
 // A sampled direction's weight: the component's hemispherical value, in the colour of
 // the data there (RADIANCE: the sample's chromaticity with the cumulative total as Y).
 Color sampleColour(const bsdf::Distribution& d, const Vec3& in, const Vec3& out, double total) {
@@ -235,8 +244,8 @@ Color sampleColour(const bsdf::Distribution& d, const Vec3& in, const Vec3& out,
     return y > 0 ? v * (total / y) : Color::grey(total);
 }
 
-// m_bsdf.c sample_sdf: the non-diffuse reflection or transmission, sampled (one ray per
-// component) or, at or below -st, returned as an ambient coefficient.
+// m_bsdf.c sample_sdf: the non-diffuse reflection or transmission, sampled (bsdfSampleCount
+// rays per component) or, at or below -st, returned as an ambient coefficient.
 Color sampleSet(const BsdfHit& h, const SurfacePoint& sp, bool transmit, const ShadeOptions& opt,
                 Rng& rng, BackwardResult& r) {
     const bsdf::ScatteringSet* set =
@@ -259,22 +268,41 @@ Color sampleSet(const BsdfHit& h, const SurfacePoint& sp, bool transmit, const S
         return transmit ? sp.pattern * b : Color::grey(b);  // no pattern on reflection
     }
     for (const auto& comp : set->components) {
-        if (r.numRays >= static_cast<int>(r.rays.size())) break;
-        double x = rng.uniform();
-        if (opt.specJitter < 1) x = .5 + opt.specJitter * (x - .5);
-        const Vec3 vin = jitterRandom(h, h.srPsa[0], opt.specJitter, rng);
-        const double total = comp->hemispherical(vin);
-        Vec3 out;
-        if (total <= kFtiny || !comp->sample(vin, x, rng.uniform(), out)) break;
-        if (hasThrough) {  // leave the through direction to the through ray
-            const double dx = vin.x + out.x, dy = vin.y + out.y;
-            if (dx * dx + dy * dy <= h.srPsa[0] * h.srPsa[0]) continue;
+        int n = bsdfSampleCount(opt.specJitter, sp.rayWeight);
+        for (int k = 0; k < n; ++k) {
+            // One sample: its stratum's variable narrowed by -ss below 1; several: one
+            // stratum of the component's cumulative distribution each.
+            double x = rng.uniform();
+            if (n == 1 && opt.specJitter < 1) x = .5 + opt.specJitter * (x - .5);
+            if (n > 1) x = (k + x) / n;
+            const Vec3 vin = jitterRandom(h, h.srPsa[0], opt.specJitter, rng);
+            const double total = comp->hemispherical(vin);
+            Vec3 out;
+            if (total <= kFtiny || !comp->sample(vin, x, rng.uniform(), out)) break;
+            if (hasThrough) {  // leave the through direction to the through ray
+                const double dx = vin.x + out.x, dy = vin.y + out.y;
+                if (dx * dx + dy * dy <= h.srPsa[0] * h.srPsa[0]) continue;
+            }
+            Color w = sampleColour(*comp, vin, out, n > 1 ? total / n : total);
+            if (transmit) w = w * sp.pattern;
+            const double childWeight = sp.rayWeight * spawnedWeight(w);
+            if (k == 0 && n > 1 && childWeight < opt.minWeight) {
+                // RADIANCE compat (m_bsdf.c sample_sdcomp): where the first of several
+                // samples falls below -lw, start again with as many as keep each above it
+                // (none where that is still n). RADIANCE tests the first ray's rayorigin;
+                // we its weight, as the renderer drops it (under -lr < 0 RADIANCE's
+                // roulette sometimes keeps it instead).
+                const int fewer = int(n * childWeight / opt.minWeight);
+                if (fewer == n) break;
+                n = fewer;
+                k = -1;
+                continue;
+            }
+            r.add(makeRay(
+                normalize(h.frame.toWorld(out)), w,
+                transmit ? ScatterKind::SpecularTransmission : ScatterKind::SpecularReflection,
+                true));
         }
-        Color w = sampleColour(*comp, vin, out, total);
-        if (transmit) w = w * sp.pattern;
-        r.add(makeRay(
-            normalize(h.frame.toWorld(out)), w,
-            transmit ? ScatterKind::SpecularTransmission : ScatterKind::SpecularReflection, true));
     }
     return {};
 }

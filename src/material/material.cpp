@@ -1,6 +1,7 @@
 // Dispatch of the public API over the MaterialParams variant, plus the shared sampling
 // helpers of detail.h (Ward half-vector sampling, Russian roulette). Families that are
 // too small for a file of their own (lights, antimatter) are handled inline here.
+#include <algorithm>
 #include <cmath>
 
 #include "material/detail.h"
@@ -29,33 +30,48 @@ void sampleWardSlope(double au, double av, Rng& rng, double spread, double& cosp
 }
 }  // namespace
 
+bool tryWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const Vec3& v, double au,
+                       double av, const Vec3& geomN, Rng& rng, Vec3& out, double spread) {
+    double cosp, sinp, d;
+    sampleWardSlope(au, av, rng, spread, cosp, sinp, d);
+    Vec3 h = n + (u * cosp + v * sinp) * d;  // |h|^2 = 1 + d^2
+    Vec3 r = dir + h * (-2 * dot(h, dir) / (1 + d * d));
+    if (!(dot(r, geomN) > kFtiny)) return false;
+    out = normalize(r);
+    return true;
+}
+
+bool tryWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, double au, double av,
+                         const Vec3& geomN, Rng& rng, Vec3& out, double spread) {
+    double cosp, sinp, d;
+    sampleWardSlope(au, av, rng, spread, cosp, sinp, d);
+    Vec3 t = through + (u * cosp + v * sinp) * d;
+    if (!(dot(t, geomN) < -kFtiny)) return false;
+    out = normalize(t);
+    return true;
+}
+
 bool sampleWardReflection(const Vec3& dir, const Vec3& n, const Vec3& u, const Vec3& v, double au,
                           double av, const Vec3& geomN, Rng& rng, Vec3& out, double spread) {
-    for (int iter = 0; iter < kMaxIter; ++iter) {
-        double cosp, sinp, d;
-        sampleWardSlope(au, av, rng, spread, cosp, sinp, d);
-        Vec3 h = n + (u * cosp + v * sinp) * d;  // |h|^2 = 1 + d^2
-        Vec3 r = dir + h * (-2 * dot(h, dir) / (1 + d * d));
-        if (dot(r, geomN) > kFtiny) {
-            out = normalize(r);
-            return true;
-        }
-    }
+    for (int iter = 0; iter < kMaxIter; ++iter)
+        if (tryWardReflection(dir, n, u, v, au, av, geomN, rng, out, spread)) return true;
     return false;
 }
 
 bool sampleWardTransmission(const Vec3& through, const Vec3& u, const Vec3& v, double au, double av,
                             const Vec3& geomN, Rng& rng, Vec3& out, double spread) {
-    for (int iter = 0; iter < kMaxIter; ++iter) {
-        double cosp, sinp, d;
-        sampleWardSlope(au, av, rng, spread, cosp, sinp, d);
-        Vec3 t = through + (u * cosp + v * sinp) * d;
-        if (dot(t, geomN) < -kFtiny) {
-            out = normalize(t);
-            return true;
-        }
-    }
+    for (int iter = 0; iter < kMaxIter; ++iter)
+        if (tryWardTransmission(through, u, v, au, av, geomN, rng, out, spread)) return true;
     return false;
+}
+
+int roughSampleCount(const ShadeOptions& opt, double rayWeight, const Color& coef) {
+    if (!(opt.specJitter > 1.5)) return 1;
+    // RADIANCE's int conversions truncate; both quotients are positive where they count.
+    double n = std::floor(opt.specJitter * rayWeight + .5);
+    const double w = rayWeight * spawnedWeight(coef);  // the unshared sample ray's weight
+    if (opt.minWeight > 0 && w <= opt.minWeight * n) n = std::floor(w / opt.minWeight);
+    return n > 1 ? int(std::min(n, double(kMaxRoughSamples))) : 1;
 }
 
 namespace {

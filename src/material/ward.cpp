@@ -94,8 +94,9 @@ Color diffusePart(const WardHit& h, double ldot, double lrdiff, double ltdiff) {
     return {};
 }
 
-// Ideal or Ward-sampled specular rays, and the ambient coefficients (normal.c m_normal,
-// aniso.c m_aniso); `pure` only for the isotropic types.
+// Ideal or Ward-sampled specular rays (one per rough lobe, or several above -ss 1.5), and
+// the ambient coefficients (normal.c m_normal, aniso.c m_aniso); `pure` only for the
+// isotropic types.
 BackwardResult shadeWard(const WardHit& h, bool pure, const SurfacePoint& sp,
                          const ShadeOptions& opt, Rng& rng) {
     BackwardResult r;
@@ -106,10 +107,13 @@ BackwardResult shadeWard(const WardHit& h, bool pure, const SurfacePoint& sp,
             r.add(ray);
         } else if (opt.specThreshold >= h.tspec - kFtiny) {
             tblt = true;  // below -st: counted in the ambient instead
-        } else if (sampleWardTransmission(h.prdir, h.u, h.v, h.au, h.av, sp.geomNormal, rng,
-                                          ray.dir, opt.specJitter)) {
+        } else {
             ray.sampled = true;
-            r.add(ray);
+            const int n = roughSampleCount(opt, sp.rayWeight, ray.weight);
+            addRoughSamples(r, ray, n, sp, false, [&](Vec3& dir) {
+                return tryWardTransmission(h.prdir, h.u, h.v, h.au, h.av, sp.geomNormal, rng, dir,
+                                           opt.specJitter);
+            });
         }
     }
     if (h.rspec > kFtiny) {
@@ -122,10 +126,13 @@ BackwardResult shadeWard(const WardHit& h, bool pure, const SurfacePoint& sp,
             r.add(ray);
         } else if (opt.specThreshold >= h.rspec - kFtiny) {
             rblt = true;
-        } else if (sampleWardReflection(sp.dir, sp.normal, h.u, h.v, h.au, h.av, sp.geomNormal, rng,
-                                        ray.dir, opt.specJitter)) {
+        } else {
             ray.sampled = true;
-            r.add(ray);
+            const int n = roughSampleCount(opt, sp.rayWeight, ray.weight);
+            addRoughSamples(r, ray, n, sp, true, [&](Vec3& dir) {
+                return tryWardReflection(sp.dir, sp.normal, h.u, h.v, h.au, h.av, sp.geomNormal,
+                                         rng, dir, opt.specJitter);
+            });
         }
     }
     if (h.rdiff > kFtiny) {

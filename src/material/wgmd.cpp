@@ -212,19 +212,23 @@ BackwardResult shadeWgmd(const WgmdParams& m, const SurfacePoint& sp, const Shad
         if (dot(d, sp.geomNormal) <= 0) d = reflect(sp.dir, sp.geomNormal);  // would penetrate
         r.add(makeRay(normalize(d), h.rs.color, ScatterKind::SpecularReflection));
     }
-    // agaussamp: one sample of each rough lobe not below -st (the reflection first, as
-    // RADIANCE; a ray has room for two, and an ideal part excludes a rough one).
-    if (h.rs.on && !h.rs.pure && !rblt && r.numRays < 2) {
-        SpecularRay ray = makeRay({}, h.rs.color, ScatterKind::SpecularReflection, true);
-        if (sampleWardReflection(sp.dir, h.rs.n, h.rs.u, h.rs.v, h.rs.au, h.rs.av, sp.geomNormal,
-                                 rng, ray.dir, opt.specJitter))
-            r.add(ray);
+    // agaussamp: one sample of each rough lobe not below -st, or several above -ss 1.5
+    // (the reflection first, as RADIANCE; an ideal part excludes a rough one).
+    if (h.rs.on && !h.rs.pure && !rblt) {
+        const SpecularRay ray = makeRay({}, h.rs.color, ScatterKind::SpecularReflection, true);
+        addRoughSamples(
+            r, ray, roughSampleCount(opt, sp.rayWeight, ray.weight), sp, true, [&](Vec3& dir) {
+                return tryWardReflection(sp.dir, h.rs.n, h.rs.u, h.rs.v, h.rs.au, h.rs.av,
+                                         sp.geomNormal, rng, dir, opt.specJitter);
+            });
     }
-    if (h.ts.on && !h.ts.pure && !tblt && r.numRays < 2) {
-        SpecularRay ray = makeRay({}, h.ts.color, ScatterKind::SpecularTransmission, true);
-        if (sampleWardTransmission(h.prdir, h.ts.u, h.ts.v, h.ts.au, h.ts.av, sp.geomNormal, rng,
-                                   ray.dir, opt.specJitter))
-            r.add(ray);
+    if (h.ts.on && !h.ts.pure && !tblt) {
+        const SpecularRay ray = makeRay({}, h.ts.color, ScatterKind::SpecularTransmission, true);
+        addRoughSamples(r, ray, roughSampleCount(opt, sp.rayWeight, ray.weight), sp, false,
+                        [&](Vec3& dir) {
+                            return tryWardTransmission(h.prdir, h.ts.u, h.ts.v, h.ts.au, h.ts.av,
+                                                       sp.geomNormal, rng, dir, opt.specJitter);
+                        });
     }
     // RADIANCE compat: a part below -st joins the ambient only where its side has a
     // diffuse part (m_wgmdf.c multambient calls).

@@ -26,7 +26,7 @@ struct DirectOptions {
 };
 
 struct SpecularOptions {
-    double sampling = 1.0;    // -ss: rough specular samples (0 = none, >1 several)
+    double sampling = 1.0;    // -ss: rough specular (0 = mirror direction, >1.5 several)
     double threshold = 0.15;  // -st: rough specular below this goes to the ambient calc
 };
 

@@ -124,6 +124,7 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
     seed = o.uncorrelated ? (uint64_t(std::random_device{}()) << 32 | std::random_device{}()) : 0;
     shadeOptions.specThreshold = o.specular.threshold;
     shadeOptions.specJitter = o.specular.sampling;
+    shadeOptions.minWeight = o.limits.minWeight;
     shadeOptions.backVisible = o.backVisible;
 }
 

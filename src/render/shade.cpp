@@ -294,11 +294,11 @@ void Renderer::Context::addSpecularRays(const Hit& hit, const RayState& state,
         Color rc = sr.weight;
         RayState child = state;  // the clip set too
         child.depth = state.depth + 1;
-        child.weight = state.weight * rc.average();
+        child.weight = state.weight * material::spawnedWeight(rc);
         child.primary = false;
         child.irradianceHit = false;
         child.indirect = state.indirect || sr.sampled;
-        child.contribCoef = state.contribCoef * rc;
+        child.contribCoef = state.contribCoef * rc * sr.valueFactor;
         if (sr.medium.kind != material::MediumChange::Kind::Unchanged) {
             childMedia = mediaOf(state);
             childMedia->medium =
@@ -315,14 +315,15 @@ void Renderer::Context::addSpecularRays(const Hit& hit, const RayState& state,
                 if (rng.uniform() >= p) continue;
                 rc = rc / p;  // promote the survivor (Russian roulette)
                 child.weight = lim.minWeight;
-                child.contribCoef = state.contribCoef * rc;
+                child.contribCoef = state.contribCoef * rc * sr.valueFactor;
             }
         }
         Ray out = spawnRay(hit, sr.dir);
         if (sr.kind == material::ScatterKind::SpecularTransmission && b.transmitOffset != 0)
             out.origin += hit.normal * b.transmitOffset;
         double d = kNoHit;
-        Color contrib = rc * radiance(out, child, nullptr, d);
+        // valueFactor: 1 but for several samples of a rough reflection (SpecularRay).
+        Color contrib = rc * radiance(out, child, nullptr, d) * sr.valueFactor;
         value += contrib;
         if (first && first->prim == hit.prim && state.primary &&
             sr.kind == material::ScatterKind::SpecularReflection && !sr.sampled) {
