@@ -6,12 +6,15 @@
 #include <fstream>
 #include <iostream>
 
+#include "calc/search_path.h"
 #include "cluster_main.h"
 #include "gen/builtin_commands.h"
 #include "main_errors.h"
 #include "pmap/mkpmap_options.h"
+#include "render/port_exterior.h"
 #include "util/error.h"
 #include "util/header.h"
+#include "util/paths.h"
 #include "util/version.h"
 #include "util/warnings.h"
 
@@ -42,7 +45,11 @@ int main(int argc, char** argv) {
             [diag](const std::string& m) { *diag << "mkpmap: warning: " << m << '\n'; });
         rp::tools::quietUnlessRoot(*cluster);
         const rp::pmap::MkpmapReport report = rp::pmap::runMkpmap(
-            opt, rp::commandLine(argc, argv), *diag, rp::gen::builtinLoadOptions(), cluster.get());
+            opt, rp::commandLine(argc, argv), *diag, rp::gen::builtinLoadOptions(), cluster.get(),
+            [](const rp::Scene& scene, const rp::SceneGeometry& geometry) {
+                return rp::render::portExterior(scene, geometry,
+                                                rp::calc::defaultSearchPath(rp::projectLibDir()));
+            });
         if (std::getenv("RADPHOTON_STATS") && cluster->isRoot())  // for bench/mpi_scaling.sh
             std::cerr << "mkpmap: " << report.storingSeconds << " s storing on the root\n";
         return 0;

@@ -5,6 +5,7 @@
 // distributions (-dp) for modified sources and ports. No scene or partition knowledge.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -65,8 +66,30 @@ public:
             for (uint32_t p = 0; p < nPhi_; ++p) add(t, p, f(cellDirection(t, p, 0.5, 0.5)));
     }
 
+    // The same grid with each cell's value the mean of f(w, k) over k = 0..n-1, the w
+    // on a regular grid over the cell (ceil(sqrt n) columns): for values that vary within
+    // a cell, such as what a port sees outside (mkpmap -apE), where a horizon crossing a
+    // cell then splits its samples as it splits the cell. `k` lets the caller vary the
+    // rest of the sample (a point on the port) with it.
+    struct Averaged {};
+    template <class F>
+    DirectionTable(Averaged, const Cone& cone, double samplesPerSr, int n, F f) {
+        init(cone, samplesPerSr);
+        const int cols = int(std::ceil(std::sqrt(double(n))));
+        const int rows = (n + cols - 1) / cols;
+        for (uint32_t t = 0; t < nTheta_; ++t)
+            for (uint32_t p = 0; p < nPhi_; ++p) {
+                Color sum;
+                for (int k = 0; k < n; ++k)
+                    sum +=
+                        f(cellDirection(t, p, (k / cols + 0.5) / rows, (k % cols + 0.5) / cols), k);
+                add(t, p, sum * (1.0 / n));
+            }
+    }
+
     // Integral of the tabulated value over the cone (sum of cells x cell solid angle).
     const Color& integral() const { return integral_; }
+    double cellSolidAngle() const { return cellSolidAngle_; }
     bool empty() const { return cells_.empty(); }
     size_t cellCount() const { return size_t(nTheta_) * nPhi_; }
     size_t keptCells() const { return cells_.size(); }

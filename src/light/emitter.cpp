@@ -36,7 +36,7 @@ struct SourceValue {
 };
 
 struct Group {
-    int32_t source = -1;
+    int32_t source = -1;  // -1: a port's exterior (-apE)
     int32_t port = -1, portPrim = -1;
     bool flipNormal = false;  // emit about minus the surface normal (forward ports)
     Mode mode = Mode::Hemisphere;
@@ -66,6 +66,8 @@ struct EmissionPlan::Impl {
     Color total;
     std::vector<Color> sourceFlux;
     std::vector<size_t> sourceCount;
+    Color exteriorFlux;
+    std::vector<ExteriorPhoton> exteriorPhotons;
 
     // The constructor's phases, per kind of source: a local source's partitions; a
     // distant source through the scene cube's faces, or through the photon ports (each
@@ -79,6 +81,11 @@ struct EmissionPlan::Impl {
     void planPortSide(const SceneGeometry& geometry, const PhotonPort& port, int32_t portIndex,
                       const std::vector<Partition>& portParts, bool flip, Group g,
                       const SourceValue& value, const EmissionOptions& options);
+    // -apE: each port side's exterior table (PortExterior), after the sources.
+    void planExterior(const EmissionOptions& options);
+    void planExteriorSide(const PhotonPort& port, int32_t portIndex,
+                          const std::vector<Partition>& portParts, bool flip,
+                          const PortExterior& exterior, uint64_t& rayIndex);
 
     void add(const Partition& p, uint32_t group, const Color& flux, int32_t table) {
         if (!(flux.average() > 0)) return;
@@ -87,7 +94,8 @@ struct EmissionPlan::Impl {
         partTable.push_back(table);
         cdf.push_back((cdf.empty() ? 0.0 : cdf.back()) + flux.average());
         total += flux;
-        sourceFlux[size_t(groups[group].source)] += flux;
+        const int32_t s = groups[group].source;
+        (s >= 0 ? sourceFlux[size_t(s)] : exteriorFlux) += flux;
     }
     // Walker's alias table over all partitions (Vose's construction): slot i keeps
     // partition i with probability keep, else gives its alias, so a pick is one table
@@ -199,6 +207,7 @@ EmissionPlan::EmissionPlan(const SceneGeometry& geometry, std::vector<LightSourc
         else
             m.planPorts(geometry, src, g, value, options);
     }
+    if (options.exterior && !options.ports.empty()) m.planExterior(options);
     if (!(m.total.average() > 0)) throw InputError("zero flux from light sources");
     // Every photon carries the mean total flux (same expression as emitPhoton's for
     // Table groups, so the same bits).
@@ -359,6 +368,73 @@ void EmissionPlan::Impl::planPortSide(const SceneGeometry& geometry, const Photo
     groups[gi].end = parts.size();
 }
 
+void EmissionPlan::Impl::planExterior(const EmissionOptions& options) {
+    uint64_t rayIndex = 0;
+    const PortExterior& ex = options.exterior;
+    for (size_t pi = 0; pi < options.ports.size(); ++pi) {
+        const PhotonPort& port = options.ports[pi];
+        const std::vector<Partition> portParts =
+            partitionShape(*shapes, port.shape, port.shapeIndex, options.partitionSize * cube.size);
+        if (port.direction != PortDirection::Backward)
+            planExteriorSide(port, int32_t(pi), portParts, true, ex, rayIndex);
+        if (port.direction != PortDirection::Forward)
+            planExteriorSide(port, int32_t(pi), portParts, false, ex, rayIndex);
+    }
+}
+
+void EmissionPlan::Impl::planExteriorSide(const PhotonPort& port, int32_t portIndex,
+                                          const std::vector<Partition>& portParts, bool flip,
+                                          const PortExterior& exterior, uint64_t& rayIndex) {
+    if (portParts.empty()) return;
+    Group g;
+    g.port = portIndex;
+    g.portPrim = port.prim;
+    g.flipNormal = flip;
+    g.mode = Mode::Table;
+    g.distant = true;  // table directions point outside, photons travel against them
+    g.radiance = Color{1, 1, 1};
+    g.first = parts.size();
+    const uint32_t gi = uint32_t(groups.size());
+    groups.push_back(g);
+    // One table per port side: the outside seen from `positions` points spread over the
+    // port (partitions by area, then uniform within), the same points for every cell.
+    double area = 0;
+    for (const Partition& p : portParts) area += p.area;
+    std::vector<EmissionPoint> points;
+    Rng rng(0, RngDomain::Emission, uint64_t(portIndex) * 2 + (flip ? 1 : 0));
+    for (int k = 0; k < exterior.positions; ++k) {
+        double u = (k + rng.uniform()) / exterior.positions * area;
+        size_t j = 0;
+        while (j + 1 < portParts.size() && (u -= portParts[j].area) > 0) ++j;
+        points.push_back(samplePartition(*shapes, cube, portParts[j], rng));
+    }
+    const Vec3 n0 = partitionCentre(*shapes, cube, portParts.front()).normal;
+    const Vec3 axis = flip ? -n0 : n0;
+    // Each ray that meets a surface leaves a photon there, standing for the area its
+    // direction cell covers at that distance (cell solid angle t^2 / cos, shared among
+    // the `positions` rays of the cell): the rays tile what the port sees outside.
+    const size_t firstPhoton = exteriorPhotons.size();
+    tables.emplace_back(
+        DirectionTable::Averaged{}, Cone{axis, 0}, exterior.samplesPerSr, exterior.positions,
+        [&](const Vec3& w, int k) {
+            const EmissionPoint& e = points[size_t(k)];
+            const Vec3 n = flip ? -e.normal : e.normal;
+            const double c = dot(w, n);
+            if (!(c > 0)) return Color{};
+            const ExteriorView v = exterior.view(e.point + n * e.offset, w, rayIndex++);
+            if (!v.surface) return Color{};
+            const double cosSurface = std::fmax(std::fabs(dot(w, v.normal)), 1e-2);
+            const double area = v.distance * v.distance / cosSurface / exterior.positions;
+            exteriorPhotons.push_back({v.point, v.normal, v.ambient * area});
+            return v.radiance * c;
+        });
+    const double omega = tables.back().cellSolidAngle();
+    for (size_t i = firstPhoton; i < exteriorPhotons.size(); ++i) exteriorPhotons[i].flux *= omega;
+    const int32_t t = int32_t(tables.size() - 1);
+    for (const Partition& p : portParts) add(p, gi, tables[size_t(t)].integral() * p.area, t);
+    groups[gi].end = parts.size();
+}
+
 EmissionPlan::~EmissionPlan() = default;
 EmissionPlan::EmissionPlan(EmissionPlan&&) noexcept = default;
 EmissionPlan& EmissionPlan::operator=(EmissionPlan&&) noexcept = default;
@@ -367,6 +443,10 @@ const std::vector<LightSource>& EmissionPlan::sources() const { return impl_->so
 Color EmissionPlan::totalFlux() const { return impl_->total; }
 double EmissionPlan::totalFluxW() const { return impl_->total.average(); }
 Color EmissionPlan::sourceFlux(size_t s) const { return impl_->sourceFlux.at(s); }
+Color EmissionPlan::exteriorFlux() const { return impl_->exteriorFlux; }
+const std::vector<ExteriorPhoton>& EmissionPlan::exteriorPhotons() const {
+    return impl_->exteriorPhotons;
+}
 size_t EmissionPlan::partitionCount(size_t s) const { return impl_->sourceCount.at(s); }
 size_t EmissionPlan::partitionCount() const {
     size_t n = 0;
@@ -413,6 +493,7 @@ EmittedPhoton EmissionPlan::emitPhoton(Rng& rng) const {
     }
     EmittedPhoton ph;
     ph.source = g.source;
+    ph.exterior = g.source < 0;
     ph.weight = g.mode == Mode::Table ? colour * (m.total.average() / colour.average()) : g.weight;
     Hit h;
     h.point = e.point;

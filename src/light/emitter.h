@@ -36,6 +36,36 @@ struct EmissionModifier {
     bool directionalOnly = false;
 };
 
+// mkpmap -apE: what photon ports see outside besides the sources, i.e. surfaces lit by
+// them (ground, facades, overhangs), whose light the port then emits as well. RADIANCE's
+// ports emit the sources alone (manual 3.2.4). `view(from, w, index)` traces one ray from
+// `from` outside a port in unit direction w; `index` keys its random streams. It is
+// called from one thread, in a fixed order, so that the plan is the same for any -n.
+struct ExteriorView {
+    bool surface = false;  // w met a surface (not the sky, not a light source or glow,
+                           // whose photons their own groups emit)
+    Color radiance;        // arriving at `from` along -w from that surface
+    Color ambient;         // irradiance there from all but the direct calculation's sources
+    Vec3 point, normal;    // the surface point, its normal turned toward `from`
+    double distance = 0;
+};
+struct PortExterior {
+    std::function<ExteriorView(const Vec3& from, const Vec3& w, uint64_t index)> view;
+    // Each port side's table: directions over the hemisphere outside (cells per sr), each
+    // the mean of `positions` rays from points spread over the port.
+    double samplesPerSr = 64;
+    int positions = 16;
+    explicit operator bool() const { return bool(view); }
+};
+
+// A global photon that -apE leaves where a port's ray met a surface outside: what a final
+// gather looking out through the port finds there (no photon from a port reaches it). Its
+// flux is the ambient irradiance there times the area the ray stands for, in W.
+struct ExteriorPhoton {
+    Vec3 point, normal;
+    Color flux;
+};
+
 struct EmissionOptions {
     double partitionSize = 0.01;    // -ds: partition edge / scene cube size
     double samplesPerSr = 1000;     // -dp: direction table samples per steradian
@@ -43,6 +73,7 @@ struct EmissionOptions {
     // Called once per modified source (LightSource::modified()). A modified source with
     // no modifier (null function or empty eval) throws notSupportedYet.
     std::function<EmissionModifier(const LightSource&)> modifierFor;
+    PortExterior exterior;  // -apE (with ports only)
 };
 
 // One emitted photon. `weight` is the RGB flux it carries if it were the only photon:
@@ -51,8 +82,9 @@ struct EmissionOptions {
 struct EmittedPhoton {
     Ray ray;  // unit dir; origin off the surface (spawnRay); tmax = glow radius
     Color weight;
-    int32_t source = -1;  // index into EmissionPlan::sources()
-    int32_t port = -1;    // index into EmissionOptions::ports, -1 if not from a port
+    int32_t source = -1;    // index into EmissionPlan::sources(); -1 for exterior light
+    bool exterior = false;  // -apE: light of the surfaces outside a port (PortExterior)
+    int32_t port = -1;      // index into EmissionOptions::ports, -1 if not from a port
     // From a port: the origin lies just behind the port surface so that the photon's
     // first hit is the port itself (scattered by it, e.g. glass); a photon whose first
     // hit is not `portPrim` must be terminated (pmap.c's port rejection).
@@ -80,6 +112,8 @@ public:
     Color totalFlux() const;    // W per channel
     double totalFluxW() const;  // mean over RGB (RADIANCE's colorAvg)
     Color sourceFlux(size_t source) const;
+    Color exteriorFlux() const;  // -apE: what the ports' exterior tables emit
+    const std::vector<ExteriorPhoton>& exteriorPhotons() const;
     // RADIANCE's partition count (cube faces count (1/ds)^2 cells each).
     size_t partitionCount() const;
     size_t partitionCount(size_t source) const;

@@ -233,6 +233,64 @@ TEST(Emitter, SunThroughPort) {
     }
 }
 
+// -apE: a port also emits what its exterior table sees (here a uniform ground of radiance
+// 100 below the horizon): L A times the projected solid angle of the lower half of the
+// hemisphere outside, pi / 2, beside the sun's own flux; those photons are marked
+// exterior, carry no source, and enter the room upwards.
+TEST(Emitter, PortExteriorAddsWhatThePortSees) {
+    PortScene s(false);
+    SceneGeometry geom(s.b.scene());
+    EmissionOptions opt;
+    opt.ports = findPhotonPorts(s.b.scene(), geom, {PortSpec{"window_glass"}});
+    const double sunOnly = planFor(s.b, geom, opt).totalFluxW();
+    long calls = 0;
+    // The ground: a plane 1 m below the port's centre (z = 0.65) with ambient
+    // irradiance 10 W/m2.
+    opt.exterior.view = [&](const Vec3& from, const Vec3& w, uint64_t) {
+        ++calls;
+        EXPECT_LT(from.y, 0);  // just outside the port, looking out
+        EXPECT_LT(w.y, 0);
+        ExteriorView v;
+        if (!(w.z < 0)) return v;
+        v.surface = true;
+        v.radiance = Color::grey(100);
+        v.ambient = Color::grey(10);
+        v.distance = (from.z - 0.65) / -w.z;
+        v.point = from + w * v.distance;
+        v.normal = {0, 0, 1};
+        return v;
+    };
+    EmissionPlan plan = planFor(s.b, geom, opt);
+    const double exact = 100 * 4.5 * kPi / 2;
+    // The photons left on the ground tile what the port sees of it: near the port, their
+    // flux per unit area is the ambient irradiance (every ray of the 16 positions crosses
+    // this patch, one cell's solid angle t^2 / cos apart).
+    double nearFlux = 0;
+    for (const ExteriorPhoton& ph : plan.exteriorPhotons()) {
+        ASSERT_NEAR(ph.point.z, 0.65, 1e-9);
+        if (ph.point.x > 2 && ph.point.x < 4 && ph.point.y > -1.5) nearFlux += ph.flux.average();
+    }
+    EXPECT_NEAR(nearFlux / (2 * 1.5), 10, 1.0);
+    // The cells' 4 x 4 sample grids split where the horizon splits the cells (it runs
+    // along cell edges or middles here): exact but for float sums.
+    EXPECT_NEAR(plan.exteriorFlux().average(), exact, 1e-4 * exact);
+    EXPECT_NEAR(plan.totalFluxW(), sunOnly + plan.exteriorFlux().average(), 1e-9 * exact);
+    EXPECT_GT(calls, 1000);
+    const double share = plan.exteriorFlux().average() / plan.totalFluxW();
+    Stats st;
+    for (int i = 0; i < 100000; ++i) {
+        EmittedPhoton ph = plan.emitPhoton(8, uint64_t(i));
+        st.add(ph.exterior ? 1 : 0);
+        ASSERT_EQ(ph.port, 0);
+        if (!ph.exterior) continue;
+        ASSERT_EQ(ph.source, -1);
+        ASSERT_GT(ph.ray.dir.y, 0);
+        ASSERT_GT(ph.ray.dir.z, -0.2);  // upwards, but for the cells across the horizon
+        ASSERT_EQ(geom.closestHit(ph.ray)->prim, s.window);
+    }
+    EXPECT_NEAR(st.mean(), share, 4 * st.sigmaOfMean());
+}
+
 TEST(Emitter, SkyThroughPortAndBidirectional) {
     PortScene s(true);
     SceneGeometry geom(s.b.scene());

@@ -49,7 +49,15 @@ double secondsSince(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-void checkRequest(const MkpmapOptions& o) {
+void checkRequest(const MkpmapOptions& o, const PortExteriorFactory& exterior) {
+    if (o.portExterior) {
+        if (o.portSpecs.empty()) throw InputError("-apE: no photon ports (-apo, -apO)");
+        if (!exterior) throw InputError("-apE: not available in this program");
+        // Contribution photons are binned by the source that emitted them; the light of
+        // the surfaces outside has no one source.
+        if (o.wants(PhotonMapType::Contrib))
+            throw InputError("-apE: not with a contribution photon map (-apC)");
+    }
     // RADIANCE mkpmap.c: refuse existing outputs before any work is done.
     std::set<std::string> files;
     for (const auto& m : o.maps) {
@@ -187,7 +195,8 @@ struct EmittingScene {
     light::EmissionOptions emission;
     std::optional<light::EmissionPlan> plan;
 
-    EmittingScene(const MkpmapOptions& o, const LoadOptions& load)
+    EmittingScene(const MkpmapOptions& o, const LoadOptions& load,
+                  const PortExteriorFactory& exterior)
         : scene(loadCheckedScene(o, load)), geometry(scene) {
         std::vector<light::LightSource> sources = light::findLightSources(scene, geometry);
         if (sources.empty()) throw InputError("no light sources found");
@@ -195,6 +204,15 @@ struct EmittingScene {
         emission.samplesPerSr = o.pdfSamples;
         if (!o.portSpecs.empty())
             emission.ports = light::findPhotonPorts(scene, geometry, o.portSpecs);
+        if (o.portExterior) {
+            // One direction table per flat port side (light/emitter.cpp planExteriorSide).
+            for (const light::PhotonPort& port : emission.ports)
+                if (port.shape != light::EmitterShape::Polygon &&
+                    port.shape != light::EmitterShape::Ring)
+                    throw notSupportedYet(scene.prims[size_t(port.prim)].loc,
+                                          "-apE with a curved photon port");
+            emission.exterior = exterior(scene, geometry);
+        }
         // Pattern-modified sources emit through their pattern chain.
         chains.emplace(scene, calc::defaultSearchPath(projectLibDir()));
         emission.modifierFor = light::patternModifiers(*chains);
@@ -317,6 +335,11 @@ std::array<MapPhotons, kNumPhotonMapTypes> collectPhotons(const MkpmapOptions& o
         if (!o.maps[t]) continue;
         MapPhotons& m = photons[t];
         RecordStore<Photon>& store = d.dist.photons[t];
+        // -apE: what a final gather sees through a port outside holds no port photon;
+        // the plan's exterior photons are global photons there.
+        if (PhotonMapType(t) == PhotonMapType::Global || PhotonMapType(t) == PhotonMapType::PreComp)
+            for (const light::ExteriorPhoton& x : es.plan->exteriorPhotons())
+                store.append(makePhoton(x.point, x.normal, {x.flux.r, x.flux.g, x.flux.b}));
         if (PhotonMapType(t) == PhotonMapType::Contrib && o.precomputedContrib()) {
             m.inMemory = precomputeContribution(o, es, d, commandLine, diag);
         } else if (PhotonMapType(t) == PhotonMapType::Contrib) {
@@ -375,14 +398,15 @@ void printSummary(const MkpmapOptions& o, const MkpmapReport& report, std::ostre
 }  // namespace
 
 MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
-                       std::ostream& diag, const LoadOptions& load, Cluster* cluster) {
+                       std::ostream& diag, const LoadOptions& load, Cluster* cluster,
+                       const PortExteriorFactory& exterior) {
     MkpmapOptions o = withoutIgnoredMaps(options);
-    checkRequest(o);
+    checkRequest(o, exterior);
     // The tracer's settings as parsed; which maps it fills follows from the requests.
     for (size_t t = 0; t < o.maps.size(); ++t) o.trace.maps[t] = o.maps[t].has_value();
     MkpmapReport report;
 
-    EmittingScene es(o, load);
+    EmittingScene es(o, load, exterior);
     // Photons in memory, all maps together (mkpmap -aC); the rest goes to temporary files.
     MemoryBudget budget(o.memoryPhotons * sizeof(Photon));
     const auto t0 = Clock::now();

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 
@@ -41,10 +42,13 @@ struct MkpmapOptions {
     // medium -me -ma -mg. Which maps it fills follows from `maps`.
     TraceSettings trace;
     std::vector<light::PortSpec> portSpecs;  // -apo[+|-|0] mod, -apO[+|-|0] file contents
-    double pdfSamples = 1000;                // -dp
-    double partitionSize = 0.01;             // -ds
-    std::string diagnosticsFile;             // -e
-    bool overwrite = false;                  // -fo
+    // -apE[+|-] (issue 48; off as in RADIANCE): ports emit the light of the surfaces they
+    // see outside as well as the sources (light/emitter.h PortExterior).
+    bool portExterior = false;
+    double pdfSamples = 1000;     // -dp
+    double partitionSize = 0.01;  // -ds
+    std::string diagnosticsFile;  // -e
+    bool overwrite = false;       // -fo
     // -aC N (a radphoton extension; RADIANCE's rtrace -aC sizes its out-of-core cache):
     // hold about N photons in memory at most while building, all maps together (prepass
     // deposits, collected photons, kd-tree parts). Photons beyond it go to temporary files
@@ -92,8 +96,11 @@ struct MkpmapReport {
 // with the same options and traces its share of the photons (chunk_stream.h); the root
 // builds and writes the maps, which are the same bit for bit for any number of ranks,
 // and reports. The other ranks return an empty report.
+// `exterior` makes -apE's PortExterior for the loaded scene (the classic calculation sits
+// above this module: tools pass render::portExterior); -apE without it is an InputError.
+using PortExteriorFactory = std::function<light::PortExterior(const Scene&, const SceneGeometry&)>;
 MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
-                       std::ostream& diag, const LoadOptions& load = {},
-                       Cluster* cluster = nullptr);
+                       std::ostream& diag, const LoadOptions& load = {}, Cluster* cluster = nullptr,
+                       const PortExteriorFactory& exterior = {});
 
 }  // namespace rp::pmap

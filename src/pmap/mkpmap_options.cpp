@@ -148,6 +148,7 @@ void addModifierOptions(OptionTable& t, MkpmapOptions& o) {
 
 void addOtherOptions(OptionTable& t, MkpmapOptions& o) {
     t.add(flagOption("-bv", o.trace.backVisible));
+    t.add(flagOption("-apE", o.portExterior));
     t.add(flagOption("-fo", o.overwrite));
     t.add(valueOption("-dp", o.pdfSamples, positive, "PDF samples must be > 0"));
     t.add(valueOption("-ds", o.partitionSize, positive, "source partition size ratio must be > 0"));
@@ -232,6 +233,10 @@ void addDefaults(OptionTable& t, const MkpmapOptions& o) {
     t.setDefaults("-apD", [&o] {
         return defaultsLine("-apD " + fixed(o.pass.preDistrib, 6), "predistribution factor");
     });
+    t.setDefaults("-apE", [&o, sign] {
+        return defaultsLine("-apE" + sign(o.portExterior),
+                            o.portExterior ? "ports see the outside" : "ports see sources only");
+    });
     t.setDefaults("-apM", [&o] {
         return defaultsLine("-apM " + std::to_string(o.pass.maxPrepass), "max predistrib passes");
     });
@@ -294,10 +299,10 @@ void addDefaults(OptionTable& t, const MkpmapOptions& o) {
     t.setDefaults("-t", [&o] {
         return defaultsLine("-t   " + std::to_string(o.pass.reportSeconds), "time between reports");
     });
-    t.setDefaultsOrder({"-ae",  "-aE",  "-ai",  "-aI",  "-aC",  "-api", "-apg", "-apc",
-                        "-apd", "-app", "-apv", "-apC", "-apD", "-apM", "-apm", "-apo",
-                        "-apP", "-apr", "-aps", "-apS", "-bv",  "-dp",  "-ds",  "-e",
-                        "-fo",  "-ld",  "-lr",  "-ma",  "-me",  "-mg",  "-n",   "-t"});
+    t.setDefaultsOrder({"-ae",  "-aE",  "-ai",  "-aI",  "-aC",  "-api", "-apg", "-apc", "-apd",
+                        "-app", "-apv", "-apC", "-apD", "-apE", "-apM", "-apm", "-apo", "-apP",
+                        "-apr", "-aps", "-apS", "-bv",  "-dp",  "-ds",  "-e",   "-fo",  "-ld",
+                        "-lr",  "-ma",  "-me",  "-mg",  "-n",   "-t"});
 }
 
 // Precomputed contribution maps: rcontrib's binning options (contrib_bins.h), -f for its

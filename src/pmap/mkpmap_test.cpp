@@ -103,6 +103,12 @@ TEST(MkpmapOptions, Defaults) {
     EXPECT_EQ(o.pass.threads, 1);
     EXPECT_EQ(parse({"-bv", "-apg", "g", "1", "x"}).trace.backVisible, false);  // bare flag toggles
     EXPECT_EQ(parse({"-apm", "9", "-apg", "g", "1", "x"}).trace.maxBounce, 9);
+    // -apE: ports see the outside (issue 48); off by default, as RADIANCE's ports.
+    EXPECT_FALSE(o.portExterior);
+    EXPECT_TRUE(parse({"-apE", "-apg", "g", "1", "x"}).portExterior);
+    EXPECT_TRUE(parse({"-apE+", "-apg", "g", "1", "x"}).portExterior);
+    EXPECT_FALSE(parse({"-apE", "-apE-", "-apg", "g", "1", "x"}).portExterior);
+    EXPECT_NE(formatMkpmapDefaults(o).find("-apE-"), std::string::npos);
 }
 
 TEST(MkpmapOptions, MemoryBudget) {
@@ -206,6 +212,12 @@ TEST_F(MkpmapRun, ErrorsOnePerKind) {
     EXPECT_NE(runError({"-apg", path("g.pm"), "1k", "-apo", "nosuchport", cornell()}),
               "(no error)");
     EXPECT_FALSE(std::filesystem::exists(path("g.pm")));
+    // -apE needs ports, a program that can see outside (the tool passes the classic
+    // calculation), and no contribution map (its photons have no one source).
+    EXPECT_EQ(runError({"-apE", "-apg", path("g.pm"), "1k", cornell()}),
+              "-apE: no photon ports (-apo, -apO)");
+    EXPECT_EQ(runError({"-apE", "-apo", "white", "-apg", path("g.pm"), "1k", cornell()}),
+              "-apE: not available in this program");
 }
 
 // The binary part of a map file: what follows the header (which holds the command line).

@@ -201,84 +201,6 @@ void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool i
     }
 }
 
-PhotonTracer::MediumStep PhotonTracer::travelMedium(
-    Ray& ray, const Hit* hit, const material::Medium& m, Color& flux, double& travelled, Rng& rng,
-    Rng& storeRng, const std::array<double, kNumPhotonMapTypes>& prob, PhotonBins& out) const {
-    // The free path is drawn from the mean extinction, as RADIANCE does; the flux is
-    // weighted per channel by the ratio of the true probabilities to the drawn one (1 in
-    // a grey medium), which keeps coloured media unbiased where RADIANCE only renormalises
-    // the colour.
-    const double mean = m.extinction.average();
-    const double t = hit ? hit->t : HUGE_VAL;
-    const double d = -std::log(1 - rng.uniform()) / mean;
-    if (!(d < t)) {
-        if (!hit) return MediumStep::Lost;
-        for (int k = 0; k < 3; ++k) flux[k] *= std::exp((mean - m.extinction[k]) * t);
-        return MediumStep::Reached;
-    }
-    const Vec3 p = ray.origin + ray.dir * d;
-    // Past the path limit (-ld), or scattered outside the scene's cube: leaked.
-    if (!(d <= ray.tmax)) return MediumStep::Lost;
-    for (int k = 0; k < 3; ++k)
-        if (!(p[k] >= cube_.origin[k] && p[k] <= cube_.origin[k] + cube_.size))
-            return MediumStep::Lost;
-    travelled += d;
-    for (int k = 0; k < 3; ++k)
-        flux[k] *= m.extinction[k] / mean * std::exp((mean - m.extinction[k]) * d);
-    // pmap.c: every collision in a scattering medium is stored, the first one too: the
-    // volume map carries the direct in-scattering as well (render/medium.cpp).
-    const double albedo = m.albedo.average();
-    if (albedo > 1e-6 && settings_.maps[size_t(PhotonMapType::Volume)] && inRegions(p)) {
-        const double u = storeRng.uniform();
-        if (u < prob[size_t(PhotonMapType::Volume)]) {
-            RawPhoton rp = rawPhoton(p, ray.dir, flux, false);
-            rp.u = float(u);
-            out.maps[size_t(PhotonMapType::Volume)].push_back(rp);
-        }
-    }
-    if (!(rng.uniform() < albedo)) return MediumStep::Lost;  // absorbed
-    flux *= m.albedo / albedo;
-    ray = Ray{p, sampleHenyeyGreenstein(ray.dir, m.eccentricity, rng)};
-    return MediumStep::Scattered;
-}
-
-PhotonTracer::MediumStep PhotonTracer::crossMist(const material::MistParams& mist, int32_t matIndex,
-                                                 const Hit& hit, const Color& pattern, Ray& ray,
-                                                 material::Medium& medium, material::MistSet& mists,
-                                                 Color& flux, double& travelled, Rng& rng,
-                                                 Rng& storeRng,
-                                                 const std::array<double, kNumPhotonMapTypes>& prob,
-                                                 PhotonBins& out) const {
-    const material::MediumChange crossing = material::mistCrossing(mist, hit.front, pattern);
-    if (hit.front) {
-        mists.enter(matIndex);
-    } else if (!mists.leave(matIndex)) {
-        // Leaving a mist it never entered, the photon was emitted inside it (a lamp in the
-        // fog), which RADIANCE's photons ignore. The mist's own extinction, independent of
-        // the medium's already travelled, may stop it on the way here.
-        material::MediumChange enter = crossing;
-        enter.kind = material::MediumChange::Kind::EnterMist;
-        const material::Medium inside =
-            material::changeMedium(medium, enter, settings_.medium, &mist);
-        const material::Medium extra{inside.extinction - medium.extinction, inside.albedo,
-                                     inside.eccentricity};
-        medium = inside;
-        if (extra.active()) {
-            travelled -= hit.t;
-            const MediumStep step =
-                travelMedium(ray, &hit, extra, flux, travelled, rng, storeRng, prob, out);
-            if (step != MediumStep::Reached) {
-                if (step == MediumStep::Scattered) mists.enter(matIndex);
-                return step;
-            }
-            travelled += hit.t;
-        }
-    }
-    medium = material::changeMedium(medium, crossing, settings_.medium, &mist);
-    ray = spawnRay(hit, ray.dir);
-    return MediumStep::Reached;
-}
-
 // One photon's way through the scene: the state trace()'s phases read and change.
 struct PhotonTracer::PhotonPath {
     PhotonPath(const PhotonTracer& t, uint64_t seed, uint64_t index, const StoreProbabilities& p,
@@ -311,7 +233,17 @@ struct PhotonTracer::PhotonPath {
         // (LightSource::ambientOnly). RADIANCE stores them in direct maps only and loses
         // that light at final-gather hits (ceiling points under a sky through an
         // antimatter port read 0.53 for 1.21 classic).
-        firstHitIndirect = e.source >= 0 && t.plan_.sources()[size_t(e.source)].ambientOnly();
+        // Light of the surfaces outside a port (-apE) is ambient light as well.
+        firstHitIndirect =
+            e.exterior || (e.source >= 0 && t.plan_.sources()[size_t(e.source)].ambientOnly());
+        // A spotlight's focus (the length of its direction vector) lies that far behind
+        // it: classic direct light falls off as (d / (d + flen))^2 (RADIANCE source.c
+        // srcray), and photons follow it where RADIANCE's do not (manual 9).
+        if (local) {
+            const light::LightSource& src = t.plan_.sources()[size_t(e.source)];
+            if (src.spotlight() && src.shape != light::EmitterShape::Distant)
+                spotFocus = src.params.spotFocalLength;
+        }
     }
 
     // RADIANCE compat (pmap.h PMAP_CAUSTICRAY): a photon is caustic when its last scatter
@@ -322,6 +254,15 @@ struct PhotonTracer::PhotonPath {
     // map is tinted by the walls). It also needs ~3x fewer emitted photons.
     bool caustic() const { return scatters > 0 && lastSpecular; }
     bool indirect() const { return scatters > 0 || firstHitIndirect; }
+    // Where the photon's light arrives (a deposit, a diffuse or volume scatter), its flux
+    // takes the spotlight focus's fall-off over the path travelled, once; mirrors and
+    // glass before it pass the light on, as virtual sources and shadow rays do.
+    void arrive() {
+        if (spotFocus <= 0) return;
+        const double f = travelled / (travelled + spotFocus);
+        flux *= f * f;
+        spotFocus = 0;
+    }
     // On through `hit` unchanged (PMAP_XFER): not a bounce.
     void passOn(const Hit& hit) {
         ray = spawnRay(hit, ray.dir);
@@ -336,6 +277,7 @@ struct PhotonTracer::PhotonPath {
     material::Medium medium;
     material::MistSet mists;
     bool firstHitIndirect = false;
+    double spotFocus = 0;  // pending focal length of a spotlight's photon
     long scatters = 0, passes = 0;
     bool lastSpecular = false;
     bool firstSegment = true;
@@ -349,6 +291,83 @@ struct PhotonTracer::PhotonPath {
     const StoreProbabilities& prob;
     PhotonBins& out;
 };
+
+PhotonTracer::MediumStep PhotonTracer::travelMedium(PhotonPath& path, const Hit* hit,
+                                                    const material::Medium& m) const {
+    Ray& ray = path.ray;
+    Color& flux = path.flux;
+    // The free path is drawn from the mean extinction, as RADIANCE does; the flux is
+    // weighted per channel by the ratio of the true probabilities to the drawn one (1 in
+    // a grey medium), which keeps coloured media unbiased where RADIANCE only renormalises
+    // the colour.
+    const double mean = m.extinction.average();
+    const double t = hit ? hit->t : HUGE_VAL;
+    const double d = -std::log(1 - path.rng.uniform()) / mean;
+    if (!(d < t)) {
+        if (!hit) return MediumStep::Lost;
+        for (int k = 0; k < 3; ++k) flux[k] *= std::exp((mean - m.extinction[k]) * t);
+        return MediumStep::Reached;
+    }
+    const Vec3 p = ray.origin + ray.dir * d;
+    // Past the path limit (-ld), or scattered outside the scene's cube: leaked.
+    if (!(d <= ray.tmax)) return MediumStep::Lost;
+    for (int k = 0; k < 3; ++k)
+        if (!(p[k] >= cube_.origin[k] && p[k] <= cube_.origin[k] + cube_.size))
+            return MediumStep::Lost;
+    path.travelled += d;
+    for (int k = 0; k < 3; ++k)
+        flux[k] *= m.extinction[k] / mean * std::exp((mean - m.extinction[k]) * d);
+    path.arrive();
+    // pmap.c: every collision in a scattering medium is stored, the first one too: the
+    // volume map carries the direct in-scattering as well (render/medium.cpp).
+    const double albedo = m.albedo.average();
+    if (albedo > 1e-6 && settings_.maps[size_t(PhotonMapType::Volume)] && inRegions(p)) {
+        const double u = path.storeRng.uniform();
+        if (u < path.prob[size_t(PhotonMapType::Volume)]) {
+            RawPhoton rp = rawPhoton(p, ray.dir, flux, false);
+            rp.u = float(u);
+            path.out.maps[size_t(PhotonMapType::Volume)].push_back(rp);
+        }
+    }
+    if (!(path.rng.uniform() < albedo)) return MediumStep::Lost;  // absorbed
+    flux *= m.albedo / albedo;
+    ray = Ray{p, sampleHenyeyGreenstein(ray.dir, m.eccentricity, path.rng)};
+    return MediumStep::Scattered;
+}
+
+PhotonTracer::MediumStep PhotonTracer::crossMist(PhotonPath& path, const material::MistParams& mist,
+                                                 int32_t matIndex, const Hit& hit,
+                                                 const Color& pattern) const {
+    material::Medium& medium = path.medium;
+    material::MistSet& mists = path.mists;
+    const material::MediumChange crossing = material::mistCrossing(mist, hit.front, pattern);
+    if (hit.front) {
+        mists.enter(matIndex);
+    } else if (!mists.leave(matIndex)) {
+        // Leaving a mist it never entered, the photon was emitted inside it (a lamp in the
+        // fog), which RADIANCE's photons ignore. The mist's own extinction, independent of
+        // the medium's already travelled, may stop it on the way here.
+        material::MediumChange enter = crossing;
+        enter.kind = material::MediumChange::Kind::EnterMist;
+        const material::Medium inside =
+            material::changeMedium(medium, enter, settings_.medium, &mist);
+        const material::Medium extra{inside.extinction - medium.extinction, inside.albedo,
+                                     inside.eccentricity};
+        medium = inside;
+        if (extra.active()) {
+            path.travelled -= hit.t;
+            const MediumStep step = travelMedium(path, &hit, extra);
+            if (step != MediumStep::Reached) {
+                if (step == MediumStep::Scattered) mists.enter(matIndex);
+                return step;
+            }
+            path.travelled += hit.t;
+        }
+    }
+    medium = material::changeMedium(medium, crossing, settings_.medium, &mist);
+    path.ray = spawnRay(hit, path.ray.dir);
+    return MediumStep::Reached;
+}
 
 void PhotonTracer::trace(uint64_t seed, uint64_t index, const StoreProbabilities& prob,
                          PhotonBins& out) const {
@@ -366,8 +385,7 @@ bool PhotonTracer::advance(PhotonPath& p) const {
     if (!(p.ray.tmax > 0)) return false;
     std::optional<Hit> hit = geometry_.closestHit(p.ray);
     if (p.medium.active()) {
-        MediumStep step = travelMedium(p.ray, hit ? &*hit : nullptr, p.medium, p.flux, p.travelled,
-                                       p.rng, p.storeRng, p.prob, p.out);
+        MediumStep step = travelMedium(p, hit ? &*hit : nullptr, p.medium);
         if (step == MediumStep::Lost) return false;
         if (step == MediumStep::Scattered) {
             // Surface photons after this are indirect (global), never caustic.
@@ -420,8 +438,10 @@ bool PhotonTracer::atSurface(PhotonPath& p, const Hit& hit) const {
     if (mi.antimatter) {
         // pmapmat.c clipPhotonScatter: a sensor stores photons entering it (front side)
         // and passes them on unscattered, like any antimatter.
-        if (hit.front && (roles_[size_t(at.material)] & kSensor) && surf->storeAllowed)
+        if (hit.front && (roles_[size_t(at.material)] & kSensor) && surf->storeAllowed) {
+            p.arrive();
             deposit(hit, true, p.flux, p.indirect(), p.caustic(), p.prob, p.storeRng, p.out);
+        }
         p.clip.cross(mi.clips, hit.front);
         p.passOn(hit);
         return true;
@@ -429,9 +449,7 @@ bool PhotonTracer::atSurface(PhotonPath& p, const Hit& hit) const {
     if (const material::MistParams* mist = material::mistOf(mi)) {
         // pmapmat.c mistPhotonScatter: passed on (not a bounce) into the medium it enters
         // or returns to.
-        const MediumStep step =
-            crossMist(*mist, at.material, hit, at.pattern, p.ray, p.medium, p.mists, p.flux,
-                      p.travelled, p.rng, p.storeRng, p.prob, p.out);
+        const MediumStep step = crossMist(p, *mist, at.material, hit, at.pattern);
         if (step == MediumStep::Lost) return false;
         if (step == MediumStep::Scattered) {
             ++p.scatters;
@@ -461,6 +479,8 @@ bool PhotonTracer::scatterAt(PhotonPath& p, const Hit& hit, const ChainHit& at,
                              material::PatternPoint::atHit(p.ray.dir, hit), sp, p.scratch, p.rng);
     const material::PhotonScatter s = material::scatterPhoton(*mi.params, sp, p.rng);
     if (prepared) material::resetPreparedInputs(sp);
+    if (s.store || !(s.kind == ScatterKind::PassThrough || material::isSpecular(s.kind)))
+        p.arrive();
     if (s.store && storeAllowed)
         deposit(hit, hit.front, p.flux, p.indirect(), p.caustic(), p.prob, p.storeRng, p.out);
     if (s.kind == ScatterKind::Absorbed) return false;

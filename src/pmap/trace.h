@@ -130,18 +130,12 @@ private:
     // (pmap.c photonParticipate): a collision stores a volume photon (where the medium
     // scatters), is survived by albedo roulette and turns the ray by the phase function.
     enum class MediumStep { Reached, Scattered, Lost };
-    MediumStep travelMedium(Ray& ray, const Hit* hit, const material::Medium& m, Color& flux,
-                            double& travelled, Rng& rng, Rng& storeRng,
-                            const std::array<double, kNumPhotonMapTypes>& prob,
-                            PhotonBins& out) const;
+    MediumStep travelMedium(PhotonPath& path, const Hit* hit, const material::Medium& m) const;
     // A photon at a mist boundary `hit` (material `matIndex`): the medium it goes on in,
     // and, leaving a mist it never entered, the collision it may have had in it since it
-    // started there (travelMedium's steps; Reached: it goes on, `ray` spawned past).
-    MediumStep crossMist(const material::MistParams& mist, int32_t matIndex, const Hit& hit,
-                         const Color& pattern, Ray& ray, material::Medium& medium,
-                         material::MistSet& mists, Color& flux, double& travelled, Rng& rng,
-                         Rng& storeRng, const std::array<double, kNumPhotonMapTypes>& prob,
-                         PhotonBins& out) const;
+    // started there (travelMedium's steps; Reached: it goes on, its ray spawned past).
+    MediumStep crossMist(PhotonPath& path, const material::MistParams& mist, int32_t matIndex,
+                         const Hit& hit, const Color& pattern) const;
 
     const Scene& scene_;
     const SceneGeometry& geometry_;

@@ -120,8 +120,6 @@ private:
 //    not by RADIANCE's per-source hit statistics gathered over the run (those depend on
 //    the order rays are traced in, i.e. on threads);
 //  - the -dp pretest is geometric (opaque surfaces only; see source_list.h);
-//  - spotlights: the cone cut-off is applied; the focal length (a virtual emission point
-//    behind the spot) is not;
 //  - a local source seen through a prism: sampled through the prism's affine map, its
 //    samples' solid angles scaled by the map's Jacobian (RADIANCE transforms the source's
 //    axes but keeps its area); virtual sources are not given RADIANCE's spot cones;
