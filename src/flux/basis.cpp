@@ -174,31 +174,4 @@ ReceiverBins receiverBins(BasisKind kind, int size, char sign, const Vec3& n, co
     return r;
 }
 
-const std::string& shirleyChiuDefinitions() {
-    // Written for radphoton: the receiving side of squareToDisc. -D (the ray reversed)
-    // in the receiver's frame: sc_cos along the normal, (sc_u, sc_v) in its plane with
-    // v towards the up direction and u towards RHS * (up x normal); scaled to the disc
-    // radius sin(theta), mapped back to the square by octant pairs, binned N x N with
-    // the v index changing fastest. Rays from behind the surface get -1.
-    static const std::string text =
-        "RHS=1;"
-        "sc_cos=-Dx*rNx-Dy*rNy-Dz*rNz;"
-        "sc_upn=rNx*Ux+rNy*Uy+rNz*Uz;"
-        "sc_u=-RHS*(Dx*(Uy*rNz-Uz*rNy)+Dy*(Uz*rNx-Ux*rNz)+Dz*(Ux*rNy-Uy*rNx));"
-        "sc_v=-(Dx*Ux+Dy*Uy+Dz*Uz)-sc_cos*sc_upn;"
-        "sc_len2=sc_u*sc_u+sc_v*sc_v;"
-        "sc_scale=if(sc_len2-1e-7,sqrt((1-sc_cos*sc_cos)/sc_len2),0);"
-        "sc_x=sc_u*sc_scale;"
-        "sc_y=sc_v*sc_scale;"
-        "sc_r=sqrt(sc_x*sc_x+sc_y*sc_y);"
-        "sc_phi0=atan2(sc_y,sc_x);"
-        "sc_phi=if(-sc_phi0-PI/4,sc_phi0+2*PI,sc_phi0);"
-        "sc_oct=floor((sc_phi+PI/4)/(PI/2))+1;"
-        "sc_a=select(sc_oct,sc_r,(PI/2-sc_phi)*sc_r/(PI/4),-sc_r,"
-        "(sc_phi-3*PI/2)*sc_r/(PI/4),sc_r);"
-        "sc_b=select(sc_oct,sc_phi*sc_r/(PI/4),sc_r,(PI-sc_phi)*sc_r/(PI/4),-sc_r,-sc_r);"
-        "scbin=if(sc_cos,floor((sc_a+1)/2*SCdim)*SCdim+floor((sc_b+1)/2*SCdim),-1);";
-    return text;
-}
-
 }  // namespace rp::flux

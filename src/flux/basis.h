@@ -45,9 +45,4 @@ struct ReceiverBins {
 // `normal` and `up` are the receiver's (unit; up as set or defaulted). `sign` '+' or '-'.
 ReceiverBins receiverBins(BasisKind kind, int size, char sign, const Vec3& normal, const Vec3& up);
 
-// The Shirley-Chiu bin function rcontrib needs for a receiver (RADIANCE loads it from
-// disk2square.cal, which lib/ does not hold): "scbin" and the square-disc conversion,
-// reading Dx Dy Dz and the -p parameters SCdim rNx rNy rNz Ux Uy Uz RHS.
-const std::string& shirleyChiuDefinitions();
-
 }  // namespace rp::flux

@@ -56,10 +56,7 @@ public:
         : b_({std::string(RP_SOURCE_DIR) + "/lib"}) {
         const ReceiverBins r = receiverBins(kind, size, sign, n, up);
         b_.loadFile("rayinit.cal");
-        if (kind == BasisKind::ShirleyChiu)
-            b_.loadString(shirleyChiuDefinitions());
-        else if (!r.calFile.empty())
-            b_.loadFile(r.calFile);
+        if (!r.calFile.empty()) b_.loadFile(r.calFile);
         std::string params = r.params;
         for (char& c : params)
             if (c == ',') c = ';';

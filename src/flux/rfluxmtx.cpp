@@ -4,13 +4,11 @@
 #include <optional>
 #include <set>
 
-#include "calc/search_path.h"
 #include "flux/basis.h"
 #include "flux/flux_scan.h"
 #include "flux/sender_rays.h"
 #include "render/rcontrib.h"
 #include "util/header.h"
-#include "util/paths.h"
 
 namespace rp::flux {
 
@@ -74,20 +72,8 @@ render::RcontribScene sceneOf(const RfluxmtxCommand& cmd, const LoadOptions& loa
     return scene;
 }
 
-// -bn is parsed here only to fill the options; the counts come from the bases, since
-// "SCdim*SCdim" needs disk2square.cal, which provideShirleyChiu may replace only after
-// parsing.
+// -bn is parsed here only to fill the options; the counts come from the bases.
 double anyBinCount(const std::vector<render::CalcDefinition>&, const std::string&) { return 1; }
-
-// disk2square.cal is not in lib/: unless the search path finds one, its scbin comes from
-// our own definitions (basis.h), while the header shows RADIANCE's -f.
-void provideShirleyChiu(std::vector<render::CalcDefinition>& defs) {
-    for (render::CalcDefinition& d : defs) {
-        if (!d.file || d.text != "disk2square.cal") continue;
-        if (calc::findFile(d.text, calc::defaultSearchPath(projectLibDir()))) continue;
-        d = {false, shirleyChiuDefinitions()};
-    }
-}
 
 }  // namespace
 
@@ -110,7 +96,6 @@ RfluxmtxSetup setupRfluxmtx(const RfluxmtxCommand& cmd, const LoadOptions& load)
     s.options = render::parseRcontribArgs(args, &anyBinCount);
     for (size_t i = 0; i < s.options.modifiers.size() && i < bins.size(); ++i)
         s.options.modifiers[i].bins = bins[i];
-    provideShirleyChiu(s.options.definitions);
     return s;
 }
 
