@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pmap/edge_estimate.h"
 #include "util/error.h"
 
 namespace rp::pmap {
@@ -24,7 +25,8 @@ PhotonLookup::PhotonLookup(const PhotonMap& map, const LookupParams& params)
       bandwidth_(static_cast<int>(
           std::min<uint64_t>(std::max(params.bandwidth, 1), std::max<uint64_t>(map.size(), 1)))),
       fixedRadius_(params.maxSearchRadius > 0),
-      gatherTolerance_(params.gatherTolerance) {
+      gatherTolerance_(params.gatherTolerance),
+      edgeAware_(params.edgeAware) {
     const size_t queueLen = static_cast<size_t>(bandwidth_) + 1;
     hits_.resize(queueLen);
     if (fixedRadius_) {
@@ -79,6 +81,20 @@ double PhotonLookup::estimateRadius2(std::span<const FoundPhoton> hits) const {
     return 0.25 * (d1 + d2 + 2 * std::sqrt(d1 * d2));
 }
 
+double PhotonLookup::edgeFactor(std::span<const FoundPhoton> hits, size_t queueLen) {
+    if (!edgeAware_ || !(lastSearchDist2_ > 0)) return 1;
+    // The disc the photons were drawn from: with a full queue the furthest photon's (it
+    // only sets the radius; given it, the others are spread over the disc as the density
+    // says, which is what the edge model describes), else the search limit's, which then
+    // holds every photon found (far outside a caustic, lookups are short).
+    const size_t first = hits.size() == queueLen ? 1 : 0;
+    edgeU_.clear();
+    const double inv = 1.0 / lastSearchDist2_;
+    for (size_t i = first; i < hits.size(); ++i)
+        edgeU_.push_back(std::min(1.0, hits[i].dist2 * inv));
+    return fitEdge(edgeU_, edgeScratch_).factor;
+}
+
 std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& normal) {
     std::array<double, 3> irrad = {0, 0, 0};
     if (map_->empty()) return irrad;
@@ -97,6 +113,9 @@ std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& 
     // Divide by the search area pi r^2 and by pi, RADIANCE's ambient normalisation.
     const double scale = 1.0 / (kPi * kPi * r2);
     for (double& v : irrad) v *= scale;
+    const double edge = edgeFactor(hits, static_cast<size_t>(bandwidth_) + 1);
+    if (edge != 1)
+        for (double& v : irrad) v *= edge;
     return irrad;
 }
 
@@ -106,7 +125,8 @@ std::array<double, 3> PhotonLookup::contribDensity(const Vec3& pos, const Vec3& 
     if (map_->empty()) return irrad;
     const auto hits = search(pos, &normal, static_cast<size_t>(bandwidth_) + 1);
     if (hits.size() < 2) return irrad;
-    const double scale = 1.0 / (kPi * kPi * estimateRadius2(hits));
+    const double scale =
+        edgeFactor(hits, static_cast<size_t>(bandwidth_) + 1) / (kPi * kPi * estimateRadius2(hits));
     for (size_t i = 1; i < hits.size(); ++i) {  // the furthest is left out
         const FoundPhoton& p = hits[i];
         const auto f = p.fluxRgb();

@@ -2,7 +2,8 @@
 // photonPreCompDensity) and the automatic maximum search radius of findPhotons
 // (pmapdata.c; manual section 3.2.3), and the bias-compensated estimate (-ap file min max;
 // the bandwidth choice itself is in bias_comp.h). Photons come from the map's store
-// (photon_store.h), whichever it is.
+// (photon_store.h), whichever it is. The edge correction of -ape (radphoton's own) is
+// modelled in edge_estimate.h.
 #pragma once
 
 #include <array>
@@ -25,6 +26,9 @@ struct LookupParams {
     double maxSearchRadius = 0;    // -am: fixed maximum search radius (not squared); 0 = automatic
     double gatherTolerance = 0.5;  // short lookup: found < tolerance x queue length (contrib: 1)
     bool causticOnly = false;  // only caustic photons (a contribution map's, at non-ambient hits)
+    // -ape: surfaceDensity and contribDensity corrected for a straight light/shadow edge
+    // through the search disc (edge_estimate.h); off: RADIANCE's estimates.
+    bool edgeAware = false;
 };
 
 // Per-thread lookup state for one photon map: the result buffer (k+1 entries, allocated once)
@@ -59,11 +63,16 @@ public:
     // 0.25 (d1 + d2 + 2 sqrt(d1 d2)) with d1 = squared distance of the furthest (or the
     // search limit when fewer than k+1 were found, as RADIANCE's maxDist2) and d2 the
     // largest of the others. Fewer than 2 photons give 0.
+    // With LookupParams::edgeAware the result is multiplied by the edge factor of the
+    // photons (fitEdge with u = d / d1, d each photon's squared distance; all of them for a
+    // short lookup, else all but the furthest); where no edge is significant it is
+    // RADIANCE's, bit for bit.
     std::array<double, 3> surfaceDensity(const Vec3& pos, const Vec3& normal);
 
     // RADIANCE's photonContrib (pmcontrib2.c) for contribution maps: surfaceDensity, with
     // each photon's share of it (its flux / (pi * pi r^2)) handed to `each` with the photon
-    // (whose primary says which source emitted it).
+    // (whose primary says which source emitted it); with edgeAware, each share times the
+    // edge factor, as surfaceDensity.
     using PhotonShare = std::function<void(const FoundPhoton&, const std::array<double, 3>&)>;
     std::array<double, 3> contribDensity(const Vec3& pos, const Vec3& normal,
                                          const PhotonShare& each);
@@ -124,6 +133,10 @@ private:
     // of the radii of the furthest (the search limit if the queue did not fill) and the
     // second furthest, squared.
     double estimateRadius2(std::span<const FoundPhoton> hits) const;
+    // The edge factor for `hits` from search() with a queue of queueLen (edge_estimate.h),
+    // 1 without edgeAware: the k photons in the disc of squared radius d1 (the furthest
+    // photon's or, for a short lookup, the search limit's).
+    double edgeFactor(std::span<const FoundPhoton> hits, size_t queueLen);
     // findPhotons with a queue of queueLen.
     std::span<FoundPhoton> search(const Vec3& pos, const Vec3* normal, size_t queueLen);
 
@@ -142,6 +155,8 @@ private:
     std::vector<FoundPhoton> hits_;
     size_t found_ = 0;
     std::vector<std::array<double, 3>> biasPrefix_;  // scratch for compensateBias
+    bool edgeAware_;
+    std::vector<double> edgeU_, edgeScratch_;  // scratch for edgeFactor
 };
 
 }  // namespace rp::pmap

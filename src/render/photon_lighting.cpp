@@ -20,6 +20,7 @@ pmap::LookupParams PhotonLighting::lookupParams(const Map& m) const {
     // With bias compensation the search radius is sized for the upper bandwidth.
     p.bandwidth = m.use.bandwidth2 > 0 ? m.use.bandwidth2 : m.use.bandwidth;
     p.maxSearchRadius = maxSearchRadius_;
+    p.edgeAware = m.use.edgeAware;  // -ape
     // RADIANCE compat (pmcontrib2.c): contribution lookups count as short unless the
     // queue fills, so every requested photon's contribution is there.
     if (!m.map.primaries().empty()) p.gatherTolerance = 1;

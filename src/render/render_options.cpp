@@ -148,13 +148,29 @@ void readPhotonMap(OptionReader& r, RenderOptions& opt) {
                       "maximum bandwidth must exceed the minimum (bias compensation)");
         }
     }
+    use.edgeAware = opt.photonEdge;
     opt.photonMaps.push_back(use);
     // RADIANCE compat (pmapopt.c): a photon map implies at least one ambient bounce.
     if (opt.ambient.bounces == 0) opt.ambient.bounces = 1;
 }
 
+// -ape[+|-]: radphoton's own, so its -defaults line appears only when it is on (the
+// listing of RADIANCE's options stays RADIANCE 5.4's).
+void addPhotonEdge(OptionTable& t, RenderOptions& opt) {
+    OptionSpec s = flagOption("-ape", opt.photonEdge);
+    s.read = [&opt, read = s.read](OptionReader& r) {
+        read(r);
+        for (PhotonMapUse& m : opt.photonMaps) m.edgeAware = opt.photonEdge;
+    };
+    t.add(std::move(s), [&opt] {
+        return opt.photonEdge ? std::string("-ape+\t\t\t\t# photon density edge-aware\n")
+                              : std::string();
+    });
+}
+
 void addPhotonMaps(OptionTable& t, RenderOptions& opt) {
     t.add(customOption("-ap", [&opt](OptionReader& r) { readPhotonMap(r, opt); }));
+    addPhotonEdge(t, opt);
     t.add(valueOption(
               "-am", opt.photonMaxRadius, [](double v) { return v > 0; },
               "invalid max photon search radius"),

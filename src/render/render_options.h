@@ -59,6 +59,9 @@ struct PhotonMapUse {
     std::string file;
     int bandwidth = 0;   // 0: the default for the map's type (a warning is given)
     int bandwidth2 = 0;  // > bandwidth: bias compensation between the two
+    // -ape (RenderOptions::photonEdge), copied to every map whichever of -ap and -ape
+    // comes first, so that the maps' user (render/photon_lighting.h) needs nothing else.
+    bool edgeAware = false;
 };
 
 // -me/-ma/-mg/-ms: the global participating medium and the sampling distance of light
@@ -82,6 +85,9 @@ struct RenderOptions {
     MistOptions mist;
     std::vector<PhotonMapUse> photonMaps;  // -ap (repeatable)
     double photonMaxRadius = 0;            // -am: fixed maximum search radius, 0 = automatic
+    // -ape: edge-aware surface photon density estimates (radphoton's own; pmap/
+    // edge_estimate.h); off: RADIANCE's.
+    bool photonEdge = false;
     // Out-of-core photon maps (RADIANCE's OOC build, manual 3.2; pmap/photon_store.h):
     double photonPageSize = 4;  // -ac: cache page size, x the bandwidth
     uint64_t photonCache = 0;   // -aC: photons cached per thread; 0 = by memory
