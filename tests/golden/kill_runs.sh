@@ -30,7 +30,7 @@ run_killed() {
 
 # mkpmap: two maps, so that kills also fall between the first file and the second.
 mkdir ref && cd ref || exit 1
-MK=(-apg g.pm 600k -apc c.pm 200k -apr 4 -n 2 "$SCENE")
+MK=(-apg g.pm 300k -apc c.pm 100k -apr 4 -n 2 "$SCENE")
 t0=$(now); "$BIN/mkpmap" "${MK[@]}" 2> /dev/null || bad "uninterrupted mkpmap"; t1=$(now)
 cd .. || exit 1
 span=$(awk -v a="$t0" -v b="$t1" 'BEGIN { print (b - a) * 1.1 }')
