@@ -272,7 +272,7 @@ Color Ambient::indirect(const AmbientPoint& at, HemisphereTracer& tracer, Rng& r
     if (!m.cache) return m.fresh(at, tracer, rng).value_or(ambientValue());
     CacheQuery q{at.point, at.normal, at.ambientLevel, at.weight, at.offsetOrigin, at.leaks};
     Color c;
-    if (m.cache->lookup(q, &rng, c)) return c;
+    if (m.cache->lookup(q, c)) return c;
     // Inserting is thread-safe; the Impl is logically the shared cache.
     return const_cast<Impl&>(m).makeRecord(at, tracer, rng).value_or(ambientValue());
 }

@@ -3,8 +3,8 @@
 // Why a multi-level hash grid rather than RADIANCE's octree: we are not given the scene
 // cube's origin, and a grid keyed by hashed cell coordinates needs none; every level's
 // cells are twice the size of the one below, and a record lives in the finest level
-// whose cells are at least twice its reach (1.1 aa R_i, the largest distance a lookup
-// can accept), linked into every cell its reach overlaps (at most 2x2x2). A query
+// whose cells are at least twice its reach (aa R_i, the largest distance a lookup
+// accepts), linked into every cell its reach overlaps (at most 2x2x2). A query
 // therefore probes one cell per level in use. Each link copies what the first tests
 // need (position, radius, level, weight) into one cache line, so rejecting a candidate
 // does not touch the record itself.
@@ -22,6 +22,7 @@
 #include <bit>
 #include <cmath>
 #include <deque>
+#include <optional>
 
 #include "render/ambient_hemisphere.h"
 
@@ -29,9 +30,6 @@ namespace rp::render {
 
 namespace {
 
-// RADIANCE compat (ambient.c sumambient): the lookup jitters the accuracy by
-// [0.9, 1.1), so a record can be accepted out to 1.1 aa R.
-constexpr double kMaxJitter = 1.1;
 constexpr int kLevels = 64;
 
 uint64_t mixKey(uint64_t h) {
@@ -155,8 +153,8 @@ struct IrradianceCache::Cells {
 
 IrradianceCache::IrradianceCache(double accuracy, double minRadius, double sceneSize)
     : accuracy_(accuracy), minRadius_(minRadius), cells_(std::make_unique<Cells>()) {
-    double reach = kMaxJitter * accuracy_ *
-                   (minRadius > 0 ? minRadius : (sceneSize > 0 ? sceneSize / 1024 : 1e-3));
+    double reach =
+        accuracy_ * (minRadius > 0 ? minRadius : (sceneSize > 0 ? sceneSize / 1024 : 1e-3));
     cell0_ = std::max(2 * reach, 1e-12);
     cells_->tables.push_back(std::make_unique<Cells::Table>(1024));
     cells_->current.store(cells_->tables.back().get(), std::memory_order_release);
@@ -164,42 +162,67 @@ IrradianceCache::IrradianceCache(double accuracy, double minRadius, double scene
 
 IrradianceCache::~IrradianceCache() = default;
 
-Color extrapolate(const AmbientRecord& rec, const Vec3& p, const Vec3& n, bool gradients) {
+std::optional<Color> extrapolate(const AmbientRecord& rec, const Vec3& p, const Vec3& n,
+                                 bool gradients) {
+    // RADIANCE compat (ambient.c extambient): the factor is clamped to [0.05, 20], and a
+    // record whose extrapolation falls to the floor is not used at all (counting it as
+    // black with its full weight would darken its neighbours' estimate).
     double f = 1;
     if (gradients) {
         f += dot(rec.gradPosition, p - rec.position);
         f += dot(rec.gradDirection, cross(rec.normal, n));
     }
-    if (f <= 0) return {};
-    return rec.value * f;
+    if (!(f > 0.05)) return std::nullopt;
+    return rec.value * std::min(f, 20.0);
 }
 
-bool IrradianceCache::lookup(const CacheQuery& q, Rng* jitter, Color& out) const {
-    const double maxErr = accuracy_ * (jitter ? kMaxJitter : 1.0);
-    const double maxErr2 = maxErr * maxErr;
-    // RADIANCE compat (sumambient "ray behind test"): tolerance in scene units.
-    const double behindTolerance = minRadius_ * accuracy_ + 1e-3;
+namespace {
+
+double maxNormalAngle(double accuracy, double weight) {
+    // RADIANCE compat (ambient.c sumambient): 10 degrees plus -aa radians, widened toward
+    // 90 degrees for light rays, whose error matters less.
+    const double base = 10 * kPi / 180 + accuracy;
+    return weight < 0.6 ? (base - kPi / 2) * std::pow(weight, 0.13) + kPi / 2 : base;
+}
+
+}  // namespace
+
+bool IrradianceCache::lookup(const CacheQuery& q, Color& out) const {
+    // RADIANCE compat (RADIANCE 5 ambient.c sumambient): a record is used where the
+    // query lies within -aa of its radius (|P - Pi| / Ri < aa, the distance off its
+    // plane included) and its normal within maxNormalAngle; each is weighted by the
+    // product of two hat functions falling to zero at those limits. Ward's 1/e weight
+    // (RADIANCE 3) let the nearest record dominate: its noise passed whole into every
+    // point beside it (the large-ground room's work-plane mean at -ab 5 spread twice as
+    // wide between runs as RADIANCE 5's), and its edges needed a jittered limit to hide.
+    const double aa = accuracy_;
+    const double aa2 = aa * aa;
+    const double maxAngle = maxNormalAngle(aa, q.weight);
+    const double maxAngle2 = maxAngle * maxAngle;
+    // RADIANCE compat ("modified ray behind test"): tolerance in scene units.
+    const double behindTolerance = minRadius_ * aa + 1e-3;
     Color sum;
     double weightSum = 0;
 
     auto consider = [&](const Node& n) {
-        Vec3 d = q.point - n.position;
-        double e1sq = dot(d, d) / (n.radius * n.radius);
-        if (e1sq > maxErr2) return;
-        // A record from a deeper bounce or a lighter ray is less accurate than wanted.
-        if (n.level > q.level || n.weight < q.weight - 1e-6) return;
+        const Vec3 d = q.point - n.position;
+        const double t2 = dot(d, d) / (n.radius * n.radius);
+        if (t2 >= aa2) return;
+        // A record from a deeper bounce, or from the same one for a much lighter ray,
+        // is less accurate than wanted.
+        if (n.level > q.level || (n.level == q.level && n.weight < 0.9 * q.weight)) return;
         const AmbientRecord& r = *n.rec;
-        double e2sq = (1 - dot(r.normal, q.normal)) * q.weight;
-        if (e2sq < 0) e2sq = 0;
-        if (e1sq + e2sq > maxErr2) return;
-        // Skip records lying in front of the point (they see a different hemisphere).
-        if (0.5 * dot(d, r.normal + q.normal) < -behindTolerance) return;
-        double e = std::sqrt(e1sq) + std::sqrt(e2sq);
-        double limit = jitter ? accuracy_ * (0.9 + 0.2 * jitter->uniform()) : accuracy_;
-        if (e > limit) return;
+        const double cosAngle = dot(r.normal, q.normal);
+        if (cosAngle <= 0) return;
+        const double r2 = 2 - 2 * cosAngle;  // squared angle, nearly
+        if (r2 >= maxAngle2) return;
+        // Records in front of the point see a different hemisphere.
+        if (dot(d, r.normal) < -behindTolerance) return;
         if (r.corral && q.leaks && leaks(r, q)) return;
-        double w = e <= 1e-3 ? 1e3 : 1 / e;  // Ward's weight 1/e, capped as RADIANCE
-        sum += extrapolate(r, q.point, q.normal, useGradients_) * w;
+        const std::optional<Color> v = extrapolate(r, q.point, q.normal, useGradients_);
+        if (!v) return;
+        const double w = (1 - std::sqrt(r2) / maxAngle) * (1 - std::sqrt(t2) / aa);
+        sum += *v * w;
         weightSum += w;
     };
 
@@ -220,7 +243,7 @@ bool IrradianceCache::lookup(const CacheQuery& q, Rng* jitter, Color& out) const
 }
 
 void IrradianceCache::insert(const AmbientRecord& rec, bool isNew) {
-    const double reach = kMaxJitter * accuracy_ * rec.radius;
+    const double reach = accuracy_ * rec.radius;
     int level = 0;
     double cell = cell0_;
     while (cell < 2 * reach && level < kLevels - 1) {

@@ -9,10 +9,10 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include "util/color.h"
-#include "util/rng.h"
 #include "util/vec.h"
 
 namespace rp::render {
@@ -65,13 +65,14 @@ public:
     IrradianceCache(const IrradianceCache&) = delete;
     IrradianceCache& operator=(const IrradianceCache&) = delete;
 
-    // Weighted extrapolation of every record that covers the query within -aa
-    // (RADIANCE sumambient): Ward's error e = |P-Pi|/Ri + sqrt((1 - N.Ni) weight), accepted
-    // when e < aa times a jitter in [0.9, 1.1) drawn from `jitter` (null: no jitter);
-    // records in front of the point, computed at a deeper level or for a lighter ray, or
-    // seen past an occluder in their corral (q.leaks) are skipped. Returns false when no
-    // record passes (the caller computes a new one).
-    bool lookup(const CacheQuery& q, Rng* jitter, Color& out) const;
+    // Weighted extrapolation of every record that covers the query (RADIANCE 5
+    // sumambient): within aa R_i of the record and within 10 degrees plus aa radians of
+    // its normal (wider for light rays), weighted by hat functions of both; records in
+    // front of the point, computed at a deeper level or for a much lighter ray, seen past
+    // an occluder in their corral (q.leaks), or whose gradients extrapolate to nearly
+    // nothing are skipped. Returns false when no record passes (the caller computes a new
+    // one).
+    bool lookup(const CacheQuery& q, Color& out) const;
 
     // Adds a record; safe concurrently with lookups and other inserts. `isNew` records
     // are also kept, in insertion order, for newRecords().
@@ -99,7 +100,9 @@ private:
 };
 
 // Value of `rec` extrapolated to point p with normal n (RADIANCE extambient): the first-
-// order Taylor expansion with both gradients, clamped at zero.
-Color extrapolate(const AmbientRecord& rec, const Vec3& p, const Vec3& n, bool gradients);
+// order Taylor expansion with both gradients, at most 20 times the value; nothing where
+// it falls below 0.05 times the value (the record is not used there).
+std::optional<Color> extrapolate(const AmbientRecord& rec, const Vec3& p, const Vec3& n,
+                                 bool gradients);
 
 }  // namespace rp::render

@@ -47,6 +47,10 @@ struct MediaState {
     material::MistSet mists;
 };
 
+// Why a bound on transmissions at all: they keep the ray's level, so with -lw 0 nothing
+// else would stop a ray between two facing prisms. 256 panes is past any building.
+constexpr int kMaxTransits = 256;
+
 // RADIANCE's ray type bits that matter for over-counting (badcomponent): a ray that
 // descends from an ambient sample or a sampled (rough) specular ray must not see the
 // emission of surfaces the direct calculation already counts.
@@ -67,6 +71,9 @@ struct RayState {
     // rcoef). Participating media are not part of it, as in RADIANCE.
     ContributionSink* contrib = nullptr;
     Color contribCoef{1, 1, 1};
+    // Surfaces passed straight through since the last reflection: they do not count
+    // towards -lr, so this bounds a chain of them instead (kMaxTransits).
+    int transits = 0;
     PathDepth pathDepth() const { return {ambientLevel, depth}; }
 };
 

@@ -148,5 +148,32 @@ lamp sphere bulb 0 0 4 0 0 1 0.1
     EXPECT_EQ(m.value, Color{});
 }
 
+// RADIANCE counts reflections towards -lr, not light passing on through glass (TRANS):
+// a ray through two panes to a glow sees it even at -lr 1. Values from RADIANCE 5.4,
+// `echo 0 0 .5 0 0 1 | rtrace -h -ab 0 -lr N` on this scene: 6.231210 at -lr 1 (the
+// panes' reflection of the floor needs level 2), 6.263053 from -lr 2 up.
+TEST(Renderer, TransmissionDoesNotCountTowardsTheReflectionLimit) {
+    Scene scene = parseScene(R"(
+void glass pane_glass 0 0 3 .86 .86 .86
+pane_glass polygon pane1 0 0 12  -1 -1 1  1 -1 1  1 1 1  -1 1 1
+pane_glass polygon pane2 0 0 12  -1 -1 2  1 -1 2  1 1 2  -1 1 2
+void glow white_glow 0 0 4 10 10 10 0
+white_glow polygon lamp 0 0 12  -1 -1 3  -1 1 3  1 1 3  1 -1 3
+void plastic grey 0 0 5 .5 .5 .5 0 0
+grey polygon floor 0 0 12  -5 -5 0  -5 5 0  5 5 0  5 -5 0
+)",
+                             "panes.rad");
+    SceneGeometry geometry(scene);
+    for (auto [limit, want] : {std::pair{1, 6.231210}, {2, 6.263053}, {8, 6.263053}}) {
+        RenderOptions opt;
+        opt.ambient.bounces = 0;
+        opt.limits.maxDepth = limit;
+        Renderer renderer(scene, geometry, opt, calc::defaultSearchPath(projectLibDir()));
+        auto ctx = renderer.makeContext();
+        RayResult r = renderer.trace(*ctx, {0, 0, 0.5}, {0, 0, 1}, 0);
+        EXPECT_NEAR(r.value.r, want, 2e-6) << "-lr " << limit;
+    }
+}
+
 }  // namespace
 }  // namespace rp::render

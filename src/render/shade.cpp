@@ -293,7 +293,16 @@ void Renderer::Context::addSpecularRays(const Hit& hit, const RayState& state,
         const material::SpecularRay& sr = b.rays[size_t(i)];
         Color rc = sr.weight;
         RayState child = state;  // the clip set too
-        child.depth = state.depth + 1;
+        // RADIANCE compat (raytrace.c rayorigin): reflected and sampled rays count towards
+        // -lr (RAYREFL); light passing on through a surface, straight or refracted (TRANS,
+        // REFRACTED: glass, dielectric, trans, prisms, a BSDF's direct component), keeps
+        // its parent's level. Counted, the sky behind a window went dark for rays near
+        // the limit (a ceiling record at -lr 8 read 1 % of its neighbours), and a final
+        // gather through double glazing stopped at the second pane.
+        const bool passesOn = sr.kind == material::ScatterKind::SpecularTransmission && !sr.sampled;
+        child.depth = state.depth + (passesOn ? 0 : 1);
+        child.transits = passesOn ? state.transits + 1 : 0;
+        if (child.transits > kMaxTransits) continue;
         child.weight = state.weight * material::spawnedWeight(rc);
         child.primary = false;
         child.irradianceHit = false;
