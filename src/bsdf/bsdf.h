@@ -104,6 +104,21 @@ private:
     }
 };
 
+// A Klems BSDF as a matrix of coefficients, RADIANCE's for rmtxop and dctimestep (cmbsdf.c
+// cm_loadBTDF, cm_loadBRDF): rows are outgoing patches and columns incident ones, each
+// entry the BSDF (Lambertian part included) times the incident patch's projected solid
+// angle, so that the matrix maps incident radiance per patch to outgoing radiance.
+// Transmission is for light arriving from the back (+Z is the room side), from the
+// front's data by reciprocity where that is all there is; a set with no non-diffuse data
+// is its Lambertian part on the Klems Full basis (145 x 145).
+enum class MatrixPart : uint8_t { Transmission, ReflectionFront, ReflectionBack };
+struct CoefficientMatrix {
+    int rows = 0, cols = 0;
+    std::vector<Color> values;  // row by row
+};
+// Throws InputError for data that are not one Klems matrix (a tensor tree).
+CoefficientMatrix klemsCoefficients(const BsdfData& d, MatrixPart part);
+
 // Loads and checks an XML BSDF file. Throws InputError "file:line: message" for a file
 // that cannot be read, broken XML, a file that is not a BSDF, an unknown basis, or
 // scattering data of the wrong size; notSupportedYet for data RADIANCE cannot read either.

@@ -386,3 +386,87 @@ void loadKlems(const pugi::xml_node& layer, const XmlContext& ctx, BsdfData& sd)
 }
 
 }  // namespace rp::bsdf::detail
+
+namespace rp::bsdf {
+
+namespace {
+
+using detail::KlemsMatrix;
+
+// The Lambertian part alone (cmbsdf.c cm_bsdf_Lamb): 145 x 145 on the Klems Full basis.
+CoefficientMatrix lambertianCoefficients(const Color& bsdf) {
+    const KlemsBasis& full = standardKlemsBases().front();
+    CoefficientMatrix m{full.nangles, full.nangles, {}};
+    m.values.resize(static_cast<std::size_t>(m.rows) * m.cols);
+    for (int c = 0; c < m.cols; ++c)
+        for (int r = 0; r < m.rows; ++r)
+            m.values[static_cast<std::size_t>(r) * m.cols + c] = bsdf * detail::patchOmega(full, c);
+    return m;
+}
+
+// One entry (cmbsdf.c cm_bsdf): the BSDF of outgoing patch o and incident patch i with
+// the Lambertian part added back, times the projected solid angle; RADIANCE leaves an
+// entry whose non-diffuse part is nothing (the data's minimum, taken out) at zero.
+Color entry(const KlemsMatrix& m, int o, int i, const Color& diffuse, double omega) {
+    const float y = m.at(o, i);
+    if (!(y > 0) || !(omega > 0)) return {};
+    return (m.value(m.inAxis().vector(i, .5, .5), m.outAxis().vector(o, .5, .5)) + diffuse) * omega;
+}
+
+}  // namespace
+
+CoefficientMatrix klemsCoefficients(const BsdfData& d, MatrixPart part) {
+    const ScatteringSet* set = nullptr;
+    Color diffuse;
+    bool reciprocal = false;
+    switch (part) {
+        case MatrixPart::Transmission:
+            // cmbsdf.c cm_loadBTDF: light arriving from the back (outside), else the
+            // front's data by reciprocity.
+            reciprocal = !d.tb;
+            set = reciprocal ? (d.tf ? &*d.tf : nullptr) : &*d.tb;
+            diffuse = (reciprocal ? d.tLambFront : d.tLambBack) * (1 / kPi);
+            break;
+        case MatrixPart::ReflectionFront:
+            set = d.rf ? &*d.rf : nullptr;
+            diffuse = d.rLambFront * (1 / kPi);
+            break;
+        case MatrixPart::ReflectionBack:
+            set = d.rb ? &*d.rb : nullptr;
+            diffuse = d.rLambBack * (1 / kPi);
+            break;
+    }
+    if (!set) return lambertianCoefficients(diffuse);
+    const auto* m = set->components.size() == 1
+                        ? dynamic_cast<const KlemsMatrix*>(set->components.front().get())
+                        : nullptr;
+    if (!m) throw InputError(SourceLoc{d.path, 0}, "unsupported BSDF (not one Klems matrix)");
+    CoefficientMatrix out;
+    if (!reciprocal) {
+        out = {m->nout(), m->ninc(), {}};
+        out.values.resize(static_cast<std::size_t>(out.rows) * out.cols);
+        for (int c = 0; c < out.cols; ++c)
+            for (int r = 0; r < out.rows; ++r)
+                out.values[static_cast<std::size_t>(r) * out.cols + c] =
+                    entry(*m, r, c, diffuse, m->inAxis().omega(c));
+        return out;
+    }
+    // cmbsdf.c cm_bsdf_recip: rows and columns swap roles; each index is carried to the
+    // other side by reversing its patch's centre direction through the surface.
+    auto flip = [](Vec3 v) { return Vec3{v.x, v.y, -v.z}; };
+    out = {m->ninc(), m->nout(), {}};
+    out.values.resize(static_cast<std::size_t>(out.rows) * out.cols);
+    for (int c = 0; c < out.cols; ++c) {
+        int ro = m->outAxis().index(flip(m->inAxis().vector(c, .5, .5)));
+        if (ro < 0) ro = c;
+        for (int r = 0; r < out.rows; ++r) {
+            int ri = m->inAxis().index(flip(m->outAxis().vector(r, .5, .5)));
+            if (ri < 0) ri = r;
+            out.values[static_cast<std::size_t>(r) * out.cols + c] =
+                entry(*m, ro, ri, diffuse, m->outAxis().omega(ro));
+        }
+    }
+    return out;
+}
+
+}  // namespace rp::bsdf

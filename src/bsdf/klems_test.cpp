@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -363,5 +364,74 @@ TEST(MultiSample, FollowsRadiancesHilbertCurve) {
         EXPECT_NEAR(t[1], r[2], 1e-8) << r[0];
     }
 }
+
+// rmtxop's and dctimestep's view of a Klems file (cmbsdf.c). Entries (row, column) and
+// the sum of all 145 x 145 x 3 from RADIANCE 5.4: `rmtxop -fa [-rf|-rb] blinds_klems.xml`,
+// and for the reciprocal path the same file without its "Transmission Front" block.
+TEST(Klems, CoefficientMatricesAreRadiances) {
+    RP_REQUIRE_SHARED("validation/bsdf");
+    struct Pick {
+        int r, c;
+        double v;
+    };
+    struct Case {
+        MatrixPart part;
+        bool withoutTransmissionFront;
+        double total;
+        std::vector<Pick> picks;
+    };
+    const std::vector<Case> cases = {
+        {MatrixPart::Transmission,
+         false,
+         226.410327,
+         {{0, 0, 5.908707976341248e-01},
+          {10, 20, 3.914254557457753e-05},
+          {72, 5, 6.761297117918730e-04},
+          {144, 144, 4.666657745838165e-02}}},
+        {MatrixPart::ReflectionFront,
+         false,
+         107.488993,
+         {{0, 0, 8.758060284890234e-04},
+          {10, 20, 2.068023895844817e-03},
+          {100, 3, 8.657445432618260e-04}}},
+        {MatrixPart::ReflectionBack,
+         false,
+         107.720843,
+         {{0, 0, 8.987153996713459e-04},
+          {10, 20, 4.665984306484461e-05},
+          {100, 3, 1.197162433527410e-03}}},
+        {MatrixPart::Transmission,
+         true,
+         226.277684,
+         {{0, 0, 5.884844064712524e-01},
+          {10, 20, 5.877956573385745e-05},
+          {144, 144, 2.286855317652225e-02}}},
+    };
+    std::ifstream f(kKlems);
+    std::stringstream text;
+    text << f.rdbuf();
+    std::string reduced = text.str();
+    const size_t front = reduced.find("Transmission Front");
+    ASSERT_NE(front, std::string::npos);
+    const size_t from = reduced.rfind("<WavelengthData>", front);
+    const size_t to = reduced.find("</WavelengthData>", front) + std::strlen("</WavelengthData>");
+    reduced.erase(from, to - from);
+    const auto full = loadBsdfFile(kKlems);
+    const auto tfOnly = parseBsdfText(reduced, "tf_only.xml");
+    ASSERT_FALSE(tfOnly->tb);
+    for (const Case& c : cases) {
+        const CoefficientMatrix m =
+            klemsCoefficients(c.withoutTransmissionFront ? *tfOnly : *full, c.part);
+        ASSERT_EQ(m.rows, 145);
+        ASSERT_EQ(m.cols, 145);
+        double total = 0;
+        for (const Color& v : m.values) total += v.r + v.g + v.b;
+        EXPECT_NEAR(total, c.total, 1e-6 * c.total) << int(c.part);
+        for (const Pick& p : c.picks)
+            EXPECT_NEAR(m.values[size_t(p.r) * 145 + size_t(p.c)].g, p.v, 1e-6 * p.v)
+                << int(c.part) << " " << p.r << " " << p.c;
+    }
+}
+
 }  // namespace
 }  // namespace rp::bsdf

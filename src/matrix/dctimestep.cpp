@@ -1,8 +1,6 @@
 // dctimestep's work (see dctimestep.h), after RADIANCE dctimestep.c.
 #include "matrix/dctimestep.h"
 
-#include <strings.h>
-
 #include <cstdlib>
 #include <fstream>
 #include <memory>
@@ -79,12 +77,6 @@ void sumImages(const std::string& spec, const ColorMatrix& v, std::ostream& out)
     writeColorMatrix(out, sum, first.type);
 }
 
-bool isXmlName(const std::string& s) {
-    const size_t dot = s.rfind('.');
-    return !s.empty() && s[0] != '!' && dot != std::string::npos &&
-           strcasecmp(s.c_str() + dot + 1, "xml") == 0;
-}
-
 // The sky, or V T D s with the sky: the matrix each time step is a column of.
 ColorMatrix skyProduct(const DctimestepOptions& o, int& steps) {
     const std::string skySpec = o.inputs.size() > 3    ? o.inputs[3]
@@ -97,10 +89,6 @@ ColorMatrix skyProduct(const DctimestepOptions& o, int& steps) {
     }
     const ColorMatrix sky = loadColorMatrix(skySpec, 0, steps, o.skyType);
     steps = sky.cols;
-    if (isXmlName(o.inputs[1]))
-        throw notSupportedYet(SourceLoc{o.inputs[1], 0},
-                              "Klems BSDF XML as the transmission matrix (give it as a matrix "
-                              "file)");
     const ColorMatrix t = loadColorMatrix(o.inputs[1], 0, 0, DataType::FromHeader);
     const ColorMatrix d = loadColorMatrix(o.inputs[2], t.cols, sky.rows, DataType::FromHeader);
     return multiply(t, multiply(d, sky, o.inputs[2]), o.inputs[1]);

@@ -144,11 +144,23 @@ Matrix parseMatrix(const InputData& in) {
     return m;
 }
 
-Matrix loadMatrix(const std::string& spec) {
+std::optional<bsdf::CoefficientMatrix> loadBsdfMatrix(const std::string& spec,
+                                                      bsdf::MatrixPart part) {
     const size_t dot = spec.rfind('.');
-    if (!spec.empty() && spec[0] != '!' && dot != std::string::npos &&
-        strcasecmp(spec.c_str() + dot + 1, "xml") == 0)
-        throw notSupportedYet(SourceLoc{spec, 0}, "XML BSDF files as matrices");
+    if (spec.empty() || spec[0] == '!' || dot == std::string::npos ||
+        strcasecmp(spec.c_str() + dot + 1, "xml") != 0)
+        return std::nullopt;
+    return bsdf::klemsCoefficients(*bsdf::loadBsdfFile(spec), part);
+}
+
+Matrix loadMatrix(const std::string& spec, bsdf::MatrixPart part) {
+    if (std::optional<bsdf::CoefficientMatrix> c = loadBsdfMatrix(spec, part)) {
+        Matrix m(c->rows, c->cols, 3);
+        m.type = DataType::Ascii;  // RADIANCE compat (rmx_load): as if read as text
+        for (size_t e = 0; e < c->values.size(); ++e)
+            for (int k = 0; k < 3; ++k) m.values[e * 3 + size_t(k)] = c->values[e][k];
+        return m;
+    }
     return parseMatrix(readInput(spec));
 }
 

@@ -6,9 +6,11 @@
 // color_matrix.h.
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
 
+#include "bsdf/bsdf.h"
 #include "matrix/matrix.h"
 #include "matrix/matrix_input.h"
 
@@ -16,8 +18,13 @@ namespace rp::matrix {
 
 // Loads a matrix from a file, "-" or "!command". Throws InputError naming the input (and
 // the line for ASCII data): bad or unterminated header, unknown FORMAT, missing sizes,
-// short data. XML BSDF files are refused (not supported).
-Matrix loadMatrix(const std::string& spec);
+// short data. A file named *.xml is a Klems BSDF (RADIANCE rmx_load): `part` of it as
+// bsdf::klemsCoefficients gives it, three components, ASCII.
+Matrix loadMatrix(const std::string& spec, bsdf::MatrixPart part = bsdf::MatrixPart::Transmission);
+// The coefficients of `spec` if it names an XML BSDF file (by its suffix, as RADIANCE
+// decides), else nothing.
+std::optional<bsdf::CoefficientMatrix> loadBsdfMatrix(const std::string& spec,
+                                                      bsdf::MatrixPart part);
 // The same from data already read.
 Matrix parseMatrix(const InputData& in);
 

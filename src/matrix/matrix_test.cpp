@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "matrix/rmtxop.h"
+#include "util/error.h"
+
 namespace rp::matrix {
 namespace {
 
@@ -68,6 +71,18 @@ TEST(Matrix, ScaleAndComponentTransform) {
     EXPECT_EQ(t.comps, 3);
     EXPECT_EQ(t.values, (std::vector<double>{3, 2, 6}));
     EXPECT_EQ(t.info, "N\nApplied 3x2 component transform\n");
+}
+
+// rmtxop -rf / -rb (RADIANCE compat): the next operand, if an XML BSDF, is read as its
+// front or back reflection; the choice does not carry over to the operand after it.
+TEST(Rmtxop, ReflectionChoiceBelongsToTheNextOperand) {
+    RmtxopCommand c = parseRmtxopArgs({"-rf", "a.xml", "b.xml", "-rb", "-t", "c.xml"});
+    ASSERT_EQ(c.operands.size(), 3u);
+    EXPECT_EQ(c.operands[0].part, bsdf::MatrixPart::ReflectionFront);
+    EXPECT_EQ(c.operands[1].part, bsdf::MatrixPart::Transmission);
+    EXPECT_EQ(c.operands[2].part, bsdf::MatrixPart::ReflectionBack);
+    EXPECT_TRUE(c.operands[2].ops.transpose);
+    EXPECT_THROW(parseRmtxopArgs({"-rx", "a.xml"}), InputError);
 }
 
 }  // namespace

@@ -37,6 +37,7 @@ size_t readFactors(const std::vector<std::string>& args, size_t i, size_t most,
 RmtxopCommand parseRmtxopArgs(const std::vector<std::string>& args) {
     RmtxopCommand cmd;
     UnaryOps pending;  // options for the next matrix
+    bsdf::MatrixPart pendingPart = bsdf::MatrixPart::Transmission;
     bool stdinUsed = false;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -52,8 +53,9 @@ RmtxopCommand parseRmtxopArgs(const std::vector<std::string>& args) {
             }
             if (!cmd.operands.empty() && !cmd.operands.back().nextOp)
                 cmd.operands.back().nextOp = '.';
-            cmd.operands.push_back({a, pending, 0});
+            cmd.operands.push_back({a, pending, 0, pendingPart});
             pending = {};
+            pendingPart = bsdf::MatrixPart::Transmission;
         } else {
             switch (a[1]) {
                 case 'v':
@@ -88,9 +90,15 @@ RmtxopCommand parseRmtxopArgs(const std::vector<std::string>& args) {
                         readFactors(args, i, kMaxComponents * kMaxComponents, pending.coefficients);
                     break;
                 case 'r':
-                    if (a == "-rf" || a == "-rb")
-                        throw notSupportedYet(SourceLoc{}, "rmtxop " + a + " (XML BSDF input)");
-                    throw InputError(std::string("bad option '") + a + "'; " + kUsage);
+                    // RADIANCE compat: the next operand, if an XML BSDF, is read as its
+                    // front or back reflection.
+                    if (a == "-rf")
+                        pendingPart = bsdf::MatrixPart::ReflectionFront;
+                    else if (a == "-rb")
+                        pendingPart = bsdf::MatrixPart::ReflectionBack;
+                    else
+                        throw InputError(std::string("bad option '") + a + "'; " + kUsage);
+                    break;
                 default:
                     throw InputError("unknown operation '" + a + "'; " + kUsage);
             }

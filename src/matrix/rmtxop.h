@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bsdf/bsdf.h"
 #include "matrix/matrix.h"
 
 namespace rp::matrix {
@@ -27,6 +28,8 @@ struct Operand {
     std::string spec;  // file, "-" or "!command"
     UnaryOps ops;
     char nextOp = 0;  // the operation with the next operand ('.', '+', '*', '/'), 0 last
+    // What of an XML BSDF operand is read: transmission, or -rf / -rb reflection.
+    bsdf::MatrixPart part = bsdf::MatrixPart::Transmission;
 };
 
 struct RmtxopCommand {

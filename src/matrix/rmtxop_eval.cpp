@@ -30,7 +30,7 @@ public:
 
 private:
     const Matrix& load(size_t i) {
-        if (!loaded_[i]) loaded_[i] = loadMatrix(cmd_.operands[i].spec);
+        if (!loaded_[i]) loaded_[i] = loadMatrix(cmd_.operands[i].spec, cmd_.operands[i].part);
         return *loaded_[i];
     }
     // The operand's matrix after its unary operations (loaded once, then handed over).

@@ -86,7 +86,8 @@ expect_error "g.mtx: # components do not match (3 and 1)" rmtxop a.mtx -t g.mtx
 expect_error "b.mtx: matrix sum failed: sizes differ" rmtxop a.mtx + b.mtx
 expect_error "a.mtx: -s must have one or 3 factors" rmtxop -s 1 2 a.mtx
 expect_error "missing matrix argument after '+' operation" rmtxop a.mtx +
-expect_error "not supported yet: XML BSDF files as matrices" rmtxop blinds.xml
+expect_error "nosuch.xml: cannot open BSDF file" rmtxop -rf nosuch.xml
+expect_error "bad option '-rx'" rmtxop -rx a.mtx
 expect_error "unknown operation '-q'" rmtxop -q a.mtx
 expect_error "short.mtx:8: incomplete record 4 or unexpected end of data" rcollate -fa1 -or 1 -oc 4 "$tmp/short.mtx"
 expect_error "nohead.mtx: bad header" rcollate -t "$tmp/nohead.mtx"
@@ -99,7 +100,7 @@ expect_error "short.mtx: unexpected # components" dctimestep a.mtx "$tmp/short.m
 expect_error "s4_plain.txt: unexpected EOF in header" dctimestep a.mtx s4_plain.txt
 expect_error "nofmt.mtx: missing/unknown data format in header" dctimestep a.mtx "$tmp/nofmt.mtx"
 expect_error "s4_plain.txt:4: unexpected EOF: 4 of a whole number of rows of 3 RGB values" dctimestep -n 3 a.mtx s4_plain.txt
-expect_error "not supported yet: Klems BSDF XML" dctimestep a.mtx blinds.xml d.mtx s5.mtx
+expect_error "nosuch.xml: cannot open BSDF file" dctimestep a.mtx nosuch.xml d.mtx s5.mtx
 expect_error "dc003.hdr: cannot open file" dctimestep -oc dc%03d.hdr s4.mtx
 expect_error "expected 1 to 4 matrix arguments" dctimestep
 exit $fail
