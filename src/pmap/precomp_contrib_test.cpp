@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "pmap/contrib_coeffs.h"
@@ -153,11 +154,48 @@ TEST(PrecompContrib, OptionFileGivesRcontribTheSameBins) {
               "-p \"\" -b 0 -bn 1 -m lampmat\n");
 }
 
-}  // namespace
-}  // namespace rp::pmap
-
-namespace rp::pmap {
-namespace {
+// Maps larger than memory: searched out of core (photons through a page cache of 64) with
+// the coefficients memory-mapped, every lookup finds the in-core store's nearest photon
+// and decodes the same coefficients (golden.precomp_contrib runs rcontrib both ways).
+TEST(PrecompContrib, OutOfCoreLookupsAreInCoreLookups) {
+    TempDir dir;
+    Scene sc(3000);
+    const ContribBins bins(modifiers(), {});
+    PrecompContribResult r = precomputeContrib(sc.photons, sc.primaries, sc.rays, sc.sources, bins,
+                                               settings(dir, 0.5, 2));
+    PhotonMap(PhotonMapType::PreCompContrib, std::move(r.photons))
+        .save(dir.file("map.pm"), "", true);
+    const PhotonMap inCore = PhotonMap::open(dir.file("map.pm"), StoreOptions{});
+    StoreOptions tiny;
+    tiny.cachePhotons = 64;
+    tiny.pageSize = 4;
+    tiny.bandwidth = 2;
+    const PhotonMap ooc = PhotonMap::open(dir.file("map.pm"), tiny);
+    EXPECT_EQ(inCore.store().describe(), "in core");
+    ASSERT_NE(ooc.store().describe().find("out of core"), std::string::npos);
+    ASSERT_EQ(ooc.store().size(), inCore.store().size());
+    const CoeffFile sky(coeffFile(dir.file("map.pm"), "skymat"));
+    auto a = inCore.store().makeCursor(), b = ooc.store().makeCursor();
+    std::vector<FoundPhoton> fa, fb;
+    std::vector<Rgb> ca(size_t(sky.info().bins)), cb(ca.size());
+    CoeffCodec::Scratch scratch;
+    Rng rng(8, RngDomain::Test, 0);
+    const Vec3 up{0, 0, 1};
+    for (int i = 0; i < 500; ++i) {
+        const PhotonQuery q{{rng.uniform(), rng.uniform(), 0},
+                            &up,
+                            false,
+                            std::numeric_limits<float>::infinity(),
+                            1};
+        ASSERT_EQ(inCore.store().findNearest(*a, q, fa), 1u);
+        ASSERT_EQ(ooc.store().findNearest(*b, q, fb), 1u);
+        ASSERT_EQ(fa[0].dist2, fb[0].dist2) << i;
+        ASSERT_EQ(fa[0].primary, fb[0].primary) << i;
+        ASSERT_TRUE(sky.decode(fa[0].primary, ca, scratch));
+        ASSERT_TRUE(sky.decode(fb[0].primary, cb, scratch));
+        for (size_t k = 0; k < ca.size(); ++k) ASSERT_EQ(ca[k], cb[k]) << i;
+    }
+}
 
 TEST(PrecompContrib, CompressedFilesReadBack) {
     TempDir dir;

@@ -4,8 +4,8 @@
 # them, and their daylight coefficients against rcontrib's direct density estimates on a
 # contribution map of the same photons (-apCPD with the same seed distributes the same
 # photons): the office with blinds of examples/annual under a sky and ground glow binned
-# into gendaymtx's 146 patches, 12 work-plane sensors. Then identical files for -n 1 and
-# -n 2, compression without bias, and the one-line errors.
+# into gendaymtx's 146 patches, 12 work-plane sensors. Then the same answers out of core,
+# identical files for -n 1 and -n 2, compression without bias, and the one-line errors.
 set -u
 BIN="${RP_BIN:?RP_BIN not set}"
 SRC="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}"
@@ -57,6 +57,16 @@ cmp -s want.opt pc.pm.opt || bad "option file: $(cat pc.pm.opt)"
 # the same rays and seeds). A wrong radiance scaling, bin or caustic population moves the
 # mean by 10 % or more.
 compare direct.txt pre.txt 0.02 0.05
+
+# Larger than memory: photons searched out of core (-aC below the map's ~47k photons),
+# coefficients memory-mapped: the same answers as in core, for 1 and 2 threads.
+"$BIN/rcontrib" -u- "${RC[@]}" -ap pc.pm @pc.pm.opt room.oct < "$DATA/sensors.txt" > core.txt ||
+    bad "rcontrib -u- in core"
+for n in 1 2; do
+    "$BIN/rcontrib" -u- "${RC[@]}" -ap pc.pm @pc.pm.opt -aC 5k -n $n room.oct \
+        < "$DATA/sensors.txt" > ooc$n.txt || bad "rcontrib -aC 5k -n $n"
+    cmp -s core.txt ooc$n.txt || bad "out of core (-aC 5k -n $n) differs from in core"
+done
 
 # -n 2: the same files.
 "$BIN/mkpmap" -apC pc2.pm 300k 150 0 "${PORT[@]}" "${BINS[@]}" -n 2 room.oct 2> /dev/null ||
