@@ -7,7 +7,7 @@
 # 5 % of RADIANCE's classic (three seeds spread 1.2 % rms a point; the estimator's
 # k/(k-1) bias is +0.5 %) and their mean within 2.5 %; without -apE the mean of the 17
 # is more than 15 % low. The map is the same for -n 1 and -n 2, and -apE is refused with
-# a contribution map.
+# a contribution map. The same with the window open and an antimatter port (below).
 set -u
 BIN="${RP_BIN:?RP_BIN not set}"
 SRC="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}"
@@ -41,6 +41,23 @@ paste e.txt p.txt "$data/ref_radiance_classic.txt" | awk '
               100 * (sp / n - 1)
           if (se / n > 1.025 || se / n < 0.975) { print "FAIL: -apE mean"; bad = 1 }
           if (sp / n > 0.85) { print "FAIL: without -apE the outside is already there"; bad = 1 }
+          exit bad }' || fail=1
+
+# The same room with its window open and an antimatter port in the opening (open_window.rad),
+# against RADIANCE's classic there: every point within 5 %, the mean within 2.5 %
+# (measured -1.3 ... +2.4 %). With the port 1 cm inside the opening point 5 read +8 ... +11 %
+# over three seeds (not understood yet; README).
+"$BIN/oconv" "$data/open_window.rad" > open.oct || exit 1
+"$BIN/mkpmap" -apg o.pm 300k -apE -apo port_mat -n 2 open.oct 2> /dev/null || bad "mkpmap open"
+"$BIN/rtrace" -h -I -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 256 -ap o.pm 200 -n 2 open.oct \
+    < "$data/points.txt" > o.txt || bad "rtrace open"
+paste o.txt "$data/ref_radiance_open_window.txt" | awk '
+    function y(r, g, b) { return 0.265 * r + 0.670 * g + 0.065 * b }
+    { e = y($1, $2, $3); c = y($4, $5, $6); s += e / c
+      if (e / c > 1.05 || e / c < 0.95) { printf "FAIL: open window point %d %+.1f %%\n", NR,
+          100 * (e / c - 1); bad = 1 } }
+    END { printf "open window, antimatter port: mean %+.1f %%\n", 100 * (s / NR - 1)
+          if (s / NR > 1.025 || s / NR < 0.975) { print "FAIL: open window mean"; bad = 1 }
           exit bad }' || fail=1
 
 out=$("$BIN/mkpmap" -apC c.pm 10k -apE -apo window_glass room.oct 2>&1)
