@@ -291,6 +291,37 @@ TEST(Emitter, PortExteriorAddsWhatThePortSees) {
     EXPECT_NEAR(st.mean(), share, 4 * st.sigmaOfMean());
 }
 
+// -apE with a port set back from its opening: past the port's edges its rays meet the
+// room's own wall around the opening, just beyond the port and facing back through it;
+// that is the room's light, not the outside's, and brings nothing. A facade across the
+// street faces the port too, but metres away, and counts.
+TEST(Emitter, PortExteriorIgnoresTheWallAroundASetBackPort) {
+    PortScene s(false);
+    SceneGeometry geom(s.b.scene());
+    EmissionOptions opt;
+    opt.ports = findPhotonPorts(s.b.scene(), geom, {PortSpec{"window_glass"}});
+    for (double depth : {0.01, 5.0}) {
+        opt.exterior.view = [&](const Vec3& from, const Vec3& w, uint64_t) {
+            ExteriorView v;
+            v.surface = true;
+            v.radiance = Color::grey(100);
+            v.ambient = Color::grey(10);
+            v.distance = depth / -w.y;
+            v.point = from + w * v.distance;
+            v.normal = {0, 1, 0};  // facing back into the room
+            return v;
+        };
+        EmissionPlan plan = planFor(s.b, geom, opt);
+        if (depth < 1) {
+            EXPECT_EQ(plan.exteriorFlux().average(), 0);
+            EXPECT_TRUE(plan.exteriorPhotons().empty());
+        } else {
+            // All of the hemisphere outside: L A pi.
+            EXPECT_NEAR(plan.exteriorFlux().average(), 100 * 4.5 * kPi, 1e-3 * 100 * 4.5 * kPi);
+        }
+    }
+}
+
 TEST(Emitter, SkyThroughPortAndBidirectional) {
     PortScene s(true);
     SceneGeometry geom(s.b.scene());

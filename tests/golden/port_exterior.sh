@@ -44,21 +44,27 @@ paste e.txt p.txt "$data/ref_radiance_classic.txt" | awk '
           exit bad }' || fail=1
 
 # The same room with its window open and an antimatter port in the opening (open_window.rad),
-# against RADIANCE's classic there: every point within 5 %, the mean within 2.5 %
-# (measured -1.3 ... +2.4 %). With the port 1 cm inside the opening point 5 read +8 ... +11 %
-# over three seeds (not understood yet; README).
-"$BIN/oconv" "$data/open_window.rad" > open.oct || exit 1
-"$BIN/mkpmap" -apg o.pm 300k -apE -apo port_mat -n 2 open.oct 2> /dev/null || bad "mkpmap open"
-"$BIN/rtrace" -h -I -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 256 -ap o.pm 200 -n 2 open.oct \
-    < "$data/points.txt" > o.txt || bad "rtrace open"
-paste o.txt "$data/ref_radiance_open_window.txt" | awk '
-    function y(r, g, b) { return 0.265 * r + 0.670 * g + 0.065 * b }
-    { e = y($1, $2, $3); c = y($4, $5, $6); s += e / c
-      if (e / c > 1.05 || e / c < 0.95) { printf "FAIL: open window point %d %+.1f %%\n", NR,
-          100 * (e / c - 1); bad = 1 } }
-    END { printf "open window, antimatter port: mean %+.1f %%\n", 100 * (s / NR - 1)
-          if (s / NR > 1.025 || s / NR < 0.975) { print "FAIL: open window mean"; bad = 1 }
-          exit bad }' || fail=1
+# and with the port set back 1 cm into the room, against RADIANCE's classic there (which
+# the port does not change): every point within 5 %, the mean within 2.5 % (measured
+# -1.5 ... +2.5 % both). Set back, the port's rays see the room's wall around the opening
+# past its edges; counted as outside light, a point beside the window read +8 ... +15 %.
+sed 's/^12  1.25 0 0.9  1.25 0 2.3  3.75 0 2.3  3.75 0 0.9$/12  1.25 .01 .9  1.25 .01 2.3  3.75 .01 2.3  3.75 .01 .9/' \
+    "$data/open_window.rad" > set_back.rad
+cmp -s set_back.rad "$data/open_window.rad" && bad "the port was not moved"
+for v in open_window set_back; do
+    "$BIN/oconv" "$([ $v = set_back ] && echo set_back.rad || echo "$data/$v.rad")" > $v.oct || exit 1
+    "$BIN/mkpmap" -apg $v.pm 300k -apE -apo port_mat -n 2 $v.oct 2> /dev/null || bad "mkpmap $v"
+    "$BIN/rtrace" -h -I -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 256 -ap $v.pm 200 -n 2 $v.oct \
+        < "$data/points.txt" > $v.txt || bad "rtrace $v"
+    paste $v.txt "$data/ref_radiance_open_window.txt" | awk -v v=$v '
+        function y(r, g, b) { return 0.265 * r + 0.670 * g + 0.065 * b }
+        { e = y($1, $2, $3); c = y($4, $5, $6); s += e / c
+          if (e / c > 1.05 || e / c < 0.95) { printf "FAIL: %s point %d %+.1f %%\n", v, NR,
+              100 * (e / c - 1); bad = 1 } }
+        END { printf "%s, antimatter port: mean %+.1f %%\n", v, 100 * (s / NR - 1)
+              if (s / NR > 1.025 || s / NR < 0.975) { print "FAIL: " v " mean"; bad = 1 }
+              exit bad }' || fail=1
+done
 
 out=$("$BIN/mkpmap" -apC c.pm 10k -apE -apo window_glass room.oct 2>&1)
 [ $? -ne 0 ] && [ "$out" = "mkpmap: -apE: not with a contribution photon map (-apC)" ] ||
