@@ -134,6 +134,10 @@ public:
             o = out_.index(inV);
         }
         if (i < 0 || o < 0) return {};
+        return colour(o, i);
+    }
+    // The entry for outgoing patch o and incident patch i, in RGB.
+    Color colour(int o, int i) const {
         if (rgb_.empty()) return Color::grey(at(o, i));
         const float* c = &rgb_[3 * (static_cast<std::size_t>(o) * ninc() + i)];
         return {c[0], c[1], c[2]};
@@ -408,9 +412,8 @@ CoefficientMatrix lambertianCoefficients(const Color& bsdf) {
 // the Lambertian part added back, times the projected solid angle; RADIANCE leaves an
 // entry whose non-diffuse part is nothing (the data's minimum, taken out) at zero.
 Color entry(const KlemsMatrix& m, int o, int i, const Color& diffuse, double omega) {
-    const float y = m.at(o, i);
-    if (!(y > 0) || !(omega > 0)) return {};
-    return (m.value(m.inAxis().vector(i, .5, .5), m.outAxis().vector(o, .5, .5)) + diffuse) * omega;
+    if (!(m.at(o, i) > 0) || !(omega > 0)) return {};
+    return (m.colour(o, i) + diffuse) * omega;
 }
 
 }  // namespace
@@ -441,30 +444,26 @@ CoefficientMatrix klemsCoefficients(const BsdfData& d, MatrixPart part) {
                         ? dynamic_cast<const KlemsMatrix*>(set->components.front().get())
                         : nullptr;
     if (!m) throw InputError(SourceLoc{d.path, 0}, "unsupported BSDF (not one Klems matrix)");
-    CoefficientMatrix out;
-    if (!reciprocal) {
-        out = {m->nout(), m->ninc(), {}};
-        out.values.resize(static_cast<std::size_t>(out.rows) * out.cols);
-        for (int c = 0; c < out.cols; ++c)
-            for (int r = 0; r < out.rows; ++r)
-                out.values[static_cast<std::size_t>(r) * out.cols + c] =
-                    entry(*m, r, c, diffuse, m->inAxis().omega(c));
-        return out;
-    }
-    // cmbsdf.c cm_bsdf_recip: rows and columns swap roles; each index is carried to the
-    // other side by reversing its patch's centre direction through the surface.
-    auto flip = [](Vec3 v) { return Vec3{v.x, v.y, -v.z}; };
-    out = {m->ninc(), m->nout(), {}};
+    // cmbsdf.c cm_bsdf_recip, with only the front's data: rows and columns swap roles,
+    // each index carried to the other side by reversing its patch's centre direction
+    // through the surface.
+    auto across = [](const detail::Axis& from, int k, const detail::Axis& to) {
+        const Vec3 v = from.vector(k, .5, .5);
+        const int j = to.index({v.x, v.y, -v.z});
+        return j < 0 ? k : j;
+    };
+    const detail::Axis &in = m->inAxis(), &outAxis = m->outAxis();
+    CoefficientMatrix out{
+        reciprocal ? m->ninc() : m->nout(), reciprocal ? m->nout() : m->ninc(), {}};
     out.values.resize(static_cast<std::size_t>(out.rows) * out.cols);
+    std::vector<int> rowIn(reciprocal ? std::size_t(out.rows) : 0);
+    for (int r = 0; r < int(rowIn.size()); ++r) rowIn[std::size_t(r)] = across(outAxis, r, in);
     for (int c = 0; c < out.cols; ++c) {
-        int ro = m->outAxis().index(flip(m->inAxis().vector(c, .5, .5)));
-        if (ro < 0) ro = c;
-        for (int r = 0; r < out.rows; ++r) {
-            int ri = m->inAxis().index(flip(m->outAxis().vector(r, .5, .5)));
-            if (ri < 0) ri = r;
+        const int ro = reciprocal ? across(in, c, outAxis) : -1;
+        for (int r = 0; r < out.rows; ++r)
             out.values[static_cast<std::size_t>(r) * out.cols + c] =
-                entry(*m, ro, ri, diffuse, m->outAxis().omega(ro));
-        }
+                reciprocal ? entry(*m, ro, rowIn[std::size_t(r)], diffuse, outAxis.omega(ro))
+                           : entry(*m, r, c, diffuse, in.omega(c));
     }
     return out;
 }

@@ -1,14 +1,11 @@
 // dctimestep's RGB matrices (see color_matrix.h), after RADIANCE cmatrix.c.
 #include "matrix/color_matrix.h"
 
-#include <fmt/format.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
 #include "image/rgbe.h"
-#include "matrix/matrix_io.h"
 #include "matrix/picture_data.h"
 #include "util/error.h"
 #include "util/warnings.h"
@@ -173,19 +170,6 @@ ColorMatrix parseColorMatrix(const InputData& in, int rows, int cols, DataType t
 }
 
 ColorMatrix loadColorMatrix(const std::string& spec, int rows, int cols, DataType type) {
-    // RADIANCE compat (dctimestep cm_loadBTDF): a BSDF's transmission, as rmtxop reads it.
-    if (std::optional<bsdf::CoefficientMatrix> c =
-            loadBsdfMatrix(spec, bsdf::MatrixPart::Transmission)) {
-        if ((rows > 0 && c->rows != rows) || (cols > 0 && c->cols != cols))
-            throw InputError(
-                SourceLoc{spec, 0},
-                fmt::format("{} x {} BSDF matrix where {} x {} is needed", c->rows, c->cols,
-                            rows > 0 ? rows : c->rows, cols > 0 ? cols : c->cols));
-        ColorMatrix m(c->rows, c->cols);
-        for (size_t e = 0; e < c->values.size(); ++e)
-            for (int k = 0; k < 3; ++k) m.values[e * 3 + size_t(k)] = float(c->values[e][k]);
-        return m;
-    }
     return parseColorMatrix(readInput(spec), rows, cols, type);
 }
 

@@ -4,9 +4,11 @@
 #include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <optional>
 
 #include "image/rgbe.h"
 #include "matrix/color_matrix.h"
+#include "matrix/matrix_io.h"
 #include "matrix/picture_data.h"
 #include "util/error.h"
 #include "util/file_read.h"
@@ -77,6 +79,18 @@ void sumImages(const std::string& spec, const ColorMatrix& v, std::ostream& out)
     writeColorMatrix(out, sum, first.type);
 }
 
+// Tmat of the 3-phase form: a matrix, or (RADIANCE compat: dctimestep.c cm_loadBTDF, for
+// Tmat alone) a Klems BSDF's transmission, as rmtxop reads it.
+ColorMatrix loadTransmission(const std::string& spec) {
+    const std::optional<bsdf::CoefficientMatrix> c =
+        loadBsdfMatrix(spec, bsdf::MatrixPart::Transmission);
+    if (!c) return loadColorMatrix(spec, 0, 0, DataType::FromHeader);
+    ColorMatrix m(c->rows, c->cols);
+    for (size_t e = 0; e < c->values.size(); ++e)
+        for (int k = 0; k < 3; ++k) m.values[e * 3 + size_t(k)] = float(c->values[e][k]);
+    return m;
+}
+
 // The sky, or V T D s with the sky: the matrix each time step is a column of.
 ColorMatrix skyProduct(const DctimestepOptions& o, int& steps) {
     const std::string skySpec = o.inputs.size() > 3    ? o.inputs[3]
@@ -89,7 +103,7 @@ ColorMatrix skyProduct(const DctimestepOptions& o, int& steps) {
     }
     const ColorMatrix sky = loadColorMatrix(skySpec, 0, steps, o.skyType);
     steps = sky.cols;
-    const ColorMatrix t = loadColorMatrix(o.inputs[1], 0, 0, DataType::FromHeader);
+    const ColorMatrix t = loadTransmission(o.inputs[1]);
     const ColorMatrix d = loadColorMatrix(o.inputs[2], t.cols, sky.rows, DataType::FromHeader);
     return multiply(t, multiply(d, sky, o.inputs[2]), o.inputs[1]);
 }
