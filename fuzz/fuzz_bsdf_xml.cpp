@@ -1,4 +1,5 @@
-// LBNL XML BSDF files (Klems and tensor trees): parse, then query what loaded.
+// LBNL XML BSDF files (Klems and tensor trees): parse, then query what loaded, and make
+// the coefficient matrices of the matrix tools.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -21,6 +22,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                     rp::Vec3 o;
                     c->sample(in, 0.37, 0.61, o);
                 }
+        // rmtxop's and dctimestep's matrices of it (Klems data only; others throw).
+        for (auto part : {rp::bsdf::MatrixPart::Transmission, rp::bsdf::MatrixPart::ReflectionFront,
+                          rp::bsdf::MatrixPart::ReflectionBack})
+            (void)rp::bsdf::klemsCoefficients(*sd, part);
     } catch (const rp::InputError&) {
     }
     return 0;

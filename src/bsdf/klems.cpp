@@ -409,10 +409,12 @@ CoefficientMatrix lambertianCoefficients(const Color& bsdf) {
 }
 
 // One entry (cmbsdf.c cm_bsdf): the BSDF of outgoing patch o and incident patch i with
-// the Lambertian part added back, times the projected solid angle; RADIANCE leaves an
-// entry whose non-diffuse part is nothing (the data's minimum, taken out) at zero.
+// the Lambertian part added back, times the projected solid angle. RADIANCE zeroes an
+// entry whose non-diffuse part is not positive; at the data's minimum that part is what
+// rounding leaves of it in RADIANCE's chroma encoding (the entries of a grey file at its
+// minimum come out as the Lambertian part alone), so here only an absent value is zero.
 Color entry(const KlemsMatrix& m, int o, int i, const Color& diffuse, double omega) {
-    if (!(m.at(o, i) > 0) || !(omega > 0)) return {};
+    if (!(m.at(o, i) >= 0) || !(omega > 0)) return {};
     return (m.colour(o, i) + diffuse) * omega;
 }
 

@@ -433,5 +433,42 @@ TEST(Klems, CoefficientMatricesAreRadiances) {
     }
 }
 
+// The same on tests/data/bsdf/klems_quarter.xml (Klems Quarter, grey, transmission and
+// back reflection), no ../shared needed: RADIANCE 5.4's `rmtxop -fa [-rf]` entries,
+// among them (0, 0) and (2, 19) at the data's minimum, which RADIANCE gives the
+// Lambertian part alone, and the sums of all 41 x 41 x 3. -rb finds no data and is the
+// Lambertian part on Klems Full, zero here.
+TEST(Klems, CoefficientMatricesOfASmallFile) {
+    const auto sd = loadBsdfFile(std::string(RP_SOURCE_DIR) + "/tests/data/bsdf/klems_quarter.xml");
+    struct Pick {
+        int r, c;
+        double v;
+    };
+    const auto check = [](const CoefficientMatrix& m, double total, std::vector<Pick> picks) {
+        ASSERT_EQ(m.rows, 41);
+        ASSERT_EQ(m.cols, 41);
+        double sum = 0;
+        for (const Color& v : m.values) sum += v.r + v.g + v.b;
+        EXPECT_NEAR(sum, total, 1e-6 * total);
+        for (const Pick& p : picks)
+            EXPECT_NEAR(m.values[size_t(p.r) * 41 + size_t(p.c)].r, p.v, 1e-6 * p.v)
+                << p.r << " " << p.c;
+    };
+    check(klemsCoefficients(*sd, MatrixPart::Transmission), 38.626363,
+          {{0, 0, 3.844012506306171e-03},
+           {2, 19, 4.075462464243174e-03},
+           {0, 1, 6.205548532307148e-03},
+           {20, 7, 1.048523839563131e-02},
+           {40, 40, 6.171775050461292e-03}});
+    check(klemsCoefficients(*sd, MatrixPart::ReflectionFront), 19.3095338,
+          {{0, 0, 1.922006253153086e-03},
+           {2, 19, 2.037731232121587e-03},
+           {0, 1, 3.673399565741420e-03},
+           {40, 40, 3.540649777278304e-03}});
+    const CoefficientMatrix none = klemsCoefficients(*sd, MatrixPart::ReflectionBack);
+    EXPECT_EQ(none.rows, 145);
+    for (const Color& v : none.values) ASSERT_EQ(v, Color{});
+}
+
 }  // namespace
 }  // namespace rp::bsdf
