@@ -4,15 +4,13 @@
 
 #include <array>
 
-#include "image/tonemap.h"
 #include "util/color.h"
+#include "util/spectrum.h"
 
 namespace rp::bsdf {
 
 inline Color rgbOfXyz(double X, double Y, double Z) {
-    // RADIANCE's standard primaries (color.h CIE_x_r ... CIE_y_w).
-    static const std::array<double, 9> m =
-        rgbFromXyz({0.640, 0.330, 0.290, 0.600, 0.150, 0.060, 1.0 / 3, 1.0 / 3});
+    static const std::array<double, 9> m = spectral::rgbFromXyz(spectral::kStandardPrimaries);
     return {m[0] * X + m[1] * Y + m[2] * Z, m[3] * X + m[4] * Y + m[5] * Z,
             m[6] * X + m[7] * Y + m[8] * Z};
 }

@@ -8,6 +8,7 @@
 
 #include "image/tonemap.h"
 #include "util/error.h"
+#include "util/spectrum.h"
 
 namespace rp {
 namespace {
@@ -113,7 +114,7 @@ TEST(Tonemap, SrgbGammaAndXyz) {
     EXPECT_EQ(n[0], 102);
     EXPECT_EQ(n[1], 102);
     EXPECT_EQ(n[2], 102);
-    auto m = rgbFromXyz({0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 0.3290});
+    auto m = spectral::rgbFromXyz({0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 0.3290});
     // The published sRGB (D65) matrix, first row.
     EXPECT_NEAR(m[0], 3.2406, 2e-3);
     EXPECT_NEAR(m[1], -1.5372, 2e-3);

@@ -31,10 +31,6 @@ double pixelBrightness(const Pixel& rgb);
 // sources clip; the room reads well. 1 for an all-black picture.
 double autoExposure(const Picture& pic);
 
-// Matrix taking XYZ to linear RGB for the given chromaticities (rx ry gx gy bx by wx
-// wy), with the white point mapped to RGB (1,1,1). Row-major.
-std::array<double, 9> rgbFromXyz(const std::array<double, 8>& primaries);
-
 // width*height*3 bytes, top row first: (XYZ converted to sRGB primaries with
 // RADIANCE's equal-energy white) * exposure, clipped to [0,1], encoded with the sRGB
 // curve or v^(1/gamma), rounded.

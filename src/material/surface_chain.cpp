@@ -5,6 +5,7 @@
 #include "material/surface_chain.h"
 
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -60,8 +61,15 @@ ChainKind kindOf(PrimType t) {
             return ChainKind::MixPict;
         case PrimType::Mixtext:
             return ChainKind::MixText;
+        case PrimType::Spectrum:
+        case PrimType::Specfile:
+            return ChainKind::Spectrum;
+        case PrimType::Specfunc:
+            return ChainKind::SpecFunc;
+        case PrimType::Specdata:
+            return ChainKind::SpecData;
         default:
-            return ChainKind::Unsupported;  // spectrum, specfile, specfunc, ...
+            return ChainKind::Unsupported;  // specpict
     }
 }
 
@@ -220,7 +228,47 @@ void compileText(Loader& ld, const Primitive& p, ChainRecord& r, size_t fontAt, 
     }
 }
 
-void compileRecord(Loader& ld, const Scene& s, int32_t index, ChainRecord& r) {
+// Samples at the centres of n bands from wl0 to wl1, in the working sampling.
+Color workingColour(const std::vector<double>& samples, double wl0, double wl1,
+                    const spectral::Sampling& s) {
+    double out[3];
+    spectral::toWorking(samples, wl0, wl1, s, std::span<double>(out, 3));
+    return {out[0], out[1], out[2]};
+}
+
+// spectrum: "nmA nmB s1 s2 ...", samples at evenly spaced wavelengths from nmA to nmB
+// (each the centre of its band).
+Color compileSpectrum(const Primitive& p, const spectral::Sampling& s) {
+    const auto& a = p.rargs;
+    const size_t n = a.size() - 2;
+    const double half = 0.5 * (a[1] - a[0]) / double(n - 1);
+    if (!(std::fabs(a[1] - a[0]) > 0)) fail(p, "the wavelength range is empty");
+    return workingColour(std::vector<double>(a.begin() + 2, a.end()), a[0] - half, a[1] + half, s);
+}
+
+// specfile: a 1-D data file over wavelength. RADIANCE compat (p_data.c): listed
+// wavelengths are sampled twice as densely as there are points. RADIANCE then spreads
+// only the first half of those samples over the range; all of them are used here.
+Color compileSpecfile(Loader& ld, const Primitive& p, const spectral::Sampling& s) {
+    auto d = ld.data(p, p.sargs.at(0));
+    if (d->dimensions() != 1) fail(p, "data file must be 1-dimensional");
+    const calc::DataFile::Axis& ax = d->axis(0);
+    const bool listed = !ax.points.empty();
+    const double first = listed ? ax.points.front() : ax.begin;
+    const double range = (listed ? ax.points.back() : ax.end) - first;
+    const int n = listed ? 2 * ax.count : ax.count;
+    if (n < 2 || range == 0) fail(p, "data file must span a range of wavelengths");
+    const double step = range / (n - 1);
+    std::vector<double> samples(static_cast<size_t>(n));
+    for (int k = 0; k < n; ++k) {
+        const double wl = first + k * step;
+        samples[size_t(k)] = d->value(std::span<const double>(&wl, 1));
+    }
+    return workingColour(samples, first - 0.5 * step, first + range + 0.5 * step, s);
+}
+
+void compileRecord(Loader& ld, const Scene& s, int32_t index, ChainRecord& r,
+                   const spectral::Sampling& sampling) {
     const Primitive& p = s.prims[index];
     const auto& sa = p.sargs;
     switch (p.type) {
@@ -287,6 +335,31 @@ void compileRecord(Loader& ld, const Scene& s, int32_t index, ChainRecord& r) {
             r.backMod = lookupModifier(s, index, sa.at(1));
             compileText(ld, p, r, 2, 9);
             break;
+        case PrimType::Spectrum:
+            r.constant = compileSpectrum(p, sampling);
+            break;
+        case PrimType::Specfile:
+            r.constant = compileSpecfile(ld, p, sampling);
+            break;
+        case PrimType::Specfunc:
+            r.funcNames = {sa.at(0)};
+            r.wlMin = std::min(p.rargs[0], p.rargs[1]);
+            r.wlMax = std::max(p.rargs[0], p.rargs[1]);
+            compileFunctions(ld, p, r, 1, 2, 0, 2);
+            break;
+        case PrimType::Specdata: {
+            // The data's last dimension is wavelength; one coordinate per other one.
+            r.funcNames = {sa.at(0)};
+            r.data[0] = ld.data(p, sa.at(1));
+            const size_t nd = size_t(r.data[0]->dimensions());
+            if (nd < 2) fail(p, "need at least 2-dimensional data");
+            if (sa.size() < 3 + nd - 1 || (sa.size() > 2 + nd && !isTransformOption(sa[2 + nd])))
+                fail(p, "dimension error: data file '" + sa[1] + "' has " + std::to_string(nd) +
+                            " dimensions, so the record needs " + std::to_string(nd - 1) +
+                            " coordinate(s) before its transform");
+            compileFunctions(ld, p, r, 2, 3, nd - 1, 2 + nd);
+            break;
+        }
         default:
             break;
     }
@@ -330,7 +403,7 @@ SurfaceChains::SurfaceChains(const Scene& scene, std::vector<std::string> search
     for (size_t i = 0; i < n; ++i) {
         ChainRecord& r = impl_->records[i];
         r.kind = kindOf(scene.prims[i].type);
-        compileRecord(ld, scene, int32_t(i), r);
+        compileRecord(ld, scene, int32_t(i), r, impl_->sampling);
     }
     impl_->program = ld.builder.build();
     const calc::Program& prog = *impl_->program;
@@ -399,6 +472,7 @@ bool SurfaceChains::isPlain(int32_t modifier) const {
 bool SurfaceChains::directionalOnly(int32_t modifier) const {
     for (int32_t m = modifier; m != kVoid; m = impl_->scene->prims[m].modifier) {
         const ChainRecord& r = impl_->records[m];
+        if (r.kind == ChainKind::Spectrum) continue;  // a constant
         if ((r.kind != ChainKind::Func && r.kind != ChainKind::Data) || !r.directional)
             return false;
     }

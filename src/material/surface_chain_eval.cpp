@@ -78,6 +78,9 @@ struct SurfaceChainEvaluator::Impl {
         return {c.r, c.g, c.b};
     }
 
+    Color specFunc(const ChainRecord& r);
+    Color specData(const ChainRecord& r);
+
     bool inText(const ChainRecord& r) {
         // Text records have no transform arguments: the text lies in world space.
         return r.text->inText(at->point);
@@ -106,6 +109,51 @@ struct SurfaceChainEvaluator::Impl {
     bool mix(int32_t m, int32_t fore, int32_t back, double coef, WalkState& st, double weight,
              bool inTexture, int depth);
 };
+
+// specfunc: the function of wavelength sampled in bands of a 24th of its range (no
+// finer than a quarter of a working band), each at a jittered wavelength within its
+// band, as RADIANCE's p_specfunc.
+Color SurfaceChainEvaluator::Impl::specFunc(const ChainRecord& r) {
+    const spectral::Sampling& s = chains.sampling;
+    const double lo = std::max(r.wlMin, s.wl[3]), hi = std::min(r.wlMax, s.wl[0]);
+    if (!(lo < hi)) return {1, 1, 1};  // outside the working range: no effect
+    const double step =
+        std::max((hi - lo) / spectral::kMaxSamples, 0.25 / s.n * (s.wl[0] - s.wl[3]));
+    const int n = static_cast<int>((hi - lo) / step + .1);
+    std::vector<double> samples(static_cast<size_t>(n));
+    double wl = hi - 0.5 * step;
+    for (int i = n; i-- > 0; wl -= step)
+        samples[size_t(i)] = call1(r.funcs[0], wl + 0.9 * (0.5 - rng->uniform()) * step);
+    double out[3];
+    spectral::toWorking(samples, lo, hi, s, std::span<double>(out, 3));
+    return {out[0], out[1], out[2]};
+}
+
+// specdata: the table interpolated at the record's coordinates at each wavelength of its
+// last axis, each value through the record's function f(value, wavelength).
+Color SurfaceChainEvaluator::Impl::specData(const ChainRecord& r) {
+    const calc::DataFile& d = *r.data[0];
+    const int nd = d.dimensions();
+    std::array<double, calc::DataFile::kMaxDimensions> pt{};
+    for (int k = 0; k + 1 < nd; ++k) pt[size_t(k)] = eval.eval(r.exprs[size_t(k)]);
+    const calc::DataFile::Axis& ax = d.axis(nd - 1);
+    const bool listed = !ax.points.empty();
+    const double first = listed ? ax.points.front() : ax.begin;
+    const double range = (listed ? ax.points.back() : ax.end) - first;
+    if (ax.count < 2 || range == 0) return {1, 1, 1};
+    const double step = range / (ax.count - 1);
+    std::vector<double> samples(static_cast<size_t>(ax.count));
+    for (int i = 0; i < ax.count; ++i) {
+        const double wl = first + i * step;
+        pt[size_t(nd - 1)] = wl;
+        const double args[2] = {d.value(std::span<const double>(pt.data(), size_t(nd))), wl};
+        samples[size_t(i)] = eval.call(r.funcs[0].fn, std::span<const double>(args, 2));
+    }
+    double out[3];
+    spectral::toWorking(samples, first - 0.5 * step, first + range + 0.5 * step, chains.sampling,
+                        std::span<double>(out, 3));
+    return {out[0], out[1], out[2]};
+}
 
 // RADIANCE raymixture: both sides shaded with their share; a side that reaches no
 // material is transparent if the other reaches one; if neither does, the pattern colours
@@ -190,6 +238,17 @@ bool SurfaceChainEvaluator::Impl::shade(int32_t mod, WalkState& st, double weigh
                 break;
             case ChainKind::Text:
                 st.pcol *= inText(r) ? r.textFore : r.textBack;
+                break;
+            case ChainKind::Spectrum:
+                st.pcol *= r.constant;
+                break;
+            case ChainKind::SpecFunc:
+                setRay(r, p);
+                st.pcol *= specFunc(r);
+                break;
+            case ChainKind::SpecData:
+                setRay(r, p);
+                st.pcol *= specData(r);
                 break;
             case ChainKind::TexFunc:
                 setRay(r, p);

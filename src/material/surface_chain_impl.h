@@ -14,13 +14,17 @@
 #include "material/chain_text.h"
 #include "material/surface_chain.h"
 #include "scene/xform.h"
+#include "util/spectrum.h"
 
 namespace rp::material {
 
 enum class ChainKind : uint8_t {
     NotModifier,  // a surface: cannot be in a chain
-    Unsupported,  // a modifier type this module does not evaluate (spectral patterns)
+    Unsupported,  // a modifier type this module does not evaluate (specpict)
     Material,
+    Spectrum,  // spectrum, specfile: a constant colour
+    SpecFunc,
+    SpecData,
     Func,  // colorfunc, brightfunc
     Data,  // colordata, brightdata
     Pict,  // colorpict
@@ -61,6 +65,8 @@ struct ChainRecord {
     std::shared_ptr<const PictTable> pict;
     std::shared_ptr<const TextBlock> text;
     Color textFore{1, 1, 1}, textBack{1, 1, 1};  // colortext / brighttext
+    Color constant{1, 1, 1};                     // spectrum, specfile
+    double wlMin = 0, wlMax = 0;                 // specfunc: its range within -cw
 
     int32_t foreMod = kVoid, backMod = kVoid;  // mixtures ("void" is kVoid)
 
@@ -79,6 +85,9 @@ struct SurfaceChains::Impl {
     MaterialTable materials;
     std::vector<ChainRecord> records;    // one per scene primitive
     std::vector<int32_t> plainMaterial;  // per primitive: the material if plain, else -2
+    // The working spectral sampling spectral records are converted to (RGB until the
+    // renderer samples spectra).
+    spectral::Sampling sampling;
     std::shared_ptr<const calc::Program> program;
 };
 

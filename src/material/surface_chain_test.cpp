@@ -382,7 +382,7 @@ TEST_F(SurfaceChain, MaterialInsideAMaterialsChainConflicts) {
         "void plastic a 0 0 5 1 0 0 0 0\n"
         "void mixfunc mx 4 a void .5 . 0 0\n"
         "mx plastic m 0 0 5 1 1 1 0 0\n"
-        "void spectrum sp 0 0 5 400 500 1 1 1\nsp plastic ms 0 0 5 1 1 1 0 0\n");
+        "void specpict sp 5 noop sp.hsr . u v 0 0\nsp plastic ms 0 0 5 1 1 1 0 0\n");
     EXPECT_THROW(f.chains->checkChain(f.mod("m")), InputError);
     try {
         f.chains->checkChain(f.mod("ms"));
@@ -391,6 +391,61 @@ TEST_F(SurfaceChain, MaterialInsideAMaterialsChainConflicts) {
         EXPECT_EQ(e.loc().line, 4);
         EXPECT_NE(std::string(e.what()).find("not supported yet"), std::string::npos);
     }
+}
+
+// Spectral patterns in RGB (RADIANCE 6 at -cs 3): the spectrum integrated against the
+// CIE observer. The same spectrum given four ways gives one colour, and a flat one is
+// grey.
+TEST_F(SurfaceChain, SpectralPatternsOfOneSpectrumAgree) {
+    // The same ramp every 10 nm.
+    std::string fineRamp;
+    for (int k = 0; k <= 40; ++k) fineRamp += " " + std::to_string(.2 + .6 * k / 40);
+    // Rising from 0.2 at 380 nm to 0.8 at 780 nm, in 5 samples.
+    writeFile(f.dir.file("ramp.dat"), "1\n380 780 5\n.2 .35 .5 .65 .8\n");
+    // Two rows: flat 0.5, then the ramp; wavelength last.
+    writeFile(f.dir.file("rows.dat"), "2\n0 1 2\n380 780 5\n.5 .5 .5 .5 .5\n.2 .35 .5 .65 .8\n");
+    writeFile(f.dir.file("ramp.cal"), "ramp(wl) = .2 + .6 * (wl - 380) / 400;\nhalf(wl) = .5;\n");
+    f.load(
+        "void spectrum flat 0 0 7 380 780 .5 .5 .5 .5 .5\nflat plastic m0 0 0 5 1 1 1 0 0\n"
+        "void spectrum sp 0 0 7 380 780 .2 .35 .5 .65 .8\nsp plastic m1 0 0 5 1 1 1 0 0\n"
+        "void specfile sf 1 ramp.dat 0 0\nsf plastic m2 0 0 5 1 1 1 0 0\n"
+        "void specfunc fn 2 ramp ramp.cal 0 2 380 780\nfn plastic m3 0 0 5 1 1 1 0 0\n"
+        "void spectrum fine 0 0 43 380 780" +
+        fineRamp +
+        "\nfine plastic m6 0 0 5 1 1 1 0 0\n"
+        "void specfunc fh 2 half ramp.cal 0 2 380 780\nfh plastic m5 0 0 5 1 1 1 0 0\n"
+        "void specdata sd 4 noop rows.dat . Px 0 0\nsd plastic m4 0 0 5 1 1 1 0 0\n");
+    const Color flat = f.at("m0", {0, 0, 0}).layers[0].pattern;
+    expectColor(flat, 0.5, 0.5, 0.5, 5e-4);
+    const Color ramp = f.at("m1", {0, 0, 0}).layers[0].pattern;
+    EXPECT_GT(ramp.r, ramp.g);
+    EXPECT_GT(ramp.g, ramp.b);
+    const Color file = f.at("m2", {0, 0, 0}).layers[0].pattern;
+    expectColor(file, ramp.r, ramp.g, ramp.b, 1e-12);
+    expectColor(f.at("m5", {0, 0, 0}).layers[0].pattern, flat.r, flat.g, flat.b, 1e-12);
+    // The ramp sampled at jittered wavelengths in 12 bands (each off by up to 0.022),
+    // against the same ramp every 10 nm: close, not equal.
+    const Color fine = f.at("m6", {0, 0, 0}).layers[0].pattern;
+    const Color func = f.at("m3", {0, 0, 0}).layers[0].pattern;
+    expectColor(func, fine.r, fine.g, fine.b, 0.02);
+    expectColor(f.at("m4", {0, 0, 0}).layers[0].pattern, flat.r, flat.g, flat.b, 1e-12);
+    expectColor(f.at("m4", {1, 0, 0}).layers[0].pattern, ramp.r, ramp.g, ramp.b, 1e-12);
+    const Color half = f.at("m4", {0.5, 0, 0}).layers[0].pattern;
+    expectColor(half, (flat.r + ramp.r) / 2, (flat.g + ramp.g) / 2, (flat.b + ramp.b) / 2, 1e-12);
+}
+
+TEST_F(SurfaceChain, SpectralRecordsCheckTheirData) {
+    writeFile(f.dir.file("flat.dat"), "1\n380 780 5\n1 1 1 1 1\n");
+    try {
+        f.load("void specdata sd 4 noop flat.dat . Px 0 0\n");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.loc().line, 1);
+        EXPECT_NE(std::string(e.what()).find("2-dimensional"), std::string::npos) << e.what();
+    }
+    writeFile(f.dir.file("rows.dat"), "2\n0 1 2\n380 780 5\n1 1 1 1 1\n1 1 1 1 1\n");
+    EXPECT_THROW(f.load("void specfile sf 1 rows.dat 0 0\n"), InputError);
+    EXPECT_THROW(f.load("void specfile sf 1 none.dat 0 0\n"), InputError);
 }
 
 // A luminaire distribution in inches (rect_fixture.rad's transform): the data's angle is
