@@ -11,6 +11,7 @@
 
 #include "image/falsecolor.h"
 #include "image/legend_font.h"
+#include "image/spectral_picture.h"
 #include "util/error.h"
 
 namespace rp {
@@ -324,7 +325,9 @@ void runFalseColor(const FalseColorOptions& opt, const std::string& commandLine,
         return;
     }
     auto load = [&](const std::string& name) {
-        return name == "-" ? readPicture(in, "<stdin>") : readPicture(name);
+        // A spectral picture is read as RADIANCE 6's ra_rgbe turns it into RGBE.
+        constexpr auto how = SpectralToRgb::kBandAveragesRgbe;
+        return name == "-" ? readPictureAsRgb(in, "<stdin>", how) : readPictureAsRgb(name, how);
     };
     Picture input = load(opt.input);
     std::optional<Picture> background;

@@ -291,5 +291,21 @@ TEST(LegendFont, DigitsAreDrawnAtTheAskedHeight) {
     }
 }
 
+// A RADIANCE 6 spectral picture is mapped as RADIANCE's falsecolor maps it after
+// "ra_rgbe room.hsr room_rgbe.hdr" (RADIANCE 6.1a's own falsecolor stops at pcomb: "not
+// a Radiance picture or float matrix"); both files are spectral_picture_test.cpp's.
+TEST(FalseColor, SpectralInputAsAfterRaRgbe) {
+    const std::string dir = std::string(RP_SOURCE_DIR) + "/tests/data/spectral/";
+    auto mapped = [](const std::string& input) {
+        FalseColorOptions o = parseFalseColorArgs({"-i", input, "-s", "50", "-e"});
+        std::istringstream in;
+        std::ostringstream out;
+        runFalseColor(o, "falsecolor", in, out);
+        std::istringstream back(out.str());
+        return readPicture(back, "out.hdr").pixels;
+    };
+    EXPECT_EQ(mapped(dir + "room.hsr"), mapped(dir + "room_rgbe.hdr"));
+}
+
 }  // namespace
 }  // namespace rp

@@ -123,10 +123,15 @@ int runGetinfo(const GetinfoOptions& opt, std::istream& in, std::ostream& out, s
             return 1;
         }
         if (opt.mode == Mode::kAppend) {
+            // RADIANCE compat: checkheader() drops FORMAT= lines and getinfo -a writes the
+            // last one's value after the added lines.
+            const std::string fmt = h.format();
+            std::erase_if(h.lines, [](const std::string& l) { return l.rfind("FORMAT=", 0) == 0; });
             for (const auto& l : opt.addLines) {
                 if (l.empty()) continue;
                 h.lines.push_back(l.back() == '\n' ? l.substr(0, l.size() - 1) : l);
             }
+            if (!fmt.empty()) h.lines.push_back("FORMAT=" + fmt);
             writeHeader(out, h);
         } else if (opt.skipResolution) {
             std::string line;

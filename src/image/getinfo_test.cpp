@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "util/error.h"
@@ -96,6 +97,38 @@ TEST(GetinfoArgs, Modes) {
     EXPECT_THROW(parseGetinfoArgs(3, a2), InputError);
     const char* a3[] = {"getinfo", "x", "-d"};
     EXPECT_THROW(parseGetinfoArgs(3, a3), InputError);
+}
+
+std::string spectralData(const std::string& name) {
+    return std::string(RP_SOURCE_DIR) + "/tests/data/spectral/" + name;
+}
+
+std::string fileBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// RADIANCE 6 spectral pictures (spectral_picture_test.cpp's), against RADIANCE 6.1a's
+// getinfo, run in tests/data/spectral:
+//   getinfo room.hsr room12.hsr > room_getinfo.txt
+//   getinfo -d room.hsr room12.hsr > room_getinfo_d.txt
+//   getinfo -a "VIEW= -vtv -vh 40 -vv 30" < room12.hsr > room12_a.hsr
+TEST(Getinfo, SpectralPicturesAsRadiance6) {
+    const std::string a = spectralData("room.hsr"), b = spectralData("room12.hsr");
+    auto named = [&](std::string s) {  // our output names the files by their paths
+        for (const std::string& p : {a, b}) {
+            const std::string base = p.substr(p.rfind('/') + 1);
+            for (size_t i; (i = s.find(p)) != std::string::npos;) s.replace(i, p.size(), base);
+        }
+        return s;
+    };
+    Result r = run({a, b});
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(named(r.out), fileBytes(spectralData("room_getinfo.txt")));
+    EXPECT_EQ(named(run({"-d", a, b}).out), fileBytes(spectralData("room_getinfo_d.txt")));
+    // -a: the line goes after the header's, FORMAT= last.
+    EXPECT_EQ(run({"-a", "VIEW= -vtv -vh 40 -vv 30"}, fileBytes(b)).out,
+              fileBytes(spectralData("room12_a.hsr")));
 }
 
 }  // namespace

@@ -62,6 +62,9 @@ PictureFormat takeFormat(Header& h, const std::string& what) {
     PictureFormat result = PictureFormat::kRgbe;
     if (fmt == kXyzeFormat)
         result = PictureFormat::kXyze;
+    else if (fmt == "Radiance_spectra")  // RADIANCE 6's, read by spectral_picture.h
+        throw InputError(SourceLoc{what, 0},
+                         "spectral picture (FORMAT=Radiance_spectra) where RGB is needed");
     else if (!fmt.empty() && fmt != kRgbeFormat)
         throw InputError(SourceLoc{what, 0}, "not a RADIANCE picture (FORMAT=" + fmt + ")");
     std::erase_if(h.lines, [](const std::string& l) { return startsWith(l, "FORMAT="); });

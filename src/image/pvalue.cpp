@@ -8,6 +8,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "image/spectral_picture.h"
 #include "util/error.h"
 #include "util/options.h"
 
@@ -394,7 +395,10 @@ void runPvalue(const PvalueOptions& opt, const std::string& commandLine, std::is
     if (opt.reverse) {
         writePicture(out, readValues(*src, what, opt, commandLine));
     } else {
-        writeValues(out, readPicture(*src, what), opt, commandLine);
+        // RADIANCE compat: pvalue reads a spectral picture with fread2scan(), each pixel
+        // its band averages (scolr2color), and does not echo NCOMP=/WAVELENGTH_SPLITS=.
+        writeValues(out, readPictureAsRgb(*src, what, SpectralToRgb::kBandAverages), opt,
+                    commandLine);
     }
 }
 

@@ -43,8 +43,25 @@ OptionTable pvalueTable(PvalueOptions& opt, PvalueSize& size);
 // file. Throws InputError naming the option for unknown options, missing or bad values.
 PvalueOptions parsePvalueArgs(const std::vector<std::string>& args);
 
+namespace pvalue_detail {
+// RADIANCE compat: CIE_rf, CIE_gf, CIE_bf as color.h computes them from its standard
+// primaries and equal-energy white, in the same order: 0.26510583, 0.67010583,
+// 0.06478836 (the ".265074126" etc. in its comment are not what it compiles to;
+// RADIANCE 6.1a's pvalue -b output fits these to 1e-8).
+constexpr double xr = 0.640, yr = 0.330, xg = 0.290, yg = 0.600, xb = 0.150, yb = 0.060;
+constexpr double xw = 1. / 3., yw = 1. / 3.;
+constexpr double kD = xr * (yg - yb) + xg * (yb - yr) + xb * (yr - yg);
+constexpr double kCr = (1. / yw) * (xw * (yg - yb) - yw * (xg - xb) + xg * yb - xb * yg);
+constexpr double kCg = (1. / yw) * (xw * (yb - yr) - yw * (xb - xr) - xr * yb + xb * yr);
+constexpr double kCb = (1. / yw) * (xw * (yr - yg) - yw * (xr - xg) + xr * yg - xg * yr);
+constexpr double kRf = yr * kCr / kD, kGf = yg * kCg / kD, kBf = yb * kCb / kD;
+}  // namespace pvalue_detail
+
 // RADIANCE's bright(): the luminance-weighted sum of an RGB colour.
-inline double brightness(const Pixel& p) { return 0.265 * p[0] + 0.670 * p[1] + 0.065 * p[2]; }
+inline double brightness(const Pixel& p) {
+    using namespace pvalue_detail;
+    return kRf * p[0] + kGf * p[1] + kBf * p[2];
+}
 
 // Picture -> values. `commandLine` is appended to the picture's header lines.
 void writeValues(std::ostream& out, const Picture& pic, const PvalueOptions& opt,

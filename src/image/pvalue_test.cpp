@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "util/error.h"
@@ -155,6 +157,50 @@ TEST(Pvalue, BadOptions) {
     EXPECT_THROW(opts({"-r", "-y", "0", "+x", "2"}), InputError);
     EXPECT_THROW(opts({"-r", "-y", "2"}), InputError);
     EXPECT_THROW(opts({"a.hdr", "b.hdr"}), InputError);
+}
+
+std::string spectralData(const std::string& name) {
+    return std::string(RP_SOURCE_DIR) + "/tests/data/spectral/" + name;
+}
+
+std::string fileBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string run(std::vector<std::string> args) {
+    std::istringstream in;
+    std::ostringstream out;
+    runPvalue(opts(std::move(args)), "pvalue", in, out);
+    return out.str();
+}
+
+// A RADIANCE 6 spectral picture: each pixel's band averages (scolr2color), as RADIANCE
+// 6.1a's pvalue prints them. room.hsr and room12.hsr are spectral_picture_test.cpp's; the
+// references were made in tests/data/spectral with RADIANCE 6.1a:
+//   pvalue -h -H room.hsr > room_pvalue.txt
+//   pvalue -h -H -d -b room.hsr > room_pvalue_b.txt
+//   pvalue -h -H -df room.hsr > room_pvalue.df
+//   pvalue -h -H room12.hsr > room12_pvalue.txt
+//   pvalue room12.hsr > room12_pvalue_full.txt
+TEST(Pvalue, SpectralPictureAsRadiance6) {
+    const std::string room = spectralData("room.hsr"), room12 = spectralData("room12.hsr");
+    EXPECT_EQ(run({"-h", "-H", room}), fileBytes(spectralData("room_pvalue.txt")));
+    EXPECT_EQ(run({"-h", "-H", "-d", "-b", room}), fileBytes(spectralData("room_pvalue_b.txt")));
+    EXPECT_EQ(run({"-h", "-H", "-df", room}), fileBytes(spectralData("room_pvalue.df")));
+    EXPECT_EQ(run({"-h", "-H", room12}), fileBytes(spectralData("room12_pvalue.txt")));
+    // No exposure in the header: -o changes nothing.
+    EXPECT_EQ(run({"-h", "-H", "-o", room12}), fileBytes(spectralData("room12_pvalue.txt")));
+    // The header: the picture's lines without NCOMP=, WAVELENGTH_SPLITS= and FORMAT=, the
+    // command line, FORMAT=ascii. (Ours writes the resolution string as "-Y 3 +X 4" and
+    // the whole command line; RADIANCE's pads the sizes and stops at the file name.)
+    std::string full = fileBytes(spectralData("room12_pvalue_full.txt"));
+    std::string ours = run({room12});
+    const size_t cmd = full.find("pvalue\nFORMAT=ascii\n\n");
+    ASSERT_NE(cmd, std::string::npos);
+    EXPECT_EQ(ours.substr(0, cmd), full.substr(0, cmd));
+    const std::string values = full.substr(full.find("+X        4\n") + 12);
+    EXPECT_EQ(ours.substr(cmd), "pvalue\nFORMAT=ascii\n\n-Y 3 +X 4\n" + values);
 }
 
 }  // namespace
