@@ -18,6 +18,7 @@
 #include "render/rtrace_options.h"
 #include "render/rtrace_run.h"
 #include "render/rtrace_tracer.h"
+#include "render/spectral_passes.h"
 #include "scene/scene_load.h"
 #include "util/error.h"
 #include "util/header.h"
@@ -56,15 +57,37 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     OutputSpec spec = parseOutputSpec(o.outputSpec, o.outputFormat);
 
     const auto threads = threadLimit(o.render);  // for the whole run, loading included
+    // RADIANCE 6's -cs/-cw: more than three samples are rendered in passes of three.
+    const rp::spectral::Sampling sampling = spectralSampling(o.render);
+    ColourOutput colours = o.colours;
+    colours.resolve(sampling);
+    if (o.outputFormat == 'c' && colours.components() != 3)
+        throw rp::InputError("color format incompatible with -pY, -pS, -pM, -pA and -co");
+    const std::vector<RenderOptions> passes = passOptions(o.render, sampling);
+    if (passes.size() > 1 && spec.wantsTree())
+        throw rp::InputError("ray tree output with -cs above 3 is not supported yet");
+    if (passes.size() > 1 && !o.render.ambient.file.empty())
+        throw rp::InputError("-af with -cs above 3 is not supported yet");
     rp::Scene scene = rp::loadScene({o.sceneFile}, rp::gen::builtinLoadOptions());
     rp::SceneGeometry geometry(scene);
-    Renderer renderer(scene, geometry, o.render, rp::calc::defaultSearchPath(rp::projectLibDir()));
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    std::vector<std::unique_ptr<RendererTracer>> tracers;
+    std::vector<RayTraceFn> traceFns;
+    for (const RenderOptions& po : passes) {
+        renderers.push_back(std::make_unique<Renderer>(
+            scene, geometry, po, rp::calc::defaultSearchPath(rp::projectLibDir())));
+        // rtrace -I: the input origin is a surface point and the direction its normal.
+        tracers.push_back(
+            std::make_unique<RendererTracer>(*renderers.back(), o.immediateIrradiance));
+        traceFns.push_back(tracers.back()->trace());
+    }
+    const RayTraceFn trace =
+        traceFns.size() == 1 ? traceFns[0] : tracePasses(std::move(traceFns), sampling);
 
     std::ostream& out = std::cout;
-    if (o.header && cluster.isRoot()) out << rtraceHeader(headerCommandLine(o), o.outputFormat);
+    if (o.header && cluster.isRoot())
+        out << rtraceHeader(headerCommandLine(o), o.outputFormat, spec, colours);
 
-    // rtrace -I: the input origin is a surface point and the direction its normal.
-    RendererTracer tracer(renderer, o.immediateIrradiance);
     RtraceRunSettings settings;
     settings.inputFormat = o.inputFormat;
     settings.xres = o.xres;
@@ -72,23 +95,27 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     settings.threads = o.render.threads;
     settings.limitDistance = o.limitDistance;
     settings.cluster = &cluster;
-    RayWriter writer(spec, o.outputFormat, &scene);
+    RayWriter writer(spec, o.outputFormat, &scene, colours);
     writer.setTraceFilter(o.trace);
     // The -af file is written by one process only: with other ranks, the root's records.
     auto keepAmbient = [&] {
-        if (cluster.isRoot()) renderer.flushAmbientFile();
+        if (cluster.isRoot()) renderers[0]->flushAmbientFile();
     };
     try {
-        runRtrace(settings, std::cin, out, writer, tracer.trace());
+        runRtrace(settings, std::cin, out, writer, trace);
     } catch (...) {
         keepAmbient();  // keep the records computed so far, as RADIANCE
         throw;
     }
     keepAmbient();
-    if (std::getenv("RADPHOTON_STATS") &&
-        cluster.isRoot())  // run statistics for tuning and benchmarks
-        std::cerr << "rtrace: " << renderer.raysTraced() << " rays, " << renderer.ambientRecords()
-                  << " ambient records\n";
+    if (std::getenv("RADPHOTON_STATS") && cluster.isRoot()) {  // for tuning and benchmarks
+        long rays = 0, records = 0;
+        for (const auto& r : renderers) {
+            rays += r->raysTraced();
+            records += r->ambientRecords();
+        }
+        std::cerr << "rtrace: " << rays << " rays, " << records << " ambient records\n";
+    }
     return 0;
 }
 

@@ -70,7 +70,7 @@ std::vector<LightSource> findLightSources(const Scene& scene, const SceneGeometr
         src.loc = surf.loc;
         src.material = mat;
         src.patternModifier = m.modifier;
-        src.params = std::get<material::LightParams>(material::makeMaterial(m));
+        src.params = std::get<material::LightParams>(material::makeMaterial(m, options.pass));
         src.shape = shape;
         src.shapeIndex = index;
         const Color& L = src.params.radiance;

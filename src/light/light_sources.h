@@ -47,6 +47,8 @@ struct LightSearchOptions {
     // (mkillum) whose light the photons already carry through the opening it covers:
     // emitting from it double counts. Off by default; on reproduces RADIANCE's list.
     bool illumEmits = false;
+    // The bands the sources' colours are rendered in (RGB unless rendering a spectrum).
+    spectral::Pass pass;
 };
 
 // Every emitter, in scene order. Rules (source.c marksources, RADIANCE 5.4):

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "image/picture.h"
+#include "image/spectral_picture.h"
 #include "util/error.h"
 
 namespace rp::material {
@@ -53,10 +54,40 @@ PictTable PictTable::fromPixels(int width, int height, const std::vector<Color>&
         t.vSize_ = 1;
         t.uSize_ = double(width) / height / pixelAspect;
     }
-    t.bottomFirst_.resize(topFirst.size());
+    t.bottomFirst_.resize(topFirst.size() * 3);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
-            t.bottomFirst_[size_t(height - 1 - y) * width + x] = topFirst[size_t(y) * width + x];
+            for (int c = 0; c < 3; ++c)
+                t.bottomFirst_[(size_t(height - 1 - y) * width + x) * 3 + size_t(c)] =
+                    topFirst[size_t(y) * width + x][c];
+    return t;
+}
+
+PictTable PictTable::loadSpectral(const std::string& path) {
+    const SpectralPicture pic = readSpectralPicture(path);
+    if (pic.sampling.n <= 3) throw InputError(path + ": not a spectral picture (NCOMP <= 3)");
+    const double aspect = pic.pixelAspect();
+    if (!(aspect > 1e-6)) throw InputError(path + ": bad PIXASPECT in picture");
+    const int w = pic.width, h = pic.height, n = pic.sampling.n;
+    PictTable t;
+    t.width_ = w;
+    t.height_ = h;
+    t.channels_ = n;
+    t.sampling_ = pic.sampling;
+    if (w <= h * aspect) {
+        t.uSize_ = 1;
+        t.vSize_ = aspect * h / w;
+    } else {
+        t.vSize_ = 1;
+        t.uSize_ = double(w) / h / aspect;
+    }
+    t.bottomFirst_.resize(size_t(w) * h * n);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const auto px = pic.at(x, y);
+            std::copy(px.begin(), px.end(),
+                      t.bottomFirst_.begin() + std::ptrdiff_t((size_t(h - 1 - y) * w + x) * n));
+        }
     return t;
 }
 
@@ -71,28 +102,40 @@ PictTable PictTable::load(const std::string& path) {
 }
 
 Color PictTable::value(double u, double v) const {
-    auto at = [&](int x, int y) -> const Color& { return bottomFirst_[size_t(y) * width_ + x]; };
+    RP_CHECK(channels_ == 3);
+    double c[3];
+    values(u, v, std::span<double>(c, 3));
+    return {c[0], c[1], c[2]};
+}
+
+void PictTable::values(double u, double v, std::span<double> out) const {
+    const size_t n = size_t(channels_);
+    RP_CHECK(out.size() == n);
+    auto at = [&](int x, int y, size_t c) {
+        return bottomFirst_[(size_t(y) * width_ + x) * n + c];
+    };
     // A single row or column has nothing to interpolate along that axis.
-    if (width_ == 1 && height_ == 1) return at(0, 0);
+    if (width_ == 1 && height_ == 1) {
+        for (size_t c = 0; c < n; ++c) out[c] = at(0, 0, c);
+        return;
+    }
     if (height_ == 1) {
         AxisPos a = axisPos(u, uSize_, width_);
-        const Color &c0 = at(a.i, 0), &c1 = at(a.i + 1, 0);
-        return {blend(c0.r, c1.r, a), blend(c0.g, c1.g, a), blend(c0.b, c1.b, a)};
+        for (size_t c = 0; c < n; ++c) out[c] = blend(at(a.i, 0, c), at(a.i + 1, 0, c), a);
+        return;
     }
     AxisPos av = axisPos(v, vSize_, height_);
     if (width_ == 1) {
-        const Color &c0 = at(0, av.i), &c1 = at(0, av.i + 1);
-        return {blend(c0.r, c1.r, av), blend(c0.g, c1.g, av), blend(c0.b, c1.b, av)};
+        for (size_t c = 0; c < n; ++c) out[c] = blend(at(0, av.i, c), at(0, av.i + 1, c), av);
+        return;
     }
     // RADIANCE interpolates along the rows first (the last dimension, u), then along v.
     AxisPos au = axisPos(u, uSize_, width_);
-    Color out;
-    for (int c = 0; c < 3; ++c) {
-        double lo = blend(at(au.i, av.i)[c], at(au.i + 1, av.i)[c], au);
-        double hi = blend(at(au.i, av.i + 1)[c], at(au.i + 1, av.i + 1)[c], au);
+    for (size_t c = 0; c < n; ++c) {
+        double lo = blend(at(au.i, av.i, c), at(au.i + 1, av.i, c), au);
+        double hi = blend(at(au.i, av.i + 1, c), at(au.i + 1, av.i + 1, c), au);
         out[c] = blend(lo, hi, av);
     }
-    return out;
 }
 
 }  // namespace rp::material

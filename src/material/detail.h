@@ -177,7 +177,7 @@ PhotonScatter scatterBrtd(const BrtdParams&, const SurfacePoint&, Rng&);
 Color evaluateBsdf(const BsdfParams&, const SurfacePoint&, const Vec3&, double);
 BackwardResult shadeBsdf(const BsdfParams&, const SurfacePoint&, const ShadeOptions&, Rng&);
 PhotonScatter scatterBsdf(const BsdfParams&, const SurfacePoint&, Rng&);
-WgmdParams makeWgmd(const Primitive&);
+WgmdParams makeWgmd(const Primitive&, const spectral::Pass& pass);
 Color evaluateWgmd(const WgmdParams&, const SurfacePoint&, const Vec3&, double);
 BackwardResult shadeWgmd(const WgmdParams&, const SurfacePoint&, const ShadeOptions&, Rng&);
 PhotonScatter scatterWgmd(const WgmdParams&, const SurfacePoint&, Rng&);

@@ -15,6 +15,7 @@
 #include "scene/primitive.h"
 #include "util/color.h"
 #include "util/rng.h"
+#include "util/spectrum.h"
 #include "util/vec.h"
 
 namespace rp::bsdf {
@@ -222,8 +223,9 @@ using MaterialParams =
                  PrismParams, BsdfParams, WgmdParams, MistParams>;
 
 // Checks p's arguments (counts were checked by the reader; values here) and derives the
-// constants. Throws InputError at p.loc for bad values and for non-material types.
-MaterialParams makeMaterial(const Primitive& p);
+// constants, its colours as `pass` renders them. Throws InputError at p.loc for bad
+// values and for non-material types.
+MaterialParams makeMaterial(const Primitive& p, const spectral::Pass& pass = {});
 
 // The light a material emits, if it is a light material (light, illum, glow, spotlight):
 // its radiance (before patterns) and whether it is a glow.

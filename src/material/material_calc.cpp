@@ -115,8 +115,11 @@ private:
 // BSDF/aBSDF: the data and the expressions of the up vector and thickness (a template
 // only to reach MaterialCalc's private Record type).
 template <class Record>
-void addBsdf(const Primitive& p, Loader& loader, Record& r) {
+void addBsdf(const Primitive& p, Loader& loader, Record& r, const spectral::Pass& pass) {
     const bool thick = p.type == PrimType::BSDF;
+    // The data's colours are RGB (bsdf/colour.h); their bands are not worked out yet.
+    if (!pass.sampling.isRgb())
+        throw notSupportedYet(p.loc, "BSDF data in spectral rendering (-cs above 3)");
     r.bsdf = loader.bsdf(p, p.sargs[thick ? 1 : 0]);
     // Expressions: the up vector's three, then the thickness (aBSDF: the constant 0).
     const int at[4] = {thick ? 2 : 1, thick ? 3 : 2, thick ? 4 : 3, thick ? 0 : -1};
@@ -153,8 +156,9 @@ void setWgmdModifiers(const Scene& scene, int32_t material, int32_t (&out)[3]) {
 
 }  // namespace
 
-MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPath)
-    : recordOf_(scene.prims.size(), -1) {
+MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPath,
+                           const spectral::Pass& pass)
+    : recordOf_(scene.prims.size(), -1), pass_(pass) {
     Loader loader(std::move(searchPath));
     for (size_t i = 0; i < scene.prims.size(); ++i) {
         const Primitive& p = scene.prims[i];
@@ -213,7 +217,7 @@ MaterialCalc::MaterialCalc(const Scene& scene, std::vector<std::string> searchPa
         r.forward = parseTransform(p.sargs, xfFirst, p.loc);
         r.toObject = r.forward.inverse();
         if (r.kind == Kind::Bsdf) {
-            addBsdf(p, loader, r);
+            addBsdf(p, loader, r, pass);
             recordOf_[i] = int32_t(records_.size());
             records_.push_back(std::move(r));
             continue;
@@ -402,8 +406,8 @@ void MaterialCalcEvaluator::brtdSpecular(Color& reflection, Color& transmission)
     for (int k = 0; k < 6; ++k)
         v[k] = rec_->exprConstant[k] ? rec_->exprValue[k]
                                      : eval_.eval(calc_.program_->expression(rec_->expr[k]));
-    reflection = {v[0], v[1], v[2]};
-    transmission = {v[3], v[4], v[5]};
+    reflection = calc_.pass_.ofRgb({v[0], v[1], v[2]});
+    transmission = calc_.pass_.ofRgb({v[3], v[4], v[5]});
 }
 
 Redirection MaterialCalcEvaluator::redirect(int n, const Vec3& toSource) {
@@ -514,7 +518,7 @@ Color MaterialCalcEvaluator::directionalValue(const Vec3& toLight, double omega)
                     if (rec_->fn[j].name == f.name) same = j;
                 c[k] = same >= 0 ? c[same] : call(f, ldx);
             }
-            return c;
+            return calc_.pass_.ofRgb(c);
         }
     }
 }

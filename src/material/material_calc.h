@@ -22,6 +22,7 @@
 #include "scene/primitive.h"
 #include "scene/xform.h"
 #include "util/color.h"
+#include "util/spectrum.h"
 #include "util/vec.h"
 
 namespace rp::material {
@@ -37,7 +38,9 @@ class SurfaceChainEvaluator;
 // (syntax errors in a function file keep their own file:line).
 class MaterialCalc {
 public:
-    MaterialCalc(const Scene& scene, std::vector<std::string> searchPath);
+    // Colour expressions (BRTDfunc) come out as the bands of `pass`.
+    MaterialCalc(const Scene& scene, std::vector<std::string> searchPath,
+                 const spectral::Pass& pass = {});
     ~MaterialCalc();
     MaterialCalc(const MaterialCalc&) = delete;
     MaterialCalc& operator=(const MaterialCalc&) = delete;
@@ -90,6 +93,7 @@ private:
     std::vector<int32_t> recordOf_;  // prim index -> index into records_, or -1
     std::vector<Record> records_;
     std::shared_ptr<const calc::Program> program_;
+    spectral::Pass pass_;
 };
 
 // A hit set on a MaterialCalcEvaluator, to be evaluated again after the evaluator served

@@ -37,7 +37,8 @@ bool reorientsBackHits(const MaterialParams& m) {
            std::holds_alternative<FuncParams>(m) || std::holds_alternative<WgmdParams>(m);
 }
 
-MaterialRecord makeRecord(const Scene& scene, int32_t index, bool warnUnknown) {
+MaterialRecord makeRecord(const Scene& scene, int32_t index, bool warnUnknown,
+                          const spectral::Pass& pass) {
     MaterialRecord e;
     const Primitive& p = scene.prims[size_t(index)];
     e.isLight = isLightType(p.type);
@@ -45,7 +46,7 @@ MaterialRecord makeRecord(const Scene& scene, int32_t index, bool warnUnknown) {
     const bool bsdfProxy = p.type == PrimType::BSDF && !p.sargs.empty() && p.sargs[0] != "0";
     e.plugsLeaks = !isTransparentMaterial(p.type) && !bsdfProxy;
     try {
-        e.params = makeMaterial(p);
+        e.params = makeMaterial(p, pass);
     } catch (const InputError& err) {
         e.error = err.what();
         return e;
@@ -101,11 +102,12 @@ std::vector<int32_t> antimatterClips(const Scene& scene, int32_t index, bool war
     return clips;
 }
 
-MaterialTable::MaterialTable(const Scene& scene, bool warnUnknown) : scene_(scene) {
+MaterialTable::MaterialTable(const Scene& scene, bool warnUnknown, const spectral::Pass& pass)
+    : scene_(scene), pass_(pass) {
     records_.resize(scene.prims.size());
     for (size_t i = 0; i < scene.prims.size(); ++i)
         if (primCategory(scene.prims[i].type) == PrimCategory::Material)
-            records_[i] = makeRecord(scene, int32_t(i), warnUnknown);
+            records_[i] = makeRecord(scene, int32_t(i), warnUnknown, pass);
 }
 
 const MaterialRecord& MaterialTable::at(int32_t index) const {

@@ -61,8 +61,10 @@ class MaterialTable {
 public:
     // Argument errors are kept and thrown when the record is used (`at`), so that a
     // scene may hold unused broken materials, as RADIANCE allows. With `warnUnknown`,
-    // antimatter names that match no modifier are reported once here.
-    explicit MaterialTable(const Scene& scene, bool warnUnknown = false);
+    // antimatter names that match no modifier are reported once here. Colours are the
+    // bands of `pass` (RGB unless rendering a spectrum).
+    explicit MaterialTable(const Scene& scene, bool warnUnknown = false,
+                           const spectral::Pass& pass = {});
 
     // The record of material `index`; throws its argument error, or that it is no
     // material.
@@ -70,6 +72,7 @@ public:
     // The record of `index`, unchecked: for callers that checked it with at() before.
     const MaterialRecord& operator[](int32_t index) const { return records_[size_t(index)]; }
     const Scene& scene() const { return scene_; }
+    const spectral::Pass& pass() const { return pass_; }
     // Whether `index` is a material whose arguments are fine.
     bool usable(int32_t index) const {
         return index >= 0 && size_t(index) < records_.size() && records_[size_t(index)].params;
@@ -77,6 +80,7 @@ public:
 
 private:
     const Scene& scene_;
+    spectral::Pass pass_;
     std::vector<MaterialRecord> records_;  // indexed by prim; only material records set
 };
 

@@ -21,7 +21,10 @@ std::string header(const Primitive& p) {
 [[noreturn]] void fail(const Primitive& p, const std::string& what) {
     throw InputError(p.loc, header(p) + what);
 }
-Color rgb(const Primitive& p, size_t at) { return {p.rargs[at], p.rargs[at + 1], p.rargs[at + 2]}; }
+// An RGB argument triple as the pass renders it (spectral.h Pass).
+Color rgb(const Primitive& p, size_t at, const spectral::Pass& pass) {
+    return pass.ofRgb({p.rargs[at], p.rargs[at + 1], p.rargs[at + 2]});
+}
 std::optional<std::string> alternateOf(const Primitive& p) {
     if (p.sargs.empty()) return std::nullopt;
     return p.sargs[0];
@@ -34,10 +37,11 @@ std::optional<double> constantExpr(const std::string& s) {
     if (end != s.c_str() + s.size()) return std::nullopt;
     return v;
 }
-std::optional<Color> constantColor(const std::vector<std::string>& s, size_t at) {
+std::optional<Color> constantColor(const std::vector<std::string>& s, size_t at,
+                                   const spectral::Pass& pass) {
     auto r = constantExpr(s[at]), g = constantExpr(s[at + 1]), b = constantExpr(s[at + 2]);
     if (!r || !g || !b) return std::nullopt;
-    return Color{*r, *g, *b};
+    return pass.ofRgb({*r, *g, *b});
 }
 
 // Splits shared by normal.c, aniso.c and m_brdf.c: trans = T (1 - rspec), tspec = trans
@@ -62,12 +66,12 @@ void deriveWardColours(Params& m, bool metal) {
     m.specularTransmittance = m.color * m.tspec;
 }
 
-NormalParams makeNormal(const Primitive& p) {
+NormalParams makeNormal(const Primitive& p, const spectral::Pass& pass) {
     NormalParams m;
     m.kind = p.type == PrimType::Metal   ? NormalParams::Kind::Metal
              : p.type == PrimType::Trans ? NormalParams::Kind::Trans
                                          : NormalParams::Kind::Plastic;
-    m.color = rgb(p, 0);
+    m.color = rgb(p, 0, pass);
     m.specularity = p.rargs[3];
     // RADIANCE compat: normal.c squares the roughness and never rejects a negative one.
     m.roughness = p.rargs[4];
@@ -82,7 +86,7 @@ NormalParams makeNormal(const Primitive& p) {
     return m;
 }
 
-AnisoParams makeAniso(const Primitive& p) {
+AnisoParams makeAniso(const Primitive& p, const spectral::Pass& pass) {
     AnisoParams m;
     m.kind = p.type == PrimType::Metal2   ? AnisoParams::Kind::Metal2
              : p.type == PrimType::Trans2 ? AnisoParams::Kind::Trans2
@@ -90,7 +94,7 @@ AnisoParams makeAniso(const Primitive& p) {
     for (int i = 0; i < 3; ++i) m.uExpr[i] = p.sargs[i];
     m.funcFile = p.sargs[3];
     m.transform.assign(p.sargs.begin() + 4, p.sargs.end());
-    m.color = rgb(p, 0);
+    m.color = rgb(p, 0, pass);
     m.specularity = p.rargs[3];
     m.uRoughness = p.rargs[4];
     m.vRoughness = p.rargs[5];
@@ -104,13 +108,13 @@ AnisoParams makeAniso(const Primitive& p) {
     return m;
 }
 
-AshikParams makeAshik(const Primitive& p) {
+AshikParams makeAshik(const Primitive& p, const spectral::Pass& pass) {
     AshikParams m;
     for (int i = 0; i < 3; ++i) m.uExpr[i] = p.sargs[i];
     m.funcFile = p.sargs[3];
     m.transform.assign(p.sargs.begin() + 4, p.sargs.end());
-    m.diffuse = rgb(p, 0);
-    m.specular = rgb(p, 3);
+    m.diffuse = rgb(p, 0, pass);
+    m.specular = rgb(p, 3, pass);
     m.uPower = p.rargs[6];
     m.vPower = p.rargs[7];
     // Deliberately stricter than ashikhmin.c, which takes any value: a negative exponent
@@ -119,9 +123,9 @@ AshikParams makeAshik(const Primitive& p) {
     return m;
 }
 
-GlassParams makeGlass(const Primitive& p) {
+GlassParams makeGlass(const Primitive& p, const spectral::Pass& pass) {
     GlassParams m;
-    m.transmission = rgb(p, 0);
+    m.transmission = rgb(p, 0, pass);
     if (p.rargs.size() == 4) m.index = p.rargs[3];
     // Deliberately stricter than glass.c, which divides by the index unchecked.
     if (!(m.index > kFtiny)) fail(p, "index of refraction must be positive");
@@ -131,13 +135,13 @@ GlassParams makeGlass(const Primitive& p) {
     return m;
 }
 
-DielectricParams makeDielectric(const Primitive& p) {
+DielectricParams makeDielectric(const Primitive& p, const spectral::Pass& pass) {
     DielectricParams m;
     m.isInterface = p.type == PrimType::Interface;
-    m.insideTransmission = rgb(p, 0);
+    m.insideTransmission = rgb(p, 0, pass);
     if (m.isInterface) {
         m.insideIndex = p.rargs[3];
-        m.outsideTransmission = rgb(p, 4);
+        m.outsideTransmission = rgb(p, 4, pass);
         m.outsideIndex = p.rargs[7];
     } else {
         m.hartmann = p.rargs[4];
@@ -149,9 +153,9 @@ DielectricParams makeDielectric(const Primitive& p) {
     return m;
 }
 
-LightParams makeLight(const Primitive& p) {
+LightParams makeLight(const Primitive& p, const spectral::Pass& pass) {
     LightParams m;
-    m.radiance = rgb(p, 0);
+    m.radiance = rgb(p, 0, pass);
     switch (p.type) {
         case PrimType::Illum:
             m.kind = LightParams::Kind::Illum;
@@ -178,12 +182,12 @@ LightParams makeLight(const Primitive& p) {
     return m;
 }
 
-FuncParams makeFunc(const Primitive& p) {
+FuncParams makeFunc(const Primitive& p, const spectral::Pass& pass) {
     FuncParams m;
     m.type = p.type;
     m.sargs = p.sargs;
     m.rargs = p.rargs;
-    m.color = rgb(p, 0);
+    m.color = rgb(p, 0, pass);
     bool trans = p.type == PrimType::Transfunc || p.type == PrimType::Transdata;
     split(m, p.rargs[3], trans ? p.rargs[4] : 0.0, trans ? p.rargs[5] : 0.0);
     m.diffuseReflectance = m.color * m.rdiff;
@@ -191,15 +195,15 @@ FuncParams makeFunc(const Primitive& p) {
     return m;
 }
 
-BrtdParams makeBrtd(const Primitive& p) {
+BrtdParams makeBrtd(const Primitive& p, const spectral::Pass& pass) {
     BrtdParams m;
     m.sargs = p.sargs;
     m.rargs = p.rargs;
-    m.frontDiffuse = rgb(p, 0);
-    m.backDiffuse = rgb(p, 3);
-    m.diffuseTransmittance = rgb(p, 6);
-    m.specularReflection = constantColor(p.sargs, 0);
-    m.specularTransmission = constantColor(p.sargs, 3);
+    m.frontDiffuse = rgb(p, 0, pass);
+    m.backDiffuse = rgb(p, 3, pass);
+    m.diffuseTransmittance = rgb(p, 6, pass);
+    m.specularReflection = constantColor(p.sargs, 0, pass);
+    m.specularTransmission = constantColor(p.sargs, 3, pass);
     // ray.html: three '0' function names mean no directional diffuse component.
     m.directionalDiffuse = !(p.sargs[6] == "0" && p.sargs[7] == "0" && p.sargs[8] == "0");
     return m;
@@ -207,36 +211,36 @@ BrtdParams makeBrtd(const Primitive& p) {
 
 }  // namespace
 
-MaterialParams makeMaterial(const Primitive& p) {
+MaterialParams makeMaterial(const Primitive& p, const spectral::Pass& pass) {
     // Counts are the reader's job; a short record here is a programming error.
     RP_CHECK(argRule(p.type).reals.allows(p.rargs.size()));
     switch (p.type) {
         case PrimType::Plastic:
         case PrimType::Metal:
         case PrimType::Trans:
-            return makeNormal(p);
+            return makeNormal(p, pass);
         case PrimType::Plastic2:
         case PrimType::Metal2:
         case PrimType::Trans2:
-            return makeAniso(p);
+            return makeAniso(p, pass);
         case PrimType::Ashik2:
-            return makeAshik(p);
+            return makeAshik(p, pass);
         case PrimType::Mirror: {
-            MirrorParams m{rgb(p, 0), alternateOf(p), {}};
+            MirrorParams m{rgb(p, 0, pass), alternateOf(p), {}};
             const detail::Component c{ScatterKind::SpecularReflection, m.color};
             m.photonRoulette = detail::makeRouletteTable(&c, 1);
             return m;
         }
         case PrimType::Glass:
-            return makeGlass(p);
+            return makeGlass(p, pass);
         case PrimType::Dielectric:
         case PrimType::Interface:
-            return makeDielectric(p);
+            return makeDielectric(p, pass);
         case PrimType::Light:
         case PrimType::Illum:
         case PrimType::Glow:
         case PrimType::Spotlight:
-            return makeLight(p);
+            return makeLight(p, pass);
         case PrimType::Antimatter:
             return AntimatterParams{p.sargs};
         case PrimType::Plasfunc:
@@ -245,9 +249,9 @@ MaterialParams makeMaterial(const Primitive& p) {
         case PrimType::Plasdata:
         case PrimType::Metdata:
         case PrimType::Transdata:
-            return makeFunc(p);
+            return makeFunc(p, pass);
         case PrimType::BRTDfunc:
-            return makeBrtd(p);
+            return makeBrtd(p, pass);
         case PrimType::Prism1:
         case PrimType::Prism2:
             // The expressions and the function file are checked by MaterialCalc at load.
@@ -257,20 +261,20 @@ MaterialParams makeMaterial(const Primitive& p) {
             // The strings (thickness, file, up vector, function file) are MaterialCalc's.
             BsdfParams m;
             m.absdf = p.type == PrimType::ABSDF;
-            if (p.rargs.size() >= 3) m.frontDiffuse = rgb(p, 0);
-            if (p.rargs.size() >= 6) m.backDiffuse = rgb(p, 3);
-            if (p.rargs.size() >= 9) m.diffuseTransmittance = rgb(p, 6);
+            if (p.rargs.size() >= 3) m.frontDiffuse = rgb(p, 0, pass);
+            if (p.rargs.size() >= 6) m.backDiffuse = rgb(p, 3, pass);
+            if (p.rargs.size() >= 9) m.diffuseTransmittance = rgb(p, 6, pass);
             m.hasBackDiffuse = p.rargs.size() >= 6;
             return m;
         }
         case PrimType::WGMDfunc:
-            return detail::makeWgmd(p);  // wgmd.cpp; expressions and modifiers: MaterialCalc
+            return detail::makeWgmd(p, pass);  // wgmd.cpp; expressions and modifiers: MaterialCalc
         case PrimType::Mist: {
             // Counts 0, 3, 6 or 7 were checked by the reader.
             MistParams m;
             m.sources = p.sargs;
-            if (p.rargs.size() >= 3) m.extinction = rgb(p, 0);
-            if (p.rargs.size() >= 6) m.albedo = rgb(p, 3);
+            if (p.rargs.size() >= 3) m.extinction = rgb(p, 0, pass);
+            if (p.rargs.size() >= 6) m.albedo = rgb(p, 3, pass);
             if (p.rargs.size() >= 7) m.eccentricity = p.rargs[6];
             if (m.extinction.min() < 0) fail(p, "negative extinction");
             if (m.albedo && (m.albedo->min() < 0 || m.albedo->max() > 1))

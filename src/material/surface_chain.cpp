@@ -68,8 +68,10 @@ ChainKind kindOf(PrimType t) {
             return ChainKind::SpecFunc;
         case PrimType::Specdata:
             return ChainKind::SpecData;
+        case PrimType::Specpict:
+            return ChainKind::SpecPict;
         default:
-            return ChainKind::Unsupported;  // specpict
+            return ChainKind::Unsupported;
     }
 }
 
@@ -126,6 +128,19 @@ public:
         return picts_[name] = t;
     }
 
+    std::shared_ptr<const PictTable> spectralPict(const Primitive& p, const std::string& name) {
+        auto it = spectralPicts_.find(name);
+        if (it != spectralPicts_.end()) return it->second;
+        std::string path = find(p, name, "hyperspectral image");
+        std::shared_ptr<const PictTable> t;
+        try {
+            t = std::make_shared<const PictTable>(PictTable::loadSpectral(path));
+        } catch (const InputError& e) {
+            fail(p, e.what());
+        }
+        return spectralPicts_[name] = t;
+    }
+
     std::shared_ptr<const Font> font(const Primitive& p, const std::string& name) {
         auto it = fonts_.find(name);
         if (it != fonts_.end()) return it->second;
@@ -150,7 +165,7 @@ private:
     std::vector<std::string> path_;
     std::map<std::string, bool> loadedFiles_;
     std::map<std::string, std::shared_ptr<const calc::DataFile>> data_;
-    std::map<std::string, std::shared_ptr<const PictTable>> picts_;
+    std::map<std::string, std::shared_ptr<const PictTable>> picts_, spectralPicts_;
     std::map<std::string, std::shared_ptr<const Font>> fonts_;
 };
 
@@ -228,17 +243,18 @@ void compileText(Loader& ld, const Primitive& p, ChainRecord& r, size_t fontAt, 
     }
 }
 
-// Samples at the centres of n bands from wl0 to wl1, in the working sampling.
+// A spectrum (bands from wl0 to wl1) as the pass renders it.
 Color workingColour(const std::vector<double>& samples, double wl0, double wl1,
-                    const spectral::Sampling& s) {
-    double out[3];
-    spectral::toWorking(samples, wl0, wl1, s, std::span<double>(out, 3));
-    return {out[0], out[1], out[2]};
+                    const spectral::Pass& pass) {
+    double out[spectral::kMaxSamples];
+    const std::span<double> working(out, size_t(pass.sampling.n));
+    spectral::toWorking(samples, wl0, wl1, pass.sampling, working);
+    return pass.ofSamples(working);
 }
 
 // spectrum: "nmA nmB s1 s2 ...", samples at evenly spaced wavelengths from nmA to nmB
 // (each the centre of its band).
-Color compileSpectrum(const Primitive& p, const spectral::Sampling& s) {
+Color compileSpectrum(const Primitive& p, const spectral::Pass& s) {
     const auto& a = p.rargs;
     const size_t n = a.size() - 2;
     const double half = 0.5 * (a[1] - a[0]) / double(n - 1);
@@ -249,7 +265,7 @@ Color compileSpectrum(const Primitive& p, const spectral::Sampling& s) {
 // specfile: a 1-D data file over wavelength. RADIANCE compat (p_data.c): listed
 // wavelengths are sampled twice as densely as there are points. RADIANCE then spreads
 // only the first half of those samples over the range; all of them are used here.
-Color compileSpecfile(Loader& ld, const Primitive& p, const spectral::Sampling& s) {
+Color compileSpecfile(Loader& ld, const Primitive& p, const spectral::Pass& s) {
     auto d = ld.data(p, p.sargs.at(0));
     if (d->dimensions() != 1) fail(p, "data file must be 1-dimensional");
     const calc::DataFile::Axis& ax = d->axis(0);
@@ -268,7 +284,7 @@ Color compileSpecfile(Loader& ld, const Primitive& p, const spectral::Sampling& 
 }
 
 void compileRecord(Loader& ld, const Scene& s, int32_t index, ChainRecord& r,
-                   const spectral::Sampling& sampling) {
+                   const spectral::Pass& pass) {
     const Primitive& p = s.prims[index];
     const auto& sa = p.sargs;
     switch (p.type) {
@@ -304,8 +320,8 @@ void compileRecord(Loader& ld, const Scene& s, int32_t index, ChainRecord& r,
         case PrimType::Colortext:
             r.colour = true;
             compileText(ld, p, r, 0, 15);
-            r.textFore = {p.rargs[9], p.rargs[10], p.rargs[11]};
-            r.textBack = {p.rargs[12], p.rargs[13], p.rargs[14]};
+            r.textFore = pass.ofRgb({p.rargs[9], p.rargs[10], p.rargs[11]});
+            r.textBack = pass.ofRgb({p.rargs[12], p.rargs[13], p.rargs[14]});
             break;
         case PrimType::Brighttext:
             compileText(ld, p, r, 0, 11);
@@ -336,16 +352,21 @@ void compileRecord(Loader& ld, const Scene& s, int32_t index, ChainRecord& r,
             compileText(ld, p, r, 2, 9);
             break;
         case PrimType::Spectrum:
-            r.constant = compileSpectrum(p, sampling);
+            r.constant = compileSpectrum(p, pass);
             break;
         case PrimType::Specfile:
-            r.constant = compileSpecfile(ld, p, sampling);
+            r.constant = compileSpecfile(ld, p, pass);
             break;
         case PrimType::Specfunc:
             r.funcNames = {sa.at(0)};
             r.wlMin = std::min(p.rargs[0], p.rargs[1]);
             r.wlMax = std::max(p.rargs[0], p.rargs[1]);
             compileFunctions(ld, p, r, 1, 2, 0, 2);
+            break;
+        case PrimType::Specpict:  // sfunc specfile funcfile u v transform
+            r.funcNames = {sa.at(0)};
+            r.pict = ld.spectralPict(p, sa.at(1));
+            compileFunctions(ld, p, r, 2, 3, 2, 5);
             break;
         case PrimType::Specdata: {
             // The data's last dimension is wavelength; one coordinate per other one.
@@ -394,8 +415,9 @@ bool directionOnly(const calc::Program& prog, const ChainRecord& r) {
 
 }  // namespace
 
-SurfaceChains::SurfaceChains(const Scene& scene, std::vector<std::string> searchPath)
-    : impl_(std::make_unique<Impl>(scene)) {
+SurfaceChains::SurfaceChains(const Scene& scene, std::vector<std::string> searchPath,
+                             const spectral::Pass& pass)
+    : impl_(std::make_unique<Impl>(scene, pass)) {
     size_t n = scene.prims.size();
     impl_->records.resize(n);
     impl_->plainMaterial.assign(n, -2);
@@ -403,7 +425,7 @@ SurfaceChains::SurfaceChains(const Scene& scene, std::vector<std::string> search
     for (size_t i = 0; i < n; ++i) {
         ChainRecord& r = impl_->records[i];
         r.kind = kindOf(scene.prims[i].type);
-        compileRecord(ld, scene, int32_t(i), r, impl_->sampling);
+        compileRecord(ld, scene, int32_t(i), r, impl_->pass);
     }
     impl_->program = ld.builder.build();
     const calc::Program& prog = *impl_->program;

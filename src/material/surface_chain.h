@@ -19,6 +19,7 @@
 #include "scene/primitive.h"
 #include "util/color.h"
 #include "util/rng.h"
+#include "util/spectrum.h"
 #include "util/vec.h"
 
 namespace rp::material {
@@ -71,7 +72,9 @@ class SurfaceChains {
 public:
     // Throws InputError naming the record for missing files, bad arguments and syntax
     // errors in function files; text patterns need their font file on the search path.
-    SurfaceChains(const Scene& scene, std::vector<std::string> searchPath);
+    // Colours come out as the bands of `pass` (RGB unless rendering a spectrum).
+    SurfaceChains(const Scene& scene, std::vector<std::string> searchPath,
+                  const spectral::Pass& pass = {});
     ~SurfaceChains();
 
     // Throws InputError / notSupportedYet if the chain from `modifier` cannot be

@@ -80,6 +80,7 @@ struct SurfaceChainEvaluator::Impl {
 
     Color specFunc(const ChainRecord& r);
     Color specData(const ChainRecord& r);
+    Color specPict(const ChainRecord& r);
 
     bool inText(const ChainRecord& r) {
         // Text records have no transform arguments: the text lies in world space.
@@ -114,7 +115,7 @@ struct SurfaceChainEvaluator::Impl {
 // finer than a quarter of a working band), each at a jittered wavelength within its
 // band, as RADIANCE's p_specfunc.
 Color SurfaceChainEvaluator::Impl::specFunc(const ChainRecord& r) {
-    const spectral::Sampling& s = chains.sampling;
+    const spectral::Sampling& s = chains.pass.sampling;
     const double lo = std::max(r.wlMin, s.wl[3]), hi = std::min(r.wlMax, s.wl[0]);
     if (!(lo < hi)) return {1, 1, 1};  // outside the working range: no effect
     const double step =
@@ -124,9 +125,10 @@ Color SurfaceChainEvaluator::Impl::specFunc(const ChainRecord& r) {
     double wl = hi - 0.5 * step;
     for (int i = n; i-- > 0; wl -= step)
         samples[size_t(i)] = call1(r.funcs[0], wl + 0.9 * (0.5 - rng->uniform()) * step);
-    double out[3];
-    spectral::toWorking(samples, lo, hi, s, std::span<double>(out, 3));
-    return {out[0], out[1], out[2]};
+    double out[spectral::kMaxSamples];
+    const std::span<double> working(out, size_t(s.n));
+    spectral::toWorking(samples, lo, hi, s, working);
+    return chains.pass.ofSamples(working);
 }
 
 // specdata: the table interpolated at the record's coordinates at each wavelength of its
@@ -149,10 +151,28 @@ Color SurfaceChainEvaluator::Impl::specData(const ChainRecord& r) {
         const double args[2] = {d.value(std::span<const double>(pt.data(), size_t(nd))), wl};
         samples[size_t(i)] = eval.call(r.funcs[0].fn, std::span<const double>(args, 2));
     }
-    double out[3];
-    spectral::toWorking(samples, first - 0.5 * step, first + range + 0.5 * step, chains.sampling,
-                        std::span<double>(out, 3));
-    return {out[0], out[1], out[2]};
+    double out[spectral::kMaxSamples];
+    const std::span<double> working(out, size_t(chains.pass.sampling.n));
+    spectral::toWorking(samples, first - 0.5 * step, first + range + 0.5 * step,
+                        chains.pass.sampling, working);
+    return chains.pass.ofSamples(working);
+}
+
+// specpict: the picture's samples at (u, v), each through the record's function
+// f(value, wavelength) at its band's centre.
+Color SurfaceChainEvaluator::Impl::specPict(const ChainRecord& r) {
+    const PictTable& pict = *r.pict;
+    const spectral::Sampling& ps = pict.sampling();
+    std::vector<double> samples(size_t(ps.n));
+    pict.values(expr(r, 0), expr(r, 1), samples);
+    for (int i = 0; i < ps.n; ++i) {
+        const double args[2] = {samples[size_t(i)], ps.centre(i)};
+        samples[size_t(i)] = eval.call(r.funcs[0].fn, std::span<const double>(args, 2));
+    }
+    double out[spectral::kMaxSamples];
+    const std::span<double> working(out, size_t(chains.pass.sampling.n));
+    spectral::toWorking(samples, ps.wl[0], ps.wl[3], chains.pass.sampling, working);
+    return chains.pass.ofSamples(working);
 }
 
 // RADIANCE raymixture: both sides shaded with their share; a side that reaches no
@@ -219,7 +239,7 @@ bool SurfaceChainEvaluator::Impl::shade(int32_t mod, WalkState& st, double weigh
             case ChainKind::Func:
                 setRay(r, p);
                 if (r.colour)
-                    st.pcol *= Color(expr(r, 0), expr(r, 1), expr(r, 2));
+                    st.pcol *= chains.pass.ofRgb({expr(r, 0), expr(r, 1), expr(r, 2)});
                 else
                     st.pcol *= expr(r, 0);
                 break;
@@ -227,14 +247,14 @@ bool SurfaceChainEvaluator::Impl::shade(int32_t mod, WalkState& st, double weigh
                 setRay(r, p);
                 auto v = dataValues(r);
                 if (r.colour)
-                    st.pcol *= channelFunctions(r, v);
+                    st.pcol *= chains.pass.ofRgb(channelFunctions(r, v));
                 else
                     st.pcol *= call1(r.funcs[0], v[0]);
                 break;
             }
             case ChainKind::Pict:
                 setRay(r, p);
-                st.pcol *= channelFunctions(r, pictValues(r));
+                st.pcol *= chains.pass.ofRgb(channelFunctions(r, pictValues(r)));
                 break;
             case ChainKind::Text:
                 st.pcol *= inText(r) ? r.textFore : r.textBack;
@@ -249,6 +269,10 @@ bool SurfaceChainEvaluator::Impl::shade(int32_t mod, WalkState& st, double weigh
             case ChainKind::SpecData:
                 setRay(r, p);
                 st.pcol *= specData(r);
+                break;
+            case ChainKind::SpecPict:
+                setRay(r, p);
+                st.pcol *= specPict(r);
                 break;
             case ChainKind::TexFunc:
                 setRay(r, p);

@@ -20,11 +20,12 @@ namespace rp::material {
 
 enum class ChainKind : uint8_t {
     NotModifier,  // a surface: cannot be in a chain
-    Unsupported,  // a modifier type this module does not evaluate (specpict)
+    Unsupported,  // a modifier type this module does not evaluate (an alias)
     Material,
     Spectrum,  // spectrum, specfile: a constant colour
     SpecFunc,
     SpecData,
+    SpecPict,
     Func,  // colorfunc, brightfunc
     Data,  // colordata, brightdata
     Pict,  // colorpict
@@ -80,14 +81,13 @@ struct ChainRecord {
 };
 
 struct SurfaceChains::Impl {
-    explicit Impl(const Scene& s) : scene(&s), materials(s) {}
+    Impl(const Scene& s, const spectral::Pass& p) : scene(&s), materials(s, false, p), pass(p) {}
     const Scene* scene = nullptr;
     MaterialTable materials;
     std::vector<ChainRecord> records;    // one per scene primitive
     std::vector<int32_t> plainMaterial;  // per primitive: the material if plain, else -2
-    // The working spectral sampling spectral records are converted to (RGB until the
-    // renderer samples spectra).
-    spectral::Sampling sampling;
+    // The bands this chain renders: colours and spectra are converted to them.
+    spectral::Pass pass;
     std::shared_ptr<const calc::Program> program;
 };
 

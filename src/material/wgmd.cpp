@@ -37,7 +37,7 @@ WgmdInputs wgmdInputs(const WgmdParams& m, const SurfacePoint& sp) {
 
 namespace detail {
 
-WgmdParams makeWgmd(const Primitive& p) {
+WgmdParams makeWgmd(const Primitive& p, const spectral::Pass& pass) {
     WgmdParams m;
     // ray.html: rs_mod rs rs_ur rs_vr ts_mod ts ts_ur ts_vr td_mod ux uy uz funcfile xf
     constexpr size_t kModAt[3] = {0, 4, 8};
@@ -62,9 +62,9 @@ WgmdParams makeWgmd(const Primitive& p) {
     for (double v : p.rargs)
         if (!std::isfinite(v))
             throw InputError(p.loc, "WGMDfunc '" + p.name + "': real arguments must be finite");
-    m.frontDiffuse = {p.rargs[0], p.rargs[1], p.rargs[2]};
-    m.backDiffuse = {p.rargs[3], p.rargs[4], p.rargs[5]};
-    m.diffuseTransmittance = {p.rargs[6], p.rargs[7], p.rargs[8]};
+    m.frontDiffuse = pass.ofRgb({p.rargs[0], p.rargs[1], p.rargs[2]});
+    m.backDiffuse = pass.ofRgb({p.rargs[3], p.rargs[4], p.rargs[5]});
+    m.diffuseTransmittance = pass.ofRgb({p.rargs[6], p.rargs[7], p.rargs[8]});
     return m;
 }
 

@@ -6,6 +6,7 @@
 #include "calc/search_path.h"
 #include "util/error.h"
 #include "util/paths.h"
+#include "util/warnings.h"
 
 namespace rp::render {
 
@@ -125,6 +126,20 @@ void addMist(OptionTable& t, MistOptions& m) {
           realLine(m.samplingDistance, "-ms %f\t\t\t# mist sampling distance\n"));
 }
 
+void addSpectral(OptionTable& t, RenderOptions& opt) {
+    t.add(valueOption("-cs", opt.spectralSamples), [&opt] {
+        if (opt.spectralSamples <= 3) return std::string();
+        return formatLine("-cs %-2d\t\t\t\t# number of spectral bins\n", opt.spectralSamples) +
+               formatLine("-cw %3.0f %3.0f\t\t\t# wavelength limits (nm)\n",
+                          std::min(opt.wavelengthA, opt.wavelengthB),
+                          std::max(opt.wavelengthA, opt.wavelengthB));
+    });
+    t.add(customOption("-cw", [&opt](OptionReader& r) {
+        opt.wavelengthA = r.real();
+        opt.wavelengthB = r.real();
+    }));
+}
+
 void addLimits(OptionTable& t, LimitOptions& l) {
     t.add(valueOption("-lr", l.maxDepth), [&l] {
         return formatLine("-lr %-9d\t\t\t# limit reflection%s\n", l.maxDepth,
@@ -207,11 +222,34 @@ void addRenderOptions(OptionTable& t, RenderOptions& opt) {
     addFlagsAndDirect(t, opt);
     addAmbient(t, opt.ambient);
     addMist(t, opt.mist);
+    addSpectral(t, opt);
     addLimits(t, opt.limits);
     addPhotonMaps(t, opt);
     t.add(threadsOption(opt.threads));
     t.add(valueOption("-e", opt.errorFile));
     t.add(flagOption("-w", opt.warnings, 3));
+}
+
+spectral::Sampling spectralSampling(const RenderOptions& opt) {
+    auto c = spectral::makeSampling(opt.spectralSamples, opt.wavelengthA, opt.wavelengthB);
+    if (!c) throw InputError("unsupported spectral sampling");
+    if (!c->tuned) warn("spectral range incompatible with color output");
+    return c->sampling;
+}
+
+std::vector<RenderOptions> passOptions(const RenderOptions& opt,
+                                       const spectral::Sampling& sampling) {
+    std::vector<RenderOptions> out;
+    for (const spectral::Pass& p : spectral::passesOf(sampling)) {
+        RenderOptions o = opt;
+        o.pass = p;
+        o.direct.pass = p;
+        o.ambient.value = p.ofRgb(opt.ambient.value);
+        o.mist.extinction = p.ofRgb(opt.mist.extinction);
+        o.mist.albedo = p.ofRgb(opt.mist.albedo);
+        out.push_back(std::move(o));
+    }
+    return out;
 }
 
 std::string formatRenderDefaults(const RenderOptions& opt) {

@@ -12,6 +12,7 @@
 
 #include "util/color.h"
 #include "util/options.h"
+#include "util/spectrum.h"
 
 namespace rp::render {
 
@@ -23,6 +24,7 @@ struct DirectOptions {
     int relays = 2;           // -dr: virtual source (mirror) relay levels
     int pretest = 512;        // -dp: virtual source pretest density (samples per steradian)
     bool visibility = true;   // -dv: light sources visible to primary/specular rays
+    spectral::Pass pass;      // the bands the sources' colours are rendered in
 };
 
 struct SpecularOptions {
@@ -104,7 +106,22 @@ struct RenderOptions {
     // `contribModifiers` (RADIANCE pmapkdt.c: the tracked modifiers).
     bool contributions = false;
     std::vector<std::string> contribModifiers;
+    // -cs -cw: RADIANCE 6's spectral sampling as given (spectralSampling() checks it).
+    int spectralSamples = 3;
+    double wavelengthA = 380, wavelengthB = 780;
+    // The bands this renderer traces (passOptions): RGB unless rendering a spectrum.
+    spectral::Pass pass;
 };
+
+// The spectral sampling of -cs -cw (RADIANCE 6's setspectrsamp): InputError for one it
+// rejects ("unsupported spectral sampling"), a warning for a range that misses a
+// primary's peak.
+spectral::Sampling spectralSampling(const RenderOptions& opt);
+// The options of each rendering pass of `sampling` (spectrum.h Pass): the pass set for
+// the renderer and the direct calculation, and the RGB colours given as options (-av,
+// -me, -ma) as that pass renders them.
+std::vector<RenderOptions> passOptions(const RenderOptions& opt,
+                                       const spectral::Sampling& sampling);
 
 // Adds the shared options to `table`, bound to `opt`, each with its line of RADIANCE's
 // `rtrace -defaults` (print_rdefaults in renderopts.c, printPmapDefaults in pmapopt.c:

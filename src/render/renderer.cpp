@@ -77,6 +77,9 @@ std::vector<bool> trackedLightSources(const Scene& s, const SceneGeometry& g,
 
 // How the photon maps' stores are sized (-ac, -aC, -n).
 pmap::StoreOptions photonStoreOptions(const RenderOptions& o) {
+    // Photon maps hold RGB flux; spectral maps are issue 50's second part.
+    if (!o.photonMaps.empty() && !o.pass.sampling.isRgb())
+        throw InputError("photon maps in spectral rendering (-cs above 3) are not supported yet");
     pmap::StoreOptions s;
     s.cachePhotons = o.photonCache;
     s.pageSize = o.photonPageSize;
@@ -91,8 +94,8 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
     : scene(s),
       geometry(g),
       options(o),
-      chains(s, searchPath),
-      materialCalc(s, std::move(searchPath)),
+      chains(s, searchPath, o.pass),
+      materialCalc(s, std::move(searchPath), o.pass),
       trackedSources(trackedLightSources(s, g, o)),
       photons(o.photonMaps, o.photonMaxRadius, s, o.contributions ? &trackedSources : nullptr,
               photonStoreOptions(o), o.contribModifiers),

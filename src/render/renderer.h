@@ -44,6 +44,12 @@ struct RayResult {
     Color unmirrored;                // x: value minus the mirrored part
     double mirroredLength = 1e10;    // R: effective length of the mirrored ray
     double unmirroredLength = 1e10;  // X: effective length of the unmirrored part
+    // Rendering a spectrum in passes (-cs above 3): the samples of v, W, r and x
+    // (sampling.n each), gathered from the passes; null when rendering RGB.
+    struct Samples {
+        std::vector<double> value, coefficient, mirrored, unmirrored;
+    };
+    std::shared_ptr<const Samples> samples;
 };
 
 // One ray of the ray tree, for rtrace's trace output (-o...t...): every ray traced,

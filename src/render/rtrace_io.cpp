@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string_view>
 
 #include "util/colr.h"
 #include "util/error.h"
@@ -113,8 +114,8 @@ RayReader::Status RayReader::next(InputRay& ray) {
 
 // ---- output ----
 
-RayWriter::RayWriter(OutputSpec spec, char format, const Scene* scene)
-    : spec_(std::move(spec)), format_(format), scene_(scene) {}
+RayWriter::RayWriter(OutputSpec spec, char format, const Scene* scene, ColourOutput colours)
+    : spec_(std::move(spec)), format_(format), scene_(scene), colours_(std::move(colours)) {}
 
 void RayWriter::setTraceFilter(const TraceFilter& filter) {
     traceMode_ = filter.mode;
@@ -148,7 +149,22 @@ void RayWriter::real(std::string& out, double v) const {
     }
 }
 
-void RayWriter::color(std::string& out, const Color& c) const {
+void RayWriter::color(std::string& out, const Color& c, const std::vector<double>* samples) const {
+    if (!colours_.identity()) {
+        const double rgb[3] = {c.r, c.g, c.b};
+        const std::span<const double> in =
+            samples ? std::span<const double>(*samples) : std::span<const double>(rgb, 3);
+        double v[spectral::kMaxSamples];
+        const std::span<double> conv(v, size_t(colours_.components()));
+        colours_.convert(in, conv);
+        if (format_ == 'c') {  // three components (checked when parsed)
+            Colr colr = toColr(v[0], v[1], v[2]);
+            out.append(reinterpret_cast<const char*>(colr.data()), colr.size());
+            return;
+        }
+        for (double x : conv) real(out, x);
+        return;
+    }
     if (format_ == 'c') {
         Colr colr = toColr(c.r, c.g, c.b);
         out.append(reinterpret_cast<const char*>(colr.data()), colr.size());
@@ -188,16 +204,22 @@ void RayWriter::record(std::string& out, const std::string& letters, const RayRe
                 vec(r.direction, true);
                 break;
             case 'v':
-                color(out, r.value);
+                color(out, r.value, r.samples ? &r.samples->value : nullptr);
                 break;
-            case 'V':
-                color(out, r.value * r.coefficient);
-                break;  // contribution to the result
+            case 'V': {  // contribution to the result
+                std::vector<double> v;
+                if (r.samples) {
+                    v = r.samples->value;
+                    for (size_t k = 0; k < v.size(); ++k) v[k] *= r.samples->coefficient[k];
+                }
+                color(out, r.value * r.coefficient, r.samples ? &v : nullptr);
+                break;
+            }
             case 'w':
                 real(out, r.weight);
                 break;
             case 'W':
-                color(out, r.coefficient);
+                color(out, r.coefficient, r.samples ? &r.samples->coefficient : nullptr);
                 break;
             case 'l':
                 real(out, r.effectiveLength);
@@ -230,10 +252,10 @@ void RayWriter::record(std::string& out, const std::string& letters, const RayRe
                 name(out, r.material, named);
                 break;
             case 'r':
-                color(out, r.mirrored);
+                color(out, r.mirrored, r.samples ? &r.samples->mirrored : nullptr);
                 break;
             case 'x':
-                color(out, r.unmirrored);
+                color(out, r.unmirrored, r.samples ? &r.samples->unmirrored : nullptr);
                 break;
             case 'R':
                 real(out, r.mirroredLength);
@@ -278,11 +300,27 @@ void RayWriter::writeBogus(std::string& out) const {
     if (format_ == 'a') out += '\n';
 }
 
-std::string rtraceHeader(const std::string& commandLine, char outputFormat) {
+std::string rtraceHeader(const std::string& commandLine, char outputFormat, const OutputSpec& spec,
+                         const ColourOutput& colours) {
     std::string h = "#?RADIANCE\n";
     h += commandLine + "\n";
     h += "SOFTWARE= radphoton\n";
     h += captureTimeLines();
+    if (!colours.identity()) {
+        // RADIANCE 6 (rtrace.c setrtoutput): values per record, none with the ray tree.
+        int perRecord = 0, other = 0;
+        for (char c : spec.primary) {
+            if (std::string_view("vVWrx").find(c) != std::string_view::npos)
+                ++perRecord;
+            else if (std::string_view("odpnN").find(c) != std::string_view::npos)
+                other += 3;
+            else if (c == 'c')
+                other += 2;
+            else if (std::string_view("lLwRXsmM").find(c) != std::string_view::npos)
+                ++other;
+        }
+        if (!spec.wantsTree()) h += colours.headerLines(perRecord, other);
+    }
     h += "FORMAT=";
     h += outputFormat == 'a'   ? "ascii"
          : outputFormat == 'f' ? "float"

@@ -9,6 +9,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "render/colour_output.h"
 #include "render/renderer.h"
 #include "render/rtrace_options.h"
 #include "scene/primitive.h"
@@ -61,7 +62,8 @@ class RayWriter {
 public:
     // `scene` (may be null: names print as "*" / indices) names surfaces, modifiers and
     // materials for s, m, M.
-    RayWriter(OutputSpec spec, char format, const Scene* scene);
+    // `colours`: how colour values are printed (resolved for the run's sampling).
+    RayWriter(OutputSpec spec, char format, const Scene* scene, ColourOutput colours = {});
 
     // -ti/-te: with a list, the tree records are only those of rays that hit a surface
     // whose modifier is listed (-ti), or all but those (-te; rays that hit nothing are
@@ -78,7 +80,8 @@ public:
 private:
     void record(std::string& out, const std::string& letters, const RayResult& r) const;
     void real(std::string& out, double v) const;
-    void color(std::string& out, const Color& c) const;
+    // A colour result: its samples when the ray was rendered in passes, else c.
+    void color(std::string& out, const Color& c, const std::vector<double>* samples) const;
     void name(std::string& out, int32_t index, bool hit) const;
     bool traced(const RayResult& r) const;  // passes the trace filter
     OutputSpec spec_;
@@ -86,11 +89,15 @@ private:
     std::unordered_set<std::string> traceModifiers_;
     char format_;
     const Scene* scene_;
+    ColourOutput colours_;
 };
 
 // The header rtrace writes with -h+: the command line up to the scene file, SOFTWARE,
 // CAPDATE/GMT (RADIANCE fputnow) and FORMAT; the empty line ends it.
-std::string rtraceHeader(const std::string& commandLine, char outputFormat);
+// With colour options beyond RGB (colours.identity() false) RADIANCE 6's NCOMP= and the
+// lines of ColourOutput::headerLines come before FORMAT=.
+std::string rtraceHeader(const std::string& commandLine, char outputFormat,
+                         const OutputSpec& spec = {}, const ColourOutput& colours = {});
 
 // "-Y y +X x\n" (RADIANCE fprtresolu, standard orientation).
 std::string resolutionLine(int xres, int yres);

@@ -96,6 +96,29 @@ void readTraceList(OptionReader& r, TraceFilter& t) {
         t.modifiers.push_back(std::move(w));
 }
 
+// RADIANCE 6's colour outputs (rtmain.c): primaries or one channel, and -co[+|-].
+void addColourOutput(OptionTable& t, ColourOutput& c) {
+    using P = ColourOutput::Primaries;
+    using C = ColourOutput::Channel;
+    t.add(customOption("-pRGB", [&c](OptionReader&) { c.setPrimaries(P::kRgb); }));
+    t.add(customOption("-pXYZ", [&c](OptionReader&) { c.setPrimaries(P::kXyz); }));
+    t.add(customOption("-pc", [&c](OptionReader& r) {
+        std::array<double, 8> p;
+        for (double& v : p) v = r.real();
+        c.setCustomPrimaries(p);
+    }));
+    const std::pair<const char*, C> channels[] = {
+        {"-pY", C::kPhotopic}, {"-pS", C::kScotopic}, {"-pM", C::kMelanopic}, {"-pA", C::kAverage}};
+    for (const auto& [name, ch] : channels)
+        t.add(customOption(name, [&c, ch = ch](OptionReader&) { c.setChannel(ch); }));
+    t.add(customOption(
+        [](const std::string& a) { return a == "-co" || a == "-co+" || a == "-co-"; }, "-co",
+        [&c](OptionReader& r) {
+            const std::string& a = r.option();
+            c.setSpectral(a.size() == 3 ? !c.spectral() : a[3] == '+');
+        }));
+}
+
 // rtrace's table, in the order of its -defaults lines (rtmain.c printdefaults), then the
 // common options.
 OptionTable rtraceTable(RtraceOptions& o) {
@@ -122,6 +145,7 @@ OptionTable rtraceTable(RtraceOptions& o) {
               return line + '\n';
           });
     t.add(warningsOption(o.render.warnings));
+    addColourOutput(t, o.colours);
     for (const char* name : {"-ti", "-te", "-tI", "-tE"})
         t.add(customOption(name, [&o](OptionReader& r) { readTraceList(r, o.trace); }));
     addRenderOptions(t, o.render);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "render/colour_output.h"
 #include "render/render_options.h"
 #include "util/options.h"
 
@@ -32,6 +33,7 @@ struct RtraceOptions {
     int yres = 0;                      // -y
     bool immediateIrradiance = false;  // -I
     TraceFilter trace;                 // -ti -te -tI -tE
+    ColourOutput colours;              // -pRGB -pXYZ -pY -pS -pM -pA -co (RADIANCE 6)
     bool limitDistance = false;     // -ld: a ray's distance limit from its input direction's length
     bool printDefaults = false;     // -defaults / -help: print and exit, no scene needed
     bool printVersion = false;      // -version: print the version line and exit

@@ -302,6 +302,7 @@ SourceList buildSourceList(const Scene& scene, const SceneGeometry& geometry,
     // RADIANCE compat: illum surfaces are direct sources in the backward pass.
     light::LightSearchOptions search;
     search.illumEmits = true;
+    search.pass = options.pass;
     for (const light::LightSource& ls : light::findLightSources(scene, geometry, search)) {
         if (ls.ambientOnly()) continue;  // sky or ground glow: SSKIP
         const bool glow = ls.params.glow();

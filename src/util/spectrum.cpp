@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "util/error.h"
+#include "util/observer_table.h"
 
 namespace rp::spectral {
 
@@ -66,71 +67,22 @@ constexpr std::array<double, 95> kZ = {
     0,          0,           0,          0,           0,
     0,          0,           0,          0,           0};
 
-// The observer's integral from 360 nm up to a wavelength, normalised to 1 over the whole
-// range, so that an equal-energy spectrum has X = Y = Z = 1 (as RADIANCE 6's tables in
-// spec_rgb.c) and a band's weight is a difference of two values. Kept every nanometre
-// and interpolated between.
-class Cumulative {
-public:
-    explicit Cumulative(const std::array<double, 95>& f) {
-        // The 5 nm table interpolated linearly, integrated exactly per nanometre.
-        values_.resize(471);
-        double sum = 0;
-        values_[0] = 0;
-        for (int nm = 360; nm < 830; ++nm) {
-            sum += 0.5 * (at(f, nm) + at(f, nm + 1));
-            values_[size_t(nm - 359)] = sum;
-        }
-        for (double& v : values_) v /= sum;
-    }
-    double operator()(double nm) const {
-        if (!(nm > 360)) return 0;
-        if (nm >= 830) return 1;
-        const int i = static_cast<int>(nm);
-        const double t = nm - i;
-        return values_[size_t(i - 360)] * (1 - t) + values_[size_t(i - 359)] * t;
-    }
-
-private:
-    static double at(const std::array<double, 95>& f, int nm) {
-        const double x = (nm - kCieFirst) / kCieStep;
-        const int i = std::min(static_cast<int>(x), 93);
-        const double t = x - i;
-        return f[size_t(i)] * (1 - t) + f[size_t(i + 1)] * t;
-    }
-    std::vector<double> values_;
-};
+// The observer's integral, normalised so that an equal-energy spectrum has X = Y = Z = 1,
+// and the dot product over bands (util/observer_table.h).
+using detail::Cumulative;
+using detail::observe;
 
 const Cumulative& cumulX() {
-    static const Cumulative c(kX);
+    static const Cumulative c(kX, kCieFirst, kCieStep);
     return c;
 }
 const Cumulative& cumulY() {
-    static const Cumulative c(kY);
+    static const Cumulative c(kY, kCieFirst, kCieStep);
     return c;
 }
 const Cumulative& cumulZ() {
-    static const Cumulative c(kZ);
+    static const Cumulative c(kZ, kCieFirst, kCieStep);
     return c;
-}
-
-// The dot product of samples with an observer function over their bands. RADIANCE 6
-// (spec_dot) truncates band edges to whole nanometres and its tables read as the CIE
-// observer shifted about 1.5 nm toward the red; here the bands are integrated exactly,
-// which moves a channel of a steep spectrum by up to ~4 % (README, "Spectral colour").
-// A longest band reaching 780 nm takes the observer's tail beyond, as RADIANCE's.
-double observe(std::span<const double> samples, const std::array<double, 4>& wl,
-               const Cumulative& c) {
-    const int n = static_cast<int>(samples.size());
-    const double step = (wl[0] - wl[3]) / n;
-    double sum = 0, lo = wl[3];
-    for (int k = 0; k < n; ++k) {  // k counts bands from the short end
-        double hi = wl[3] + (k + 1) * step;
-        if (k == n - 1 && hi >= 780) hi = 830;
-        sum += (c(hi) - c(lo)) * samples[size_t(n - 1 - k)];
-        lo = hi;
-    }
-    return sum;
 }
 
 using Mat3 = std::array<double, 9>;
@@ -224,6 +176,26 @@ void fromRgb(const Color& rgb, const Sampling& s, std::span<double> out) {
         const double c = s.centre(i);
         out[i] = c >= s.wl[1] ? rgb.r : (c >= s.wl[2] ? rgb.g : rgb.b);
     }
+}
+
+std::vector<Pass> passesOf(const Sampling& s) {
+    std::vector<Pass> passes;
+    std::vector<int> primaryOf(static_cast<size_t>(s.n));
+    for (int c = 0; c < 3; ++c) {
+        // Which primary each band takes: the one fromRgb puts there.
+        Color unit;
+        unit[c] = 1;
+        std::vector<double> v(static_cast<size_t>(s.n));
+        fromRgb(unit, s, v);
+        for (int i = 0; i < s.n; ++i)
+            if (v[size_t(i)] == 1) primaryOf[size_t(i)] = c;
+    }
+    for (int first = 0; first < s.n; first += 3) {
+        Pass p{s, first, {}};
+        for (int j = 0; j < 3; ++j) p.primary[size_t(j)] = primaryOf[size_t(p.band(j))];
+        passes.push_back(p);
+    }
+    return passes;
 }
 
 void resample(std::span<double> dst, double dwl0, double dwl1, std::span<const double> src,

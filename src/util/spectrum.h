@@ -40,6 +40,29 @@ struct SamplingChoice {
 };
 std::optional<SamplingChoice> makeSampling(int n, double wlA, double wlB);
 
+// The renderer traces three channels at a time. With more samples it renders a sampling
+// in passes, each over three consecutive bands (a last pass short of bands repeats its
+// last one): since every colour operation of the renderer works channel by channel, a
+// pass gives its bands as they are among all n. Whatever enters the renderer as a
+// colour goes through its pass: an RGB colour takes, in each band, the primary whose
+// range holds the band's centre (RADIANCE 6's setscolor), a spectrum its bands. RGB
+// rendering is the single pass of the 3-sample sampling, where both are the identity.
+struct Pass {
+    Sampling sampling;
+    int first = 0;                        // the pass's first band
+    std::array<int, 3> primary{0, 1, 2};  // the RGB primary each of its bands takes
+
+    int band(int j) const { return first + j < sampling.n ? first + j : sampling.n - 1; }
+    Color ofRgb(const Color& c) const { return {c[primary[0]], c[primary[1]], c[primary[2]]}; }
+    // The pass's bands of samples in the working sampling (sampling.n values).
+    Color ofSamples(std::span<const double> s) const {
+        return {s[band(0)], s[band(1)], s[band(2)]};
+    }
+    bool operator==(const Pass&) const = default;
+};
+// The passes that render a sampling: ceil(n / 3).
+std::vector<Pass> passesOf(const Sampling& s);
+
 // Samples of an RGB colour (RADIANCE's setscolor): each band takes the primary of the
 // channel its centre falls in.
 void fromRgb(const Color& rgb, const Sampling& s, std::span<double> out);

@@ -47,6 +47,33 @@ TEST(Spectrum, RgbSpreadsOverTheBandsOfItsChannels) {
     EXPECT_DOUBLE_EQ(back.b, 0.125);
 }
 
+// A sampling is rendered three bands at a time; an RGB colour gives each band the
+// primary whose range holds its centre, as fromRgb does for all bands at once.
+TEST(Spectrum, PassesCoverTheBandsThreeAtATime) {
+    const Sampling s = makeSampling(8, 380, 780)->sampling;  // red 0-3, green 4-5, blue 6-7
+    const std::vector<Pass> passes = passesOf(s);
+    ASSERT_EQ(passes.size(), 3u);
+    EXPECT_EQ(passes[0].primary, (std::array<int, 3>{0, 0, 0}));
+    EXPECT_EQ(passes[1].primary, (std::array<int, 3>{0, 1, 1}));
+    EXPECT_EQ(passes[2].first, 6);
+    EXPECT_EQ(passes[2].band(2), 7);  // the last pass repeats its last band
+    EXPECT_EQ(passes[2].primary, (std::array<int, 3>{2, 2, 2}));
+    const Color rgb{0.5, 0.25, 0.125};
+    std::vector<double> all(8);
+    fromRgb(rgb, s, all);
+    for (const Pass& p : passes) {
+        const Color c = p.ofRgb(rgb), fromSamples = p.ofSamples(all);
+        for (int j = 0; j < 3; ++j) {
+            EXPECT_EQ(c[j], all[size_t(p.band(j))]);
+            EXPECT_EQ(fromSamples[j], c[j]);
+        }
+    }
+    // RGB rendering is one pass that changes nothing.
+    const std::vector<Pass> rgbPasses = passesOf(Sampling{});
+    ASSERT_EQ(rgbPasses.size(), 1u);
+    EXPECT_EQ(rgbPasses[0].ofRgb(rgb), rgb);
+}
+
 TEST(Spectrum, ResamplingAveragesOverEachBand) {
     // Source 400..800 in 4 bands of 100 nm (ascending): 1 2 3 4.
     const std::vector<double> src = {1, 2, 3, 4};

@@ -1,0 +1,73 @@
+#include "render/colour_output.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "render/spectral_passes.h"
+
+namespace rp::render {
+namespace {
+
+std::vector<double> convert(const ColourOutput& c, const std::vector<double>& samples) {
+    std::vector<double> out(size_t(c.components()));
+    c.convert(samples, out);
+    return out;
+}
+
+// An equal-energy spectrum of radiance 1: RADIANCE's white, 179 lm/W photopic.
+TEST(ColourOutput, EqualEnergyIsWhiteInEveryOutput) {
+    const spectral::Sampling s = spectral::makeSampling(18, 380, 780)->sampling;
+    const std::vector<double> one(18, 1.0);
+    ColourOutput c;
+    c.resolve(s);
+    EXPECT_FALSE(c.identity());
+    std::vector<double> rgb = convert(c, one);
+    ASSERT_EQ(rgb.size(), 3u);
+    for (double v : rgb) EXPECT_NEAR(v, 1, 1e-3);
+    c.setSpectral(true);
+    c.resolve(s);
+    EXPECT_EQ(convert(c, one), one);
+    c.setChannel(ColourOutput::Channel::kPhotopic);
+    c.resolve(s);
+    EXPECT_NEAR(convert(c, one)[0], 179, 0.02);
+    c.setChannel(ColourOutput::Channel::kAverage);
+    EXPECT_DOUBLE_EQ(convert(c, one)[0], 1);
+    c.setPrimaries(ColourOutput::Primaries::kXyz);
+    c.resolve(s);
+    for (double v : convert(c, one)) EXPECT_NEAR(v, 179, 0.1);
+}
+
+TEST(ColourOutput, OptionsCombineAsRadiance6s) {
+    ColourOutput c;
+    c.setChannel(ColourOutput::Channel::kPhotopic);
+    c.setSpectral(!c.spectral());  // -co toggles to spectral, dropping the channel
+    EXPECT_TRUE(c.spectral());
+    c.setChannel(ColourOutput::Channel::kMelanopic);  // a channel after -co wins
+    c.resolve(spectral::makeSampling(9, 380, 780)->sampling);
+    EXPECT_EQ(c.components(), 1);
+    // Spectral output of three samples is RGB.
+    ColourOutput rgb;
+    rgb.setSpectral(true);
+    rgb.resolve(spectral::Sampling{});
+    EXPECT_TRUE(rgb.identity());
+    EXPECT_EQ(rgb.components(), 3);
+    EXPECT_EQ(rgb.headerLines(2, 1), "NCOMP=7\n");
+}
+
+TEST(SpectralPasses, MergeGathersEachPassesBands) {
+    const spectral::Sampling s = spectral::makeSampling(7, 380, 780)->sampling;
+    std::vector<RayResult> perPass(3);
+    for (int p = 0; p < 3; ++p) {
+        perPass[size_t(p)].value = {10.0 * p, 10.0 * p + 1, 10.0 * p + 2};
+        perPass[size_t(p)].distance = p == 0 ? 4 : 5;
+    }
+    const RayResult r = mergePasses(perPass, s);
+    ASSERT_TRUE(r.samples);
+    EXPECT_EQ(r.samples->value, (std::vector<double>{0, 1, 2, 10, 11, 12, 20}));
+    EXPECT_EQ(r.distance, 4);  // geometry from the first pass
+    EXPECT_EQ(r.samples->coefficient, std::vector<double>(7, 1.0));
+}
+
+}  // namespace
+}  // namespace rp::render

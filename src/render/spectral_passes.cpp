@@ -1,0 +1,48 @@
+// Gathering the passes of a spectral rendering (see spectral_passes.h).
+#include "render/spectral_passes.h"
+
+#include <memory>
+
+#include "util/error.h"
+
+namespace rp::render {
+
+RayResult mergePasses(std::span<const RayResult> perPass, const spectral::Sampling& s) {
+    const std::vector<spectral::Pass> passes = spectral::passesOf(s);
+    RP_CHECK(perPass.size() == passes.size() && !perPass.empty());
+    auto samples = std::make_shared<RayResult::Samples>();
+    for (auto* v :
+         {&samples->value, &samples->coefficient, &samples->mirrored, &samples->unmirrored})
+        v->assign(size_t(s.n), 0.0);
+    for (size_t p = 0; p < passes.size(); ++p) {
+        const RayResult& r = perPass[p];
+        for (int j = 0; j < 3 && passes[p].first + j < s.n; ++j) {
+            const size_t band = size_t(passes[p].first + j);
+            samples->value[band] = r.value[j];
+            samples->coefficient[band] = r.coefficient[j];
+            samples->mirrored[band] = r.mirrored[j];
+            samples->unmirrored[band] = r.unmirrored[j];
+        }
+    }
+    RayResult merged = perPass[0];
+    // The RGB fields hold the samples' RGB, for whoever reads them.
+    merged.value = spectral::toRgb(samples->value, s);
+    merged.coefficient = spectral::toRgb(samples->coefficient, s);
+    merged.mirrored = spectral::toRgb(samples->mirrored, s);
+    merged.unmirrored = spectral::toRgb(samples->unmirrored, s);
+    merged.samples = std::move(samples);
+    return merged;
+}
+
+RayTraceFn tracePasses(std::vector<RayTraceFn> passes, const spectral::Sampling& s) {
+    return [passes = std::move(passes), s](const Vec3& origin, const Vec3& dir, uint64_t index,
+                                           std::vector<TracedRay>*, double maxDistance) {
+        std::vector<RayResult> results;
+        results.reserve(passes.size());
+        for (const RayTraceFn& trace : passes)
+            results.push_back(trace(origin, dir, index, nullptr, maxDistance));
+        return mergePasses(results, s);
+    };
+}
+
+}  // namespace rp::render

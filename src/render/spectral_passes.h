@@ -1,0 +1,25 @@
+// Rendering a spectrum in passes (util/spectrum.h Pass): each pass's renderer traces the
+// same ray with the same random streams for three bands, and the results are gathered
+// into one, the samples of every colour (v, W, r, x) in band order.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "render/renderer.h"
+#include "render/rtrace_run.h"
+#include "util/spectrum.h"
+
+namespace rp::render {
+
+// One ray's results from every pass of `s` (spectral::passesOf order): the first pass's
+// result, with the samples of all filled in. Geometry (hits, distances, names) is the
+// same in every pass; where sampling made it differ (a ray tree), the first pass's is
+// kept.
+RayResult mergePasses(std::span<const RayResult> perPass, const spectral::Sampling& s);
+
+// A RayTraceFn that traces each ray in every pass and merges the results. Ray trees
+// (rtrace -o...t) are not gathered: callers ask for none.
+RayTraceFn tracePasses(std::vector<RayTraceFn> passes, const spectral::Sampling& s);
+
+}  // namespace rp::render
