@@ -25,6 +25,7 @@
 #include "render/rpict_run.h"
 #include "render/rpict_tracer.h"
 #include "render/source_draw.h"
+#include "render/spectral_passes.h"
 #include "scene/scene_load.h"
 #include "util/command_args.h"
 #include "util/error.h"
@@ -82,7 +83,27 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp:
     const auto threads = threadLimit(o.render);  // for the whole run, loading included
     rp::Scene scene = rp::loadScene(cmd.sceneFiles, rp::gen::builtinLoadOptions());
     rp::SceneGeometry geometry(scene);
-    Renderer renderer(scene, geometry, o.render, rp::calc::defaultSearchPath(rp::projectLibDir()));
+    // RADIANCE 6's -cs/-cw: more than three samples are rendered in passes of three, each
+    // pixel sample turned into RGB from all of them.
+    const rp::spectral::Sampling sampling = spectralSampling(o.render);
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    std::vector<PixelTracerFactory> passTracers;
+    for (const RenderOptions& po : passOptions(o.render, sampling)) {
+        renderers.push_back(std::make_unique<Renderer>(
+            scene, geometry, po, rp::calc::defaultSearchPath(rp::projectLibDir())));
+        passTracers.push_back(rendererPixelTracers(*renderers.back()));
+    }
+    const bool spectral = renderers.size() > 1;
+    if (spectral && !o.render.ambient.file.empty())
+        throw rp::InputError("-af with -cs above 3 is not supported yet");
+    const Renderer& renderer = *renderers[0];
+    const PixelTracerFactory tracers =
+        spectral ? pixelTracersOverPasses(passTracers, sampling) : passTracers[0];
+    auto raysTraced = [&] {
+        long n = 0;
+        for (const auto& r : renderers) n += r->raysTraced();
+        return n;
+    };
 
     // Bias compensation statistics (manual 5.3) after each report; threads merge theirs
     // when they finish, so the figures are complete in the last report.
@@ -92,8 +113,7 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp:
     };
     auto progress = [&](const RenderProgress& p) {
         // The renderer's count includes shadow and ambient rays, as RADIANCE's nrays.
-        *diag << "rpict: " << formatProgress(renderer.raysTraced(), p.percentDone, p.seconds)
-              << std::endl;
+        *diag << "rpict: " << formatProgress(raysTraced(), p.percentDone, p.seconds) << std::endl;
         biasReport();
     };
     RpictIo io;
@@ -102,7 +122,9 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp:
     io.out = &std::cout;
     io.commandLine = commandLine;
     // RADIANCE compat (rpict.c render, -dv): sources too small for the pixel rays.
-    io.finishRows = [&](const RpictOptions& frame) { return bittySourcePass(renderer, frame); };
+    // (Rendering a spectrum, the sources are drawn in RGB: not yet.)
+    if (!spectral)
+        io.finishRows = [&](const RpictOptions& frame) { return bittySourcePass(renderer, frame); };
     io.frameStarted = [&](int frame, const rp::View& view) {
         // RADIANCE compat (rpict.c): with -t, each frame is announced with its view.
         if (o.reportInterval > 0)
@@ -113,8 +135,7 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp:
         if (cluster.isRoot()) renderer.flushAmbientFile();
     };
     try {
-        runRpict(o, rendererPixelTracers(renderer),
-                 cluster.isRoot() ? progress : ProgressCallback{}, io);
+        runRpict(o, tracers, cluster.isRoot() ? progress : ProgressCallback{}, io);
     } catch (...) {
         keepAmbient();  // keep the records computed so far, as RADIANCE
         throw;

@@ -15,7 +15,13 @@ namespace {
 constexpr size_t kStatsBlock = size_t{1} << 16;
 
 PhotonMapFileInfo infoOf(const MapOutput& out, const PhotonMapStats& stats) {
-    return PhotonMapFileInfo{out.type, stats, out.primaries, out.primaryRays};
+    PhotonMapFileInfo info;
+    info.type = out.type;
+    info.stats = stats;
+    info.primaries = out.primaries;
+    info.primaryRays = out.primaryRays;
+    info.bands = out.bands;
+    return info;
 }
 
 // The cell of the whole tree: the photons' bounding box.

@@ -22,6 +22,7 @@ struct MapOutput {
     std::span<const PhotonPrimary> primaries;  // contribution maps
     std::span<const PrimaryRay> primaryRays;   // -apCPD
     bool parallel = true;
+    std::optional<MapBands> bands;  // a pass of a spectral map set
 };
 
 // Statistics of `photons` (in collection order), then the kd-tree built in place (the

@@ -49,7 +49,13 @@ double secondsSince(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-void checkRequest(const MkpmapOptions& o, const PortExteriorFactory& exterior) {
+void checkRequest(const MkpmapOptions& o, const PortExteriorFactory& exterior,
+                  const std::vector<spectral::Pass>& passes) {
+    if (passes.size() > 1) {
+        if (o.portExterior) throw InputError("-apE with -cs above 3 is not supported yet");
+        if (o.wants(PhotonMapType::Contrib))
+            throw InputError("contribution photon maps with -cs above 3 are not supported yet");
+    }
     if (o.portExterior) {
         if (o.portSpecs.empty()) throw InputError("-apE: no photon ports (-apo, -apO)");
         if (!exterior) throw InputError("-apE: not available in this program");
@@ -64,9 +70,12 @@ void checkRequest(const MkpmapOptions& o, const PortExteriorFactory& exterior) {
         if (!m) continue;
         if (!files.insert(m->file).second)
             throw InputError("photon map file " + m->file + " specified more than once");
-        std::error_code ec;
-        if (!o.overwrite && std::filesystem::exists(m->file, ec))
-            throw InputError("photon map file " + m->file + " exists, not overwritten");
+        for (const spectral::Pass& pass : passes) {
+            const std::string file = passMapFile(m->file, pass);
+            std::error_code ec;
+            if (!o.overwrite && std::filesystem::exists(file, ec))
+                throw InputError("photon map file " + file + " exists, not overwritten");
+        }
     }
     if (!o.precomputedContrib()) return;
     const std::string& file = o.maps[size_t(PhotonMapType::Contrib)]->file;
@@ -140,11 +149,12 @@ std::vector<Photon> precompute(const MkpmapOptions& o, size_t t, MapPhotons& m,
 void saveMaps(const MkpmapOptions& o, std::array<MapPhotons, kNumPhotonMapTypes>& photons,
               const std::string& commandLine, const std::vector<PhotonPrimary>& primaries,
               const std::vector<PrimaryRay>& primaryRays, uint64_t inCorePhotons,
-              MkpmapReport& report) {
+              const spectral::Pass& pass, MkpmapReport& report) {
     auto outputOf = [&](size_t t) {
         MapOutput out;
         out.type = PhotonMapType(t);
-        out.file = o.maps[t]->file;
+        out.file = passMapFile(o.maps[t]->file, pass);
+        out.bands = mapBandsOf(pass);
         out.commandLine = commandLine;
         out.overwrite = o.overwrite;
         if (out.type == PhotonMapType::Contrib && o.precomputedContrib()) {
@@ -196,9 +206,11 @@ struct EmittingScene {
     std::optional<light::EmissionPlan> plan;
 
     EmittingScene(const MkpmapOptions& o, const LoadOptions& load,
-                  const PortExteriorFactory& exterior)
+                  const PortExteriorFactory& exterior, const spectral::Pass& pass)
         : scene(loadCheckedScene(o, load)), geometry(scene) {
-        std::vector<light::LightSource> sources = light::findLightSources(scene, geometry);
+        light::LightSearchOptions search;
+        search.pass = pass;
+        std::vector<light::LightSource> sources = light::findLightSources(scene, geometry, search);
         if (sources.empty()) throw InputError("no light sources found");
         emission.partitionSize = o.partitionSize;
         emission.samplesPerSr = o.pdfSamples;
@@ -214,12 +226,12 @@ struct EmittingScene {
             emission.exterior = exterior(scene, geometry);
         }
         // Pattern-modified sources emit through their pattern chain.
-        chains.emplace(scene, calc::defaultSearchPath(projectLibDir()));
+        chains.emplace(scene, calc::defaultSearchPath(projectLibDir()), pass);
         emission.modifierFor = light::patternModifiers(*chains);
         // The plan's tables are built in parallel; -n bounds that as every other phase.
         tbb::task_arena arena(std::max(1, o.pass.threads));
         arena.execute([&] { plan.emplace(geometry, std::move(sources), emission); });
-        functions.emplace(scene, calc::defaultSearchPath(projectLibDir()));
+        functions.emplace(scene, calc::defaultSearchPath(projectLibDir()), pass);
     }
 
     static Scene loadCheckedScene(const MkpmapOptions& o, const LoadOptions& load) {
@@ -369,8 +381,9 @@ void reportDistribution(const MkpmapOptions& o, const DistributionResult& dist,
 }
 
 // The closing lines on the diagnostics stream: each map, then the totals.
-void printSummary(const MkpmapOptions& o, const MkpmapReport& report, std::ostream& diag) {
-    char line[160];
+void printSummary(const MkpmapOptions& o, const MkpmapReport& report, size_t passes,
+                  std::ostream& diag) {
+    char line[200];
     for (size_t t = 0; t < o.maps.size(); ++t) {
         if (!o.maps[t]) continue;
         char frac[48] = "";
@@ -381,9 +394,13 @@ void printSummary(const MkpmapOptions& o, const MkpmapReport& report, std::ostre
             saved = PhotonMapType::PreCompContrib;
         if (saved == PhotonMapType::PreCompContrib)
             std::snprintf(frac, sizeof frac, " x -apP %g", o.precompFraction);
-        std::snprintf(line, sizeof line, "%llu %s photons stored in %s (target %llu%s)\n",
-                      (unsigned long long)report.stored[t], photonMapTypeName(saved),
-                      o.maps[t]->file.c_str(), (unsigned long long)o.maps[t]->target, frac);
+        // A spectral map set: the photons of all its files, each of the target.
+        const std::string where =
+            passes > 1 ? o.maps[t]->file + " and its " + std::to_string(passes - 1) + " band files"
+                       : o.maps[t]->file;
+        std::snprintf(line, sizeof line, "%llu %s photons stored in %s (target %llu%s%s)\n",
+                      (unsigned long long)report.stored[t], photonMapTypeName(saved), where.c_str(),
+                      (unsigned long long)o.maps[t]->target, frac, passes > 1 ? " each" : "");
         diag << line;
     }
     std::snprintf(line, sizeof line,
@@ -397,31 +414,58 @@ void printSummary(const MkpmapOptions& o, const MkpmapReport& report, std::ostre
 
 }  // namespace
 
+namespace {
+
+// The maps of one rendering pass (all of them for RGB).
+void runPass(const MkpmapOptions& o, const std::string& commandLine, std::ostream& diag,
+             const LoadOptions& load, Cluster* cluster, const PortExteriorFactory& exterior,
+             const spectral::Pass& pass, MkpmapReport& report) {
+    MkpmapOptions po = o;
+    po.trace.medium.extinction = pass.ofRgb(o.trace.medium.extinction);
+    po.trace.medium.albedo = pass.ofRgb(o.trace.medium.albedo);
+    EmittingScene es(po, load, exterior, pass);
+    // Photons in memory, all maps together (mkpmap -aC); the rest goes to temporary files.
+    MemoryBudget budget(po.memoryPhotons * sizeof(Photon));
+    const auto t0 = Clock::now();
+    Distributed d = po.wants(PhotonMapType::Contrib)
+                        ? distributeContribution(po, es, diag, cluster)
+                        : distributeMaps(po, es, budget, diag, cluster);
+    report.traceSeconds += secondsSince(t0);
+    // The other ranks have traced their share; the root builds and writes the maps.
+    if (cluster && !cluster->isRoot()) return;
+    MkpmapReport passReport;
+    reportDistribution(po, d.dist, passReport);
+    std::array<MapPhotons, kNumPhotonMapTypes> photons =
+        collectPhotons(po, es, d, commandLine, diag);
+    saveMaps(po, photons, commandLine, d.primaries, d.primaryRays, budget.limit() / sizeof(Photon),
+             pass, passReport);
+    for (size_t t = 0; t < kNumPhotonMapTypes; ++t) report.stored[t] += passReport.stored[t];
+    report.emitted += passReport.emitted;
+    report.prepassEmitted += passReport.prepassEmitted;
+    report.prepasses = std::max(report.prepasses, passReport.prepasses);
+    report.runaways += passReport.runaways;
+    report.buildSeconds += passReport.buildSeconds;
+    report.storingSeconds += passReport.storingSeconds;
+}
+
+}  // namespace
+
 MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
                        std::ostream& diag, const LoadOptions& load, Cluster* cluster,
                        const PortExteriorFactory& exterior) {
     MkpmapOptions o = withoutIgnoredMaps(options);
-    checkRequest(o, exterior);
+    const auto sampling = spectral::makeSampling(o.spectralSamples, o.wavelengthA, o.wavelengthB);
+    if (!sampling) throw InputError("unsupported spectral sampling");
+    const std::vector<spectral::Pass> passes = spectral::passesOf(sampling->sampling);
+    checkRequest(o, exterior, passes);
     // The tracer's settings as parsed; which maps it fills follows from the requests.
     for (size_t t = 0; t < o.maps.size(); ++t) o.trace.maps[t] = o.maps[t].has_value();
     MkpmapReport report;
-
-    EmittingScene es(o, load, exterior);
-    // Photons in memory, all maps together (mkpmap -aC); the rest goes to temporary files.
-    MemoryBudget budget(o.memoryPhotons * sizeof(Photon));
-    const auto t0 = Clock::now();
-    Distributed d = o.wants(PhotonMapType::Contrib) ? distributeContribution(o, es, diag, cluster)
-                                                    : distributeMaps(o, es, budget, diag, cluster);
-    report.traceSeconds = secondsSince(t0);
-    // The other ranks have traced their share; the root builds and writes the maps.
+    // A spectral map set: the passes one after another, each its own files (photon_map.h).
+    for (const spectral::Pass& pass : passes)
+        runPass(o, commandLine, diag, load, cluster, exterior, pass, report);
     if (cluster && !cluster->isRoot()) return report;
-    reportDistribution(o, d.dist, report);
-
-    std::array<MapPhotons, kNumPhotonMapTypes> photons =
-        collectPhotons(o, es, d, commandLine, diag);
-    saveMaps(o, photons, commandLine, d.primaries, d.primaryRays, budget.limit() / sizeof(Photon),
-             report);
-    printSummary(o, report, diag);
+    printSummary(o, report, passes.size(), diag);
     return report;
 }
 

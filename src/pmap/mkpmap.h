@@ -56,6 +56,10 @@ struct MkpmapOptions {
     // files are the same as when built in memory. Precomputed (-app) and contribution
     // (-apC) maps are always built in memory.
     uint64_t memoryPhotons = defaultMemoryPhotons();
+    // -cs -cw (RADIANCE 6's spectral sampling; issue 50): more than 3 samples make a
+    // spectral map set, one file per rendering pass (photon_map.h MapBands).
+    int spectralSamples = 3;
+    double wavelengthA = 380, wavelengthB = 780;
     std::vector<std::string> sceneFiles;  // the octree / scene file(s), last
     // -defaults (-help) or -version: print and exit; parsing stops there and nothing
     // else is checked (RADIANCE mkpmap prints its defaults even without a map).

@@ -162,6 +162,11 @@ void addOtherOptions(OptionTable& t, MkpmapOptions& o) {
         else
             o.diagnosticsFile = w;
     }));
+    t.add(valueOption("-cs", o.spectralSamples));
+    t.add(customOption("-cw", [&o](OptionReader& r) {
+        o.wavelengthA = r.real();
+        o.wavelengthB = r.real();
+    }));
     t.add(valueOption("-ma", o.trace.medium.albedo));
     t.add(valueOption("-me", o.trace.medium.extinction));
     t.add(valueOption("-mg", o.trace.medium.eccentricity));

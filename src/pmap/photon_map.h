@@ -9,6 +9,7 @@
 #include <functional>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "pmap/photon.h"
 #include "pmap/photon_store.h"
 #include "util/header.h"
+#include "util/spectrum.h"
 
 namespace rp::pmap {
 
@@ -48,6 +50,25 @@ struct PhotonMapStats {
 
 // What a map file holds besides its photon records (mkpmap writes files whose photons
 // are not in a PhotonMap: pmap/map_file_writer.h).
+// A spectral map set (mkpmap -cs above 3, issue 50): the scene rendered in passes of
+// three bands (util/spectrum.h Pass), one 3.1k map file per pass, each holding its
+// three bands as RGB flux; its header names the sampling (NCOMP=, WAVELENGTH_SPLITS=, as
+// RADIANCE 6's spectral files) and the bands (BANDS= first last). The first pass's file
+// is the one named; the others are "<name>.<first>-<last>" beside it.
+struct MapBands {
+    spectral::Sampling sampling;
+    int first = 0;
+    bool operator==(const MapBands&) const = default;
+};
+// The file of `pass` in the set named `file` (the name itself for RGB and the first pass).
+std::string passMapFile(const std::string& file, const spectral::Pass& pass);
+// The bands a pass's map holds; nullopt for RGB (a plain RADIANCE map).
+std::optional<MapBands> mapBandsOf(const spectral::Pass& pass);
+// InputError naming `file` unless a map's bands are the pass's: a spectral map rendered
+// in RGB or another sampling, or an RGB map in spectral rendering.
+void checkMapBands(const std::optional<MapBands>& bands, const spectral::Pass& pass,
+                   const std::string& file);
+
 struct PhotonMapFileInfo {
     PhotonMapType type = PhotonMapType::Global;
     PhotonMapStats stats;
@@ -55,6 +76,7 @@ struct PhotonMapFileInfo {
     std::span<const PrimaryRay> primaryRays;  // 3.1kPD maps only
     // Records per checksum after the records (record_checksums.h); 0: none.
     uint32_t checksumBlock = 0;
+    std::optional<MapBands> bands;  // a pass of a spectral map set
     // "3.1k", or "3.1kPD" with primary rays.
     const char* fileVersion() const;
 };
@@ -76,6 +98,8 @@ public:
               std::vector<PhotonPrimary> primaries = {}, bool parallel = true);
 
     PhotonMapType type() const { return type_; }
+    // The bands of a spectral map set's file (nullopt: an RGB map).
+    const std::optional<MapBands>& bands() const { return bands_; }
     size_t size() const { return stats_.numPhotons; }
     bool empty() const { return size() == 0; }
     // Photons in kd-tree (= file) order; empty for a map opened for searching (open()).
@@ -152,6 +176,7 @@ private:
 
     PhotonMapType type_ = PhotonMapType::Global;
     uint32_t checksumBlock_ = 0;  // the file's RP_CRC32 line (record_checksums.h)
+    std::optional<MapBands> bands_;
     BulkVector<Photon> photons_;
     std::shared_ptr<const PhotonStore> store_;
     std::vector<PhotonPrimary> primaries_;

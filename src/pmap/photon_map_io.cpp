@@ -125,7 +125,13 @@ const char* PhotonMapFileInfo::fileVersion() const {
 const char* PhotonMap::fileVersion() const { return fileInfo().fileVersion(); }
 
 PhotonMapFileInfo PhotonMap::fileInfo() const {
-    return PhotonMapFileInfo{type_, stats_, primaries_, primaryRays_};
+    PhotonMapFileInfo info;
+    info.type = type_;
+    info.stats = stats_;
+    info.primaries = primaries_;
+    info.primaryRays = primaryRays_;
+    info.bands = bands_;
+    return info;
 }
 
 Header PhotonMap::fileHeader(const std::string& commandLine) const {
@@ -151,6 +157,14 @@ Header photonMapFileHeader(const PhotonMapFileInfo& info, const std::string& com
     h.lines.push_back(cFormat("MaxDist^2\t= %.3f", double(s.cogDist2)));
     if (!info.primaries.empty())
         h.lines.push_back(cFormat("%u primary rays", static_cast<unsigned>(info.primaries.size())));
+    if (info.bands) {
+        const spectral::Sampling& sp = info.bands->sampling;
+        h.lines.push_back(fmt::format("NCOMP={}", sp.n));
+        h.lines.push_back(fmt::format("WAVELENGTH_SPLITS= {:g} {:g} {:g} {:g}", sp.wl[0], sp.wl[1],
+                                      sp.wl[2], sp.wl[3]));
+        h.lines.push_back(fmt::format("BANDS= {} {}", info.bands->first,
+                                      std::min(info.bands->first + 2, sp.n - 1)));
+    }
     h.lines.push_back("FORMAT=" + photonMapFormat(info.type));
     h.lines.push_back(std::string("VERSION=") + info.fileVersion());
     if (info.checksumBlock)
@@ -283,6 +297,64 @@ void PhotonMap::checkTreeOrder(const std::string& what) const {
     if (!problem.empty()) throw InputError(SourceLoc{what, 0}, treeProblem(problem));
 }
 
+namespace {
+
+// NCOMP=, WAVELENGTH_SPLITS= and BANDS= of a spectral map set's file (photon_map.h
+// MapBands); none of them: an RGB map.
+std::optional<MapBands> bandsFromHeader(const Header& h, const SourceLoc& loc) {
+    const std::string ncomp = h.value("NCOMP"), splits = h.value("WAVELENGTH_SPLITS"),
+                      bands = h.value("BANDS");
+    if (ncomp.empty() && splits.empty() && bands.empty()) return std::nullopt;
+    MapBands b;
+    int last = 0;
+    std::istringstream in(ncomp + " " + splits + " " + bands);
+    if (!(in >> b.sampling.n >> b.sampling.wl[0] >> b.sampling.wl[1] >> b.sampling.wl[2] >>
+          b.sampling.wl[3] >> b.first >> last) ||
+        b.sampling.n <= 3 || b.sampling.n > spectral::kMaxSamples || b.first < 0 ||
+        b.first % 3 != 0 || b.first >= b.sampling.n ||
+        last != std::min(b.first + 2, b.sampling.n - 1))
+        throw InputError(loc,
+                         "bad NCOMP, WAVELENGTH_SPLITS or BANDS line in a spectral photon map");
+    // The RGB indices are the sampling's own (spectrum.h makeSampling).
+    auto chosen = spectral::makeSampling(b.sampling.n, b.sampling.wl[0], b.sampling.wl[3]);
+    if (!chosen) throw InputError(loc, "unsupported spectral sampling in a spectral photon map");
+    b.sampling.rgb = chosen->sampling.rgb;
+    return b;
+}
+
+}  // namespace
+
+std::string passMapFile(const std::string& file, const spectral::Pass& pass) {
+    if (pass.first == 0) return file;
+    return fmt::format("{}.{}-{}", file, pass.first, pass.band(2));
+}
+
+std::optional<MapBands> mapBandsOf(const spectral::Pass& pass) {
+    if (pass.sampling.isRgb()) return std::nullopt;
+    return MapBands{pass.sampling, pass.first};
+}
+
+void checkMapBands(const std::optional<MapBands>& bands, const spectral::Pass& pass,
+                   const std::string& file) {
+    const std::optional<MapBands> want = mapBandsOf(pass);
+    if (bands == want) return;
+    if (!bands)
+        throw InputError(file +
+                         ": an RGB photon map; render with -cs 3, or make the map with -cs " +
+                         std::to_string(pass.sampling.n));
+    const spectral::Sampling& s = bands->sampling;
+    if (!want)
+        throw InputError(
+            fmt::format("{}: a spectral photon map (NCOMP={}); render with -cs {} -cw "
+                        "{:g} {:g}",
+                        file, s.n, s.n, s.wl[3], s.wl[0]));
+    throw InputError(
+        fmt::format("{}: photon map of bands {} of -cs {} -cw {:g} {:g}, not of the "
+                    "rendering's -cs {} -cw {:g} {:g}",
+                    file, bands->first, s.n, s.wl[3], s.wl[0], pass.sampling.n, pass.sampling.wl[3],
+                    pass.sampling.wl[0]));
+}
+
 PhotonMap PhotonMap::readPrologue(std::istream& in, const std::string& what) {
     const SourceLoc loc{what, 0};
     const Header h = readHeader(in, what);
@@ -300,6 +372,8 @@ PhotonMap PhotonMap::readPrologue(std::istream& in, const std::string& what) {
             throw InputError(loc, fmt::format("bad {} line in the header", kChecksumKey));
         map.checksumBlock_ = static_cast<uint32_t>(b);
     }
+
+    map.bands_ = bandsFromHeader(h, loc);
 
     // Size of the binary part, to check the photon count before allocating anything.
     const std::streampos start = in.tellg();

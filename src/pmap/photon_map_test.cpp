@@ -81,6 +81,33 @@ TEST(PhotonMap, StatsAndHeaderLines) {
     EXPECT_EQ(h.lines, want);
 }
 
+// A spectral map set's files (mkpmap -cs): each names its sampling and bands, and is read
+// only by a rendering of the same pass.
+TEST(PhotonMap, SpectralPassFilesNameTheirBands) {
+    const spectral::Sampling s = spectral::makeSampling(7, 400, 700)->sampling;
+    const std::vector<spectral::Pass> passes = spectral::passesOf(s);
+    ASSERT_EQ(passes.size(), 3u);
+    EXPECT_EQ(passMapFile("g.pm", passes[0]), "g.pm");
+    EXPECT_EQ(passMapFile("g.pm", passes[1]), "g.pm.3-5");
+    EXPECT_EQ(passMapFile("g.pm", passes[2]), "g.pm.6-6");
+    EXPECT_EQ(passMapFile("g.pm", spectral::passesOf(spectral::Sampling{})[0]), "g.pm");
+
+    const std::string file = "g.pm.3-5";
+    PhotonMapFileInfo info = twoPhotonMap().fileInfo();
+    info.bands = mapBandsOf(passes[1]);
+    const Header h = photonMapFileHeader(info, "mkpmap -cs 7");
+    const std::vector<std::string> spectralLines(h.lines.end() - 5, h.lines.end() - 2);
+    EXPECT_EQ(spectralLines, (std::vector<std::string>{
+                                 "NCOMP=7", "WAVELENGTH_SPLITS= 700 588 480 400", "BANDS= 3 5"}));
+    EXPECT_NO_THROW(checkMapBands(mapBandsOf(passes[1]), passes[1], file));
+    EXPECT_NO_THROW(checkMapBands(std::nullopt, spectral::passesOf(spectral::Sampling{})[0], file));
+    EXPECT_THROW(checkMapBands(mapBandsOf(passes[1]), passes[2], file), InputError);
+    EXPECT_THROW(checkMapBands(std::nullopt, passes[0], file), InputError);
+    EXPECT_THROW(
+        checkMapBands(mapBandsOf(passes[0]), spectral::passesOf(spectral::Sampling{})[0], file),
+        InputError);
+}
+
 // The getinfo output of RADIANCE 5.4's own maps: our header has the same lines, in the same
 // order and the same printf formats.
 TEST(PhotonMap, HeaderMatchesRadianceSamples) {

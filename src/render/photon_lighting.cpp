@@ -91,7 +91,9 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         try {
             pmap::StoreOptions o = store;
             o.bandwidth = std::max({uses[i].bandwidth, uses[i].bandwidth2, kDefaultBandwidth});
-            loaded[i].map = pmap::PhotonMap::open(uses[i].file, o, trackedSources);
+            const std::string file = pmap::passMapFile(uses[i].file, uses[i].pass);
+            loaded[i].map = pmap::PhotonMap::open(file, o, trackedSources);
+            pmap::checkMapBands(loaded[i].map.bands(), uses[i].pass, file);
         } catch (...) {
             failed[i] = std::current_exception();
         }
@@ -102,7 +104,7 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         const PhotonMapUse& use = uses[i];
         Map m = std::move(loaded[i]);
         m.use = use;
-        m.file = use.file;
+        m.file = pmap::passMapFile(use.file, use.pass);
         T type = m.map.type();
         const char* name = pmap::photonMapTypeName(type);
         const bool contribType = type == T::Contrib || type == T::PreCompContrib;

@@ -247,6 +247,7 @@ std::vector<RenderOptions> passOptions(const RenderOptions& opt,
         o.ambient.value = p.ofRgb(opt.ambient.value);
         o.mist.extinction = p.ofRgb(opt.mist.extinction);
         o.mist.albedo = p.ofRgb(opt.mist.albedo);
+        for (PhotonMapUse& use : o.photonMaps) use.pass = p;
         out.push_back(std::move(o));
     }
     return out;

@@ -64,6 +64,9 @@ struct PhotonMapUse {
     // -ape (RenderOptions::photonEdge), copied to every map whichever of -ap and -ape
     // comes first, so that the maps' user (render/photon_lighting.h) needs nothing else.
     bool edgeAware = false;
+    // The rendering pass it serves (passOptions): with -cs above 3 the map is that pass's
+    // file of a spectral map set (pmap/photon_map.h MapBands).
+    spectral::Pass pass;
 };
 
 // -me/-ma/-mg/-ms: the global participating medium and the sampling distance of light

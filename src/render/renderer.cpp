@@ -77,9 +77,6 @@ std::vector<bool> trackedLightSources(const Scene& s, const SceneGeometry& g,
 
 // How the photon maps' stores are sized (-ac, -aC, -n).
 pmap::StoreOptions photonStoreOptions(const RenderOptions& o) {
-    // Photon maps hold RGB flux; spectral maps are issue 50's second part.
-    if (!o.photonMaps.empty() && !o.pass.sampling.isRgb())
-        throw InputError("photon maps in spectral rendering (-cs above 3) are not supported yet");
     pmap::StoreOptions s;
     s.cachePhotons = o.photonCache;
     s.pageSize = o.photonPageSize;
@@ -134,6 +131,9 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
 Renderer::Renderer(const Scene& scene, const SceneGeometry& geometry, const RenderOptions& options,
                    std::vector<std::string> searchPath)
     : scene_(scene), geometry_(geometry), options_(options) {
+    // A spectral sampling is rendered in passes (passOptions), which only rtrace runs so far.
+    if (options.spectralSamples > 3 && options.pass.sampling.isRgb())
+        throw InputError("-cs above 3: this program renders RGB only (rtrace renders spectra)");
     impl_ = std::make_unique<Impl>(scene_, geometry_, options_, std::move(searchPath));
 }
 

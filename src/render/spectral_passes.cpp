@@ -45,4 +45,26 @@ RayTraceFn tracePasses(std::vector<RayTraceFn> passes, const spectral::Sampling&
     };
 }
 
+PixelTracerFactory pixelTracersOverPasses(std::vector<PixelTracerFactory> passes,
+                                          const spectral::Sampling& s) {
+    return [passes = std::move(passes), s] {
+        std::vector<PixelTracer> tracers;
+        for (const PixelTracerFactory& f : passes) tracers.push_back(f());
+        const std::vector<spectral::Pass> bands = spectral::passesOf(s);
+        return PixelTracer([tracers = std::move(tracers), bands, s](
+                               const Vec3& org, const Vec3& dir, uint64_t index, double maxDistance,
+                               double* distance) mutable {
+            double samples[spectral::kMaxSamples];
+            double ignored = 0;
+            for (size_t p = 0; p < tracers.size(); ++p) {
+                const Color c =
+                    tracers[p](org, dir, index, maxDistance, p == 0 ? distance : &ignored);
+                for (int j = 0; j < 3 && bands[p].first + j < s.n; ++j)
+                    samples[bands[p].first + j] = c[j];
+            }
+            return spectral::toRgb(std::span<const double>(samples, size_t(s.n)), s);
+        });
+    };
+}
+
 }  // namespace rp::render

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/renderer.h"
+#include "render/rpict.h"
 #include "render/rtrace_run.h"
 #include "util/spectrum.h"
 
@@ -21,5 +22,11 @@ RayResult mergePasses(std::span<const RayResult> perPass, const spectral::Sampli
 // A RayTraceFn that traces each ray in every pass and merges the results. Ray trees
 // (rtrace -o...t) are not gathered: callers ask for none.
 RayTraceFn tracePasses(std::vector<RayTraceFn> passes, const spectral::Sampling& s);
+
+// rpict's pixel tracers over every pass: each sample is traced in every pass and turned
+// into RADIANCE RGB (spectral::toRgb), so the picture and its adaptive sampling see the
+// whole spectrum's colour. The distance (-z) is the first pass's.
+PixelTracerFactory pixelTracersOverPasses(std::vector<PixelTracerFactory> passes,
+                                          const spectral::Sampling& s);
 
 }  // namespace rp::render

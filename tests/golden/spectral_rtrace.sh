@@ -67,6 +67,13 @@ printf '%s\n' "NCOMP=8" "WAVELENGTH_SPLITS= 700 588 480 400" "FORMAT=ascii" |
 run -ab 0 -pXYZ | grep -E '^(NCOMP|PRIMARIES)=' > "$tmp/h"
 printf '%s\n' "NCOMP=3" "PRIMARIES= 1.0000 0.0000 0.0000 1.0000 0.0000 0.0000 0.3333 0.3333" |
     diff - "$tmp/h" || { echo "FAIL: XYZ header"; fail=1; }
+# rpict renders the same passes: a 4 x 4 picture of the blended glow is the RGB rtrace
+# prints for the same view rays (vwrays), up to RGBE rounding (1 %).
+V="-vtv -vp 0.5 0.5 5 -vd 0 0 -1 -vu 0 1 0 -vh 20 -vv 20"
+"$BIN/rpict" $V -x 4 -y 4 -ps 1 -pj 0 -ab 0 -cs 18 "$tmp/s.oct" > "$tmp/p.hdr" 2> /dev/null &&
+    "$BIN/pvalue" -h -H -d "$tmp/p.hdr" > "$tmp/pic" || { echo "FAIL: rpict -cs 18"; fail=1; }
+"$BIN/vwrays" -ff $V -x 4 -y 4 | "$BIN/rtrace" -ffa -h -ab 0 -cs 18 "$tmp/s.oct" 2> /dev/null > "$tmp/out"
+compare "rpict -cs 18 against rtrace" 0.01 < "$tmp/pic"
 # Sampling RADIANCE rejects, and outputs that cannot be pictures: one line, exit 1.
 for bad in "-cs 2" "-cs 9 -cw 500 540" "-cs 9 -pY -fac"; do
     if run -h -ab 0 $bad > /dev/null; then echo "FAIL: rtrace $bad succeeded"; fail=1; fi
