@@ -71,24 +71,6 @@ PictureFormat takeFormat(Header& h, const std::string& what) {
     return result;
 }
 
-Resolution readResolution(std::istream& in, const std::string& what) {
-    std::string line;
-    int c;
-    while ((c = in.get()) != EOF && c != '\n') {
-        line.push_back(static_cast<char>(c));
-        if (line.size() > 64) break;
-    }
-    auto r = parseResolution(line);
-    if (!r) {
-        if (c == EOF && line.empty())
-            throw InputError(SourceLoc{what, 0}, "missing resolution line after header");
-        throw InputError(SourceLoc{what, 0}, "bad resolution line");
-    }
-    if (static_cast<long long>(r->xres) * r->yres > kMaxPixels)
-        throw InputError(SourceLoc{what, 0}, "picture too large (" + formatResolution(*r) + ")");
-    return *r;
-}
-
 PictureInfo readInfo(std::istream& in, const std::string& what) {
     PictureInfo info;
     info.header = readHeader(in, what);
@@ -108,6 +90,25 @@ PictureInfo readInfo(std::istream& in, const std::string& what) {
 }
 
 }  // namespace
+
+Resolution readResolution(std::istream& in, const std::string& what, std::string* text) {
+    std::string line;
+    int c;
+    while ((c = in.get()) != EOF && c != '\n') {
+        line.push_back(static_cast<char>(c));
+        if (line.size() > 64) break;
+    }
+    auto r = parseResolution(line);
+    if (!r) {
+        if (c == EOF && line.empty())
+            throw InputError(SourceLoc{what, 0}, "missing resolution line after header");
+        throw InputError(SourceLoc{what, 0}, "bad resolution line");
+    }
+    if (static_cast<long long>(r->xres) * r->yres > kMaxPixels)
+        throw InputError(SourceLoc{what, 0}, "picture too large (" + formatResolution(*r) + ")");
+    if (text) *text = line;
+    return *r;
+}
 
 std::optional<Resolution> parseResolution(const std::string& line) {
     std::istringstream ss(line);

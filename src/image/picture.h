@@ -38,6 +38,9 @@ struct Resolution {
 // Parses "-Y 480 +X 640" etc. (surrounding white space allowed); nullopt when the line is
 // not a resolution string or a size is not a positive integer.
 std::optional<Resolution> parseResolution(const std::string& line);
+// Reads the resolution line after a header (InputError naming `what` when it is missing,
+// malformed or too large); `text`, if given, receives the line as written.
+Resolution readResolution(std::istream& in, const std::string& what, std::string* text = nullptr);
 // "-Y 480 +X 640" (no newline), as RADIANCE's resolu2str.
 std::string formatResolution(const Resolution& r);
 

@@ -109,25 +109,6 @@ std::string paddedResolution(const Resolution& r) {
     return buf;
 }
 
-Resolution readResolutionLine(std::istream& in, const std::string& what, bool& padded) {
-    std::string line;
-    int c;
-    while ((c = in.get()) != EOF && c != '\n') {
-        line.push_back(static_cast<char>(c));
-        if (line.size() > 64) break;
-    }
-    auto r = parseResolution(line);
-    if (!r) {
-        if (c == EOF && line.empty())
-            throw InputError(SourceLoc{what, 0}, "missing resolution line after header");
-        throw InputError(SourceLoc{what, 0}, "bad resolution line");
-    }
-    if (static_cast<long long>(r->xres) * r->yres > kMaxPixels)
-        throw InputError(SourceLoc{what, 0}, "picture too large (" + formatResolution(*r) + ")");
-    padded = line == paddedResolution(*r);
-    return *r;
-}
-
 // Reads one scanline of `len` packed pixels (n+1 bytes each) as RADIANCE's freadscolrs:
 // flat for n > 3, any RGBE scanline encoding for n == 3.
 std::string readScanline(std::streambuf& in, int n, int len, uint8_t* out) {
@@ -162,7 +143,9 @@ SpectralPicture readAfterHeader(Header header, std::istream& in, const std::stri
         throw InputError(SourceLoc{what, 0}, e.message());
     }
     bool padded = false;
-    const Resolution res = readResolutionLine(in, what, padded);
+    std::string line;
+    const Resolution res = readResolution(in, what, &line);
+    padded = line == paddedResolution(res);
     const int n = sampling.n, len = res.scanlineLength(), count = res.scanlineCount();
     const size_t pixelBytes = static_cast<size_t>(n) + 1;
 

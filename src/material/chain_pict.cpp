@@ -39,21 +39,25 @@ double blend(double y0, double y1, const AxisPos& a) {
 
 }  // namespace
 
+void PictTable::setSize(int width, int height, double pixelAspect) {
+    width_ = width;
+    height_ = height;
+    // ray.html, Colorpict: the smaller dimension spans 1, the other the ratio (pixel
+    // aspect = pixel height / width stretches v); getspec sizes spectral pictures alike.
+    if (width <= height * pixelAspect) {
+        uSize_ = 1;
+        vSize_ = pixelAspect * height / width;
+    } else {
+        vSize_ = 1;
+        uSize_ = double(width) / height / pixelAspect;
+    }
+}
+
 PictTable PictTable::fromPixels(int width, int height, const std::vector<Color>& topFirst,
                                 double pixelAspect) {
     RP_CHECK(width > 0 && height > 0 && topFirst.size() == size_t(width) * height);
     PictTable t;
-    t.width_ = width;
-    t.height_ = height;
-    // ray.html, Colorpict: the smaller dimension spans 1, the other the ratio (pixel
-    // aspect = pixel height / width stretches v).
-    if (width <= height * pixelAspect) {
-        t.uSize_ = 1;
-        t.vSize_ = pixelAspect * height / width;
-    } else {
-        t.vSize_ = 1;
-        t.uSize_ = double(width) / height / pixelAspect;
-    }
+    t.setSize(width, height, pixelAspect);
     t.bottomFirst_.resize(topFirst.size() * 3);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
@@ -70,17 +74,9 @@ PictTable PictTable::loadSpectral(const std::string& path) {
     if (!(aspect > 1e-6)) throw InputError(path + ": bad PIXASPECT in picture");
     const int w = pic.width, h = pic.height, n = pic.sampling.n;
     PictTable t;
-    t.width_ = w;
-    t.height_ = h;
+    t.setSize(w, h, aspect);
     t.channels_ = n;
     t.sampling_ = pic.sampling;
-    if (w <= h * aspect) {
-        t.uSize_ = 1;
-        t.vSize_ = aspect * h / w;
-    } else {
-        t.vSize_ = 1;
-        t.uSize_ = double(w) / h / aspect;
-    }
     t.bottomFirst_.resize(size_t(w) * h * n);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {

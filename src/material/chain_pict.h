@@ -40,6 +40,7 @@ public:
     const spectral::Sampling& sampling() const { return sampling_; }
 
 private:
+    void setSize(int width, int height, double pixelAspect);
     int width_ = 0, height_ = 0, channels_ = 3;
     double uSize_ = 1, vSize_ = 1;
     spectral::Sampling sampling_;
