@@ -1,6 +1,7 @@
 // rcontrib's outputs (see rcontrib_output.h).
 #include "render/rcontrib_output.h"
 
+#include <fmt/format.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -102,7 +103,14 @@ struct ContribOutput::Stream {
 
 ContribOutput::ContribOutput(const RcontribOptions& o, std::vector<std::string> sceneHeader,
                              std::ostream& stdoutStream)
-    : o_(o), sceneHeader_(std::move(sceneHeader)), stdout_(stdoutStream) {
+    : o_(o),
+      sceneHeader_(std::move(sceneHeader)),
+      stdout_(stdoutStream),
+      sampling_(spectralSampling(o.render)) {
+    if (!sampling_.isRgb() && o.outputFormat == 'c')
+        throw InputError("-fc with -cs above 3 is not supported yet");
+    if (!sampling_.isRgb() && o.recover)
+        throw InputError("-r with -cs above 3 is not supported yet");
     std::map<std::string, size_t> byName;
     auto streamFor = [&](const std::string& spec, const std::string& mod, int bin,
                          bool& exists) -> size_t {
@@ -180,7 +188,10 @@ ContribOutput::Stream& ContribOutput::open(size_t index) {
         h += commandLine(int(argv.size()), argv.data()) + "\n";
         h += "SOFTWARE= radphoton\n";
         h += captureTimeLines();  // RADIANCE compat (printheader)
-        h += "NCOMP=3\n";
+        h += "NCOMP=" + std::to_string(sampling_.n) + "\n";
+        if (!sampling_.isRgb())
+            h += fmt::format("WAVELENGTH_SPLITS= {:g} {:g} {:g} {:g}\n", sampling_.wl[0],
+                             sampling_.wl[1], sampling_.wl[2], sampling_.wl[3]);
         h += info;
         if (o_.outputFormat == 'f' || o_.outputFormat == 'd')
             h += std::endian::native == std::endian::big ? "BigEndian=1\n" : "BigEndian=0\n";
@@ -306,30 +317,38 @@ bool ContribOutput::readValue(std::istream& in, Color& v) const {
 }
 
 void ContribOutput::writeRecord(const std::vector<Color>& values, double scale, bool flush) {
+    size_t bins = 0;
+    for (const auto& m : streamOf_) bins += m.size();
+    const std::vector<spectral::Pass> passes = spectral::passesOf(sampling_);
+    RP_CHECK(values.size() == bins * passes.size());
     size_t k = 0;
-    char buf[96];
+    double v[spectral::kMaxSamples];
+    const size_t n = size_t(sampling_.n);
     for (size_t m = 0; m < streamOf_.size(); ++m) {
         for (size_t j = 0; j < streamOf_[m].size(); ++j, ++k) {
             Stream& s = open(streamOf_[m][j]);
-            const Color v = values[k] * scale;
+            for (size_t p = 0; p < passes.size(); ++p)
+                for (int c = 0; c < 3 && passes[p].first + c < sampling_.n; ++c)
+                    v[passes[p].first + c] = values[p * bins + k][c] * scale;
             switch (o_.outputFormat) {
-                case 'a': {
-                    int n = std::snprintf(buf, sizeof buf, "%.6e\t%.6e\t%.6e\t", v.r, v.g, v.b);
-                    s.buffer.append(buf, size_t(n));
+                case 'a':
+                    for (size_t c = 0; c < n; ++c) {
+                        char buf[32];
+                        const int len = std::snprintf(buf, sizeof buf, "%.6e\t", v[c]);
+                        s.buffer.append(buf, size_t(len));
+                    }
                     break;
-                }
-                case 'f': {
-                    float f[3] = {float(v.r), float(v.g), float(v.b)};
-                    s.buffer.append(reinterpret_cast<const char*>(f), sizeof f);
+                case 'f':
+                    for (size_t c = 0; c < n; ++c) {
+                        const float f = float(v[c]);
+                        s.buffer.append(reinterpret_cast<const char*>(&f), sizeof f);
+                    }
                     break;
-                }
-                case 'd': {
-                    double d[3] = {v.r, v.g, v.b};
-                    s.buffer.append(reinterpret_cast<const char*>(d), sizeof d);
+                case 'd':
+                    s.buffer.append(reinterpret_cast<const char*>(v), n * sizeof(double));
                     break;
-                }
-                default: {
-                    const Colr c = toColr(v.r, v.g, v.b);
+                default: {  // three samples (-fc with more is refused)
+                    const Colr c = toColr(v[0], v[1], v[2]);
                     s.buffer.append(reinterpret_cast<const char*>(c.data()), c.size());
                 }
             }

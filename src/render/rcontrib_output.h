@@ -17,6 +17,7 @@
 
 #include "render/rcontrib_options.h"
 #include "util/color.h"
+#include "util/spectrum.h"
 
 namespace rp::render {
 
@@ -48,6 +49,9 @@ public:
 
     // Writes one record: `values` in modifier-then-bin order (ContribTargets), each
     // multiplied by `scale` (1 / -c when averaging). `flush` forces the streams out.
+    // Rendering a spectrum (-cs above 3, in passes of three bands: spectrum.h Pass),
+    // `values` holds every pass's bins one pass after another, and each bin is written
+    // as its samples (NCOMP=n, as RADIANCE 6's rcontrib).
     void writeRecord(const std::vector<Color>& values, double scale, bool flush);
 
     // Flushes and closes every stream (pipes: waits for the command). Throws InputError
@@ -65,6 +69,7 @@ private:
     std::vector<std::unique_ptr<Stream>> streams_;
     std::vector<std::vector<size_t>> streamOf_;  // [modifier][bin] -> streams_ index
     std::vector<int> binNumber_;                 // first bin number per modifier (bin0)
+    spectral::Sampling sampling_;                // -cs -cw
 };
 
 // "name", or the spec with the modifier's name and bin number put in; false for a spec

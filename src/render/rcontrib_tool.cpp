@@ -2,8 +2,10 @@
 // rfluxmtx runs it in-process.
 #include "render/rcontrib_tool.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <optional>
 
 #include "calc/search_path.h"
@@ -62,7 +64,14 @@ void runRcontribTool(const RcontribOptions& options, const RcontribScene& sceneI
     for (const ContribModifier& m : o.modifiers) o.render.contribModifiers.push_back(m.name);
     Scene scene = loadScene(sceneInputs.files, sceneInputs.load);
     SceneGeometry geometry(scene);
-    Renderer renderer(scene, geometry, o.render, calc::defaultSearchPath(projectLibDir()));
+    // RADIANCE 6's -cs/-cw: more than three samples are traced in passes of three bands,
+    // every pass's bins side by side in one record (ContribOutput::writeRecord).
+    const spectral::Sampling sampling = spectralSampling(o.render);
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    for (const RenderOptions& po : passOptions(o.render, sampling))
+        renderers.push_back(std::make_unique<Renderer>(scene, geometry, po,
+                                                       calc::defaultSearchPath(projectLibDir())));
+    const Renderer& renderer = *renderers[0];
     // RADIANCE compat (raytrace.c raycontrib): coefficients leave participating media out.
     if (o.render.mist.any() || material::sceneHasMist(scene))
         warn("ray contribution calculation does not support participating media");
@@ -82,16 +91,35 @@ void runRcontribTool(const RcontribOptions& options, const RcontribScene& sceneI
     // Only the root writes (and with -r reads) the outputs.
     std::optional<ContribOutput> output;
     if (cluster.isRoot()) output.emplace(o, sceneInputs.headerLines, out);
-    RendererTracer tracer(renderer, o.immediateIrradiance);
+    std::vector<std::unique_ptr<RendererTracer>> tracers;
+    std::vector<ContribTraceFn> passTrace;
+    for (const auto& r : renderers) {
+        tracers.push_back(std::make_unique<RendererTracer>(*r, o.immediateIrradiance));
+        passTrace.push_back(tracers.back()->contributions(targets));
+    }
+    const size_t bins = targets.size();
+    const ContribTraceFn trace =
+        passTrace.size() == 1
+            ? passTrace[0]
+            : ContribTraceFn([&passTrace, bins](const Vec3& org, const Vec3& dir, uint64_t index,
+                                                double maxDistance, std::vector<Color>& values) {
+                  std::vector<Color> pass(bins);
+                  for (size_t p = 0; p < passTrace.size(); ++p) {
+                      std::fill(pass.begin(), pass.end(), Color{});
+                      passTrace[p](org, dir, index, maxDistance, pass);
+                      std::copy(pass.begin(), pass.end(),
+                                values.begin() + std::ptrdiff_t(p * bins));
+                  }
+              });
 
-    RcontribRunSettings s = runSettings(o, targets.size(), cluster);
+    RcontribRunSettings s = runSettings(o, bins * passTrace.size(), cluster);
     // RADIANCE compat (rcontrib.c rcinit): -r continues binary records, or with -c 0
     // adds to the totals the outputs hold.
     if (output && o.recover && o.accumulate <= 0)
         s.totals = output->reload();
     else if (output && o.recover)
         s.skipRecords = output->recover();
-    runRcontrib(s, rays, output ? &*output : nullptr, tracer.contributions(targets));
+    runRcontrib(s, rays, output ? &*output : nullptr, trace);
     if (cluster.isRoot()) targets.badBins().report();
 }
 

@@ -10,7 +10,8 @@
 # point within 1 %. Photon map: mkpmap -cs 9 -apg 500k (each pass its own file), -ab -1
 # -ap 1000: a 1000-photon estimate spreads 3.2 %, and the three bands of a pass share
 # photons, so the mean over the 6 points spreads 1.3 %: within 4 % (3 sigma), each point
-# within 10 %. Then what must fail does: a spectral map rendered in RGB or another
+# within 10 %. rcontrib -cs 9 with the classic options gives the lamp's coefficients:
+# the same closed form over L. Then what must fail does: a spectral map rendered in RGB or another
 # sampling, an RGB map in spectral rendering; and -cs 3 is RGB: the map of mkpmap -cs 3
 # is the plain map, byte for byte after the command line.
 set -u
@@ -49,6 +50,16 @@ check() {  # name per-point-tolerance mean-tolerance file
               exit bad }' || fail=1
 }
 check classic 0.01 0.01 "$tmp/classic"
+# rcontrib -cs 9: the lamp's coefficients (irradiance per unit radiance) are the same
+# closed form over 1000, and its header names the sampling as RADIANCE 6.1a's does.
+"$BIN/rcontrib" -h -I -cs 9 -ab 12 -aa 0 -ad 2048 -as 0 -lw 1e-5 -m emitter "$tmp/s.oct" \
+    < "$data/points.txt" | awk '{ for (i = 1; i <= NF; ++i) $i *= 1000; print }' > "$tmp/contrib" ||
+    { echo "FAIL: rcontrib -cs 9"; fail=1; }
+check rcontrib 0.01 0.01 "$tmp/contrib"
+echo "0 0 0 0 0 -1" | "$BIN/rcontrib" -cs 9 -m emitter "$tmp/s.oct" |
+    grep -E '^(NCOMP|WAVELENGTH_SPLITS)=' > "$tmp/h"
+printf '%s\n' "NCOMP=9" "WAVELENGTH_SPLITS= 780 588 480 380" | diff - "$tmp/h" ||
+    { echo "FAIL: rcontrib -cs 9 header"; fail=1; }
 check photons 0.10 0.04 "$tmp/photons"
 # Each sampling reads only its own maps.
 err() { "$BIN/rtrace" -h -I "$@" "$tmp/s.oct" < "$data/points.txt" 2>&1 > /dev/null; }
