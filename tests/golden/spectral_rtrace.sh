@@ -78,5 +78,16 @@ compare "rpict -cs 18 against rtrace" 0.01 < "$tmp/pic"
 for bad in "-cs 2" "-cs 9 -cw 500 540" "-cs 9 -pY -fac"; do
     if run -h -ab 0 $bad > /dev/null; then echo "FAIL: rtrace $bad succeeded"; fail=1; fi
 done
+# Bad spectral input names its file and line.
+printf 'void specfile none 1 missing_spectrum.dat 0 0\nnone glow g 0 0 4 1 1 1 0\ng sphere s 0 0 4 0 0 0 1\n' \
+    > "$tmp/bad.rad"
+printf 'void spectrum sp 0 0 5 500 500 1 1 1\nsp glow g 0 0 4 1 1 1 0\ng sphere s 0 0 4 0 0 0 1\n' \
+    > "$tmp/bad2.rad"
+for b in bad bad2; do
+    "$BIN/oconv" "$tmp/$b.rad" > "$tmp/$b.oct" || exit 1
+    msg=$(echo "0 0 5 0 0 -1" | "$BIN/rtrace" -h "$tmp/$b.oct" 2>&1 > /dev/null) &&
+        { echo "FAIL: $b.rad rendered"; fail=1; }
+    case "$msg" in *"$b.rad:1: "*) ;; *) echo "FAIL: $b.rad: $msg"; fail=1 ;; esac
+done
 [ "$fail" -eq 0 ] && echo ok
 exit $fail
