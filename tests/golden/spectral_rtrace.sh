@@ -78,6 +78,13 @@ compare "rpict -cs 18 against rtrace" 0.01 < "$tmp/pic"
 for bad in "-cs 2" "-cs 9 -cw 500 540" "-cs 9 -pY -fac"; do
     if run -h -ab 0 $bad > /dev/null; then echo "FAIL: rtrace $bad succeeded"; fail=1; fi
 done
+# A small spectral map set (the full checks are golden.spectral_furnace, which the
+# sanitizer run leaves out for its time): -cs 7 makes three files, read back by -cs 7.
+"$BIN/oconv" "$SRC/tests/data/spectral_furnace/sphere.rad" > "$tmp/f.oct" &&
+    "$BIN/mkpmap" -cs 7 -apg "$tmp/f.pm" 20k "$tmp/f.oct" 2> /dev/null || { echo "FAIL: mkpmap -cs 7"; fail=1; }
+for f in f.pm f.pm.3-5 f.pm.6-6; do [ -s "$tmp/$f" ] || { echo "FAIL: no $f"; fail=1; }; done
+n=$(echo "0 0 -0.999 0 0 1" | "$BIN/rtrace" -h -I -cs 7 -co -ab -1 -ap "$tmp/f.pm" 50 "$tmp/f.oct" | wc -w)
+[ "$n" -eq 7 ] || { echo "FAIL: rtrace -cs 7 with a map set gave $n values"; fail=1; }
 # Bad spectral input names its file and line.
 printf 'void specfile none 1 missing_spectrum.dat 0 0\nnone glow g 0 0 4 1 1 1 0\ng sphere s 0 0 4 0 0 0 1\n' \
     > "$tmp/bad.rad"
