@@ -355,47 +355,70 @@ Picture renderPicture(const RpictOptions& options, const PixelTracerFactory& fac
     const size_t ranks = spread ? size_t(cluster->size()) : 1;
     const size_t rank = spread ? size_t(cluster->rank()) : 0;
     auto mine = [&](size_t k) { return k % ranks == rank; };
-    const size_t chunk = size_t(std::max(8, 4 * threads)) * ranks;
+    // Eight sampled rows a thread: the threads wait for each other once a chunk, and rows
+    // differ in cost (a window, a new irradiance cache region), so smaller chunks leave a
+    // thread idle more often (bench/README_speed.md); larger ones write rows less often.
+    const size_t chunk = size_t(std::max(8, 8 * threads)) * ranks;
+    // Sampled row k and the band above it are traced by rank k % ranks; every rank needs
+    // all sampled rows (a band reads the rows at both its ends), only the root needs the
+    // bands.
+    auto sampledRows = [&](size_t k, int& r0, int& r1) { r0 = rows[k], r1 = rows[k] + 1; };
+    auto bandRows = [&](size_t k, int& r0, int& r1) { r0 = rows[k - 1] + 1, r1 = rows[k]; };
+    // Pipelined: each step samples the rows of one chunk and fills the bands of the chunk
+    // before it, all in one parallel loop, so that the threads wait for each other once a
+    // chunk (the bands of a chunk need its sampled rows and the last one before it).
+    struct Chunk {
+        size_t k0 = 0, k1 = 0, b0 = 0;  // sampled rows[k0..k1), bands below rows[b0..k1)
+    };
+    auto chunkAt = [&](size_t k0) {
+        const size_t k1 = std::min(rows.size(), k0 + chunk);
+        return Chunk{k0, k1, std::max(k0, start + 1)};
+    };
     int handed = firstRow;
     tbb::task_arena arena(threads);
-    for (size_t k0 = start; firstRow < size.yres && k0 < rows.size(); k0 += chunk) {
-        const size_t k1 = std::min(rows.size(), k0 + chunk);  // sample rows[k0..k1)
-        const size_t b0 = std::max(k0, start + 1);  // bands below rows[b0-1] .. rows[k1-1]
-        // Sampled row k and the band above it are traced by rank k % ranks; every rank
-        // needs all sampled rows (a band reads the rows at both its ends), only the root
-        // needs the bands.
-        auto sampledRows = [&](size_t k, int& r0, int& r1) { r0 = rows[k], r1 = rows[k] + 1; };
-        auto bandRows = [&](size_t k, int& r0, int& r1) { r0 = rows[k - 1] + 1, r1 = rows[k]; };
+    std::optional<Chunk> pending;  // sampled, bands not yet filled
+    for (size_t k0 = start; firstRow < size.yres && (k0 < rows.size() || pending); k0 += chunk) {
+        std::optional<Chunk> now;
+        if (k0 < rows.size()) now = chunkAt(k0);
+        const size_t nSampled = now ? now->k1 - now->k0 : 0;
+        const size_t nBands = pending ? pending->k1 - pending->b0 : 0;
         arena.execute([&] {
-            tbb::parallel_for(k0, k1, [&](size_t k) {
-                if (!mine(k)) return;
-                s.sampledRow(tracerHere(), rows[k], int(k), hstep);
-                if (rows[k] >= firstRow) report.advance(1);
+            tbb::parallel_for(size_t(0), nSampled + nBands, [&](size_t i) {
+                if (i < nSampled) {
+                    const size_t k = now->k0 + i;
+                    if (!mine(k)) return;
+                    s.sampledRow(tracerHere(), rows[k], int(k), hstep);
+                    if (rows[k] >= firstRow) report.advance(1);
+                } else {
+                    const size_t k = pending->b0 + (i - nSampled);
+                    if (!mine(k)) return;
+                    s.band(tracerHere(), rows[k - 1], rows[k]);
+                    report.advance(bandRowsAfter(rows, k, firstRow));
+                }
             });
         });
-        if (spread) shareRows(*cluster, pic, z, k0, k1, ranks, sampledRows, false);
-        arena.execute([&] {
-            tbb::parallel_for(b0, k1, [&](size_t k) {
-                if (!mine(k)) return;
-                s.band(tracerHere(), rows[k - 1], rows[k]);
-                report.advance(bandRowsAfter(rows, k, firstRow));
-            });
-        });
-        if (spread) shareRows(*cluster, pic, z, b0, k1, ranks, bandRows, true);
-        if (spread && cluster->isRoot())  // the others' rows, for the root's progress
-            for (size_t k = k0; k < k1; ++k) {
-                if (mine(k)) continue;
-                if (rows[k] >= firstRow) report.advance(1);
-                if (k >= b0) report.advance(bandRowsAfter(rows, k, firstRow));
-            }
-        // The last sampled row is the top of the next band: kept until that is filled.
-        const int end = k1 < rows.size() ? rows[k1 - 1] : size.yres;
-        if (end > handed) {
-            if (rowsIn.finish && (!spread || cluster->isRoot()))
-                rowsIn.finish(pic, depth ? &z : nullptr, handed, end);
-            if (rowsIn.done) rowsIn.done(pic, z, handed, end);
+        if (spread && now) shareRows(*cluster, pic, z, now->k0, now->k1, ranks, sampledRows, false);
+        if (spread && pending)
+            shareRows(*cluster, pic, z, pending->b0, pending->k1, ranks, bandRows, true);
+        if (spread && cluster->isRoot()) {  // the others' rows, for the root's progress
+            if (now)
+                for (size_t k = now->k0; k < now->k1; ++k)
+                    if (!mine(k) && rows[k] >= firstRow) report.advance(1);
+            if (pending)
+                for (size_t k = pending->b0; k < pending->k1; ++k)
+                    if (!mine(k)) report.advance(bandRowsAfter(rows, k, firstRow));
         }
-        handed = std::max(handed, end);
+        if (pending) {
+            // The last sampled row is the top of the next band: kept until that is filled.
+            const int end = pending->k1 < rows.size() ? rows[pending->k1 - 1] : size.yres;
+            if (end > handed) {
+                if (rowsIn.finish && (!spread || cluster->isRoot()))
+                    rowsIn.finish(pic, depth ? &z : nullptr, handed, end);
+                if (rowsIn.done) rowsIn.done(pic, z, handed, end);
+            }
+            handed = std::max(handed, end);
+        }
+        pending = now;
     }
     report.finish();
 
