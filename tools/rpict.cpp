@@ -94,8 +94,6 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp:
         passTracers.push_back(rendererPixelTracers(*renderers.back()));
     }
     const bool spectral = renderers.size() > 1;
-    if (spectral && !o.render.ambient.file.empty())
-        throw rp::InputError("-af with -cs above 3 is not supported yet");
     const Renderer& renderer = *renderers[0];
     const PixelTracerFactory tracers =
         spectral ? pixelTracersOverPasses(passTracers, sampling) : passTracers[0];
@@ -132,7 +130,8 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp:
     };
     // The -af file is written by one process only: with other ranks, the root's records.
     auto keepAmbient = [&] {
-        if (cluster.isRoot()) renderer.flushAmbientFile();
+        if (!cluster.isRoot()) return;
+        for (const auto& r : renderers) r->flushAmbientFile();  // each pass its own file
     };
     try {
         runRpict(o, tracers, cluster.isRoot() ? progress : ProgressCallback{}, io);

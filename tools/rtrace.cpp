@@ -66,8 +66,6 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     const std::vector<RenderOptions> passes = passOptions(o.render, sampling);
     if (passes.size() > 1 && spec.wantsTree())
         throw rp::InputError("ray tree output with -cs above 3 is not supported yet");
-    if (passes.size() > 1 && !o.render.ambient.file.empty())
-        throw rp::InputError("-af with -cs above 3 is not supported yet");
     rp::Scene scene = rp::loadScene({o.sceneFile}, rp::gen::builtinLoadOptions());
     rp::SceneGeometry geometry(scene);
     std::vector<std::unique_ptr<Renderer>> renderers;
@@ -99,7 +97,8 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     writer.setTraceFilter(o.trace);
     // The -af file is written by one process only: with other ranks, the root's records.
     auto keepAmbient = [&] {
-        if (cluster.isRoot()) renderers[0]->flushAmbientFile();
+        if (!cluster.isRoot()) return;
+        for (const auto& r : renderers) r->flushAmbientFile();  // each pass its own file
     };
     try {
         runRtrace(settings, std::cin, out, writer, trace);

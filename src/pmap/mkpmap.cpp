@@ -71,7 +71,7 @@ void checkRequest(const MkpmapOptions& o, const PortExteriorFactory& exterior,
         if (!files.insert(m->file).second)
             throw InputError("photon map file " + m->file + " specified more than once");
         for (const spectral::Pass& pass : passes) {
-            const std::string file = passMapFile(m->file, pass);
+            const std::string file = spectral::passFile(m->file, pass);
             std::error_code ec;
             if (!o.overwrite && std::filesystem::exists(file, ec))
                 throw InputError("photon map file " + file + " exists, not overwritten");
@@ -153,7 +153,7 @@ void saveMaps(const MkpmapOptions& o, std::array<MapPhotons, kNumPhotonMapTypes>
     auto outputOf = [&](size_t t) {
         MapOutput out;
         out.type = PhotonMapType(t);
-        out.file = passMapFile(o.maps[t]->file, pass);
+        out.file = spectral::passFile(o.maps[t]->file, pass);
         out.bands = mapBandsOf(pass);
         out.commandLine = commandLine;
         out.overwrite = o.overwrite;

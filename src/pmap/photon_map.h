@@ -54,14 +54,12 @@ struct PhotonMapStats {
 // three bands (util/spectrum.h Pass), one 3.1k map file per pass, each holding its
 // three bands as RGB flux; its header names the sampling (NCOMP=, WAVELENGTH_SPLITS=, as
 // RADIANCE 6's spectral files) and the bands (BANDS= first last). The first pass's file
-// is the one named; the others are "<name>.<first>-<last>" beside it.
+// is the one named; the others are "<name>.<first>-<last>" beside it (spectral::passFile).
 struct MapBands {
     spectral::Sampling sampling;
     int first = 0;
     bool operator==(const MapBands&) const = default;
 };
-// The file of `pass` in the set named `file` (the name itself for RGB and the first pass).
-std::string passMapFile(const std::string& file, const spectral::Pass& pass);
 // The bands a pass's map holds; nullopt for RGB (a plain RADIANCE map).
 std::optional<MapBands> mapBandsOf(const spectral::Pass& pass);
 // InputError naming `file` unless a map's bands are the pass's: a spectral map rendered
@@ -76,7 +74,7 @@ struct PhotonMapFileInfo {
     std::span<const PrimaryRay> primaryRays;  // 3.1kPD maps only
     // Records per checksum after the records (record_checksums.h); 0: none.
     uint32_t checksumBlock = 0;
-    std::optional<MapBands> bands;  // a pass of a spectral map set
+    std::optional<MapBands> bands{};  // a pass of a spectral map set
     // "3.1k", or "3.1kPD" with primary rays.
     const char* fileVersion() const;
 };

@@ -324,11 +324,6 @@ std::optional<MapBands> bandsFromHeader(const Header& h, const SourceLoc& loc) {
 
 }  // namespace
 
-std::string passMapFile(const std::string& file, const spectral::Pass& pass) {
-    if (pass.first == 0) return file;
-    return fmt::format("{}.{}-{}", file, pass.first, pass.band(2));
-}
-
 std::optional<MapBands> mapBandsOf(const spectral::Pass& pass) {
     if (pass.sampling.isRgb()) return std::nullopt;
     return MapBands{pass.sampling, pass.first};

@@ -87,10 +87,10 @@ TEST(PhotonMap, SpectralPassFilesNameTheirBands) {
     const spectral::Sampling s = spectral::makeSampling(7, 400, 700)->sampling;
     const std::vector<spectral::Pass> passes = spectral::passesOf(s);
     ASSERT_EQ(passes.size(), 3u);
-    EXPECT_EQ(passMapFile("g.pm", passes[0]), "g.pm");
-    EXPECT_EQ(passMapFile("g.pm", passes[1]), "g.pm.3-5");
-    EXPECT_EQ(passMapFile("g.pm", passes[2]), "g.pm.6-6");
-    EXPECT_EQ(passMapFile("g.pm", spectral::passesOf(spectral::Sampling{})[0]), "g.pm");
+    EXPECT_EQ(spectral::passFile("g.pm", passes[0]), "g.pm");
+    EXPECT_EQ(spectral::passFile("g.pm", passes[1]), "g.pm.3-5");
+    EXPECT_EQ(spectral::passFile("g.pm", passes[2]), "g.pm.6-6");
+    EXPECT_EQ(spectral::passFile("g.pm", spectral::passesOf(spectral::Sampling{})[0]), "g.pm");
 
     const std::string file = "g.pm.3-5";
     PhotonMapFileInfo info = twoPhotonMap().fileInfo();

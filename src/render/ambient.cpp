@@ -99,6 +99,8 @@ Ambient::Ambient(const AmbientOptions& options, double sceneSize, const Scene& s
     }
     if (!std::filesystem::exists(options.file)) return;
     AmbientFileContents f = readAmbientFile(options.file);
+    if (f.bands != options.bands)
+        throw InputError(SourceLoc{options.file, 0}, bandsProblem(f.bands, options.bands));
     std::string mine = ambientFileOptions(options);
     // RADIANCE reuses ambient files whatever the options; records from other settings are
     // still valid irradiance estimates, only of other quality, so we warn, not refuse.
@@ -285,7 +287,7 @@ void Ambient::save() const {
     if (m.saved >= recs.size() && std::filesystem::exists(m.opt.file)) return;
     std::vector<AmbientRecord> todo(recs.begin() + long(std::min(m.saved, recs.size())),
                                     recs.end());
-    appendAmbientFile(m.opt.file, ambientFileOptions(m.opt), todo);
+    appendAmbientFile(m.opt.file, ambientFileOptions(m.opt), todo, m.opt.bands);
     m.saved = recs.size();
 }
 

@@ -58,10 +58,11 @@ bool finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-Header makeHeader(const std::string& options) {
+Header makeHeader(const std::string& options, const std::string& bands) {
     Header h;
     h.lines.push_back("radphoton ambient values (irradiance cache records)");
     h.lines.push_back("AMBIENT_OPTIONS=" + options);
+    if (!bands.empty()) h.lines.push_back("BANDS=" + bands);
     h.lines.push_back(fmt::format("RECORD_BYTES={}", kAmbientRecordBytes));
     h.lines.push_back("BYTE_ORDER=little");
     h.lines.push_back(std::string("FORMAT=") + kAmbientFormat);
@@ -91,6 +92,11 @@ Header checkHeader(std::istream& in, const std::string& path, size_t& bytes) {
 }
 
 }  // namespace
+
+std::string bandsProblem(const std::string& file, const std::string& run) {
+    auto name = [](const std::string& b) { return b.empty() ? std::string("RGB") : b; };
+    return "ambient file of " + name(file) + ", not of this run's " + name(run);
+}
 
 std::string ambientFileOptions(const AmbientOptions& o) {
     return fmt::format("-aa {} -ar {} -ad {} -as {} -ab {}", o.accuracy, o.resolution, o.divisions,
@@ -133,6 +139,7 @@ AmbientFileContents readAmbientFile(const std::string& path) {
     const Header h = checkHeader(in, path, bytes);
     AmbientFileContents out;
     out.options = h.value("AMBIENT_OPTIONS");
+    out.bands = h.value("BANDS");
     std::vector<unsigned char> data((std::istreambuf_iterator<char>(in)),
                                     std::istreambuf_iterator<char>());
     if (data.size() % bytes != 0)
@@ -182,7 +189,7 @@ void appendLocked(const std::string& path, const std::vector<unsigned char>& dat
 }  // namespace
 
 void appendAmbientFile(const std::string& path, const std::string& options,
-                       const std::vector<AmbientRecord>& records) {
+                       const std::vector<AmbientRecord>& records, const std::string& bands) {
     SourceLoc loc{path, 0};
     auto encode = [&](size_t bytes) {
         std::vector<unsigned char> data(records.size() * bytes);
@@ -195,7 +202,9 @@ void appendAmbientFile(const std::string& path, const std::string& options,
         {
             std::ifstream in(path, std::ios::binary);
             if (!in) throw InputError(loc, "can't open ambient file");
-            checkHeader(in, path, bytes);  // a legacy file keeps its record size
+            const Header h = checkHeader(in, path, bytes);  // a legacy file keeps its record size
+            if (h.value("BANDS") != bands)
+                throw InputError(loc, bandsProblem(h.value("BANDS"), bands));
         }
         appendLocked(path, encode(bytes));
     };
@@ -207,7 +216,7 @@ void appendAmbientFile(const std::string& path, const std::string& options,
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
         if (!out) throw InputError(loc, "can't create ambient file");
-        writeHeader(out, makeHeader(options));
+        writeHeader(out, makeHeader(options, bands));
         out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
         out.flush();
         if (!out) {

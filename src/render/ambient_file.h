@@ -24,6 +24,7 @@ std::string ambientFileOptions(const AmbientOptions& o);
 
 struct AmbientFileContents {
     std::string options;                 // the AMBIENT_OPTIONS= line ("" if absent)
+    std::string bands;                   // BANDS=: a spectral pass's (spectral::passLabel)
     std::vector<AmbientRecord> records;  // in file order
 };
 
@@ -31,12 +32,15 @@ struct AmbientFileContents {
 // another format, a different record size, a partial record at the end or a record with
 // non-finite or impossible values.
 AmbientFileContents readAmbientFile(const std::string& path);
+// "ambient file of <bands>, not of this run's <bands>" (RGB for none).
+std::string bandsProblem(const std::string& file, const std::string& run);
 
 // Adds `records` at the end of `path`. A missing file is created with a header holding
-// `options` (written to a temporary file and renamed, so a crash leaves no half header);
-// an existing one is first checked to be an ambient file (InputError otherwise).
+// `options` and `bands` (written to a temporary file and renamed, so a crash leaves no
+// half header); an existing one is first checked to be an ambient file of those bands
+// (InputError otherwise).
 void appendAmbientFile(const std::string& path, const std::string& options,
-                       const std::vector<AmbientRecord>& records);
+                       const std::vector<AmbientRecord>& records, const std::string& bands = "");
 
 // The fixed binary layout, exposed for tests: position 3 x f64, normal 3 x f32, value
 // 3 x f32, radius f32, gradPosition 3 x f32, gradDirection 3 x f32, weight f32, level i32,

@@ -91,7 +91,7 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         try {
             pmap::StoreOptions o = store;
             o.bandwidth = std::max({uses[i].bandwidth, uses[i].bandwidth2, kDefaultBandwidth});
-            const std::string file = pmap::passMapFile(uses[i].file, uses[i].pass);
+            const std::string file = spectral::passFile(uses[i].file, uses[i].pass);
             loaded[i].map = pmap::PhotonMap::open(file, o, trackedSources);
             pmap::checkMapBands(loaded[i].map.bands(), uses[i].pass, file);
         } catch (...) {
@@ -104,7 +104,7 @@ PhotonLighting::PhotonLighting(const std::vector<PhotonMapUse>& uses, double max
         const PhotonMapUse& use = uses[i];
         Map m = std::move(loaded[i]);
         m.use = use;
-        m.file = pmap::passMapFile(use.file, use.pass);
+        m.file = spectral::passFile(use.file, use.pass);
         T type = m.map.type();
         const char* name = pmap::photonMapTypeName(type);
         const bool contribType = type == T::Contrib || type == T::PreCompContrib;

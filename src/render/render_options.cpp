@@ -248,6 +248,9 @@ std::vector<RenderOptions> passOptions(const RenderOptions& opt,
         o.mist.extinction = p.ofRgb(opt.mist.extinction);
         o.mist.albedo = p.ofRgb(opt.mist.albedo);
         for (PhotonMapUse& use : o.photonMaps) use.pass = p;
+        // Each pass keeps its own ambient file, its bands in the header.
+        if (!o.ambient.file.empty()) o.ambient.file = spectral::passFile(o.ambient.file, p);
+        o.ambient.bands = spectral::passLabel(p);
         out.push_back(std::move(o));
     }
     return out;

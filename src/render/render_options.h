@@ -49,6 +49,7 @@ struct AmbientOptions {
     int divisions = 1024;    // -ad: hemisphere samples per irradiance computation
     int supersamples = 512;  // -as: extra samples where the divisions vary most
     std::string file;        // -af: ambient file (records kept across runs)
+    std::string bands;       // a spectral pass's label (spectral::passLabel; "" for RGB)
     // -ae/-ai (and -aE/-aI from files): modifiers excluded from / the only ones included
     // in the cache (others get -av). Order matters as in RADIANCE: the last of -ae/-ai
     // decides the mode; the list accumulates.
@@ -66,7 +67,7 @@ struct PhotonMapUse {
     bool edgeAware = false;
     // The rendering pass it serves (passOptions): with -cs above 3 the map is that pass's
     // file of a spectral map set (pmap/photon_map.h MapBands).
-    spectral::Pass pass;
+    spectral::Pass pass{};
 };
 
 // -me/-ma/-mg/-ms: the global participating medium and the sampling distance of light

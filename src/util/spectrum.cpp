@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "util/error.h"
 #include "util/observer_table.h"
@@ -196,6 +197,19 @@ std::vector<Pass> passesOf(const Sampling& s) {
         passes.push_back(p);
     }
     return passes;
+}
+
+std::string passFile(const std::string& name, const Pass& pass) {
+    if (pass.first == 0) return name;
+    return name + "." + std::to_string(pass.first) + "-" + std::to_string(pass.band(2));
+}
+
+std::string passLabel(const Pass& pass) {
+    if (pass.sampling.isRgb()) return "";
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "-cs %d -cw %g %g bands %d-%d", pass.sampling.n,
+                  pass.sampling.wl[3], pass.sampling.wl[0], pass.first, pass.band(2));
+    return buf;
 }
 
 void resample(std::span<double> dst, double dwl0, double dwl1, std::span<const double> src,

@@ -7,6 +7,7 @@
 #include <array>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "util/color.h"
@@ -62,6 +63,12 @@ struct Pass {
 };
 // The passes that render a sampling: ceil(n / 3).
 std::vector<Pass> passesOf(const Sampling& s);
+// The file a pass keeps of what a run writes per pass (photon maps, ambient files): the
+// name itself for RGB and the first pass, else "<name>.<first>-<last>" beside it.
+std::string passFile(const std::string& name, const Pass& pass);
+// "-cs n -cw nmA nmB bands first-last" for a pass of a spectral sampling, "" for RGB: what
+// a file made by one pass records, so that another pass does not read it.
+std::string passLabel(const Pass& pass);
 
 // Samples of an RGB colour (RADIANCE's setscolor): each band takes the primary of the
 // channel its centre falls in.

@@ -85,6 +85,13 @@ done
 for f in f.pm f.pm.3-5 f.pm.6-6; do [ -s "$tmp/$f" ] || { echo "FAIL: no $f"; fail=1; }; done
 n=$(echo "0 0 -0.999 0 0 1" | "$BIN/rtrace" -h -I -cs 7 -co -ab -1 -ap "$tmp/f.pm" 50 "$tmp/f.oct" | wc -w)
 [ "$n" -eq 7 ] || { echo "FAIL: rtrace -cs 7 with a map set gave $n values"; fail=1; }
+# -af keeps one ambient file per pass, which only that pass reads.
+echo "0 0 -0.999 0 0 1" | "$BIN/rtrace" -h -I -cs 7 -ab 1 -aa 0.2 -af "$tmp/a.amb" "$tmp/f.oct" > /dev/null ||
+    { echo "FAIL: rtrace -cs 7 -af"; fail=1; }
+for f in a.amb a.amb.3-5 a.amb.6-6; do [ -s "$tmp/$f" ] || { echo "FAIL: no $f"; fail=1; }; done
+msg=$(echo "0 0 -0.999 0 0 1" | "$BIN/rtrace" -h -I -ab 1 -aa 0.2 -af "$tmp/a.amb" "$tmp/f.oct" 2>&1 > /dev/null)
+case "$msg" in *"ambient file of -cs 7 -cw 380 780 bands 0-2, not of this run's RGB"*) ;;
+    *) echo "FAIL: RGB run on a spectral ambient file: $msg"; fail=1 ;; esac
 # Bad spectral input names its file and line.
 printf 'void specfile none 1 missing_spectrum.dat 0 0\nnone glow g 0 0 4 1 1 1 0\ng sphere s 0 0 4 0 0 0 1\n' \
     > "$tmp/bad.rad"
