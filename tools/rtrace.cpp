@@ -61,8 +61,10 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     const rp::spectral::Sampling sampling = spectralSampling(o.render);
     ColourOutput colours = o.colours;
     colours.resolve(sampling);
-    if (o.outputFormat == 'c' && colours.components() != 3)
-        throw rp::InputError("color format incompatible with -pY, -pS, -pM, -pA and -co");
+    // RADIANCE compat (rtrace.c setrtoutput): RGBE, or spectral samples with a common
+    // exponent (a hyperspectral picture), never one channel.
+    if (o.outputFormat == 'c' && colours.components() < 3)
+        throw rp::InputError("color format incompatible with -pY, -pS, -pM");
     const std::vector<RenderOptions> passes = passOptions(o.render, sampling);
     if (passes.size() > 1 && spec.wantsTree())
         throw rp::InputError("ray tree output with -cs above 3 is not supported yet");
@@ -92,6 +94,7 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     settings.yres = o.yres;
     settings.threads = o.render.threads;
     settings.limitDistance = o.limitDistance;
+    settings.paddedResolution = o.outputFormat == 'c' && colours.components() > 3;
     settings.cluster = &cluster;
     RayWriter writer(spec, o.outputFormat, &scene, colours);
     writer.setTraceFilter(o.trace);

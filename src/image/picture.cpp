@@ -91,6 +91,16 @@ PictureInfo readInfo(std::istream& in, const std::string& what) {
 
 }  // namespace
 
+std::string paddedResolution(const Resolution& r) {
+    char buf[64];
+    const char xs = r.xDecreasing ? '-' : '+', ys = r.yDecreasing ? '-' : '+';
+    if (r.yMajor)
+        std::snprintf(buf, sizeof buf, "%cY %8d %cX %8d", ys, r.yres, xs, r.xres);
+    else
+        std::snprintf(buf, sizeof buf, "%cX %8d %cY %8d", xs, r.xres, ys, r.yres);
+    return buf;
+}
+
 Resolution readResolution(std::istream& in, const std::string& what, std::string* text) {
     std::string line;
     int c;

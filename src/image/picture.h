@@ -41,6 +41,9 @@ std::optional<Resolution> parseResolution(const std::string& line);
 // Reads the resolution line after a header (InputError naming `what` when it is missing,
 // malformed or too large); `text`, if given, receives the line as written.
 Resolution readResolution(std::istream& in, const std::string& what, std::string* text = nullptr);
+// "-Y      480 +X      640": sizes in 8 columns, as RADIANCE 6's rtrace and rcomb write
+// the line (fputsresolu); readers take either.
+std::string paddedResolution(const Resolution& r);
 // "-Y 480 +X 640" (no newline), as RADIANCE's resolu2str.
 std::string formatResolution(const Resolution& r);
 

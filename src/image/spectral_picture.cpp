@@ -98,17 +98,6 @@ spectral::Sampling samplingOf(const Header& h, const std::string& what) {
     return s;
 }
 
-// RADIANCE's resolu2str (fputsresolu): sizes in 8 columns.
-std::string paddedResolution(const Resolution& r) {
-    char buf[64];
-    const char xs = r.xDecreasing ? '-' : '+', ys = r.yDecreasing ? '-' : '+';
-    if (r.yMajor)
-        std::snprintf(buf, sizeof buf, "%cY %8d %cX %8d", ys, r.yres, xs, r.xres);
-    else
-        std::snprintf(buf, sizeof buf, "%cX %8d %cY %8d", xs, r.xres, ys, r.yres);
-    return buf;
-}
-
 // Reads one scanline of `len` packed pixels (n+1 bytes each) as RADIANCE's freadscolrs:
 // flat for n > 3, any RGBE scanline encoding for n == 3.
 std::string readScanline(std::streambuf& in, int n, int len, uint8_t* out) {

@@ -106,7 +106,10 @@ ContribOutput::ContribOutput(const RcontribOptions& o, std::vector<std::string> 
     : o_(o),
       sceneHeader_(std::move(sceneHeader)),
       stdout_(stdoutStream),
-      sampling_(spectralSampling(o.render)) {
+      sampling_(spectral::makeSampling(o.render.spectralSamples, o.render.wavelengthA,
+                                       o.render.wavelengthB)
+                    .value_or(spectral::SamplingChoice{})
+                    .sampling) {  // checked (and warned about) by the tool
     if (!sampling_.isRgb() && o.outputFormat == 'c')
         throw InputError("-fc with -cs above 3 is not supported yet");
     if (!sampling_.isRgb() && o.recover)

@@ -131,9 +131,12 @@ Renderer::Impl::Impl(const Scene& s, const SceneGeometry& g, const RenderOptions
 Renderer::Renderer(const Scene& scene, const SceneGeometry& geometry, const RenderOptions& options,
                    std::vector<std::string> searchPath)
     : scene_(scene), geometry_(geometry), options_(options) {
-    // A spectral sampling is rendered in passes (passOptions), which only rtrace runs so far.
+    // A spectral sampling is rendered in passes (passOptions), which rtrace, rpict and
+    // rcontrib run; the other tools render RGB.
     if (options.spectralSamples > 3 && options.pass.sampling.isRgb())
-        throw InputError("-cs above 3: this program renders RGB only (rtrace renders spectra)");
+        throw InputError(
+            "-cs above 3: this program renders RGB only (rtrace, rpict and rcontrib render "
+            "spectra)");
     impl_ = std::make_unique<Impl>(scene_, geometry_, options_, std::move(searchPath));
 }
 

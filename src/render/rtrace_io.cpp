@@ -10,6 +10,7 @@
 #include <cstring>
 #include <string_view>
 
+#include "image/spectral_picture.h"
 #include "util/colr.h"
 #include "util/error.h"
 #include "util/header.h"
@@ -157,7 +158,16 @@ void RayWriter::color(std::string& out, const Color& c, const std::vector<double
         double v[spectral::kMaxSamples];
         const std::span<double> conv(v, size_t(colours_.components()));
         colours_.convert(in, conv);
-        if (format_ == 'c') {  // three components (checked when parsed)
+        if (format_ == 'c' && conv.size() > 3) {  // RADIANCE 6's common-exponent samples
+            float f[spectral::kMaxSamples];
+            uint8_t packed[spectral::kMaxSamples + 1];
+            for (size_t i = 0; i < conv.size(); ++i) f[i] = float(conv[i]);
+            packSpectrum(std::span<const float>(f, conv.size()),
+                         std::span<uint8_t>(packed, conv.size() + 1));
+            out.append(reinterpret_cast<const char*>(packed), conv.size() + 1);
+            return;
+        }
+        if (format_ == 'c') {  // three components (fewer are refused when parsed)
             Colr colr = toColr(v[0], v[1], v[2]);
             out.append(reinterpret_cast<const char*>(colr.data()), colr.size());
             return;
@@ -322,15 +332,17 @@ std::string rtraceHeader(const std::string& commandLine, char outputFormat, cons
         if (!spec.wantsTree()) h += colours.headerLines(perRecord, other);
     }
     h += "FORMAT=";
-    h += outputFormat == 'a'   ? "ascii"
-         : outputFormat == 'f' ? "float"
-         : outputFormat == 'd' ? "double"
-                               : "32-bit_rle_rgbe";
+    h += outputFormat == 'a'        ? "ascii"
+         : outputFormat == 'f'      ? "float"
+         : outputFormat == 'd'      ? "double"
+         : colours.components() > 3 ? "Radiance_spectra"  // a hyperspectral picture
+                                    : "32-bit_rle_rgbe";
     h += "\n\n";
     return h;
 }
 
-std::string resolutionLine(int xres, int yres) {
+std::string resolutionLine(int xres, int yres, bool padded) {
+    if (padded) return paddedResolution(Resolution{xres, yres}) + "\n";
     return "-Y " + std::to_string(yres) + " +X " + std::to_string(xres) + "\n";
 }
 

@@ -99,7 +99,8 @@ private:
 std::string rtraceHeader(const std::string& commandLine, char outputFormat,
                          const OutputSpec& spec = {}, const ColourOutput& colours = {});
 
-// "-Y y +X x\n" (RADIANCE fprtresolu, standard orientation).
-std::string resolutionLine(int xres, int yres);
+// "-Y y +X x\n" (RADIANCE fprtresolu, standard orientation); `padded`: sizes in 8
+// columns, as RADIANCE 6 writes them (hyperspectral pictures).
+std::string resolutionLine(int xres, int yres, bool padded = false);
 
 }  // namespace rp::render

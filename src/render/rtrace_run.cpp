@@ -133,7 +133,7 @@ RtraceRunStats runRtrace(const RtraceRunSettings& s, std::istream& in, std::ostr
     const size_t batchSize =
         s.batchSize > 0 ? s.batchSize : size_t(64) * size_t(threads) * size_t(role.ranks());
     if (role.root() && s.xres > 0 && s.yres > 0) {
-        out << resolutionLine(s.xres, s.yres);
+        out << resolutionLine(s.xres, s.yres, s.paddedResolution);
         out.flush();
     }
     RayInput input(s, in, stats);

@@ -27,9 +27,10 @@ using RayTraceFn =
 
 struct RtraceRunSettings {
     char inputFormat = 'a';
-    int xres = 0, yres = 0;      // -x -y
-    int threads = 1;             // -n
-    bool limitDistance = false;  // -ld: rays end at the length of their direction
+    int xres = 0, yres = 0;         // -x -y
+    int threads = 1;                // -n
+    bool limitDistance = false;     // -ld: rays end at the length of their direction
+    bool paddedResolution = false;  // the resolution line as RADIANCE 6 writes it
     size_t batchSize = 0;  // rays per batch; 0: 64 per thread and rank (tests use small values)
     // The ranks of an MPI run (null: this process alone). The root reads the input and
     // writes the output; every rank traces a contiguous slice of each batch, so the

@@ -78,6 +78,14 @@ compare "rpict -cs 18 against rtrace" 0.01 < "$tmp/pic"
 for bad in "-cs 2" "-cs 9 -cw 500 540" "-cs 9 -pY -fac"; do
     if run -h -ab 0 $bad > /dev/null; then echo "FAIL: rtrace $bad succeeded"; fail=1; fi
 done
+# -fc with -co writes a hyperspectral picture (FORMAT=Radiance_spectra, common-exponent
+# samples, RADIANCE 6's padded resolution line): the bytes after the header are RADIANCE
+# 6.1a's for two rays, rtrace -fac -cs 9 -co -x 2 -y 1 s.oct.
+head -2 "$tmp/rays" | "$BIN/rtrace" -fac -cs 9 -co -x 2 -y 1 "$tmp/s.oct" 2> /dev/null > "$tmp/p.hsr"
+grep -aq '^FORMAT=Radiance_spectra$' "$tmp/p.hsr" || { echo "FAIL: -fc -co header"; fail=1; }
+got=$(tail -c 44 "$tmp/p.hsr" | od -An -tx1 | tr -d ' \n')
+[ "$got" = 2d59202020202020202031202b582020202020202020320ac4b7a07f5c402f251f80262626273160b6cd8180 ] ||
+    { echo "FAIL: -fc -co pixels: $got"; fail=1; }
 # A small spectral map set (the full checks are golden.spectral_furnace, which the
 # sanitizer run leaves out for its time): -cs 7 makes three files, read back by -cs 7.
 "$BIN/oconv" "$SRC/tests/data/spectral_furnace/sphere.rad" > "$tmp/f.oct" &&
