@@ -102,43 +102,18 @@ public:
     }
 
     std::shared_ptr<const calc::DataFile> data(const Primitive& p, const std::string& name) {
-        auto it = data_.find(name);
-        if (it != data_.end()) return it->second;
-        std::string path = find(p, name, "data file");
-        std::shared_ptr<const calc::DataFile> d;
-        try {
-            d = std::make_shared<const calc::DataFile>(calc::DataFile::load(path));
-        } catch (const InputError& e) {
-            if (e.loc().line > 0) throw;
-            fail(p, e.what());
-        }
-        return data_[name] = d;
+        return cached(data_, p, name, "data file",
+                      [](const std::string& path) { return calc::DataFile::load(path); });
     }
 
     std::shared_ptr<const PictTable> pict(const Primitive& p, const std::string& name) {
-        auto it = picts_.find(name);
-        if (it != picts_.end()) return it->second;
-        std::string path = find(p, name, "picture file");
-        std::shared_ptr<const PictTable> t;
-        try {
-            t = std::make_shared<const PictTable>(PictTable::load(path));
-        } catch (const InputError& e) {
-            fail(p, e.what());
-        }
-        return picts_[name] = t;
+        return cached(picts_, p, name, "picture file",
+                      [](const std::string& path) { return PictTable::load(path); });
     }
 
     std::shared_ptr<const PictTable> spectralPict(const Primitive& p, const std::string& name) {
-        auto it = spectralPicts_.find(name);
-        if (it != spectralPicts_.end()) return it->second;
-        std::string path = find(p, name, "hyperspectral image");
-        std::shared_ptr<const PictTable> t;
-        try {
-            t = std::make_shared<const PictTable>(PictTable::loadSpectral(path));
-        } catch (const InputError& e) {
-            fail(p, e.what());
-        }
-        return spectralPicts_[name] = t;
+        return cached(spectralPicts_, p, name, "hyperspectral image",
+                      [](const std::string& path) { return PictTable::loadSpectral(path); });
     }
 
     std::shared_ptr<const Font> font(const Primitive& p, const std::string& name) {
@@ -162,6 +137,25 @@ public:
     calc::Builder builder;
 
 private:
+    // Each file loaded once per name, found along the search path; its errors name the
+    // record (a file's own syntax errors keep their file:line).
+    template <class T, class Load>
+    std::shared_ptr<const T> cached(std::map<std::string, std::shared_ptr<const T>>& cache,
+                                    const Primitive& p, const std::string& name, const char* kind,
+                                    const Load& load) {
+        auto it = cache.find(name);
+        if (it != cache.end()) return it->second;
+        const std::string path = find(p, name, kind);
+        std::shared_ptr<const T> t;
+        try {
+            t = std::make_shared<const T>(load(path));
+        } catch (const InputError& e) {
+            if (e.loc().line > 0) throw;
+            fail(p, e.what());
+        }
+        return cache[name] = t;
+    }
+
     std::vector<std::string> path_;
     std::map<std::string, bool> loadedFiles_;
     std::map<std::string, std::shared_ptr<const calc::DataFile>> data_;
