@@ -4,6 +4,16 @@
 
 namespace rp::bsdf {
 
+bool BsdfData::coloured() const {
+    for (const Color& c : {rLambFront, rLambBack, tLambFront, tLambBack})
+        if (c.r != c.g || c.g != c.b) return true;
+    for (const ScatteringSet* s : {ptr(rf), ptr(rb), ptr(tf), ptr(tb)})
+        if (s)
+            for (const auto& d : s->components)
+                if (d->coloured()) return true;
+    return false;
+}
+
 Color BsdfData::evaluate(const Vec3& in, const Vec3& out) const {
     const bool inFront = in.z > 0, outFront = out.z > 0;
     Color lamb;

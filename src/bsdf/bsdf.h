@@ -52,6 +52,9 @@ public:
     // for the position inside the chosen cell: Klems data take it from x, as RADIANCE
     // does); false where there is nothing to sample (hemispherical <= 1e-6).
     virtual bool sample(const Vec3& in, double x, double y, Vec3& out) const = 0;
+
+    // Whether the values have colour (CIE-X/Z matrices, CIE-u/v trees), not only Y.
+    virtual bool coloured() const = 0;
 };
 
 // RADIANCE's SDSpectralDF: the non-diffuse part of one scattering set.
@@ -88,6 +91,9 @@ struct BsdfData {
         return s ? s : (inFront ? ptr(tb) : ptr(tf));
     }
     bool hasTransmission() const { return tf || tb; }
+    // Whether any part has colour: a Lambertian part that is not grey, or a coloured
+    // distribution.
+    bool coloured() const;
 
     // The whole BSDF (Lambertian plus non-diffuse) for the pair (RADIANCE SDevalBSDF).
     Color evaluate(const Vec3& in, const Vec3& out) const;

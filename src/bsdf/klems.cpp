@@ -102,7 +102,7 @@ public:
             for (int i = 0; i < 3; ++i) rgb_[3 * k + i] = static_cast<float>(c[i]);
         }
     }
-    bool coloured() const { return !rgb_.empty(); }
+    bool coloured() const override { return !rgb_.empty(); }
     std::vector<float>& rgb() { return rgb_; }
     float& at(int o, int i) { return values_[static_cast<std::size_t>(o) * ninc() + i]; }
     float at(int o, int i) const { return values_[static_cast<std::size_t>(o) * ninc() + i]; }

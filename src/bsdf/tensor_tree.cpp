@@ -65,6 +65,7 @@ public:
                              double psa[2]) const override;
     double hemispherical(const Vec3& in) const override;
     bool sample(const Vec3& in, double x, double y, Vec3& out) const override;
+    bool coloured() const override { return u_.has_value() && v_.has_value(); }
 
     const Tree& tree() const { return tree_; }
 

@@ -50,5 +50,20 @@ awk 'FILENAME == ARGV[1] { for (i = 1; i <= NF; ++i) d[i] = $i; next }
 paste "$tmp/mel_classic" "$tmp/mel_pm" | awk '{ c += $1; p += $2 }
     END { d = p / c - 1; printf "melanopic work plane: classic %.1f, photon map %.1f (%+.2f %%)\n", c / NR, p / NR, 100 * d
           exit (d > 0.05 || d < -0.05) }' || { echo "FAIL: melanopic mean"; fail=1; }
+# A grey BSDF (the tensor tree tests/data/bsdf/ttree4.xml as a film in the opening, as
+# golden.bsdf_final_gather) is the same in every band: classic -ab 1 through it, each
+# band the RGB result times D65's, to 1e-5 (the passes draw the same samples).
+export RAYPATH="$SRC/tests/data/bsdf:$SRC/lib"
+head -12 "$data/points.txt" > "$tmp/p12"
+"$BIN/oconv" "$tmp/room_d65.rad" "$SRC/tests/data/bsdf_window/window_in.rad" > "$tmp/bs.oct" &&
+    "$BIN/oconv" "$data/room_open.rad" "$SRC/tests/data/bsdf_window/window_in.rad" > "$tmp/bg.oct" ||
+    exit 1
+"$BIN/rtrace" -h -u- -I -ab 1 -ad 256 -aa 0 -cs 9 -co "$tmp/bs.oct" < "$tmp/p12" > "$tmp/bspec" &&
+    "$BIN/rtrace" -h -u- -I -ab 1 -ad 256 -aa 0 "$tmp/bg.oct" < "$tmp/p12" > "$tmp/brgb" || exit 1
+awk 'FILENAME == ARGV[1] { for (i = 1; i <= NF; ++i) d[i] = $i; next }
+     FILENAME == ARGV[2] { g[FNR] = $1; next }
+     { for (i = 1; i <= NF; ++i) { r = $i / (g[FNR] * d[i]) - 1; if (r < 0) r = -r; if (r > w) w = r } }
+     END { printf "grey BSDF window, spectral bands against RGB x D65: %.1e\n", w; exit w > 1e-5 }' \
+    "$tmp/bands" "$tmp/brgb" "$tmp/bspec" || { echo "FAIL: grey BSDF in spectral rendering"; fail=1; }
 [ "$fail" -eq 0 ] && echo ok
 exit $fail
