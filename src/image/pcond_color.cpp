@@ -9,6 +9,7 @@
 #include <string>
 
 #include "image/pcond_internal.h"
+#include "image/white_balance.h"
 #include "util/error.h"
 
 namespace rp::pcond_detail {
@@ -292,3 +293,15 @@ void macbethScan(const Macbeth& mb, Pixel* scan, int n) {
 }
 
 }  // namespace rp::pcond_detail
+
+namespace rp {
+
+std::array<float, 9> xyzToRgbWhiteBalanced(const std::array<float, 8>& primaries) {
+    const pcond_detail::ColorMatrix m = pcond_detail::xyzToRgbBalanced(primaries);
+    std::array<float, 9> out;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) out[size_t(3 * i + j)] = m[size_t(i)][size_t(j)];
+    return out;
+}
+
+}  // namespace rp

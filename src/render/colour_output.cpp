@@ -1,9 +1,11 @@
 // Colour output conversions (see colour_output.h).
 #include "render/colour_output.h"
 
+#include <cmath>
 #include <cstdio>
 #include <numeric>
 
+#include "image/white_balance.h"
 #include "util/error.h"
 #include "util/observers.h"
 
@@ -22,8 +24,12 @@ void ColourOutput::setPrimaries(Primaries p) {
 }
 
 void ColourOutput::setCustomPrimaries(const std::array<double, 8>& p) {
+    // RADIANCE compat (rtmain.c -pc): within 0.001 of the standard primaries is RGB.
+    bool standard = true;
+    for (size_t i = 0; i < 8; ++i)
+        standard = standard && std::fabs(p[i] - spectral::kStandardPrimaries[i]) <= .001;
     custom_ = p;
-    setPrimaries(Primaries::kCustom);
+    setPrimaries(standard ? Primaries::kRgb : Primaries::kCustom);
 }
 
 void ColourOutput::setSpectral(bool on) {
@@ -39,8 +45,6 @@ void ColourOutput::resolve(const spectral::Sampling& s) {
     sampling_ = s;
     if (channel_ != Channel::kNone) return;
     if (primaries_ == Primaries::kNone && s.isRgb()) primaries_ = Primaries::kRgb;
-    // RADIANCE 6 converts to other primaries in a way we have not matched yet.
-    if (primaries_ == Primaries::kCustom) throw InputError("-pc: not supported yet");
 }
 
 int ColourOutput::components() const {
@@ -81,9 +85,21 @@ void ColourOutput::convert(std::span<const double> samples, std::span<double> ou
             c = spectral::toXyz(samples, s) * kWhiteEfficacy;
             break;
         case Primaries::kRgb:
-        case Primaries::kCustom:
             c = spectral::toRgb(samples, s);
             break;
+        case Primaries::kCustom: {
+            // RADIANCE 6 (rtrace.c putscolor): XYZ, then the primaries' RGB with a white
+            // balance, negative primaries pulled to the grey of the same luminance.
+            std::array<float, 8> p;
+            for (int i = 0; i < 8; ++i) p[size_t(i)] = float(custom_[size_t(i)]);
+            const std::array<float, 9> m = xyzToRgbWhiteBalanced(p);
+            const Color xyz = spectral::toXyz(samples, s);
+            const Color rgb{m[0] * xyz.r + m[1] * xyz.g + m[2] * xyz.b,
+                            m[3] * xyz.r + m[4] * xyz.g + m[5] * xyz.b,
+                            m[6] * xyz.r + m[7] * xyz.g + m[8] * xyz.b};
+            c = spectral::clipNegative(rgb, xyz.g);
+            break;
+        }
     }
     out[0] = c.r;
     out[1] = c.g;
@@ -100,6 +116,11 @@ std::string ColourOutput::headerLines(int perRecord, int otherValues) const {
         h += buf;
     } else if (primaries_ == Primaries::kXyz) {
         h += "PRIMARIES= 1.0000 0.0000 0.0000 1.0000 0.0000 0.0000 0.3333 0.3333\n";
+    } else if (primaries_ == Primaries::kCustom) {
+        std::snprintf(buf, sizeof buf, "PRIMARIES= %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f\n",
+                      custom_[0], custom_[1], custom_[2], custom_[3], custom_[4], custom_[5],
+                      custom_[6], custom_[7]);
+        h += buf;
     }
     return h;
 }

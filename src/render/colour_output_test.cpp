@@ -55,6 +55,25 @@ TEST(ColourOutput, OptionsCombineAsRadiance6s) {
     EXPECT_EQ(rgb.headerLines(2, 1), "NCOMP=7\n");
 }
 
+// -pc: the standard primaries are RGB; others keep white white (von Kries balance) and
+// name themselves in the header.
+TEST(ColourOutput, CustomPrimariesKeepWhite) {
+    ColourOutput standard;
+    standard.setCustomPrimaries(spectral::kStandardPrimaries);
+    standard.resolve(spectral::Sampling{});
+    EXPECT_TRUE(standard.identity());
+    ColourOutput srgb;
+    srgb.setCustomPrimaries({0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 0.3290});
+    srgb.resolve(spectral::Sampling{});
+    EXPECT_FALSE(srgb.identity());
+    for (double v : convert(srgb, {1, 1, 1})) EXPECT_NEAR(v, 1, 1e-3);
+    const std::vector<double> red = convert(srgb, {1, 0, 0});
+    EXPECT_GT(red[0], red[1]);
+    EXPECT_NE(srgb.headerLines(1, 0).find(
+                  "PRIMARIES= 0.6400 0.3300 0.3000 0.6000 0.1500 0.0600 0.3127 0.3290\n"),
+              std::string::npos);
+}
+
 TEST(SpectralPasses, MergeGathersEachPassesBands) {
     const spectral::Sampling s = spectral::makeSampling(7, 380, 780)->sampling;
     std::vector<RayResult> perPass(3);

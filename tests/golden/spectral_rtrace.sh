@@ -59,6 +59,18 @@ compare "-pXYZ" 0.02 << 'EOF'
 5.216759e+01 5.689359e+01 1.371103e+02
 6.716480e+01 6.047110e+01 3.830349e+01
 EOF
+# -pc: other primaries with a white balance (rtrace -h -ab 0 -cs 18 -pc .64 .33 .3 .6 .15
+# .06 .3127 .329), within the CIE observer's 2 % as -pXYZ; the cyan's red, near zero after
+# the conversion, only within 0.01 of the mean.
+run -h -ab 0 -cs 18 -pc .64 .33 .3 .6 .15 .06 .3127 .329 > "$tmp/out"
+awk '{ print $1, $2, $3 }' "$tmp/out" > "$tmp/pc"
+paste - "$tmp/pc" << 'EOF' | awk '{ for (i = 1; i <= 3; ++i) { d = $(i + 3) - $i; if (d < 0) d = -d
+        if (d > 0.02 * $i + 0.01) { printf "FAIL: -pc record %d value %d: %g, RADIANCE %g\n", NR, i, $(i + 3), $i; bad = 1 } } }
+        END { exit bad }' || fail=1
+5.496098e-01 2.603682e-01 1.308173e-01
+2.065703e-02 3.627394e-01 8.307788e-01
+5.122108e-01 2.952747e-01 1.980377e-01
+EOF
 # RADIANCE 6.1a's header for spectral output with another value (rtrace -ab 0 -cs 7
 # -cw 400 700 -co -ovL): NCOMP counts every value of a record.
 run -ab 0 -cs 7 -cw 400 700 -co -ovL | grep -E '^(NCOMP|WAVELENGTH_SPLITS|FORMAT)=' > "$tmp/h"
