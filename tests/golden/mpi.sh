@@ -50,6 +50,13 @@ for n in 1 2 3; do
         bad "$n ranks: precomputed contributions differ"
     cd .. && rm -rf r$n
 done
+# A spectral map set (mkpmap -cs 7: three files, one per pass of three bands), the same
+# files from 2 ranks.
+plain mkpmap -cs 7 -apg s.pm 20k -n 2 "$SCENE" 2> log || bad "mkpmap -cs 7: $(cat log)"
+mkdir rs && cd rs || exit 1
+mpi 2 mkpmap -cs 7 -apg s.pm 20k -n 2 "$SCENE" 2> log || bad "mpirun -n 2 mkpmap -cs 7: $(cat log)"
+for f in s.pm s.pm.3-5 s.pm.6-6; do cmp -s ../$f $f || bad "2 ranks: spectral map file $f differs"; done
+cd .. && rm -rf rs
 # And the same photons as one thread without MPI.
 plain mkpmap -apg g1.pm 40k -apc c1.pm 15k -apr 3 "$SCENE" 2> /dev/null
 [ "$(pixels g.pm)" = "$(pixels g1.pm)" ] || bad "global map differs from one thread's"
