@@ -35,6 +35,36 @@ std::string errorOf(std::vector<std::string> args) {
     return "";
 }
 
+// -cs -cw (RADIANCE 6): the sampling checked as RADIANCE's setspectrsamp, then one set of
+// options per pass of three bands, with the colours given as options in its bands and
+// its own ambient file.
+TEST(RenderOptions, SpectralPasses) {
+    RenderOptions o = parse({"-cs", "7", "-cw", "700", "400", "-av", "1", "2", "3", "-af", "x.amb",
+                             "-ap", "g.pm", "50"});
+    const spectral::Sampling s = spectralSampling(o);
+    EXPECT_EQ(s.n, 7);
+    EXPECT_EQ(s.wl, (std::array<double, 4>{700, 588, 480, 400}));
+    const std::vector<RenderOptions> passes = passOptions(o, s);
+    ASSERT_EQ(passes.size(), 3u);
+    // 7 bands of 300/7 nm from 700 nm: centres 678.6 635.7 592.9 | 550 507.1 | 464.3 421.4.
+    EXPECT_EQ(passes[0].ambient.value, (Color{1, 1, 1}));
+    EXPECT_EQ(passes[1].ambient.value, (Color{2, 2, 3}));
+    EXPECT_EQ(passes[2].ambient.value, (Color{3, 3, 3}));
+    EXPECT_EQ(passes[1].ambient.file, "x.amb.3-5");
+    EXPECT_EQ(passes[1].ambient.bands, "-cs 7 -cw 400 700 bands 3-5");
+    EXPECT_EQ(passes[2].photonMaps[0].pass.first, 6);
+    EXPECT_EQ(passes[2].direct.pass, passes[2].pass);
+    // RGB is one pass that changes nothing.
+    const RenderOptions rgb = parse({"-av", "1", "2", "3", "-af", "x.amb"});
+    const std::vector<RenderOptions> one = passOptions(rgb, spectralSampling(rgb));
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_EQ(one[0].ambient.value, (Color{1, 2, 3}));
+    EXPECT_EQ(one[0].ambient.file, "x.amb");
+    EXPECT_EQ(one[0].ambient.bands, "");
+    EXPECT_THROW(spectralSampling(parse({"-cs", "2"})), InputError);
+    EXPECT_THROW(spectralSampling(parse({"-cs", "9", "-cw", "500", "540"})), InputError);
+}
+
 TEST(RenderOptions, DirectSpecularLimits) {
     RenderOptions o = parse({"-dt", "0.1", "-dc", "0.9", "-dj", "0.5", "-ds", "0", "-dr", "3",
                              "-dp", "64",  "-ss", "2",   "-st", "0.5", "-lr", "8", "-lw", "1e-3"});
