@@ -13,6 +13,7 @@
 #include "image/picture.h"
 #include "image/tonemap.h"
 #include "render/rpict_tracer.h"
+#include "render/spectral_passes.h"
 #include "rvu/session_words.h"
 #include "util/error.h"
 
@@ -34,12 +35,33 @@ Session::~Session() = default;
 
 void Session::rebuildRenderer() {
     if (image_) image_->dropTracers();
+    otherContexts_.clear();
+    otherPasses_.clear();
     context_.reset();
     renderer_.reset();
-    renderer_ = std::make_unique<render::Renderer>(
-        *setup_.scene, *setup_.geometry, setup_.options.picture.render, setup_.searchPath);
+    // RADIANCE 6's -cs/-cw: passes of three bands, as rpict renders them.
+    sampling_ = render::spectralSampling(setup_.options.picture.render);
+    const std::vector<render::RenderOptions> passes =
+        render::passOptions(setup_.options.picture.render, sampling_);
+    renderer_ = std::make_unique<render::Renderer>(*setup_.scene, *setup_.geometry, passes[0],
+                                                   setup_.searchPath);
     context_ = renderer_->makeContext();
+    for (size_t p = 1; p < passes.size(); ++p) {
+        otherPasses_.push_back(std::make_unique<render::Renderer>(*setup_.scene, *setup_.geometry,
+                                                                  passes[p], setup_.searchPath));
+        otherContexts_.push_back(otherPasses_.back()->makeContext());
+    }
     newParams_ = false;
+}
+
+render::RayResult Session::traceAllPasses(const Vec3& org, const Vec3& dir, double maxDistance) {
+    render::RayResult first = renderer_->trace(*context_, org, dir, 0, nullptr, maxDistance);
+    if (otherPasses_.empty()) return first;
+    std::vector<render::RayResult> all{first};
+    for (size_t p = 0; p < otherPasses_.size(); ++p)
+        all.push_back(
+            otherPasses_[p]->trace(*otherContexts_[p], org, dir, 0, nullptr, maxDistance));
+    return render::mergePasses(all, sampling_);
 }
 
 void Session::restartImage() {
@@ -56,8 +78,14 @@ void Session::restartImage() {
 
 bool Session::refine(const std::function<bool()>& interrupted,
                      const std::function<void()>& progress) {
-    return image_->refineLevel(std::max(1, setup_.options.picture.render.threads),
-                               render::rendererPixelTracers(*renderer_), interrupted, progress);
+    render::PixelTracerFactory tracers = render::rendererPixelTracers(*renderer_);
+    if (!otherPasses_.empty()) {
+        std::vector<render::PixelTracerFactory> passes{tracers};
+        for (const auto& r : otherPasses_) passes.push_back(render::rendererPixelTracers(*r));
+        tracers = render::pixelTracersOverPasses(std::move(passes), sampling_);
+    }
+    return image_->refineLevel(std::max(1, setup_.options.picture.render.threads), tracers,
+                               interrupted, progress);
 }
 
 std::string Session::status() const {

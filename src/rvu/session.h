@@ -17,6 +17,7 @@
 #include "rvu/progressive.h"
 #include "rvu/rvu_options.h"
 #include "scene/primitive.h"
+#include "util/spectrum.h"
 
 namespace rp::rvu {
 
@@ -106,9 +107,17 @@ private:
     void rebuildRenderer();
     std::string pictureHeaderLine() const;
 
+    // The ray traced in every pass of a spectral sampling (-cs above 3), gathered.
+    render::RayResult traceAllPasses(const Vec3& org, const Vec3& dir, double maxDistance);
+
     SessionSetup setup_;
+    // The first pass's renderer (picks and geometry), and with -cs above 3 those of the
+    // others (render/spectral_passes.h): each with its context for this thread.
     std::unique_ptr<render::Renderer> renderer_;
     render::Renderer::ContextPtr context_;  // for picks and trace, on this thread
+    std::vector<std::unique_ptr<render::Renderer>> otherPasses_;
+    std::vector<render::Renderer::ContextPtr> otherContexts_;
+    spectral::Sampling sampling_;
     View view_;
     std::optional<View> oldView_;
     double exposure_;

@@ -183,7 +183,7 @@ CommandResult Session::trace(const std::string& args, const std::vector<Cursor>&
         const Vec3 dir{number(words[3], "direction"), number(words[4], "direction"),
                        number(words[5], "direction")};
         if (length(dir) == 0) return failure("zero ray direction");
-        hit = renderer_->trace(*context_, org, normalize(dir), 0);
+        hit = traceAllPasses(org, normalize(dir), HUGE_VAL);
     } else if (!words.empty()) {
         return failure("trace: expected xbeg ybeg zbeg xdir ydir zdir");
     } else if (cursor.empty()) {
@@ -193,8 +193,8 @@ CommandResult Session::trace(const std::string& args, const std::vector<Cursor>&
         auto ray = ViewRays(image_->view())
                        .ray((c.x + 0.5) / image_->width(), (c.y + 0.5) / image_->height());
         if (!ray) return failure("not on image");
-        hit = renderer_->trace(*context_, ray->origin, ray->direction, 0, nullptr,
-                               ray->maxDistance > 0 ? ray->maxDistance : HUGE_VAL);
+        hit = traceAllPasses(ray->origin, ray->direction,
+                             ray->maxDistance > 0 ? ray->maxDistance : HUGE_VAL);
     }
     if (!hit->hit) return success("ray hit nothing");
     // RADIANCE compat (rv2.c traceray): what was hit, where, and the value.
