@@ -86,17 +86,11 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp:
     // RADIANCE 6's -cs/-cw: more than three samples are rendered in passes of three, each
     // pixel sample turned into RGB from all of them.
     const rp::spectral::Sampling sampling = spectralSampling(o.render);
-    std::vector<std::unique_ptr<Renderer>> renderers;
-    std::vector<PixelTracerFactory> passTracers;
-    for (const RenderOptions& po : passOptions(o.render, sampling)) {
-        renderers.push_back(std::make_unique<Renderer>(
-            scene, geometry, po, rp::calc::defaultSearchPath(rp::projectLibDir())));
-        passTracers.push_back(rendererPixelTracers(*renderers.back()));
-    }
+    const PassRenderers renderers = passRenderers(scene, geometry, o.render, sampling,
+                                                  rp::calc::defaultSearchPath(rp::projectLibDir()));
     const bool spectral = renderers.size() > 1;
     const Renderer& renderer = *renderers[0];
-    const PixelTracerFactory tracers =
-        spectral ? pixelTracersOverPasses(passTracers, sampling) : passTracers[0];
+    const PixelTracerFactory tracers = passPixelTracers(renderers, sampling);
     auto raysTraced = [&] {
         long n = 0;
         for (const auto& r : renderers) n += r->raysTraced();

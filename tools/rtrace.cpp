@@ -65,20 +65,17 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     // exponent (a hyperspectral picture), never one channel.
     if (o.outputFormat == 'c' && colours.components() < 3)
         throw rp::InputError("color format incompatible with -pY, -pS, -pM");
-    const std::vector<RenderOptions> passes = passOptions(o.render, sampling);
-    if (passes.size() > 1 && spec.wantsTree())
+    if (!sampling.isRgb() && spec.wantsTree())
         throw rp::InputError("ray tree output with -cs above 3 is not supported yet");
     rp::Scene scene = rp::loadScene({o.sceneFile}, rp::gen::builtinLoadOptions());
     rp::SceneGeometry geometry(scene);
-    std::vector<std::unique_ptr<Renderer>> renderers;
+    const PassRenderers renderers = passRenderers(scene, geometry, o.render, sampling,
+                                                  rp::calc::defaultSearchPath(rp::projectLibDir()));
     std::vector<std::unique_ptr<RendererTracer>> tracers;
     std::vector<RayTraceFn> traceFns;
-    for (const RenderOptions& po : passes) {
-        renderers.push_back(std::make_unique<Renderer>(
-            scene, geometry, po, rp::calc::defaultSearchPath(rp::projectLibDir())));
+    for (const auto& r : renderers) {
         // rtrace -I: the input origin is a surface point and the direction its normal.
-        tracers.push_back(
-            std::make_unique<RendererTracer>(*renderers.back(), o.immediateIrradiance));
+        tracers.push_back(std::make_unique<RendererTracer>(*r, o.immediateIrradiance));
         traceFns.push_back(tracers.back()->trace());
     }
     const RayTraceFn trace =

@@ -17,6 +17,7 @@
 #include "render/rcontrib_run.h"
 #include "render/renderer.h"
 #include "render/rtrace_tracer.h"
+#include "render/spectral_passes.h"
 #include "scene/scene_load.h"
 #include "util/header.h"
 #include "util/paths.h"
@@ -67,10 +68,8 @@ void runRcontribTool(const RcontribOptions& options, const RcontribScene& sceneI
     // RADIANCE 6's -cs/-cw: more than three samples are traced in passes of three bands,
     // every pass's bins side by side in one record (ContribOutput::writeRecord).
     const spectral::Sampling sampling = spectralSampling(o.render);
-    std::vector<std::unique_ptr<Renderer>> renderers;
-    for (const RenderOptions& po : passOptions(o.render, sampling))
-        renderers.push_back(std::make_unique<Renderer>(scene, geometry, po,
-                                                       calc::defaultSearchPath(projectLibDir())));
+    const PassRenderers renderers = passRenderers(scene, geometry, o.render, sampling,
+                                                  calc::defaultSearchPath(projectLibDir()));
     const Renderer& renderer = *renderers[0];
     // RADIANCE compat (raytrace.c raycontrib): coefficients leave participating media out.
     if (o.render.mist.any() || material::sceneHasMist(scene))

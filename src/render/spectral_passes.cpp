@@ -3,6 +3,7 @@
 
 #include <memory>
 
+#include "render/rpict_tracer.h"
 #include "util/error.h"
 
 namespace rp::render {
@@ -65,6 +66,22 @@ PixelTracerFactory pixelTracersOverPasses(std::vector<PixelTracerFactory> passes
             return spectral::toRgb(std::span<const double>(samples, size_t(s.n)), s);
         });
     };
+}
+
+PassRenderers passRenderers(const Scene& scene, const SceneGeometry& geometry,
+                            const RenderOptions& options, const spectral::Sampling& sampling,
+                            const std::vector<std::string>& searchPath) {
+    PassRenderers out;
+    for (const RenderOptions& pass : passOptions(options, sampling))
+        out.push_back(std::make_unique<Renderer>(scene, geometry, pass, searchPath));
+    return out;
+}
+
+PixelTracerFactory passPixelTracers(const PassRenderers& renderers,
+                                    const spectral::Sampling& sampling) {
+    std::vector<PixelTracerFactory> each;
+    for (const auto& r : renderers) each.push_back(rendererPixelTracers(*r));
+    return each.size() == 1 ? each[0] : pixelTracersOverPasses(std::move(each), sampling);
 }
 
 }  // namespace rp::render

@@ -3,7 +3,9 @@
 // into one, the samples of every colour (v, W, r, x) in band order.
 #pragma once
 
+#include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "render/renderer.h"
@@ -22,6 +24,17 @@ RayResult mergePasses(std::span<const RayResult> perPass, const spectral::Sampli
 // A RayTraceFn that traces each ray in every pass and merges the results. Ray trees
 // (rtrace -o...t) are not gathered: callers ask for none.
 RayTraceFn tracePasses(std::vector<RayTraceFn> passes, const spectral::Sampling& s);
+
+// One renderer per pass of `sampling` (passOptions), over one scene and its geometry: the
+// tools' single way of setting up a rendering, RGB included (one pass).
+using PassRenderers = std::vector<std::unique_ptr<Renderer>>;
+PassRenderers passRenderers(const Scene& scene, const SceneGeometry& geometry,
+                            const RenderOptions& options, const spectral::Sampling& sampling,
+                            const std::vector<std::string>& searchPath);
+// rpict's and rvu's pixel tracers for them: the one pass's, or every pass's gathered
+// (pixelTracersOverPasses).
+PixelTracerFactory passPixelTracers(const PassRenderers& renderers,
+                                    const spectral::Sampling& sampling);
 
 // rpict's pixel tracers over every pass: each sample is traced in every pass and turned
 // into RADIANCE RGB (spectral::toRgb), so the picture and its adaptive sampling see the

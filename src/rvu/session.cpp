@@ -35,33 +35,21 @@ Session::~Session() = default;
 
 void Session::rebuildRenderer() {
     if (image_) image_->dropTracers();
-    otherContexts_.clear();
-    otherPasses_.clear();
-    context_.reset();
-    renderer_.reset();
+    contexts_.clear();
+    passes_.clear();
     // RADIANCE 6's -cs/-cw: passes of three bands, as rpict renders them.
     sampling_ = render::spectralSampling(setup_.options.picture.render);
-    const std::vector<render::RenderOptions> passes =
-        render::passOptions(setup_.options.picture.render, sampling_);
-    renderer_ = std::make_unique<render::Renderer>(*setup_.scene, *setup_.geometry, passes[0],
-                                                   setup_.searchPath);
-    context_ = renderer_->makeContext();
-    for (size_t p = 1; p < passes.size(); ++p) {
-        otherPasses_.push_back(std::make_unique<render::Renderer>(*setup_.scene, *setup_.geometry,
-                                                                  passes[p], setup_.searchPath));
-        otherContexts_.push_back(otherPasses_.back()->makeContext());
-    }
+    passes_ = render::passRenderers(*setup_.scene, *setup_.geometry, setup_.options.picture.render,
+                                    sampling_, setup_.searchPath);
+    for (const auto& r : passes_) contexts_.push_back(r->makeContext());
     newParams_ = false;
 }
 
 render::RayResult Session::traceAllPasses(const Vec3& org, const Vec3& dir, double maxDistance) {
-    render::RayResult first = renderer_->trace(*context_, org, dir, 0, nullptr, maxDistance);
-    if (otherPasses_.empty()) return first;
-    std::vector<render::RayResult> all{first};
-    for (size_t p = 0; p < otherPasses_.size(); ++p)
-        all.push_back(
-            otherPasses_[p]->trace(*otherContexts_[p], org, dir, 0, nullptr, maxDistance));
-    return render::mergePasses(all, sampling_);
+    std::vector<render::RayResult> all;
+    for (size_t p = 0; p < passes_.size(); ++p)
+        all.push_back(passes_[p]->trace(*contexts_[p], org, dir, 0, nullptr, maxDistance));
+    return all.size() == 1 ? all[0] : render::mergePasses(all, sampling_);
 }
 
 void Session::restartImage() {
@@ -78,12 +66,7 @@ void Session::restartImage() {
 
 bool Session::refine(const std::function<bool()>& interrupted,
                      const std::function<void()>& progress) {
-    render::PixelTracerFactory tracers = render::rendererPixelTracers(*renderer_);
-    if (!otherPasses_.empty()) {
-        std::vector<render::PixelTracerFactory> passes{tracers};
-        for (const auto& r : otherPasses_) passes.push_back(render::rendererPixelTracers(*r));
-        tracers = render::pixelTracersOverPasses(std::move(passes), sampling_);
-    }
+    const render::PixelTracerFactory tracers = render::passPixelTracers(passes_, sampling_);
     return image_->refineLevel(std::max(1, setup_.options.picture.render.threads), tracers,
                                interrupted, progress);
 }

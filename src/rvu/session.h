@@ -14,6 +14,7 @@
 
 #include "geometry/scene_geometry.h"
 #include "render/renderer.h"
+#include "render/spectral_passes.h"
 #include "rvu/progressive.h"
 #include "rvu/rvu_options.h"
 #include "scene/primitive.h"
@@ -111,12 +112,10 @@ private:
     render::RayResult traceAllPasses(const Vec3& org, const Vec3& dir, double maxDistance);
 
     SessionSetup setup_;
-    // The first pass's renderer (picks and geometry), and with -cs above 3 those of the
-    // others (render/spectral_passes.h): each with its context for this thread.
-    std::unique_ptr<render::Renderer> renderer_;
-    render::Renderer::ContextPtr context_;  // for picks and trace, on this thread
-    std::vector<std::unique_ptr<render::Renderer>> otherPasses_;
-    std::vector<render::Renderer::ContextPtr> otherContexts_;
+    // One renderer per pass (one for RGB; render/spectral_passes.h), each with its context
+    // for this thread; the first also serves picks and geometry.
+    render::PassRenderers passes_;
+    std::vector<render::Renderer::ContextPtr> contexts_;
     spectral::Sampling sampling_;
     View view_;
     std::optional<View> oldView_;

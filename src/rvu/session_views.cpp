@@ -52,7 +52,7 @@ std::optional<render::RayResult> Session::pickSurface(const Cursor& c, CommandRe
     // remembered and passed, the first solid surface taken.
     for (int step = 0; step < 64; ++step) {
         render::RayResult r =
-            renderer_->trace(*context_, org, ray->direction, 0, nullptr, aft - travelled);
+            passes_[0]->trace(*contexts_[0], org, ray->direction, 0, nullptr, aft - travelled);
         if (!r.hit) break;
         const bool invisible = r.material < 0;  // void: nothing to see
         const bool through =
