@@ -88,7 +88,6 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp:
     const rp::spectral::Sampling sampling = spectralSampling(o.render);
     const PassRenderers renderers = passRenderers(scene, geometry, o.render, sampling,
                                                   rp::calc::defaultSearchPath(rp::projectLibDir()));
-    const bool spectral = renderers.size() > 1;
     const Renderer& renderer = *renderers[0];
     const PixelTracerFactory tracers = passPixelTracers(renderers, sampling);
     auto raysTraced = [&] {
@@ -114,9 +113,11 @@ int run(int argc, char** argv, std::ostream*& diag, std::ofstream& diagFile, rp:
     io.out = &std::cout;
     io.commandLine = commandLine;
     // RADIANCE compat (rpict.c render, -dv): sources too small for the pixel rays.
-    // (Rendering a spectrum, the sources are drawn in RGB: not yet.)
-    if (!spectral)
-        io.finishRows = [&](const RpictOptions& frame) { return bittySourcePass(renderer, frame); };
+    std::vector<const Renderer*> passes;
+    for (const auto& r : renderers) passes.push_back(r.get());
+    io.finishRows = [&](const RpictOptions& frame) {
+        return bittySourcePass(passes, sampling, frame);
+    };
     io.frameStarted = [&](int frame, const rp::View& view) {
         // RADIANCE compat (rpict.c): with -t, each frame is announced with its view.
         if (o.reportInterval > 0)

@@ -316,20 +316,48 @@ void drawBittySources(const std::vector<BittySource>& sources, const ViewRays& r
 }
 
 RowsPass bittySourcePass(const Renderer& renderer, const RpictOptions& frame) {
-    if (!renderer.options().direct.visibility) return {};  // -dv-: sources are not seen
+    const Renderer* one[1] = {&renderer};
+    return bittySourcePass(one, spectral::Sampling{}, frame);
+}
+
+RowsPass bittySourcePass(std::span<const Renderer* const> passes,
+                         const spectral::Sampling& sampling, const RpictOptions& frame) {
+    const Renderer& first = *passes[0];
+    if (!first.options().direct.visibility) return {};  // -dv-: sources are not seen
     auto rays = std::make_shared<const ViewRays>(frame.view);
     const PictureSize size = pictureSize(frame);
     auto sources = std::make_shared<const std::vector<BittySource>>(
-        findBittySources(renderer.directSources(), renderer.scene(), renderer.geometry().shapes(),
-                         *rays, size.xres, size.yres, frame.sampleSpacing));
+        findBittySources(first.directSources(), first.scene(), first.geometry().shapes(), *rays,
+                         size.xres, size.yres, frame.sampleSpacing));
     if (sources->empty()) return {};
-    // One context: the pass runs on the thread that hands rows over, one call at a time.
-    std::shared_ptr<Renderer::Context> ctx(renderer.makeContext().release(),
-                                           Renderer::ContextDeleter{});
-    const Renderer* r = &renderer;
-    SourceRayValue value = [r, ctx](size_t source, const ViewRays::Ray& ray, uint64_t index,
-                                    double* distance) {
-        return r->traceToSource(*ctx, source, ray.origin, ray.direction, index, distance);
+    // One context a pass: the pass runs on the thread that hands rows over, one call at a
+    // time.
+    std::vector<std::shared_ptr<Renderer::Context>> contexts;
+    for (const Renderer* r : passes)
+        contexts.emplace_back(r->makeContext().release(), Renderer::ContextDeleter{});
+    std::vector<const Renderer*> renderers(passes.begin(), passes.end());
+    SourceRayValue value = [renderers, contexts, sampling](size_t source, const ViewRays::Ray& ray,
+                                                           uint64_t index, double* distance) {
+        const Color c0 = renderers[0]->traceToSource(*contexts[0], source, ray.origin,
+                                                     ray.direction, index, distance);
+        if (renderers.size() == 1) return c0;
+        // The same source in each pass's list, found by its surface.
+        const int32_t prim = renderers[0]->directSources().sources[source].light.prim;
+        const std::vector<spectral::Pass> bands = spectral::passesOf(sampling);
+        double samples[spectral::kMaxSamples] = {};
+        for (size_t p = 0; p < renderers.size(); ++p) {
+            Color c = c0;
+            if (p > 0) {
+                const int32_t s = renderers[p]->directSources().sourceOfPrim[size_t(prim)];
+                double ignored = 0;
+                c = s < 0 ? Color{}
+                          : renderers[p]->traceToSource(*contexts[p], size_t(s), ray.origin,
+                                                        ray.direction, index, &ignored);
+            }
+            for (int j = 0; j < 3 && bands[p].first + j < sampling.n; ++j)
+                samples[bands[p].first + j] = c[j];
+        }
+        return spectral::toRgb(std::span<const double>(samples, size_t(sampling.n)), sampling);
     };
     return [rays, sources, value](Picture& pic, std::vector<float>* depth, int begin, int end) {
         drawBittySources(*sources, *rays, pic, depth, begin, end, value);

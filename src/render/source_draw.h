@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "image/picture.h"
@@ -16,6 +17,7 @@
 #include "render/rpict.h"
 #include "render/source_list.h"
 #include "util/color.h"
+#include "util/spectrum.h"
 
 namespace rp::render {
 
@@ -81,5 +83,10 @@ void drawBittySources(const std::vector<BittySource>& sources, const ViewRays& r
 // The RenderRows::finish of an rpict frame rendered with `renderer` (`frame`: its view and
 // size): draws its bitty sources. Empty with -dv- or when there are none.
 RowsPass bittySourcePass(const Renderer& renderer, const RpictOptions& frame);
+// The same for a frame rendered in spectral passes (render/spectral_passes.h): each
+// source's value is the RGB of its bands from every pass (a pass in which the source has
+// no light has no such source: zero there).
+RowsPass bittySourcePass(std::span<const Renderer* const> passes,
+                         const spectral::Sampling& sampling, const RpictOptions& frame);
 
 }  // namespace rp::render
