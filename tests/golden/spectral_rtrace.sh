@@ -86,6 +86,24 @@ V="-vtv -vp 0.5 0.5 5 -vd 0 0 -1 -vu 0 1 0 -vh 20 -vv 20"
     "$BIN/pvalue" -h -H -d "$tmp/p.hdr" > "$tmp/pic" || { echo "FAIL: rpict -cs 18"; fail=1; }
 "$BIN/vwrays" -ff $V -x 4 -y 4 | "$BIN/rtrace" -ffa -h -ab 0 -cs 18 "$tmp/s.oct" 2> /dev/null > "$tmp/out"
 compare "rpict -cs 18 against rtrace" 0.01 < "$tmp/pic"
+# rpict draws sources smaller than a pixel with the RGB of their bands: a 5 mm spectral
+# lamp 1.8 m away at -cs 9, the brightest pixel within 5 % of RADIANCE 6.1a's
+# (rpict -vp 0 -3 1.5 -vd 0 1 0.5 -vu 0 0 1 -vh 40 -vv 40 -x 64 -y 64 -ab 0 -cs 9:
+# 64.25 45.75 23.25); the pixel rays alone miss it.
+cat > "$tmp/lamp.rad" << 'EOF'
+void spectrum warm 0 0 7 380 780 .2 .5 .9 1.2 1.4
+warm light lamp 0 0 3 5000 5000 5000
+lamp sphere bulb 0 0 4 0 0 3 0.005
+void plastic grey 0 0 5 .5 .5 .5 0 0
+grey polygon fl 0 0 12 -5 -5 0  5 -5 0  5 5 0  -5 5 0
+EOF
+"$BIN/oconv" "$tmp/lamp.rad" > "$tmp/lamp.oct" &&
+    "$BIN/rpict" -vp 0 -3 1.5 -vd 0 1 0.5 -vu 0 0 1 -vh 40 -vv 40 -x 64 -y 64 -ab 0 -cs 9 \
+        "$tmp/lamp.oct" 2> /dev/null > "$tmp/lamp.hdr" || { echo "FAIL: rpict -cs 9 lamp"; fail=1; }
+"$BIN/pvalue" -h -H -d "$tmp/lamp.hdr" | sort -g | tail -1 |
+    awk '{ split("64.25 45.75 23.25", r, " "); for (i = 1; i <= 3; ++i) { d = $i / r[i] - 1
+           if (d > 0.05 || d < -0.05) { printf "FAIL: bitty source pixel %s %s %s\n", $1, $2, $3; exit 1 } } }' ||
+    fail=1
 # Sampling RADIANCE rejects, and outputs that cannot be pictures: one line, exit 1.
 for bad in "-cs 2" "-cs 9 -cw 500 540" "-cs 9 -pY -fac"; do
     if run -h -ab 0 $bad > /dev/null; then echo "FAIL: rtrace $bad succeeded"; fail=1; fi
