@@ -120,8 +120,9 @@ Color SurfaceChainEvaluator::Impl::specFunc(const ChainRecord& r) {
     if (!(lo < hi)) return {1, 1, 1};  // outside the working range: no effect
     const double step =
         std::max((hi - lo) / spectral::kMaxSamples, 0.25 / s.n * (s.wl[0] - s.wl[3]));
-    const int n = static_cast<int>((hi - lo) / step + .1);
-    std::vector<double> samples(static_cast<size_t>(n));
+    const int n = std::min(static_cast<int>((hi - lo) / step + .1), spectral::kMaxSamples);
+    double buf[spectral::kMaxSamples];
+    const std::span<double> samples(buf, size_t(n));
     double wl = hi - 0.5 * step;
     for (int i = n; i-- > 0; wl -= step)
         samples[size_t(i)] = call1(r.funcs[0], wl + 0.9 * (0.5 - rng->uniform()) * step);
@@ -163,7 +164,8 @@ Color SurfaceChainEvaluator::Impl::specData(const ChainRecord& r) {
 Color SurfaceChainEvaluator::Impl::specPict(const ChainRecord& r) {
     const PictTable& pict = *r.pict;
     const spectral::Sampling& ps = pict.sampling();
-    std::vector<double> samples(size_t(ps.n));
+    double buf[spectral::kMaxSamples];  // a spectral picture has at most kMaxSamples
+    const std::span<double> samples(buf, size_t(ps.n));
     pict.values(expr(r, 0), expr(r, 1), samples);
     for (int i = 0; i < ps.n; ++i) {
         const double args[2] = {samples[size_t(i)], ps.centre(i)};

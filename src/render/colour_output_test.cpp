@@ -81,7 +81,7 @@ TEST(SpectralPasses, MergeGathersEachPassesBands) {
         perPass[size_t(p)].value = {10.0 * p, 10.0 * p + 1, 10.0 * p + 2};
         perPass[size_t(p)].distance = p == 0 ? 4 : 5;
     }
-    const RayResult r = mergePasses(perPass, s);
+    const RayResult r = mergePasses(perPass, spectral::passesOf(s));
     ASSERT_TRUE(r.samples);
     EXPECT_EQ(r.samples->value, (std::vector<double>{0, 1, 2, 10, 11, 12, 20}));
     EXPECT_EQ(r.distance, 4);  // geometry from the first pass

@@ -110,6 +110,7 @@ ContribOutput::ContribOutput(const RcontribOptions& o, std::vector<std::string> 
                                        o.render.wavelengthB)
                     .value_or(spectral::SamplingChoice{})
                     .sampling) {  // checked (and warned about) by the tool
+    passes_ = spectral::passesOf(sampling_);
     if (!sampling_.isRgb() && o.outputFormat == 'c')
         throw InputError("-fc with -cs above 3 is not supported yet");
     if (!sampling_.isRgb() && o.recover)
@@ -322,7 +323,7 @@ bool ContribOutput::readValue(std::istream& in, Color& v) const {
 void ContribOutput::writeRecord(const std::vector<Color>& values, double scale, bool flush) {
     size_t bins = 0;
     for (const auto& m : streamOf_) bins += m.size();
-    const std::vector<spectral::Pass> passes = spectral::passesOf(sampling_);
+    const std::vector<spectral::Pass>& passes = passes_;
     RP_CHECK(values.size() == bins * passes.size());
     size_t k = 0;
     double v[spectral::kMaxSamples];

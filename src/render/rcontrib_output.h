@@ -70,6 +70,7 @@ private:
     std::vector<std::vector<size_t>> streamOf_;  // [modifier][bin] -> streams_ index
     std::vector<int> binNumber_;                 // first bin number per modifier (bin0)
     spectral::Sampling sampling_;                // -cs -cw
+    std::vector<spectral::Pass> passes_;         // of sampling_: how a record's values lie
 };
 
 // "name", or the spec with the modifier's name and bin number put in; false for a spec

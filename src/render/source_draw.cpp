@@ -336,14 +336,14 @@ RowsPass bittySourcePass(std::span<const Renderer* const> passes,
     for (const Renderer* r : passes)
         contexts.emplace_back(r->makeContext().release(), Renderer::ContextDeleter{});
     std::vector<const Renderer*> renderers(passes.begin(), passes.end());
-    SourceRayValue value = [renderers, contexts, sampling](size_t source, const ViewRays::Ray& ray,
-                                                           uint64_t index, double* distance) {
+    SourceRayValue value = [renderers, contexts, sampling, bands = spectral::passesOf(sampling)](
+                               size_t source, const ViewRays::Ray& ray, uint64_t index,
+                               double* distance) {
         const Color c0 = renderers[0]->traceToSource(*contexts[0], source, ray.origin,
                                                      ray.direction, index, distance);
         if (renderers.size() == 1) return c0;
         // The same source in each pass's list, found by its surface.
         const int32_t prim = renderers[0]->directSources().sources[source].light.prim;
-        const std::vector<spectral::Pass> bands = spectral::passesOf(sampling);
         double samples[spectral::kMaxSamples] = {};
         for (size_t p = 0; p < renderers.size(); ++p) {
             Color c = c0;

@@ -8,9 +8,9 @@
 
 namespace rp::render {
 
-RayResult mergePasses(std::span<const RayResult> perPass, const spectral::Sampling& s) {
-    const std::vector<spectral::Pass> passes = spectral::passesOf(s);
+RayResult mergePasses(std::span<const RayResult> perPass, std::span<const spectral::Pass> passes) {
     RP_CHECK(perPass.size() == passes.size() && !perPass.empty());
+    const spectral::Sampling& s = passes[0].sampling;
     auto samples = std::make_shared<RayResult::Samples>();
     for (auto* v :
          {&samples->value, &samples->coefficient, &samples->mirrored, &samples->unmirrored})
@@ -36,13 +36,14 @@ RayResult mergePasses(std::span<const RayResult> perPass, const spectral::Sampli
 }
 
 RayTraceFn tracePasses(std::vector<RayTraceFn> passes, const spectral::Sampling& s) {
-    return [passes = std::move(passes), s](const Vec3& origin, const Vec3& dir, uint64_t index,
-                                           std::vector<TracedRay>*, double maxDistance) {
+    return [passes = std::move(passes), bands = spectral::passesOf(s)](
+               const Vec3& origin, const Vec3& dir, uint64_t index, std::vector<TracedRay>*,
+               double maxDistance) {
         std::vector<RayResult> results;
         results.reserve(passes.size());
         for (const RayTraceFn& trace : passes)
             results.push_back(trace(origin, dir, index, nullptr, maxDistance));
-        return mergePasses(results, s);
+        return mergePasses(results, bands);
     };
 }
 

@@ -15,11 +15,11 @@
 
 namespace rp::render {
 
-// One ray's results from every pass of `s` (spectral::passesOf order): the first pass's
-// result, with the samples of all filled in. Geometry (hits, distances, names) is the
-// same in every pass; where sampling made it differ (a ray tree), the first pass's is
-// kept.
-RayResult mergePasses(std::span<const RayResult> perPass, const spectral::Sampling& s);
+// One ray's results from every pass (`passes`: spectral::passesOf of the sampling): the
+// first pass's result, with the samples of all filled in. Geometry (hits, distances,
+// names) is the same in every pass; where sampling made it differ (a ray tree), the first
+// pass's is kept.
+RayResult mergePasses(std::span<const RayResult> perPass, std::span<const spectral::Pass> passes);
 
 // A RayTraceFn that traces each ray in every pass and merges the results. Ray trees
 // (rtrace -o...t) are not gathered: callers ask for none.

@@ -49,7 +49,7 @@ render::RayResult Session::traceAllPasses(const Vec3& org, const Vec3& dir, doub
     std::vector<render::RayResult> all;
     for (size_t p = 0; p < passes_.size(); ++p)
         all.push_back(passes_[p]->trace(*contexts_[p], org, dir, 0, nullptr, maxDistance));
-    return all.size() == 1 ? all[0] : render::mergePasses(all, sampling_);
+    return all.size() == 1 ? all[0] : render::mergePasses(all, spectral::passesOf(sampling_));
 }
 
 void Session::restartImage() {
