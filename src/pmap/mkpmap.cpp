@@ -194,20 +194,21 @@ void saveMaps(const MkpmapOptions& o, std::array<MapPhotons, kNumPhotonMapTypes>
 
 // The scene and what emits into it: sources and ports, pattern chains (gensky's skyfunc,
 // luminaire data), BRTDfunc's expressions, and the emission plan, made in RADIANCE's
-// order (so a scene with several faults names the same one first). Built in place: the
-// geometry, the chains and the plan refer to the scene.
+// order (so a scene with several faults names the same one first), for one rendering
+// pass (its colours) of a scene loaded once. Built in place: the chains and the plan refer
+// to the scene and its geometry.
 struct EmittingScene {
-    Scene scene;
-    SceneGeometry geometry;
+    const Scene& scene;
+    const SceneGeometry& geometry;
     std::optional<material::SurfaceChains> chains;
     // BRTDfunc's specular expressions at photon hits (pmapmat.c brdfPhotonScatter).
     std::optional<material::MaterialCalc> functions;
     light::EmissionOptions emission;
     std::optional<light::EmissionPlan> plan;
 
-    EmittingScene(const MkpmapOptions& o, const LoadOptions& load,
+    EmittingScene(const MkpmapOptions& o, const Scene& s, const SceneGeometry& g,
                   const PortExteriorFactory& exterior, const spectral::Pass& pass)
-        : scene(loadCheckedScene(o, load)), geometry(scene) {
+        : scene(s), geometry(g) {
         light::LightSearchOptions search;
         search.pass = pass;
         std::vector<light::LightSource> sources = light::findLightSources(scene, geometry, search);
@@ -233,13 +234,13 @@ struct EmittingScene {
         arena.execute([&] { plan.emplace(geometry, std::move(sources), emission); });
         functions.emplace(scene, calc::defaultSearchPath(projectLibDir()), pass);
     }
-
-    static Scene loadCheckedScene(const MkpmapOptions& o, const LoadOptions& load) {
-        Scene s = loadScene(o.sceneFiles, load);
-        checkVolumeMedium(o, s);
-        return s;
-    }
 };
+
+Scene loadCheckedScene(const MkpmapOptions& o, const LoadOptions& load) {
+    Scene s = loadScene(o.sceneFiles, load);
+    checkVolumeMedium(o, s);
+    return s;
+}
 
 // What the distribution leaves: the photons of every map but a contribution map, which
 // has its own (in memory, with its primaries).
@@ -412,18 +413,15 @@ void printSummary(const MkpmapOptions& o, const MkpmapReport& report, size_t pas
     diag << line << std::flush;
 }
 
-}  // namespace
-
-namespace {
-
 // The maps of one rendering pass (all of them for RGB).
 void runPass(const MkpmapOptions& o, const std::string& commandLine, std::ostream& diag,
-             const LoadOptions& load, Cluster* cluster, const PortExteriorFactory& exterior,
-             const spectral::Pass& pass, MkpmapReport& report) {
+             const Scene& scene, const SceneGeometry& geometry, Cluster* cluster,
+             const PortExteriorFactory& exterior, const spectral::Pass& pass,
+             MkpmapReport& report) {
     MkpmapOptions po = o;
     po.trace.medium.extinction = pass.ofRgb(o.trace.medium.extinction);
     po.trace.medium.albedo = pass.ofRgb(o.trace.medium.albedo);
-    EmittingScene es(po, load, exterior, pass);
+    EmittingScene es(po, scene, geometry, exterior, pass);
     // Photons in memory, all maps together (mkpmap -aC); the rest goes to temporary files.
     MemoryBudget budget(po.memoryPhotons * sizeof(Photon));
     const auto t0 = Clock::now();
@@ -461,9 +459,12 @@ MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandL
     // The tracer's settings as parsed; which maps it fills follows from the requests.
     for (size_t t = 0; t < o.maps.size(); ++t) o.trace.maps[t] = o.maps[t].has_value();
     MkpmapReport report;
-    // A spectral map set: the passes one after another, each its own files (photon_map.h).
+    const Scene scene = loadCheckedScene(o, load);
+    const SceneGeometry geometry(scene);
+    // A spectral map set: the passes one after another over the one scene, each its own
+    // files (photon_map.h).
     for (const spectral::Pass& pass : passes)
-        runPass(o, commandLine, diag, load, cluster, exterior, pass, report);
+        runPass(o, commandLine, diag, scene, geometry, cluster, exterior, pass, report);
     if (cluster && !cluster->isRoot()) return report;
     printSummary(o, report, passes.size(), diag);
     return report;
