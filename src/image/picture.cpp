@@ -18,6 +18,10 @@ namespace {
 // Largest picture we accept: 2^31 pixels (a 46k x 46k image); a corrupt resolution
 // line must not turn into a 100 GB allocation.
 constexpr long long kMaxPixels = 1LL << 31;
+// Longest scanline we accept: 2^24 pixels. Readers hold a whole scanline before its data
+// is checked, so a short file claiming one very long scanline must not allocate gigabytes
+// (found by fuzz_picture: "-Y 1 +X 1666699776" in 50 bytes).
+constexpr long long kMaxScanline = 1LL << 24;
 
 std::string trim(const std::string& s) {
     size_t b = s.find_first_not_of(" \t\r");
@@ -116,6 +120,8 @@ Resolution readResolution(std::istream& in, const std::string& what, std::string
     }
     if (static_cast<long long>(r->xres) * r->yres > kMaxPixels)
         throw InputError(SourceLoc{what, 0}, "picture too large (" + formatResolution(*r) + ")");
+    if (r->scanlineLength() > kMaxScanline)
+        throw InputError(SourceLoc{what, 0}, "scanlines too long (" + formatResolution(*r) + ")");
     if (text) *text = line;
     return *r;
 }

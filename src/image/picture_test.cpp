@@ -188,6 +188,9 @@ TEST(Picture, BadInputIsInputError) {
     EXPECT_EQ(errorOf("#?RADIANCE\n\n"), "bad.hdr: missing resolution line after header");
     EXPECT_EQ(errorOf("#?RADIANCE\n\n-Y 100000 +X 100000\n"),
               "bad.hdr: picture too large (-Y 100000 +X 100000)");
+    // Few pixels in all, but one scanline longer than any real picture's (fuzz_picture).
+    EXPECT_EQ(errorOf("#?RADIANCE\n\n-Y 1 +X 1666699776\n"),
+              "bad.hdr: scanlines too long (-Y 1 +X 1666699776)");
     // Truncated in the header, in a scanline, and with whole scanlines missing.
     EXPECT_NE(errorOf(good.substr(0, 12)).find("truncated header"), std::string::npos);
     EXPECT_EQ(errorOf(good.substr(0, good.size() - 3)),
