@@ -68,13 +68,26 @@ std::span<FoundPhoton> PhotonLookup::search(const Vec3& pos, const Vec3* normal,
     return {hits_.data(), found_};
 }
 
+std::span<const FoundPhoton> PhotonLookup::searchOwnSurface(const Vec3& pos, const Vec3& normal,
+                                                            size_t queueLen, float slab,
+                                                            double& d1) {
+    PhotonQuery query{pos, &normal, causticOnly_, static_cast<float>(maxDist2_), queueLen};
+    query.slab = slab;
+    const size_t n = map_->store().findNearest(*cursor_, query, ownHits_);
+    d1 = n == queueLen ? ownHits_[0].dist2 : query.maxDist2;
+    return {ownHits_.data(), n};
+}
+
 double PhotonLookup::estimateRadius2(std::span<const FoundPhoton> hits) const {
+    return estimateRadius2(hits, lastSearchDist2_);
+}
+
+double PhotonLookup::estimateRadius2(std::span<const FoundPhoton> hits, double d1) const {
     // hits[0] is the furthest (search()); d2 is the second furthest. RADIANCE compat: d1 is
     // pmap->maxDist2 after the search, i.e. the furthest photon when the queue filled up
     // and the search limit otherwise; RADIANCE takes d2 from the heap's children of the
     // furthest, which hold the second furthest. (RADIANCE reads node[2] even when only 2
     // photons were found; we look only at photons that exist.)
-    const double d1 = lastSearchDist2_;
     float second = hits[1].dist2;
     for (size_t i = 2; i < hits.size(); ++i) second = std::max(second, hits[i].dist2);
     const double d2 = second;
@@ -95,42 +108,81 @@ double PhotonLookup::edgeFactor(std::span<const FoundPhoton> hits, size_t queueL
     return fitEdge(edgeU_, edgeScratch_).factor;
 }
 
-std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& normal) {
+// Below this part of the disc covered (one probe in 64, render/surface_coverage.cpp) the
+// own-surface estimate is not used.
+constexpr double kMinCoverage = 1.0 / 64;
+// The query lies on its surface, so a straight edge leaves at least half its first disc
+// (less by the probes' resolution); less means a strip narrower than the disc, where the
+// own-surface estimate would average across the whole width, and light often varies
+// most (one side of a slat lit, the other not): RADIANCE's estimate is kept.
+constexpr double kMinDiscCoverage = 0.4;
+// Likewise when the search among the surface's own photons had to reach much further than
+// the first (half a disc needs twice the squared radius).
+constexpr double kMaxOwnReach = 3;
+
+PhotonLookup::Estimate PhotonLookup::estimate(const Vec3& pos, const Vec3& normal,
+                                              const DiscCoverage* coverage) {
+    const size_t queueLen = static_cast<size_t>(bandwidth_) + 1;
+    const std::span<const FoundPhoton> hits = search(pos, &normal, queueLen);
+    if (hits.size() < 2) return {hits, 0};
+    const double r2 = estimateRadius2(hits);
+    if (edgeAware_ && coverage) {
+        const float slab = static_cast<float>(kCoverageSlab * std::sqrt(r2));
+        const DiscCoverage::Part whole = coverage->part(r2, slab);
+        if (whole.fraction < 1 && whole.fraction >= kMinDiscCoverage && whole.straightEdge) {
+            // The photons of the query's own surface, over the part of their disc it covers.
+            double d1 = 0;
+            const auto own = searchOwnSurface(pos, coverage->planeNormal(), queueLen, slab, d1);
+            const double ownR2 = own.size() >= 2 ? estimateRadius2(own, d1) : 0;
+            if (own.size() >= 2 && ownR2 <= kMaxOwnReach * r2) {
+                const DiscCoverage::Part p = coverage->part(ownR2, slab);
+                if (p.fraction >= kMinCoverage && p.straightEdge)
+                    return {own, gradientFactor(own, queueLen, d1, p.fraction) /
+                                     (kPi * kPi * ownR2 * p.fraction)};
+            }
+        }
+    }
+    return {hits, edgeFactor(hits, queueLen) / (kPi * kPi * r2)};
+}
+
+double PhotonLookup::gradientFactor(std::span<const FoundPhoton> hits, size_t queueLen, double d1,
+                                    double covered) {
+    // The photons and their disc as edgeFactor takes them.
+    const size_t first = hits.size() == queueLen ? 1 : 0;
+    edgeU_.clear();
+    for (size_t i = first; i < hits.size(); ++i)
+        edgeU_.push_back(std::min(1.0, hits[i].dist2 / d1));
+    return edgeGradientFactor(edgeU_, edgeOffsetOfFraction(covered));
+}
+
+std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& normal,
+                                                   const DiscCoverage* coverage) {
     std::array<double, 3> irrad = {0, 0, 0};
     if (map_->empty()) return irrad;
-    const auto hits = search(pos, &normal, static_cast<size_t>(bandwidth_) + 1);
-    if (hits.size() < 2) return irrad;  // need at least 2 photons
-
-    const double r2 = estimateRadius2(hits);
-
+    const Estimate e = estimate(pos, normal, coverage);
+    if (!(e.scale > 0)) return irrad;
     // Skip the extra (furthest) photon; uniform kernel. The fluxes are RGBE values (8-bit
     // mantissas), so their sum in double is exact and does not depend on the order of the
-    // hits.
-    for (size_t i = 1; i < hits.size(); ++i) {
-        const auto f = hits[i].fluxRgb();
+    // hits. Divided by the search area pi r^2 and by pi, RADIANCE's ambient normalisation.
+    for (size_t i = 1; i < e.hits.size(); ++i) {
+        const auto f = e.hits[i].fluxRgb();
         for (int c = 0; c < 3; ++c) irrad[c] += f[c];
     }
-    // Divide by the search area pi r^2 and by pi, RADIANCE's ambient normalisation.
-    const double scale = 1.0 / (kPi * kPi * r2);
-    for (double& v : irrad) v *= scale;
-    const double edge = edgeFactor(hits, static_cast<size_t>(bandwidth_) + 1);
-    if (edge != 1)
-        for (double& v : irrad) v *= edge;
+    for (double& v : irrad) v *= e.scale;
     return irrad;
 }
 
 std::array<double, 3> PhotonLookup::contribDensity(const Vec3& pos, const Vec3& normal,
-                                                   const PhotonShare& each) {
+                                                   const PhotonShare& each,
+                                                   const DiscCoverage* coverage) {
     std::array<double, 3> irrad = {0, 0, 0};
     if (map_->empty()) return irrad;
-    const auto hits = search(pos, &normal, static_cast<size_t>(bandwidth_) + 1);
-    if (hits.size() < 2) return irrad;
-    const double scale =
-        edgeFactor(hits, static_cast<size_t>(bandwidth_) + 1) / (kPi * kPi * estimateRadius2(hits));
-    for (size_t i = 1; i < hits.size(); ++i) {  // the furthest is left out
-        const FoundPhoton& p = hits[i];
+    const Estimate e = estimate(pos, normal, coverage);
+    if (!(e.scale > 0)) return irrad;
+    for (size_t i = 1; i < e.hits.size(); ++i) {  // the furthest is left out
+        const FoundPhoton& p = e.hits[i];
         const auto f = p.fluxRgb();
-        const std::array<double, 3> share = {f[0] * scale, f[1] * scale, f[2] * scale};
+        const std::array<double, 3> share = {f[0] * e.scale, f[1] * e.scale, f[2] * e.scale};
         for (int c = 0; c < 3; ++c) irrad[c] += share[c];
         each(p, share);
     }

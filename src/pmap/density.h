@@ -31,6 +31,33 @@ struct LookupParams {
     bool edgeAware = false;
 };
 
+// The part of a surface density estimate's search disc where photons can be (-ape): the
+// caller measures it from the scene's geometry (render/surface_coverage.h); pmap only asks.
+class DiscCoverage {
+public:
+    struct Part {
+        // Fraction in [0, 1] of the disc under which a surface that holds photons lies
+        // within the slab of the plane.
+        double fraction = 1;
+        // Whether that part is the disc cut by one straight edge (the model of
+        // edgeGradientFactor); not for a strip narrower than the disc or a corner.
+        bool straightEdge = true;
+    };
+    // The part of the disc of squared radius `radius2` around the query, in its tangent
+    // plane, where photons can be within `slab` of the plane.
+    virtual Part part(double radius2, double slab) const = 0;
+    // The tangent plane's unit normal, on the side the light comes from (the surface's
+    // geometric normal: a shading normal's tilt would move the plane off the photons).
+    virtual const Vec3& planeNormal() const = 0;
+
+protected:
+    ~DiscCoverage() = default;
+};
+
+// -ape's estimate over the query's own surface: photons within this fraction of the first
+// search's radius of the tangent plane (neighbouring slats or shelves are further).
+constexpr double kCoverageSlab = 0.1;
+
 // Per-thread lookup state for one photon map: the result buffer (k+1 entries, allocated once)
 // and the adaptive search radius, which RADIANCE keeps in the shared PhotonMap. Keeping it
 // per thread makes every thread's results independent of the others. Not thread-safe: give
@@ -63,19 +90,27 @@ public:
     // 0.25 (d1 + d2 + 2 sqrt(d1 d2)) with d1 = squared distance of the furthest (or the
     // search limit when fewer than k+1 were found, as RADIANCE's maxDist2) and d2 the
     // largest of the others. Fewer than 2 photons give 0.
-    // With LookupParams::edgeAware the result is multiplied by the edge factor of the
-    // photons (fitEdge with u = d / d1, d each photon's squared distance; all of them for a
-    // short lookup, else all but the furthest); where no edge is significant it is
-    // RADIANCE's, bit for bit.
-    std::array<double, 3> surfaceDensity(const Vec3& pos, const Vec3& normal);
+    // With LookupParams::edgeAware and a `coverage`, the estimate first asks whether the
+    // disc reaches past one straight edge of the surface (a window's or a slat's edge),
+    // where RADIANCE's divides by area with no photons and reads low. Then the search is
+    // repeated among photons within kCoverageSlab of the first radius of the tangent
+    // plane only (not those of parallel surfaces nearby), and the sum divided by the part
+    // of that disc the surface covers instead of all of it, corrected for light varying
+    // across the edge (edgeGradientFactor). Elsewhere the result is multiplied by the
+    // light/shadow edge factor of the photons (fitEdge with u = d / d1, d each photon's
+    // squared distance; all of them for a short lookup, else all but the furthest); where
+    // neither applies it is RADIANCE's, bit for bit.
+    std::array<double, 3> surfaceDensity(const Vec3& pos, const Vec3& normal,
+                                         const DiscCoverage* coverage = nullptr);
 
     // RADIANCE's photonContrib (pmcontrib2.c) for contribution maps: surfaceDensity, with
     // each photon's share of it (its flux / (pi * pi r^2)) handed to `each` with the photon
-    // (whose primary says which source emitted it); with edgeAware, each share times the
-    // edge factor, as surfaceDensity.
+    // (whose primary says which source emitted it); with edgeAware, each share corrected
+    // as surfaceDensity corrects the sum.
     using PhotonShare = std::function<void(const FoundPhoton&, const std::array<double, 3>&)>;
     std::array<double, 3> contribDensity(const Vec3& pos, const Vec3& normal,
-                                         const PhotonShare& each);
+                                         const PhotonShare& each,
+                                         const DiscCoverage* coverage = nullptr);
 
     // RADIANCE's volumePhotonDensity: for the bandwidth nearest volume photons to `pos`
     // (no normal filter; radius as surfaceDensity's),
@@ -129,16 +164,33 @@ public:
     uint64_t shortLookups() const { return shortLookups_; }
 
 private:
+    // The photons of a surface estimate (the furthest first, left out of the sum) and
+    // what their flux sum is multiplied by: 1 / (pi^2 r^2), times -ape's corrections.
+    struct Estimate {
+        std::span<const FoundPhoton> hits;
+        double scale = 0;  // 0: fewer than 2 photons
+    };
+    Estimate estimate(const Vec3& pos, const Vec3& normal, const DiscCoverage* coverage);
     // RADIANCE's squared estimate radius for `hits` (>= 2, the furthest first): the mean
     // of the radii of the furthest (the search limit if the queue did not fill) and the
     // second furthest, squared.
     double estimateRadius2(std::span<const FoundPhoton> hits) const;
+    double estimateRadius2(std::span<const FoundPhoton> hits, double d1) const;
     // The edge factor for `hits` from search() with a queue of queueLen (edge_estimate.h),
     // 1 without edgeAware: the k photons in the disc of squared radius d1 (the furthest
     // photon's or, for a short lookup, the search limit's).
     double edgeFactor(std::span<const FoundPhoton> hits, size_t queueLen);
+    // For the own-surface estimate over the `covered` part of its disc (squared radius
+    // d1): the density at the query over the part's mean (edgeGradientFactor).
+    double gradientFactor(std::span<const FoundPhoton> hits, size_t queueLen, double d1,
+                          double covered);
     // findPhotons with a queue of queueLen.
     std::span<FoundPhoton> search(const Vec3& pos, const Vec3* normal, size_t queueLen);
+    // The photons within `slab` of the tangent plane (PhotonQuery::slab), in a buffer of
+    // their own, so that search()'s stay valid; the adaptive radius is left alone. `d1`:
+    // the furthest's squared distance, or the limit's if fewer than queueLen were found.
+    std::span<const FoundPhoton> searchOwnSurface(const Vec3& pos, const Vec3& normal,
+                                                  size_t queueLen, float slab, double& d1);
 
     const PhotonMap* map_;
     std::unique_ptr<PhotonStore::Cursor> cursor_;
@@ -154,6 +206,7 @@ private:
     uint64_t shortLookups_ = 0;
     std::vector<FoundPhoton> hits_;
     size_t found_ = 0;
+    std::vector<FoundPhoton> ownHits_;               // searchOwnSurface's
     std::vector<std::array<double, 3>> biasPrefix_;  // scratch for compensateBias
     bool edgeAware_;
     std::vector<double> edgeU_, edgeScratch_;  // scratch for edgeFactor

@@ -135,4 +135,55 @@ EdgeFit fitEdge(std::span<double> u, std::vector<double>& scratch, const EdgePar
     return fit;
 }
 
+double edgeOffsetOfFraction(double fraction) {
+    if (fraction <= 0) return -1;
+    if (fraction >= 1) return 1;
+    double lo = -1, hi = 1;
+    for (int i = 0; i < 48; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (edgeDiscFraction(mid) < fraction ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+double edgeGradientFactor(std::span<const double> u, double delta) {
+    if (u.size() < kMinEdgePhotons) return 1;
+    const double d = clampUnit(delta);
+    const double area = edgeDiscFraction(d);
+    const double moment = -2 / (3 * kPi) * std::pow(1 - d * d, 1.5);
+    if (!(area > 0) || moment == 0) return 1;
+    // Written as p(u) = a(u) / A + gamma c(u), c = m - Mx a / A, with gamma = beta / (A +
+    // beta Mx), the log likelihood is concave in gamma (a mixture's weight): Newton
+    // converges from 0. The factor is then 1 - gamma Mx. A photon the probes' edge leaves
+    // outside (a = 0) counts as just inside.
+    std::vector<std::pair<double, double>> ac;
+    ac.reserve(u.size());
+    for (double ui : u) {
+        const double root = std::sqrt(std::max(ui, 1e-12));
+        const double c = clampUnit(d / root);
+        const double a = std::max(1 - std::acos(c) / kPi, 1e-3) / area;
+        const double m = -root * std::sqrt(1 - c * c) / kPi;
+        ac.emplace_back(a, m - moment * a);
+    }
+    // 1 + beta x >= 0 over the part (x from -1 to delta), with a margin; gamma rises with beta.
+    const double betaMax = 0.95, betaMin = d > 0.01 ? -0.95 / d : -95;
+    auto gammaOf = [&](double beta) { return beta / (area + beta * moment); };
+    const double lo = gammaOf(betaMin), hi = gammaOf(betaMax);
+    double gamma = 0;
+    for (int iter = 0; iter < 30; ++iter) {
+        double g = 0, h = 0;
+        for (const auto& [a, c] : ac) {
+            const double v = a + gamma * c;
+            g += c / v;
+            h -= c * c / (v * v);
+        }
+        if (!(h < 0)) return 1;  // no photon says anything about the gradient
+        const double next = std::clamp(gamma - g / h, lo, hi);
+        const bool done = std::fabs(next - gamma) < 1e-7;
+        gamma = next;
+        if (done) break;
+    }
+    return 1 - gamma * moment;
+}
+
 }  // namespace rp::pmap

@@ -54,6 +54,7 @@ struct InCoreStore::Search {
     float bound = 0;
     const uint8_t* causticFlags = nullptr;        // non-null: only photons whose caustic bit is
     uint8_t causticWanted = Photon::kCausticBit;  // this
+    float slab = 0;  // > 0: only photons this near the plane through q normal to n
 };
 
 namespace {
@@ -262,6 +263,13 @@ void InCoreStore::searchNode(uint32_t root, float rootOff[3], Search& s) const {
                 if ((s.causticFlags[b + i] & Photon::kCausticBit) != s.causticWanted)
                     mask &= ~(uint64_t{1} << i);
             }
+        if (s.slab > 0)
+            for (uint64_t m = mask; m; m &= m - 1) {
+                const uint32_t i = static_cast<uint32_t>(__builtin_ctzll(m));
+                const float h = (px[i] - q0) * s.n[0] + (px[c4 + i] - q1) * s.n[1] +
+                                (px[2 * c4 + i] - q2) * s.n[2];
+                if (!(std::fabs(h) < s.slab)) mask &= ~(uint64_t{1} << i);
+            }
         if (mask) {
             // Density estimates read the flux of the photons found (flux_, by slot) right
             // after the search: fetch this leaf's now, overlapped with the rest of the
@@ -414,6 +422,7 @@ size_t InCoreStore::findNearestSlots(const PhotonQuery& query,
         s.n[0] = static_cast<float>(normal->x);
         s.n[1] = static_cast<float>(normal->y);
         s.n[2] = static_cast<float>(normal->z);
+        s.slab = query.slab;
     }
     // Collect every photon within a guessed radius, larger passes until k are found or the
     // radius reaches maxDist2; then select the k nearest. The k nearest within maxDist2

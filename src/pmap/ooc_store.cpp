@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <bit>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -88,6 +89,8 @@ struct OutOfCoreStore::Reader {
     const OutOfCoreStore& store;
     PageCache& cache;
     bool causticOnly, causticExcluded;
+    // PhotonQuery::slab: the plane through `q` normal to `n` (unused while slab is 0).
+    float q[3], n[3], slab;
     const Photon& at(size_t i) const {
         const uint64_t r = store.resident_.size();
         return i < r ? store.resident_[i] : cache.at(i - r);
@@ -95,6 +98,8 @@ struct OutOfCoreStore::Reader {
     void prefetch(size_t) const {}
     bool accepts(const Photon& p) const {
         return (!causticOnly || p.caustic()) && (!causticExcluded || !p.caustic()) &&
+               (!(slab > 0) || std::fabs((p.pos[0] - q[0]) * n[0] + (p.pos[1] - q[1]) * n[1] +
+                                         (p.pos[2] - q[2]) * n[2]) < slab) &&
                (!store.options_.keep || store.options_.keep(p));
     }
     [[noreturn]] void misplaced(size_t i) const {
@@ -183,7 +188,15 @@ size_t OutOfCoreStore::findNearest(Cursor& cursor, const PhotonQuery& q,
                                    std::vector<FoundPhoton>& out) const {
     PageCache& cache = static_cast<PageCache&>(cursor);
     if (cache.heap.size() < q.k) cache.heap.resize(q.k);
-    const Reader reader{*this, cache, q.causticOnly, q.causticExcluded};
+    const bool slab = q.slab > 0 && q.normal;
+    const Reader reader{*this,
+                        cache,
+                        q.causticOnly,
+                        q.causticExcluded,
+                        {float(q.pos.x), float(q.pos.y), float(q.pos.z)},
+                        {slab ? float(q.normal->x) : 0.f, slab ? float(q.normal->y) : 0.f,
+                         slab ? float(q.normal->z) : 0.f},
+                        slab ? q.slab : 0.f};
     const size_t n = findNearestInKdTree(reader, n_, q.pos, q.normal, q.maxDist2,
                                          std::span<PhotonHit>(cache.heap.data(), q.k));
     // The heap's first entry is the furthest, as the interface asks. A hit's page may

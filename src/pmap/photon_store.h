@@ -43,6 +43,9 @@ struct PhotonQuery {
     // Only photons without the caustic flag (a precomputed contribution map's gather
     // lookups: its flagged photons hold caustic light alone).
     bool causticExcluded = false;
+    // > 0 (with `normal`): only photons within this distance of the plane through `pos`
+    // normal to it (-ape's estimate over the query's own surface, density.h).
+    float slab = 0;
 };
 
 class PhotonStore {

@@ -93,6 +93,9 @@ std::vector<Result> bruteForce(std::span<const Photon> ph, const PhotonQuery& q)
             const float n[3] = {float(q.normal->x), float(q.normal->y), float(q.normal->z)};
             if (!(n[0] * f.norm[0] + n[1] * f.norm[1] + n[2] * f.norm[2] > kNormalTolerance))
                 continue;
+            if (q.slab > 0 && !(std::fabs((f.pos[0] - p[0]) * n[0] + (f.pos[1] - p[1]) * n[1] +
+                                          (f.pos[2] - p[2]) * n[2]) < q.slab))
+                continue;
         }
         all.push_back({d2, f.primary});
     }
@@ -168,8 +171,9 @@ TEST(PhotonStore, EveryStoreEqualsBruteForce) {
                             Vec3 q(u(rng), u(rng), u(rng));
                             if (trial % 2) q = photons[rng() % n].position();  // on surfaces
                             const Vec3 nrm = normalize(Vec3(u(rng), u(rng), u(rng)));
-                            const PhotonQuery query{q, trial % 4 < 2 ? &nrm : nullptr,
-                                                    trial % 8 >= 6, r2, k};
+                            PhotonQuery query{q, trial % 4 < 2 ? &nrm : nullptr, trial % 8 >= 6, r2,
+                                              k};
+                            if (trial % 4 == 1) query.slab = 0.05f;  // -ape's own surface
                             const std::string what = store.describe() + " layout " +
                                                      std::to_string(int(layout)) + " n " +
                                                      std::to_string(n) + " k " + std::to_string(k) +

@@ -200,7 +200,8 @@ std::unique_ptr<PhotonLighting::Lookups> PhotonLighting::makeLookups() const {
     return std::make_unique<Lookups>(*this);
 }
 
-Color PhotonLighting::density(Lookups& l, int index, const Vec3& pos, const Vec3& normal) const {
+Color PhotonLighting::density(Lookups& l, int index, const Vec3& pos, const Vec3& normal,
+                              const pmap::DiscCoverage* coverage) const {
     if (index < 0) return {};
     pmap::PhotonLookup& lookup = l.lookups[size_t(index)];
     const Map& m = maps_[size_t(index)];
@@ -211,23 +212,26 @@ Color PhotonLighting::density(Lookups& l, int index, const Vec3& pos, const Vec3
         d = lookup.biasCompensatedDensity(pos, normal, m.use.bandwidth, m.use.bandwidth2,
                                           &l.biasStats[size_t(index)]);
     else
-        d = lookup.surfaceDensity(pos, normal);
+        d = lookup.surfaceDensity(pos, normal, coverage);
     return Color{d[0], d[1], d[2]};
 }
 
-Color PhotonLighting::globalDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const {
-    return density(l, global_, pos, normal);
+Color PhotonLighting::globalDensity(Lookups& l, const Vec3& pos, const Vec3& normal,
+                                    const pmap::DiscCoverage* coverage) const {
+    return density(l, global_, pos, normal, coverage);
 }
-Color PhotonLighting::causticDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const {
-    return density(l, caustic_, pos, normal);
+Color PhotonLighting::causticDensity(Lookups& l, const Vec3& pos, const Vec3& normal,
+                                     const pmap::DiscCoverage* coverage) const {
+    return density(l, caustic_, pos, normal, coverage);
 }
-Color PhotonLighting::directDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const {
-    return density(l, direct_, pos, normal);
+Color PhotonLighting::directDensity(Lookups& l, const Vec3& pos, const Vec3& normal,
+                                    const pmap::DiscCoverage* coverage) const {
+    return density(l, direct_, pos, normal, coverage);
 }
 
 Color PhotonLighting::contribDensity(Lookups& l, const Vec3& pos, const Vec3& normal,
-                                     const Color& coef, ContributionSink* sink,
-                                     bool caustic) const {
+                                     const Color& coef, ContributionSink* sink, bool caustic,
+                                     const pmap::DiscCoverage* coverage) const {
     if (contrib_ < 0) return {};
     const pmap::PhotonMap& map = maps_[size_t(contrib_)].map;
     if (map.type() == pmap::PhotonMapType::PreCompContrib)
@@ -248,7 +252,7 @@ Color PhotonLighting::contribDensity(Lookups& l, const Vec3& pos, const Vec3& no
         sink->addPhotons(primaries[p.primary].srcIdx, &o, value);
     };
     pmap::PhotonLookup& lookup = caustic ? *l.contribCaustic : l.lookups[size_t(contrib_)];
-    auto d = lookup.contribDensity(pos, normal, share);
+    auto d = lookup.contribDensity(pos, normal, share, coverage);
     return Color{d[0], d[1], d[2]};
 }
 

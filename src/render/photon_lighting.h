@@ -93,9 +93,13 @@ public:
     // Irradiance / pi at a surface point with unit normal `normal` (on the side the
     // light comes from), from the global (or precomputed) map, the caustic map and the
     // direct map; zero without such a map.
-    Color globalDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
-    Color causticDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
-    Color directDensity(Lookups& l, const Vec3& pos, const Vec3& normal) const;
+    // `coverage` (render/surface_probes.h) serves maps used with -ape.
+    Color globalDensity(Lookups& l, const Vec3& pos, const Vec3& normal,
+                        const pmap::DiscCoverage* coverage = nullptr) const;
+    Color causticDensity(Lookups& l, const Vec3& pos, const Vec3& normal,
+                         const pmap::DiscCoverage* coverage = nullptr) const;
+    Color directDensity(Lookups& l, const Vec3& pos, const Vec3& normal,
+                        const pmap::DiscCoverage* coverage = nullptr) const;
     // The contribution map's irradiance / pi at a final-gather hit, as the global map's
     // (or with `caustic`, of its caustic photons only, at other hits, as a caustic map's);
     // each photon's share of it, times the path coefficient `coef`, goes to `sink` with
@@ -103,7 +107,8 @@ public:
     // gives the bins of its nearest precomputed photon (caustic-flagged with `caustic`,
     // unflagged otherwise) to `sink` instead. Zero without a contribution map.
     Color contribDensity(Lookups& l, const Vec3& pos, const Vec3& normal, const Color& coef,
-                         ContributionSink* sink, bool caustic = false) const;
+                         ContributionSink* sink, bool caustic = false,
+                         const pmap::DiscCoverage* coverage = nullptr) const;
     // The coefficient files of a precomputed contribution map, one per tracked modifier
     // (empty otherwise).
     std::vector<pmap::CoeffInfo> precomputedModifiers() const;
@@ -129,7 +134,8 @@ private:
         PhotonMapUse use;
         std::string file;
     };
-    Color density(Lookups& l, int index, const Vec3& pos, const Vec3& normal) const;
+    Color density(Lookups& l, int index, const Vec3& pos, const Vec3& normal,
+                  const pmap::DiscCoverage* coverage) const;
     Color precomputedContrib(Lookups& l, const Vec3& pos, const Vec3& normal, const Color& coef,
                              ContributionSink* sink, bool caustic) const;
     void openCoefficients(const Scene& scene, const std::vector<std::string>& modifiers);

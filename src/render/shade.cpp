@@ -6,11 +6,17 @@
 
 #include "light/light_sources.h"
 #include "render/renderer_impl.h"
+#include "render/surface_coverage.h"
 #include "util/error.h"
 
 namespace rp::render {
 
 namespace {
+
+// The hit's geometric normal on the side of `normal` (the side the light comes from).
+Vec3 planeNormal(const Hit& hit, const Vec3& normal) {
+    return dot(normal, hit.normal) >= 0 ? hit.normal : -hit.normal;
+}
 
 bool isPlanar(PrimType t) { return t == PrimType::Polygon || t == PrimType::Ring; }
 
@@ -347,8 +353,10 @@ void Renderer::Context::addDirect(const Hit& hit, const material::MaterialParams
                                   const material::BackwardResult& b, const RayState& state,
                                   Color& value) {
     if (impl.photonMode.directFromPhotons()) {
-        value +=
-            b.ambientReflect * impl.photons.directDensity(*photonLookups, hit.point, sp.normal);
+        const SurfaceCoverage coverage(impl.chains.materials(), impl.geometry, hit.point,
+                                       planeNormal(hit, sp.normal));
+        value += b.ambientReflect *
+                 impl.photons.directDensity(*photonLookups, hit.point, sp.normal, &coverage);
         return;
     }
     const bool transmits = b.ambientTransmit.max() > 0 || b.directFromBehind;
@@ -478,14 +486,16 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
     Color c;
     const PhotonLighting& pm = impl.photons;
     const PhotonMode::AmbientReads reads = impl.photonMode.ambientReads(state.pathDepth());
+    const SurfaceCoverage coverage(impl.chains.materials(), impl.geometry, hit.point,
+                                   planeNormal(hit, normal));
     if (reads.contribGather || reads.contribCaustic) {
         Color d = pm.contribDensity(*photonLookups, hit.point, normal, state.contribCoef * coef,
-                                    state.contrib, reads.contribCaustic);
+                                    state.contrib, reads.contribCaustic, &coverage);
         if (reads.contribGather) return d;
         c += d;
     }
-    if (reads.global) return pm.globalDensity(*photonLookups, hit.point, normal);
-    if (reads.caustic) c += pm.causticDensity(*photonLookups, hit.point, normal);
+    if (reads.global) return pm.globalDensity(*photonLookups, hit.point, normal, &coverage);
+    if (reads.caustic) c += pm.causticDensity(*photonLookups, hit.point, normal, &coverage);
     std::optional<RayState> parent;  // with the ambient coefficient in its path (rcontrib)
     if (state.contrib) {
         parent = state;
@@ -513,8 +523,10 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, const 
     // Direct photons replace the direct calculation here too (manual 5.4; RADIANCE's
     // direct() multiplies the receiver's coefficient at its normal, pi for this white
     // Lambertian one, by the direct photons' irradiance / pi).
+    const SurfaceCoverage coverage(impl.chains.materials(), impl.geometry, hit.point,
+                                   planeNormal(hit, normal));
     Color e = impl.photonMode.directFromPhotons()
-                  ? impl.photons.directDensity(*photonLookups, hit.point, normal) * kPi
+                  ? impl.photons.directDensity(*photonLookups, hit.point, normal, &coverage) * kPi
                   : impl.direct.compute(
                         at,
                         [&](const Vec3& toLight, double) {
