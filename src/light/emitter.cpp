@@ -207,8 +207,11 @@ EmissionPlan::EmissionPlan(const SceneGeometry& geometry, std::vector<LightSourc
         else
             m.planPorts(geometry, src, g, value, options);
     }
-    if (options.exterior && !options.ports.empty()) m.planExterior(options);
+    // RADIANCE's error where no source reaches the ports (one set back behind glass,
+    // whose source test the glass stops), also with -apE, whose exterior light alone
+    // would then be emitted without the sun and sky.
     if (!(m.total.average() > 0)) throw InputError("zero flux from light sources");
+    if (options.exterior && !options.ports.empty()) m.planExterior(options);
     // Every photon carries the mean total flux (same expression as emitPhoton's for
     // Table groups, so the same bits).
     for (Group& g : m.groups) g.weight = g.radiance * (m.total.average() / g.radiance.average());

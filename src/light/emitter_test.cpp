@@ -322,6 +322,38 @@ TEST(Emitter, PortExteriorIgnoresTheWallAroundASetBackPort) {
     }
 }
 
+// A port set back behind the glass (a BSDF layer used as the port; smaller than the
+// window, so that the sun is seen through the glass only): the glass stops the sources'
+// test, so no source reaches it and mkpmap stops with RADIANCE 5.4's error
+// (its mkpmap gives the same for such a port). With -apE it must too, rather than emit
+// the outside's reflections without the sun.
+TEST(Emitter, PortBehindGlassSeesNoSourceEvenWithExterior) {
+    PortScene s(false);
+    const int32_t layer = s.b.add(PrimType::Plastic, "layer", {.5, .5, .5, 0, 0});
+    s.b.add(PrimType::Polygon, "blinds_layer",
+            {1.6, 0.03, 1.0, 1.6, 0.03, 2.3, 4.4, 0.03, 2.3, 4.4, 0.03, 1.0}, layer);
+    SceneGeometry geom(s.b.scene());
+    EmissionOptions opt;
+    opt.ports = findPhotonPorts(s.b.scene(), geom, {PortSpec{"layer"}});
+    EXPECT_THROW(planFor(s.b, geom, opt), InputError);
+    opt.exterior.view = [](const Vec3& from, const Vec3& w, uint64_t) {
+        ExteriorView v;
+        v.surface = true;
+        v.radiance = Color::grey(100);
+        v.ambient = Color::grey(10);
+        v.distance = 5 / -w.y;
+        v.point = from + w * v.distance;
+        v.normal = {0, 1, 0};
+        return v;
+    };
+    try {
+        planFor(s.b, geom, opt);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("zero flux from light sources"), std::string::npos);
+    }
+}
+
 TEST(Emitter, SkyThroughPortAndBidirectional) {
     PortScene s(true);
     SceneGeometry geom(s.b.scene());

@@ -12,9 +12,11 @@
 # - indirect light (total - direct, both -dj 0 so the direct parts cancel), classic with
 #   every bounce (-ab 16 -lr -20; RADIANCE's default -lr -10 stops ten reflections deep and
 #   reads 1.6 % low here): within 2 % (measured -0.1 %, -0.3 %);
-# - the same from a global photon map through an antimatter port: 2M photons, bandwidth
-#   100 in the open room (measured -0.2 %), 10M and 40 with the slats, whose 2.5 cm width
-#   must exceed the search disk (2M and 100 read 6 % low there: boundary bias); within 2.5 %.
+# - the same from a global photon map through an antimatter port, 2M photons at bandwidth
+#   100: in the open room (measured -0.2 %) within 2.5 %; with the slats RADIANCE's
+#   estimate reads -5.7 % (MARE 4.3 %: the search discs reach past the 2.5 cm slats'
+#   edges), which must be below -4 %, and -ape's -0.6 % (MARE 1.8 %), within 2.5 %
+#   (10M photons at bandwidth 40: -0.65 % and +0.9 %).
 # Over 8 runs with -u+ the means spread (standard deviation) 0.2 % (direct), 0.6 %
 # (classic) and 0.15 % (photon map): the classic's 2 % is 3 sigma past its worst mean;
 # -u- keeps the run reproducible.
@@ -56,12 +58,22 @@ for v in open blinds; do
     "$BIN/rtrace" -h -u- -I -ab 16 -lr -20 -ad 1024 -aa 0 -lw 1e-5 -n 2 "$tmp/$v.oct" < "$pts" |
         awk '{print $1}' | paste - "$tmp/d0" > "$tmp/cl"
     compare "$v: indirect, classic" "$tmp/cl" "$ref/${v}_total.txt" "$ref/${v}_direct.txt" indirect 0.02 || fail=1
-    n=2m bw=100
-    [ $v = blinds ] && n=10m bw=40
-    "$BIN/mkpmap" -apg "$tmp/g.pm" $n -apo port_mat -apr 1 -n 2 -fo "$tmp/$v.oct" 2> "$tmp/err" ||
+    "$BIN/mkpmap" -apg "$tmp/g.pm" 2m -apo port_mat -apr 1 -n 2 -fo "$tmp/$v.oct" 2> "$tmp/err" ||
         { echo "FAIL $v: mkpmap: $(cat "$tmp/err")"; fail=1; continue; }
-    "$BIN/rtrace" -h -u- -I -ab 1 -ad 2048 -aa 0 -ap "$tmp/g.pm" $bw -n 2 "$tmp/$v.oct" < "$pts" |
-        awk '{print $1}' | paste - "$tmp/d0" > "$tmp/pm"
-    compare "$v: indirect, photon map" "$tmp/pm" "$ref/${v}_total.txt" "$ref/${v}_direct.txt" indirect 0.025 || fail=1
+    for e in "" -ape; do
+        "$BIN/rtrace" -h -u- -I -ab 1 -ad 2048 -aa 0 -ap "$tmp/g.pm" 100 $e -n 2 "$tmp/$v.oct" \
+            < "$pts" | awk '{print $1}' | paste - "$tmp/d0" > "$tmp/pm"
+        if [ $v = blinds ] && [ -z "$e" ]; then
+            # RADIANCE's estimate: the boundary bias must be there (below -4 %).
+            compare "$v: indirect, photon map" "$tmp/pm" "$ref/${v}_total.txt" \
+                "$ref/${v}_direct.txt" indirect 1
+            paste "$tmp/pm" "$ref/${v}_total.txt" "$ref/${v}_direct.txt" |
+                awk '{ so += $1 - $2; sc += $3 - $5 } END { exit !(so / sc - 1 < -0.04) }' ||
+                { echo "FAIL: expected RADIANCE's estimate below -4 %"; fail=1; }
+            continue
+        fi
+        compare "$v: indirect, photon map $e" "$tmp/pm" "$ref/${v}_total.txt" \
+            "$ref/${v}_direct.txt" indirect 0.025 || fail=1
+    done
 done
 exit $fail
