@@ -19,9 +19,16 @@ for target in test-rad test-obj2mesh; do
     PATH=$tmp/bin make -s "$target" > "$tmp/$target.log" 2>&1 ||
         { echo "FAIL $target:"; tail -5 "$tmp/$target.log"; fail=1; }
 done
-PATH=$tmp/bin rad -s -w -v fish mirror.rif RES=64
-PATH=$tmp/bin pfilt -1 -r 1 -x 128 -y 128 -pa 1 mirror_fish.hdr |
-    PATH=$tmp/bin radcompare -rel 0.007 -rms 0.1 -max 1.5 \
-        "$RP_SOURCE_DIR/tests/data/radiance_makefile/mirror_fish.hdr" - ||
-    { echo "FAIL mirror-fish against RADIANCE's picture"; fail=1; }
+# The model's render.opt says -u+, so the picture is a new Monte Carlo sample each run,
+# and the Makefile's -max 1.5 on every single pixel fails now and then on an outlier (one
+# run in 20 or more: a pixel of 3.05 against RADIANCE's 21.9 once, under load; 16 of 16
+# passed otherwise): a second picture is made before the test fails.
+fish() {
+    rm -f mirror.amb mirror_fish.hdr
+    PATH=$tmp/bin rad -s -w -v fish mirror.rif RES=64
+    PATH=$tmp/bin pfilt -1 -r 1 -x 128 -y 128 -pa 1 mirror_fish.hdr |
+        PATH=$tmp/bin radcompare -rel 0.007 -rms 0.1 -max 1.5 \
+            "$RP_SOURCE_DIR/tests/data/radiance_makefile/mirror_fish.hdr" -
+}
+fish || fish || { echo "FAIL mirror-fish against RADIANCE's picture (twice)"; fail=1; }
 exit $fail
