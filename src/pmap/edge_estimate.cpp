@@ -161,7 +161,7 @@ double edgeGradientFactor(std::span<const double> u, double delta) {
     for (double ui : u) {
         const double root = std::sqrt(std::max(ui, 1e-12));
         const double c = clampUnit(d / root);
-        const double a = std::max(1 - std::acos(c) / kPi, 1e-3) / area;
+        const double a = std::max(1 - acosOverPi(c), 1e-3) / area;
         const double m = -root * std::sqrt(1 - c * c) / kPi;
         ac.emplace_back(a, m - moment * a);
     }

@@ -353,7 +353,7 @@ void Renderer::Context::addDirect(const Hit& hit, const material::MaterialParams
                                   const material::BackwardResult& b, const RayState& state,
                                   Color& value) {
     if (impl.photonMode.directFromPhotons()) {
-        const SurfaceCoverage coverage(impl.chains.materials(), impl.geometry, hit.point,
+        const SurfaceCoverage coverage(impl.chains.materials(), impl.geometry, hit,
                                        planeNormal(hit, sp.normal));
         value += b.ambientReflect *
                  impl.photons.directDensity(*photonLookups, hit.point, sp.normal, &coverage);
@@ -486,7 +486,7 @@ Color Renderer::Context::ambientAt(const Hit& hit, const Vec3& normal, int32_t m
     Color c;
     const PhotonLighting& pm = impl.photons;
     const PhotonMode::AmbientReads reads = impl.photonMode.ambientReads(state.pathDepth());
-    const SurfaceCoverage coverage(impl.chains.materials(), impl.geometry, hit.point,
+    const SurfaceCoverage coverage(impl.chains.materials(), impl.geometry, hit,
                                    planeNormal(hit, normal));
     if (reads.contribGather || reads.contribCaustic) {
         Color d = pm.contribDensity(*photonLookups, hit.point, normal, state.contribCoef * coef,
@@ -523,7 +523,7 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, const 
     // Direct photons replace the direct calculation here too (manual 5.4; RADIANCE's
     // direct() multiplies the receiver's coefficient at its normal, pi for this white
     // Lambertian one, by the direct photons' irradiance / pi).
-    const SurfaceCoverage coverage(impl.chains.materials(), impl.geometry, hit.point,
+    const SurfaceCoverage coverage(impl.chains.materials(), impl.geometry, hit,
                                    planeNormal(hit, normal));
     Color e = impl.photonMode.directFromPhotons()
                   ? impl.photons.directDensity(*photonLookups, hit.point, normal, &coverage) * kPi
