@@ -46,9 +46,10 @@ int main(int argc, char** argv) {
         rp::tools::quietUnlessRoot(*cluster);
         const rp::pmap::MkpmapReport report = rp::pmap::runMkpmap(
             opt, rp::commandLine(argc, argv), *diag, rp::gen::builtinLoadOptions(), cluster.get(),
-            [](const rp::Scene& scene, const rp::SceneGeometry& geometry) {
-                return rp::render::portExterior(scene, geometry,
-                                                rp::calc::defaultSearchPath(rp::projectLibDir()));
+            [](const rp::Scene& scene, const rp::SceneGeometry& geometry,
+               const rp::spectral::Pass& pass) {
+                return rp::render::portExterior(
+                    scene, geometry, rp::calc::defaultSearchPath(rp::projectLibDir()), pass);
             });
         if (std::getenv("RADPHOTON_STATS") && cluster->isRoot())  // for bench/mpi_scaling.sh
             std::cerr << "mkpmap: " << report.storingSeconds << " s storing on the root\n";

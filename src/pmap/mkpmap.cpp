@@ -52,7 +52,6 @@ double secondsSince(Clock::time_point t0) {
 void checkRequest(const MkpmapOptions& o, const PortExteriorFactory& exterior,
                   const std::vector<spectral::Pass>& passes) {
     if (passes.size() > 1) {
-        if (o.portExterior) throw InputError("-apE with -cs above 3 is not supported yet");
         if (o.wants(PhotonMapType::Contrib))
             throw InputError("contribution photon maps with -cs above 3 are not supported yet");
     }
@@ -224,7 +223,7 @@ struct EmittingScene {
                     port.shape != light::EmitterShape::Ring)
                     throw notSupportedYet(scene.prims[size_t(port.prim)].loc,
                                           "-apE with a curved photon port");
-            emission.exterior = exterior(scene, geometry);
+            emission.exterior = exterior(scene, geometry, pass);
         }
         // Pattern-modified sources emit through their pattern chain.
         chains.emplace(scene, calc::defaultSearchPath(projectLibDir()), pass);

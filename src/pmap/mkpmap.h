@@ -100,9 +100,11 @@ struct MkpmapReport {
 // with the same options and traces its share of the photons (chunk_stream.h); the root
 // builds and writes the maps, which are the same bit for bit for any number of ranks,
 // and reports. The other ranks return an empty report.
-// `exterior` makes -apE's PortExterior for the loaded scene (the classic calculation sits
-// above this module: tools pass render::portExterior); -apE without it is an InputError.
-using PortExteriorFactory = std::function<light::PortExterior(const Scene&, const SceneGeometry&)>;
+// `exterior` makes -apE's PortExterior for the loaded scene in a pass's bands (the classic
+// calculation sits above this module: tools pass render::portExterior); -apE without it
+// is an InputError.
+using PortExteriorFactory =
+    std::function<light::PortExterior(const Scene&, const SceneGeometry&, const spectral::Pass&)>;
 MkpmapReport runMkpmap(const MkpmapOptions& options, const std::string& commandLine,
                        std::ostream& diag, const LoadOptions& load = {}, Cluster* cluster = nullptr,
                        const PortExteriorFactory& exterior = {});

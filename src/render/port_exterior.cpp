@@ -23,11 +23,19 @@ RenderOptions portExteriorOptions() {
 
 namespace {
 
+// The options as the pass renders them (passOptions' settings for one pass).
+RenderOptions inPass(RenderOptions o, const spectral::Pass& pass) {
+    o.spectralSamples = pass.sampling.n;
+    o.pass = pass;
+    o.direct.pass = pass;
+    return o;
+}
+
 // What the direct calculation counts and a global photon must not: the light sources'
 // own irradiance. The same settings as the full calculation but no ambient bounce, so
 // that the difference of the two is the ambient part (the same shadow rays either way).
-RenderOptions directOnly() {
-    RenderOptions o = portExteriorOptions();
+RenderOptions directOnly(const spectral::Pass& pass) {
+    RenderOptions o = inPass(portExteriorOptions(), pass);
     o.ambient.bounces = 0;
     return o;
 }
@@ -39,17 +47,18 @@ bool emitsPhotons(PrimType t) {
 }  // namespace
 
 light::PortExterior portExterior(const Scene& scene, const SceneGeometry& geometry,
-                                 std::vector<std::string> searchPath) {
+                                 std::vector<std::string> searchPath, const spectral::Pass& pass) {
     struct State {
         Renderer full, direct;
         Renderer::ContextPtr fullContext, directContext;
-        State(const Scene& s, const SceneGeometry& g, const std::vector<std::string>& path)
-            : full(s, g, portExteriorOptions(), path),
-              direct(s, g, directOnly(), path),
+        State(const Scene& s, const SceneGeometry& g, const std::vector<std::string>& path,
+              const spectral::Pass& p)
+            : full(s, g, inPass(portExteriorOptions(), p), path),
+              direct(s, g, directOnly(p), path),
               fullContext(full.makeContext()),
               directContext(direct.makeContext()) {}
     };
-    auto state = std::make_shared<State>(scene, geometry, searchPath);
+    auto state = std::make_shared<State>(scene, geometry, searchPath, pass);
     light::PortExterior e;
     e.view = [state, &scene](const Vec3& from, const Vec3& w, uint64_t index) {
         light::ExteriorView v;

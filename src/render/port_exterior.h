@@ -23,11 +23,13 @@ namespace rp::render {
 RenderOptions portExteriorOptions();
 
 // What a port sees outside, for the emission plan: the radiance of the surfaces its rays
-// meet (renderers of `scene` with portExteriorOptions()), and the ambient irradiance
+// meet (renderers of `scene` with portExteriorOptions(), in the bands of `pass`: a
+// spectral map set's pass sees its own bands, spectrum.h), and the ambient irradiance
 // there for the photons left on them (light/emitter.h ExteriorView). The returned
 // function keeps what it needs alive and must be called from one thread (its irradiance
 // cache fills in call order, which keeps the plan the same for any -n).
 light::PortExterior portExterior(const Scene& scene, const SceneGeometry& geometry,
-                                 std::vector<std::string> searchPath);
+                                 std::vector<std::string> searchPath,
+                                 const spectral::Pass& pass = {});
 
 }  // namespace rp::render
