@@ -51,10 +51,6 @@ double secondsSince(Clock::time_point t0) {
 
 void checkRequest(const MkpmapOptions& o, const PortExteriorFactory& exterior,
                   const std::vector<spectral::Pass>& passes) {
-    if (passes.size() > 1) {
-        if (o.wants(PhotonMapType::Contrib))
-            throw InputError("contribution photon maps with -cs above 3 are not supported yet");
-    }
     if (o.portExterior) {
         if (o.portSpecs.empty()) throw InputError("-apE: no photon ports (-apo, -apO)");
         if (!exterior) throw InputError("-apE: not available in this program");
@@ -78,7 +74,10 @@ void checkRequest(const MkpmapOptions& o, const PortExteriorFactory& exterior,
     }
     if (!o.precomputedContrib()) return;
     const std::string& file = o.maps[size_t(PhotonMapType::Contrib)]->file;
-    for (const std::string& f : {coeffFolder(file), optionFile(file)}) {
+    std::vector<std::string> outputs = {optionFile(file)};
+    for (const spectral::Pass& pass : passes)
+        outputs.push_back(coeffFolder(spectral::passFile(file, pass)));
+    for (const std::string& f : outputs) {
         std::error_code ec;
         if (!o.overwrite && std::filesystem::exists(f, ec))
             throw InputError("precomputed contributions " + f + " exist, not overwritten");
@@ -199,6 +198,7 @@ void saveMaps(const MkpmapOptions& o, std::array<MapPhotons, kNumPhotonMapTypes>
 struct EmittingScene {
     const Scene& scene;
     const SceneGeometry& geometry;
+    spectral::Pass pass;  // the bands it emits
     std::optional<material::SurfaceChains> chains;
     // BRTDfunc's specular expressions at photon hits (pmapmat.c brdfPhotonScatter).
     std::optional<material::MaterialCalc> functions;
@@ -207,7 +207,7 @@ struct EmittingScene {
 
     EmittingScene(const MkpmapOptions& o, const Scene& s, const SceneGeometry& g,
                   const PortExteriorFactory& exterior, const spectral::Pass& pass)
-        : scene(s), geometry(g) {
+        : scene(s), geometry(g), pass(pass) {
         light::LightSearchOptions search;
         search.pass = pass;
         std::vector<light::LightSource> sources = light::findLightSources(scene, geometry, search);
@@ -311,7 +311,9 @@ std::vector<Photon> precomputeContribution(const MkpmapOptions& o, const Emittin
     ps.contributions = o.contributions;
     ps.pass = o.pass;
     ps.progress = &diag;
-    ps.mapFile = request.file;
+    // A spectral map set's passes each keep their coefficients beside their own file
+    // (rcontrib's pass opens that file); the one option file serves them all.
+    ps.mapFile = spectral::passFile(request.file, es.pass);
     ps.commandLine = commandLine;
     ps.overwrite = o.overwrite;
     // manual rev 1.51: fewer photons per estimate than bins leaves bins empty.
