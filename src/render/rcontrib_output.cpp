@@ -14,6 +14,7 @@
 #include <fstream>
 #include <map>
 
+#include "image/spectral_picture.h"
 #include "render/rtrace_io.h"
 #include "render/rtrace_options.h"
 #include "util/colr.h"
@@ -25,14 +26,16 @@ namespace rp::render {
 
 namespace {
 
-size_t valueSize(char format) {
+// Bytes of one bin's value of n samples (RADIANCE 6: n+1 byte common-exponent pixels for
+// -fc with more than 3).
+size_t valueSize(char format, size_t n) {
     switch (format) {
         case 'f':
-            return 3 * sizeof(float);
+            return n * sizeof(float);
         case 'd':
-            return 3 * sizeof(double);
+            return n * sizeof(double);
         case 'c':
-            return 4;
+            return n == 3 ? 4 : n + 1;
         default:
             return 0;
     }
@@ -111,10 +114,6 @@ ContribOutput::ContribOutput(const RcontribOptions& o, std::vector<std::string> 
                     .value_or(spectral::SamplingChoice{})
                     .sampling) {  // checked (and warned about) by the tool
     passes_ = spectral::passesOf(sampling_);
-    if (!sampling_.isRgb() && o.outputFormat == 'c')
-        throw InputError("-fc with -cs above 3 is not supported yet");
-    if (!sampling_.isRgb() && o.recover)
-        throw InputError("-r with -cs above 3 is not supported yet");
     std::map<std::string, size_t> byName;
     auto streamFor = [&](const std::string& spec, const std::string& mod, int bin,
                          bool& exists) -> size_t {
@@ -161,6 +160,17 @@ ContribOutput::ContribOutput(const RcontribOptions& o, std::vector<std::string> 
     }
 }
 
+// RADIANCE 6 compat (rcontrib -fc -cs n): spectral samples make hyperspectral pictures.
+const char* ContribOutput::format() const {
+    return o_.outputFormat == 'c' && !sampling_.isRgb() ? kSpectralFormat
+                                                        : formatName(o_.outputFormat);
+}
+
+// RADIANCE 6 compat: its hyperspectral pictures pad the resolution line (rtrace's too).
+std::string ContribOutput::resolution() const {
+    return resolutionLine(o_.xres, o_.yres, o_.outputFormat == 'c' && !sampling_.isRgb());
+}
+
 ContribOutput::~ContribOutput() {
     for (auto& s : streams_)
         if (s->file) s->pipe ? pclose(s->file) : std::fclose(s->file);
@@ -199,10 +209,10 @@ ContribOutput::Stream& ContribOutput::open(size_t index) {
         h += info;
         if (o_.outputFormat == 'f' || o_.outputFormat == 'd')
             h += std::endian::native == std::endian::big ? "BigEndian=1\n" : "BigEndian=0\n";
-        h += std::string("FORMAT=") + formatName(o_.outputFormat) + "\n\n";
+        h += std::string("FORMAT=") + format() + "\n\n";
         s.buffer += h;
     }
-    if (s.reclen == 1 && o_.xres > 0 && o_.yres > 0) s.buffer += resolutionLine(o_.xres, o_.yres);
+    if (s.reclen == 1 && o_.xres > 0 && o_.yres > 0) s.buffer += resolution();
     return s;
 }
 
@@ -210,7 +220,7 @@ uint64_t ContribOutput::recover() {
     // RADIANCE compat (rc2.c recover_output): binary files only; the records every file
     // holds in full are kept, the rest is written again.
     if (o_.outputFormat == 'a') throw InputError("cannot recover ASCII output");
-    const size_t recordBytes = valueSize(o_.outputFormat);
+    const size_t recordBytes = valueSize(o_.outputFormat, size_t(sampling_.n));
     struct Found {
         size_t stream;
         uint64_t dataStart;
@@ -232,12 +242,12 @@ uint64_t ContribOutput::recover() {
         uint64_t start = 0;
         if (o_.header) {
             Header h;
-            if (!tryReadHeader(in, h) || h.format() != formatName(o_.outputFormat))
+            if (!tryReadHeader(in, h) || h.format() != format())
                 throw InputError("format mismatch for '" + s.name + "'");
         }
         if (s.reclen == 1 && o_.xres > 0 && o_.yres > 0) {
             std::string line;
-            if (!std::getline(in, line) || line + "\n" != resolutionLine(o_.xres, o_.yres))
+            if (!std::getline(in, line) || line + "\n" != resolution())
                 throw InputError("resolution mismatch for '" + s.name + "'");
         }
         start = uint64_t(in.tellg());
@@ -262,16 +272,19 @@ uint64_t ContribOutput::recover() {
 }
 
 std::vector<Color> ContribOutput::reload() {
-    std::vector<Color> totals;
+    size_t bins = 0;
+    for (const auto& m : streamOf_) bins += m.size();
+    // In writeRecord's layout: each pass's bins in turn, a pass's bands as its colour.
+    std::vector<Color> totals(bins * passes_.size());
     std::vector<std::unique_ptr<std::ifstream>> inputs(streams_.size());
     std::vector<bool> missing(streams_.size(), false);
+    size_t k = 0;
     for (size_t m = 0; m < streamOf_.size(); ++m) {
-        for (size_t j = 0; j < streamOf_[m].size(); ++j) {
+        for (size_t j = 0; j < streamOf_[m].size(); ++j, ++k) {
             const size_t si = streamOf_[m][j];
             const Stream& s = *streams_[si];
             if (s.name.empty()) throw InputError("cannot reload from stdout");
             if (s.pipe) throw InputError("cannot reload from command");
-            Color v;
             if (!inputs[si] && !missing[si]) {
                 inputs[si] = std::make_unique<std::ifstream>(s.name, std::ios::binary);
                 std::ifstream& in = *inputs[si];
@@ -280,41 +293,53 @@ std::vector<Color> ContribOutput::reload() {
                     missing[si] = true;
                 } else {
                     Header h;
-                    if (o_.header &&
-                        (!tryReadHeader(in, h) || h.format() != formatName(o_.outputFormat)))
+                    if (o_.header && (!tryReadHeader(in, h) || h.format() != format()))
                         throw InputError("format mismatch for '" + s.name + "'");
                     std::string line;
                     if (s.reclen == 1 && o_.xres > 0 && o_.yres > 0 && !std::getline(in, line))
                         throw InputError("resolution mismatch for '" + s.name + "'");
                 }
             }
+            double v[spectral::kMaxSamples] = {};
             if (!missing[si] && !readValue(*inputs[si], v))
                 throw InputError("missing data in '" + s.name + "'");
-            totals.push_back(v);
+            for (size_t p = 0; p < passes_.size(); ++p)
+                for (int c = 0; c < 3 && passes_[p].first + c < sampling_.n; ++c)
+                    totals[p * bins + k][c] = v[passes_[p].first + c];
         }
     }
     return totals;
 }
 
-bool ContribOutput::readValue(std::istream& in, Color& v) const {
+bool ContribOutput::readValue(std::istream& in, double* v) const {
+    const size_t n = size_t(sampling_.n);
     switch (o_.outputFormat) {
         case 'a':
-            return bool(in >> v.r >> v.g >> v.b);
+            for (size_t c = 0; c < n; ++c)
+                if (!(in >> v[c])) return false;
+            return true;
         case 'f': {
-            float f[3];
-            if (!in.read(reinterpret_cast<char*>(f), sizeof f)) return false;
-            v = Color{f[0], f[1], f[2]};
+            float f[spectral::kMaxSamples];
+            if (!in.read(reinterpret_cast<char*>(f), std::streamsize(n * sizeof(float))))
+                return false;
+            for (size_t c = 0; c < n; ++c) v[c] = f[c];
             return true;
         }
         case 'd':
-            return bool(in.read(reinterpret_cast<char*>(&v.r), sizeof(double)) &&
-                        in.read(reinterpret_cast<char*>(&v.g), sizeof(double)) &&
-                        in.read(reinterpret_cast<char*>(&v.b), sizeof(double)));
+            return bool(in.read(reinterpret_cast<char*>(v), std::streamsize(n * sizeof(double))));
         default: {
-            Colr c;
-            if (!in.read(reinterpret_cast<char*>(c.data()), 4)) return false;
-            const auto rgb = colrToRgb(c);
-            v = Color{rgb[0], rgb[1], rgb[2]};
+            if (n == 3) {
+                Colr c;
+                if (!in.read(reinterpret_cast<char*>(c.data()), 4)) return false;
+                const auto rgb = colrToRgb(c);
+                for (int i = 0; i < 3; ++i) v[i] = rgb[size_t(i)];
+                return true;
+            }
+            uint8_t packed[spectral::kMaxSamples + 1];
+            float f[spectral::kMaxSamples];
+            if (!in.read(reinterpret_cast<char*>(packed), std::streamsize(n + 1))) return false;
+            unpackSpectrum({packed, n + 1}, {f, n});
+            for (size_t c = 0; c < n; ++c) v[c] = f[c];
             return true;
         }
     }
@@ -351,10 +376,17 @@ void ContribOutput::writeRecord(const std::vector<Color>& values, double scale, 
                 case 'd':
                     s.buffer.append(reinterpret_cast<const char*>(v), n * sizeof(double));
                     break;
-                default: {  // three samples (-fc with more is refused)
-                    const Colr c = toColr(v[0], v[1], v[2]);
-                    s.buffer.append(reinterpret_cast<const char*>(c.data()), c.size());
-                }
+                default:
+                    if (n == 3) {
+                        const Colr c = toColr(v[0], v[1], v[2]);
+                        s.buffer.append(reinterpret_cast<const char*>(c.data()), c.size());
+                    } else {  // RADIANCE 6's common-exponent spectral pixels
+                        float f[spectral::kMaxSamples];
+                        uint8_t packed[spectral::kMaxSamples + 1];
+                        for (size_t c = 0; c < n; ++c) f[c] = float(v[c]);
+                        packSpectrum({f, n}, {packed, n + 1});
+                        s.buffer.append(reinterpret_cast<const char*>(packed), n + 1);
+                    }
             }
         }
     }

@@ -61,8 +61,12 @@ public:
     struct Stream;
 
 private:
+    // The FORMAT= of the output (formatName, or Radiance_spectra for -fc with -cs above 3).
+    const char* format() const;
+    std::string resolution() const;  // the pictures' resolution line
     Stream& open(size_t stream);
-    bool readValue(std::istream& in, Color& v) const;  // one RGB value in the output format
+    // One bin's samples in the output format into v[0..n).
+    bool readValue(std::istream& in, double* v) const;
     const RcontribOptions& o_;
     std::vector<std::string> sceneHeader_;
     std::ostream& stdout_;

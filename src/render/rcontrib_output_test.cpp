@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "image/spectral_picture.h"
 #include "render/rcontrib_run.h"
 #include "util/error.h"
 #include "util/temp_dir_for_tests.h"
@@ -215,6 +216,93 @@ TEST(ContribOutput, RecoveryRules) {
     o.outputFormat = 'f';
     ContribOutput toStdout(o, {}, out);
     EXPECT_THROW(toStdout.recover(), InputError);  // "cannot recover from stdout"
+}
+
+// -cs 9 (RADIANCE 6's rcontrib): the nine samples of a bin come from three passes, pass p
+// giving samples 3p..3p+2 (rcontrib_tool.cpp lays values out pass by pass).
+void spectralTrace(const Vec3&, const Vec3&, uint64_t i, double, std::vector<Color>& v) {
+    for (size_t p = 0; p < 3; ++p)
+        v[p] = Color{1.0 + double(3 * p) + double(i), 2.0 + double(3 * p), 3.0 + double(3 * p)};
+}
+
+// -fc with spectral samples writes RADIANCE 6.1a's hyperspectral pictures: FORMAT=
+// Radiance_spectra, its padded resolution line and n+1 byte common-exponent pixels (the
+// same bytes as RADIANCE 6.1a's rcontrib -cs 9 -fac -x 2 -y 2 wrote for the lamps of
+// ../shared/validation/contrib, checked by hand when this was written).
+TEST(ContribOutput, SpectralPicturesAreRadiance6s) {
+    TempDir dir;
+    RcontribOptions o = options({mod("lamp", 1, dir.file("p_%s.hsr"))}, 'c');
+    o.render.spectralSamples = 9;
+    o.xres = 2;
+    o.yres = 2;
+    std::ostringstream out;
+    RcontribRunSettings s;
+    s.values = 3;
+    {
+        std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n");
+        ContribOutput co(o, {}, out);
+        runRcontrib(s, in, &co, spectralTrace);
+    }
+    const std::string pic = slurp(dir.file("p_lamp.hsr"));
+    EXPECT_NE(pic.find("NCOMP=9\nWAVELENGTH_SPLITS= 780 588 480 380\n"), std::string::npos);
+    EXPECT_NE(pic.find("FORMAT=Radiance_spectra\n\n-Y        2 +X        2\n"), std::string::npos)
+        << pic;
+    const size_t data = pic.find("+X        2\n") + 12;
+    ASSERT_EQ(pic.size() - data, 4u * 10u);  // four pixels of 9 mantissas and an exponent
+    float v[9];  // the second pixel (ray 1): samples 3p + c are c + 1 + 3p, plus 1 for c = 0
+    unpackSpectrum({reinterpret_cast<const uint8_t*>(pic.data() + data + 10), 10}, v);
+    for (int k = 0; k < 9; ++k) {
+        const double want = double(k % 3 + 1 + k / 3 * 3) + (k % 3 == 0 ? 1 : 0);
+        EXPECT_NEAR(v[k], want, want / 64) << k;  // 8-bit mantissas under a shared exponent
+    }
+}
+
+// -r continues spectral records as RGB ones, and with -c 0 reloads the nine samples of
+// each bin into the passes' totals.
+TEST(ContribOutput, SpectralRecoverAndReload) {
+    TempDir dir;
+    RcontribOptions o = options({mod("lamp", 1, dir.file("r_%s.bin"))}, 'f');
+    o.render.spectralSamples = 9;
+    std::ostringstream out;
+    RcontribRunSettings s;
+    s.values = 3;
+    const std::string rays = "0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n";
+    {
+        std::istringstream in(rays);
+        ContribOutput co(o, {}, out);
+        runRcontrib(s, in, &co, spectralTrace);
+    }
+    const std::string full = slurp(dir.file("r_lamp.bin"));
+    std::filesystem::resize_file(dir.file("r_lamp.bin"), full.size() - 20);
+    o.recover = true;
+    {
+        ContribOutput co(o, {}, out);
+        s.skipRecords = co.recover();
+        EXPECT_EQ(s.skipRecords, 2u);
+        std::istringstream in(rays);
+        runRcontrib(s, in, &co, spectralTrace);
+    }
+    EXPECT_EQ(slurp(dir.file("r_lamp.bin")), full);
+
+    RcontribOptions t = options({mod("lamp", 1, dir.file("t_%s.txt"))});
+    t.render.spectralSamples = 9;
+    t.accumulate = 0;
+    RcontribRunSettings a;
+    a.values = 3;
+    a.accumulate = 0;
+    for (int run = 0; run < 2; ++run) {
+        std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n");
+        ContribOutput co(t, {}, out);
+        if (run == 1) a.totals = co.reload();
+        runRcontrib(a, in, &co, spectralTrace);
+        t.recover = true;
+    }
+    // Each run adds rays 0 and 1: sample 0 is (1 + 0) + (1 + 1) = 3 a run, sample 8 is 9 + 9.
+    const std::string text = slurp(dir.file("t_lamp.txt"));
+    EXPECT_NE(text.find("\n\n6.000000e+00\t8.000000e+00\t1.200000e+01\t1.800000e+01"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("3.600000e+01\t\n"), std::string::npos) << text;
 }
 
 }  // namespace
