@@ -181,26 +181,31 @@ TEST(ContribOutput, RecoverKeepsCompleteRecords) {
     EXPECT_EQ(again, full);
 }
 
-TEST(ContribOutput, ReloadAddsToTotals) {
-    // rc2.c reload_output: with -c 0 and -r, a second run adds to what the files hold.
-    TempDir dir;
-    RcontribOptions o = options({mod("lamp", 2, dir.file("t_%s.txt"))});
+// Two runs of two rays with -c 0, the second with -r reloading the first's totals
+// (rc2.c reload_output); `values` per ray from `trace`.
+void runTwiceReloading(RcontribOptions o, size_t values, const ContribTraceFn& trace) {
     o.accumulate = 0;
-    auto traceFn = [](const Vec3&, const Vec3&, uint64_t i, double, std::vector<Color>& v) {
-        v[0] = Color::grey(1.0 + double(i));
-        v[1] = Color{0.5, 0, 0};
-    };
     RcontribRunSettings s;
-    s.values = 2;
+    s.values = values;
     s.accumulate = 0;
     std::ostringstream out;
     for (int run = 0; run < 2; ++run) {
         std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n");
         ContribOutput co(o, {}, out);
         if (run == 1) s.totals = co.reload();
-        runRcontrib(s, in, &co, traceFn);
+        runRcontrib(s, in, &co, trace);
         o.recover = true;
     }
+}
+
+TEST(ContribOutput, ReloadAddsToTotals) {
+    // rc2.c reload_output: with -c 0 and -r, a second run adds to what the files hold.
+    TempDir dir;
+    runTwiceReloading(options({mod("lamp", 2, dir.file("t_%s.txt"))}), 2,
+                      [](const Vec3&, const Vec3&, uint64_t i, double, std::vector<Color>& v) {
+                          v[0] = Color::grey(1.0 + double(i));
+                          v[1] = Color{0.5, 0, 0};
+                      });
     const std::string t = slurp(dir.file("t_lamp.txt"));
     EXPECT_NE(t.find("\n\n6.000000e+00\t6.000000e+00\t6.000000e+00\t2.000000e+00\t0.000000e+00"),
               std::string::npos)
@@ -286,17 +291,7 @@ TEST(ContribOutput, SpectralRecoverAndReload) {
 
     RcontribOptions t = options({mod("lamp", 1, dir.file("t_%s.txt"))});
     t.render.spectralSamples = 9;
-    t.accumulate = 0;
-    RcontribRunSettings a;
-    a.values = 3;
-    a.accumulate = 0;
-    for (int run = 0; run < 2; ++run) {
-        std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n");
-        ContribOutput co(t, {}, out);
-        if (run == 1) a.totals = co.reload();
-        runRcontrib(a, in, &co, spectralTrace);
-        t.recover = true;
-    }
+    runTwiceReloading(t, 3, spectralTrace);
     // Each run adds rays 0 and 1: sample 0 is (1 + 0) + (1 + 1) = 3 a run, sample 8 is 9 + 9.
     const std::string text = slurp(dir.file("t_lamp.txt"));
     EXPECT_NE(text.find("\n\n6.000000e+00\t8.000000e+00\t1.200000e+01\t1.800000e+01"),
