@@ -152,7 +152,7 @@ double PhotonLookup::gradientFactor(std::span<const FoundPhoton> hits, size_t qu
     edgeU_.clear();
     for (size_t i = first; i < hits.size(); ++i)
         edgeU_.push_back(std::min(1.0, hits[i].dist2 / d1));
-    return edgeGradientFactor(edgeU_, edgeOffsetOfFraction(covered));
+    return edgeGradientFactor(edgeU_, edgeOffsetOfFraction(covered), edgeScratch_);
 }
 
 std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& normal,

@@ -146,7 +146,7 @@ double edgeOffsetOfFraction(double fraction) {
     return 0.5 * (lo + hi);
 }
 
-double edgeGradientFactor(std::span<const double> u, double delta) {
+double edgeGradientFactor(std::span<const double> u, double delta, std::vector<double>& scratch) {
     if (u.size() < kMinEdgePhotons) return 1;
     const double d = clampUnit(delta);
     const double area = edgeDiscFraction(d);
@@ -156,14 +156,14 @@ double edgeGradientFactor(std::span<const double> u, double delta) {
     // beta Mx), the log likelihood is concave in gamma (a mixture's weight): Newton
     // converges from 0. The factor is then 1 - gamma Mx. A photon the probes' edge leaves
     // outside (a = 0) counts as just inside.
-    std::vector<std::pair<double, double>> ac;
-    ac.reserve(u.size());
+    scratch.clear();  // a_i / A and c_i, in turn
     for (double ui : u) {
         const double root = std::sqrt(std::max(ui, 1e-12));
         const double c = clampUnit(d / root);
         const double a = std::max(1 - acosOverPi(c), 1e-3) / area;
         const double m = -root * std::sqrt(1 - c * c) / kPi;
-        ac.emplace_back(a, m - moment * a);
+        scratch.push_back(a);
+        scratch.push_back(m - moment * a);
     }
     // 1 + beta x >= 0 over the part (x from -1 to delta), with a margin; gamma rises with beta.
     const double betaMax = 0.95, betaMin = d > 0.01 ? -0.95 / d : -95;
@@ -172,8 +172,8 @@ double edgeGradientFactor(std::span<const double> u, double delta) {
     double gamma = 0;
     for (int iter = 0; iter < 30; ++iter) {
         double g = 0, h = 0;
-        for (const auto& [a, c] : ac) {
-            const double v = a + gamma * c;
+        for (size_t i = 0; i < scratch.size(); i += 2) {
+            const double c = scratch[i + 1], v = scratch[i] + gamma * c;
             g += c / v;
             h -= c * c / (v * v);
         }

@@ -116,7 +116,8 @@ double edgeOffsetOfFraction(double fraction);
 // k = 200 (10 % at a tenth of a radius inside, 5 % at 0.6), which a final gather
 // averages away; gating it on significance was tried and left the bias on slats (a
 // gradient of 60 % over one radius is significant in only some lookups at k = 200).
-// `u` as fitEdge's (each in [0, 1]). Fewer than kMinEdgePhotons give 1.
-double edgeGradientFactor(std::span<const double> u, double delta);
+// `u` as fitEdge's (each in [0, 1]); `scratch` is reused between calls. Fewer than
+// kMinEdgePhotons give 1.
+double edgeGradientFactor(std::span<const double> u, double delta, std::vector<double>& scratch);
 
 }  // namespace rp::pmap

@@ -313,6 +313,7 @@ std::vector<double> gradientSample(double delta, double beta, int k, std::mt1993
 // 0.6) plus 0.5 % for the maximum likelihood fit's own small-sample bias.
 TEST(EdgeModel, GradientFactorOfModelProfiles) {
     std::mt19937_64 rng(7);
+    std::vector<double> scratch;
     for (double delta : {0.0, 0.3, 0.6})
         for (double beta : {0.0, 0.6, -0.6}) {
             const double area = edgeDiscFraction(delta);
@@ -322,7 +323,7 @@ TEST(EdgeModel, GradientFactorOfModelProfiles) {
             const int trials = 1000;
             for (int t = 0; t < trials; ++t) {
                 std::vector<double> u = gradientSample(delta, beta, 200, rng);
-                const double f = edgeGradientFactor(u, delta) / truth;
+                const double f = edgeGradientFactor(u, delta, scratch) / truth;
                 sum += f;
                 sum2 += f * f;
             }
@@ -331,7 +332,7 @@ TEST(EdgeModel, GradientFactorOfModelProfiles) {
             EXPECT_NEAR(m, 1, 4 * sd / std::sqrt(double(trials)) + 0.005) << delta << " " << beta;
         }
     std::vector<double> few = {0.1, 0.5, 0.9};
-    EXPECT_EQ(edgeGradientFactor(few, 0), 1);
+    EXPECT_EQ(edgeGradientFactor(few, 0, scratch), 1);
 }
 
 // The surface y < 0.5 of the plane z = 0 (x in [0, 1]), its photons with density in

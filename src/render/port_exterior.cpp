@@ -23,12 +23,10 @@ RenderOptions portExteriorOptions() {
 
 namespace {
 
-// The options as the pass renders them (passOptions' settings for one pass).
+// The options as the pass renders them.
 RenderOptions inPass(RenderOptions o, const spectral::Pass& pass) {
     o.spectralSamples = pass.sampling.n;
-    o.pass = pass;
-    o.direct.pass = pass;
-    return o;
+    return passOptions(o, pass);
 }
 
 // What the direct calculation counts and a global photon must not: the light sources'

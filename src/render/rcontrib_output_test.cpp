@@ -151,34 +151,41 @@ TEST(ContribOutput, PicturesOfSeveralModifiersTakeTheirOwnBinNumbers) {
     EXPECT_NE(slurp(dir.file("img_2.hdr")).find("MODIFIER=b\nBIN=2\nNROWS=1\n"), std::string::npos);
 }
 
+// Three rays of `values` values each to `file` (one modifier's), the file cut inside its
+// third record as a killed run leaves it, and -r continuing it: two records are kept,
+// and the file ends as the whole run's.
+void expectRecovered(RcontribOptions o, const std::string& file, size_t values,
+                     const ContribTraceFn& trace) {
+    std::ostringstream out;
+    RcontribRunSettings s;
+    s.values = values;
+    const std::string rays = "0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n";
+    {
+        std::istringstream in(rays);
+        ContribOutput co(o, {}, out);
+        runRcontrib(s, in, &co, trace);
+    }
+    const std::string full = slurp(file);
+    std::filesystem::resize_file(file, full.size() - 20);
+    o.recover = true;
+    {
+        ContribOutput co(o, {}, out);
+        s.skipRecords = co.recover();
+        EXPECT_EQ(s.skipRecords, 2u);
+        std::istringstream in(rays);
+        runRcontrib(s, in, &co, trace);
+    }
+    EXPECT_EQ(slurp(file), full);
+}
+
 // A run that stops after `n` records leaves files that -r continues.
 TEST(ContribOutput, RecoverKeepsCompleteRecords) {
     TempDir dir;
-    const std::string f = dir.file("r_%s.bin");
-    RcontribOptions o = options({mod("lamp", 2, f)}, 'd');
-    auto traceFn = [](const Vec3&, const Vec3&, uint64_t i, double, std::vector<Color>& v) {
-        v[0] = Color::grey(double(i));
-        v[1] = Color::grey(10.0 + double(i));
-    };
-    std::ostringstream out;
-    RcontribRunSettings s;
-    s.values = 2;
-    {
-        std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n");
-        ContribOutput co(o, {}, out);
-        runRcontrib(s, in, &co, traceFn);
-    }
-    const std::string full = slurp(dir.file("r_lamp.bin"));
-    // Cut the file inside its third record, as a killed run leaves it.
-    std::filesystem::resize_file(dir.file("r_lamp.bin"), full.size() - 20);
-    o.recover = true;
-    ContribOutput co(o, {}, out);
-    s.skipRecords = co.recover();
-    EXPECT_EQ(s.skipRecords, 2u);
-    std::istringstream in("0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n");
-    runRcontrib(s, in, &co, traceFn);
-    const std::string again = slurp(dir.file("r_lamp.bin"));
-    EXPECT_EQ(again, full);
+    expectRecovered(options({mod("lamp", 2, dir.file("r_%s.bin"))}, 'd'), dir.file("r_lamp.bin"), 2,
+                    [](const Vec3&, const Vec3&, uint64_t i, double, std::vector<Color>& v) {
+                        v[0] = Color::grey(double(i));
+                        v[1] = Color::grey(10.0 + double(i));
+                    });
 }
 
 // Two runs of two rays with -c 0, the second with -r reloading the first's totals
@@ -268,26 +275,7 @@ TEST(ContribOutput, SpectralRecoverAndReload) {
     TempDir dir;
     RcontribOptions o = options({mod("lamp", 1, dir.file("r_%s.bin"))}, 'f');
     o.render.spectralSamples = 9;
-    std::ostringstream out;
-    RcontribRunSettings s;
-    s.values = 3;
-    const std::string rays = "0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n";
-    {
-        std::istringstream in(rays);
-        ContribOutput co(o, {}, out);
-        runRcontrib(s, in, &co, spectralTrace);
-    }
-    const std::string full = slurp(dir.file("r_lamp.bin"));
-    std::filesystem::resize_file(dir.file("r_lamp.bin"), full.size() - 20);
-    o.recover = true;
-    {
-        ContribOutput co(o, {}, out);
-        s.skipRecords = co.recover();
-        EXPECT_EQ(s.skipRecords, 2u);
-        std::istringstream in(rays);
-        runRcontrib(s, in, &co, spectralTrace);
-    }
-    EXPECT_EQ(slurp(dir.file("r_lamp.bin")), full);
+    expectRecovered(o, dir.file("r_lamp.bin"), 3, spectralTrace);
 
     RcontribOptions t = options({mod("lamp", 1, dir.file("t_%s.txt"))});
     t.render.spectralSamples = 9;

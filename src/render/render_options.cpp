@@ -237,22 +237,24 @@ spectral::Sampling spectralSampling(const RenderOptions& opt) {
     return c->sampling;
 }
 
+RenderOptions passOptions(const RenderOptions& opt, const spectral::Pass& p) {
+    RenderOptions o = opt;
+    o.pass = p;
+    o.direct.pass = p;
+    o.ambient.value = p.ofRgb(opt.ambient.value);
+    o.mist.extinction = p.ofRgb(opt.mist.extinction);
+    o.mist.albedo = p.ofRgb(opt.mist.albedo);
+    for (PhotonMapUse& use : o.photonMaps) use.pass = p;
+    // Each pass keeps its own ambient file, its bands in the header.
+    if (!o.ambient.file.empty()) o.ambient.file = spectral::passFile(o.ambient.file, p);
+    o.ambient.bands = spectral::passLabel(p);
+    return o;
+}
+
 std::vector<RenderOptions> passOptions(const RenderOptions& opt,
                                        const spectral::Sampling& sampling) {
     std::vector<RenderOptions> out;
-    for (const spectral::Pass& p : spectral::passesOf(sampling)) {
-        RenderOptions o = opt;
-        o.pass = p;
-        o.direct.pass = p;
-        o.ambient.value = p.ofRgb(opt.ambient.value);
-        o.mist.extinction = p.ofRgb(opt.mist.extinction);
-        o.mist.albedo = p.ofRgb(opt.mist.albedo);
-        for (PhotonMapUse& use : o.photonMaps) use.pass = p;
-        // Each pass keeps its own ambient file, its bands in the header.
-        if (!o.ambient.file.empty()) o.ambient.file = spectral::passFile(o.ambient.file, p);
-        o.ambient.bands = spectral::passLabel(p);
-        out.push_back(std::move(o));
-    }
+    for (const spectral::Pass& p : spectral::passesOf(sampling)) out.push_back(passOptions(opt, p));
     return out;
 }
 

@@ -126,6 +126,8 @@ spectral::Sampling spectralSampling(const RenderOptions& opt);
 // -me, -ma) as that pass renders them.
 std::vector<RenderOptions> passOptions(const RenderOptions& opt,
                                        const spectral::Sampling& sampling);
+// The same for one pass.
+RenderOptions passOptions(const RenderOptions& opt, const spectral::Pass& pass);
 
 // Adds the shared options to `table`, bound to `opt`, each with its line of RADIANCE's
 // `rtrace -defaults` (print_rdefaults in renderopts.c, printPmapDefaults in pmapopt.c:

@@ -51,9 +51,7 @@ const ProbeTables& probeTables() {
 
 SurfaceCoverage::SurfaceCoverage(const material::MaterialTable& materials,
                                  const SceneGeometry& geometry, const Hit& hit, const Vec3& normal)
-    : materials_(materials), geometry_(geometry), hit_(hit), point_(hit.point), normal_(normal) {
-    orthonormalFrame(normal_, e1_, e2_);
-}
+    : materials_(materials), geometry_(geometry), hit_(hit), point_(hit.point), normal_(normal) {}
 
 double SurfaceCoverage::polygonClearance() const {
     const Scene& scene = materials_.scene();
@@ -94,6 +92,10 @@ pmap::DiscCoverage::Part SurfaceCoverage::part(double radius2, double slab) cons
     const double radius = std::sqrt(radius2);
     if (polygonClearance() > radius) return {};
     if (!covered(point_, slab)) return {0, false};  // off every surface (rtrace -I in air)
+    if (!framed_) {
+        orthonormalFrame(normal_, e1_, e2_);
+        framed_ = true;
+    }
     const ProbeTables& t = probeTables();
     bool whole = true;
     for (int i = 0; i < kRimProbes && whole; ++i)

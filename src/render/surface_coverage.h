@@ -47,7 +47,11 @@ private:
     const material::MaterialTable& materials_;
     const SceneGeometry& geometry_;
     const Hit& hit_;
-    Vec3 point_, normal_, e1_, e2_;
+    Vec3 point_, normal_;
+    // The tangent frame, made at the first probe: shading builds one of these at every
+    // ambient lookup, and only -ape's ask it anything.
+    mutable Vec3 e1_, e2_;
+    mutable bool framed_ = false;
 };
 
 }  // namespace rp::render
