@@ -34,12 +34,12 @@ constexpr TimeZone kZones[] = {
     {"JST", -135}, {"NZST", -180}, {"NZDT", -195},
 };
 
-// RADIANCE's cvthour(): "[+]H[.frac]" or "[+]H:MM", optionally followed (standard time
-// only) by a zone name that sets the meridian. Returns true when a zone was given.
-bool parseTime(const std::string& word, GenskyOptions& opt) {
+}  // namespace
+
+bool parseClockTime(const std::string& word, double& hourOut, bool& solarTime, Site& site) {
     size_t p = 0;
-    opt.solarTime = !word.empty() && word[0] == '+';
-    if (opt.solarTime) ++p;
+    solarTime = !word.empty() && word[0] == '+';
+    if (solarTime) ++p;
     size_t digitsStart = p;
     while (p < word.size() && std::isdigit(static_cast<unsigned char>(word[p]))) ++p;
     bool any = p > digitsStart;
@@ -59,23 +59,21 @@ bool parseTime(const std::string& word, GenskyOptions& opt) {
     }
     if (!any) throw InputError("bad time format '" + word + "'");
     if (hour > 24) throw InputError("bad hour '" + word + "': expected 0..24");
-    opt.hour = hour;
+    hourOut = hour;
     if (p == word.size()) return false;
     std::string zone = word.substr(p);
-    if (opt.solarTime || !std::isalpha(static_cast<unsigned char>(zone[0])))
+    if (solarTime || !std::isalpha(static_cast<unsigned char>(zone[0])))
         throw InputError("bad time format '" + word + "'");
     for (char& c : zone) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     for (const TimeZone& z : kZones)
         if (zone == z.name) {
-            opt.site.meridian = z.meridianDeg * kDegree;
+            site.meridian = z.meridianDeg * kDegree;
             return true;
         }
     std::string known;
     for (const TimeZone& z : kZones) known += std::string(known.empty() ? "" : " ") + z.name;
     throw InputError("unknown time zone '" + word.substr(p) + "' (known: " + known + ")");
 }
-
-}  // namespace
 
 GenskyOptions parseGenskyArgs(const std::vector<std::string>& args) {
     GenskyOptions opt;
@@ -96,7 +94,7 @@ GenskyOptions parseGenskyArgs(const std::vector<std::string>& args) {
         opt.month = parseInt(args[1], "month");
         opt.day = parseInt(args[2], "day");
         checkDate(opt.month, opt.day);
-        zoneMeridian = parseTime(args[3], opt);
+        zoneMeridian = parseClockTime(args[3], opt.hour, opt.solarTime, opt.site);
     }
     OptionTable table = genOptionTable();
     table.plusWords = true;

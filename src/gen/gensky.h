@@ -58,6 +58,12 @@ struct GenskySky {
     std::vector<std::string> warnings;  // for stderr, without the "gensky: " prefix
 };
 
+// RADIANCE's cvthour(), the hour word of gensky, gendaylit and genssky: "[+]H[.frac]" or
+// "[+]H:MM" ('+': local solar time), optionally followed (standard time only) by a time
+// zone name, which sets site.meridian. Returns true when a zone was given. InputError for
+// a malformed word, an hour past 24 or an unknown zone.
+bool parseClockTime(const std::string& word, double& hour, bool& solarTime, Site& site);
+
 // Parse gensky's command line (args[0] = program name). Throws InputError for bad dates
 // (month 1..12, day within the month), hours outside 0..24, unknown time zones, unknown
 // options, missing values and non-numeric words.

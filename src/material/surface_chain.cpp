@@ -489,8 +489,12 @@ bool SurfaceChains::directionalOnly(int32_t modifier) const {
     for (int32_t m = modifier; m != kVoid; m = impl_->scene->prims[m].modifier) {
         const ChainRecord& r = impl_->records[m];
         if (r.kind == ChainKind::Spectrum) continue;  // a constant
-        if ((r.kind != ChainKind::Func && r.kind != ChainKind::Data) || !r.directional)
-            return false;
+        // Patterns whose value follows from their expressions (pictures and data are
+        // fixed tables); textures and mixtures are not judged.
+        const bool judged = r.kind == ChainKind::Func || r.kind == ChainKind::Data ||
+                            r.kind == ChainKind::Pict || r.kind == ChainKind::SpecFunc ||
+                            r.kind == ChainKind::SpecData || r.kind == ChainKind::SpecPict;
+        if (!judged || !r.directional) return false;
     }
     return true;
 }

@@ -86,8 +86,9 @@ public:
     // The material reached when the chain is plain (kVoid if none).
     int32_t plainMaterial(int32_t modifier) const;
     // True if the chain from `modifier` (a light's pattern chain, walked to void) holds
-    // only function and data patterns whose value depends on the ray direction D alone.
-    // A function file could read P under any name, so any file makes this false.
+    // only function, data, picture and spectral patterns whose value depends on the ray
+    // direction D alone (their expressions, and every variable and function those reach
+    // in function files, read no other ray variable).
     bool directionalOnly(int32_t modifier) const;
 
     const Scene& scene() const;

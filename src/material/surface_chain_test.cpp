@@ -492,6 +492,7 @@ TEST_F(SurfaceChain, LuminaireDataSeesUnitDirectionsThroughAScaledTransform) {
 TEST_F(SurfaceChain, DirectionalOnlyWithoutPositionVariables) {
     writeFile(f.dir.file("d.dat"), "1\n0 1 2\n0 1\n");
     writeFile(f.dir.file("any.cal"), "g = Dz;\nh(x) = x * Py;\nk = h(Dz);\n");
+    const std::string hsr = std::string(RP_SOURCE_DIR) + "/tests/data/spectral/room12.hsr";
     f.load(
         "void colorfunc dirs 6 Dx Dy Dz . -rz 90 0 0\n"
         "dirs brightfunc twice 2 2 . 0 0\n"
@@ -506,7 +507,15 @@ TEST_F(SurfaceChain, DirectionalOnlyWithoutPositionVariables) {
         "hidden light h 0 0 3 1 1 1\n"
         "void brightfunc half 2 .5 . 0 0\n"
         "void mixfunc mx 4 half void .5 . 0 0\n"
-        "mx light e 0 0 3 1 1 1\n");
+        "mx light e 0 0 3 1 1 1\n"
+        "void specpict sky 5 noop " +
+        hsr +
+        " . 'Atan2(Dy,Dx)/PI+1' '1-Acos(Dz)/PI' 0 0\n"
+        "sky glow s 0 0 4 1 1 1 0\n"
+        "void specpict at 5 noop " +
+        hsr +
+        " . Px Py 0 0\n"
+        "at glow p 0 0 4 1 1 1 0\n");
     auto chainOf = [&](const char* light) { return f.scene->prims[f.mod(light)].modifier; };
     EXPECT_TRUE(f.chains->directionalOnly(chainOf("a")));
     EXPECT_TRUE(f.chains->directionalOnly(chainOf("b")));
@@ -515,6 +524,9 @@ TEST_F(SurfaceChain, DirectionalOnlyWithoutPositionVariables) {
     EXPECT_FALSE(f.chains->directionalOnly(chainOf("h")));  // k calls h, which reads Py
     EXPECT_FALSE(f.chains->directionalOnly(chainOf("e")));  // mixtures are not judged
     EXPECT_TRUE(f.chains->directionalOnly(kVoid));
+    // Pictures too (genssky's sky: every port point sees the same sky).
+    EXPECT_TRUE(f.chains->directionalOnly(chainOf("s")));
+    EXPECT_FALSE(f.chains->directionalOnly(chainOf("p")));  // reads Px, Py
     // Rotated +90 degrees about z, the world x axis is the object's -y axis; x 2.
     PatternPoint pp;
     pp.dir = {1, 0, 0};
