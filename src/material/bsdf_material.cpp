@@ -45,10 +45,15 @@ bool makeFrame(const Vec3& normal, const Vec3& up, Frame& f) {
 struct BsdfHit {
     const bsdf::BsdfData* sd = nullptr;
     Frame frame;
-    Vec3 vray;                   // local direction back along the ray
-    double srPsa[2] = {0, 0};    // sqrt of the data's smallest and largest cells at vray
-    Color rdiff, tdiff;          // Lambertian parts (data + arguments) times the pattern
-    Color cthru, cthruSurround;  // aBSDF: the through peak and the BTDF around it
+    Vec3 vray;                          // local direction back along the ray
+    double srPsa[2] = {0, 0};           // sqrt of the data's smallest and largest cells at vray
+    Color rdiff, tdiff;                 // Lambertian parts (data + arguments) times the pattern
+    Color cthru, cthruSurround;         // aBSDF: the through peak and the BTDF around it
+    std::array<int, 3> bands{0, 1, 2};  // BsdfParams::dataBands
+
+    // A colour of the data in the pass's bands. Choices (peaks, thresholds) are made on
+    // the data's own colours, so that every pass makes the same ones.
+    Color inBands(const Color& c) const { return {c[bands[0]], c[bands[1]], c[bands[2]]}; }
 };
 
 // What a hit needs beyond the frame and the Lambertian parts: the data's resolution at
@@ -84,9 +89,11 @@ bool setupBsdf(const BsdfParams& m, const SurfacePoint& sp, BsdfHit& h) {
         return false;
     }
     h.vray = h.frame.toLocal(-sp.dir);
+    h.bands = m.dataBands;
     const bsdf::BsdfData& sd = *h.sd;
-    h.rdiff = sp.front ? sd.rLambFront + m.frontDiffuse : sd.rLambBack + m.backDiffuse;
-    h.tdiff = (sp.front ? sd.tLambFront : sd.tLambBack) + m.diffuseTransmittance;
+    h.rdiff = h.inBands(sp.front ? sd.rLambFront : sd.rLambBack) +
+              (sp.front ? m.frontDiffuse : m.backDiffuse);
+    h.tdiff = h.inBands(sp.front ? sd.tLambFront : sd.tLambBack) + m.diffuseTransmittance;
     h.rdiff = h.rdiff * sp.pattern;
     h.tdiff = h.tdiff * sp.pattern;
     return true;
@@ -143,8 +150,8 @@ void computeThrough(BsdfHit& h, const SurfacePoint& sp) {
     if (omSurround <= kFtiny) return;
     const double lamb = (h.vray.z > 0 ? h.sd->tLambFront : h.sd->tLambBack).brightness() / kPi;
     if ((ypeak / ns - lamb) * omPeak < .0005) return;
-    h.cthru = peak * sp.pattern;
-    h.cthruSurround = surround * (1 / omSurround) * sp.pattern;
+    h.cthru = h.inBands(peak) * sp.pattern;
+    h.cthruSurround = h.inBands(surround) * (1 / omSurround) * sp.pattern;
 }
 
 // The non-diffuse part of the BSDF for light from world direction `l` (m_bsdf.c
@@ -205,7 +212,7 @@ Color directSpecular(BsdfHit& h, const BsdfParams& m, const SurfacePoint& sp, co
     Color c = sum * (1.0 / count);
     if (diffY > kFtiny)
         for (int i = 0; i < 3; ++i) c[i] = std::max(0.0, c[i] - diff[i]);
-    return c;
+    return h.inBands(c);
 }
 
 }  // namespace
@@ -283,7 +290,7 @@ Color sampleSet(const BsdfHit& h, const SurfacePoint& sp, bool transmit, const S
                 const double dx = vin.x + out.x, dy = vin.y + out.y;
                 if (dx * dx + dy * dy <= h.srPsa[0] * h.srPsa[0]) continue;
             }
-            Color w = sampleColour(*comp, vin, out, n > 1 ? total / n : total);
+            Color w = h.inBands(sampleColour(*comp, vin, out, n > 1 ? total / n : total));
             if (transmit) w = w * sp.pattern;
             const double childWeight = sp.rayWeight * spawnedWeight(w);
             if (k == 0 && n > 1 && childWeight < opt.minWeight) {
@@ -351,8 +358,8 @@ PhotonScatter scatterBsdf(const BsdfParams& m, const SurfacePoint& sp, Rng& rng)
     // plus the arguments' (setupBsdf already gave both the pattern's colour).
     const Color extraR = (sp.front ? m.frontDiffuse : m.backDiffuse) * sp.pattern;
     const Color extraT = m.diffuseTransmittance * sp.pattern;
-    const Color lambR = (vf ? sd.rLambFront : sd.rLambBack) * patAlb;
-    const Color lambT = (vf ? sd.tLambFront : sd.tLambBack) * patAlb;
+    const Color lambR = h.inBands(vf ? sd.rLambFront : sd.rLambBack) * patAlb;
+    const Color lambT = h.inBands(vf ? sd.tLambFront : sd.tLambBack) * patAlb;
     const Component c[4] = {
         {ScatterKind::DiffuseReflection, extraR + lambR},
         {ScatterKind::DiffuseTransmission, extraT + lambT},
@@ -379,7 +386,7 @@ PhotonScatter scatterBsdf(const BsdfParams& m, const SurfacePoint& sp, Rng& rng)
         Vec3 out;
         if (!pick || !pick->sample(h.vray, rng.uniform(), rng.uniform(), out)) return s;
         s.dir = normalize(h.frame.toWorld(out));
-        factor = factor * sampleColour(*pick, h.vray, out, 1);  // the data's colour there
+        factor = factor * h.inBands(sampleColour(*pick, h.vray, out, 1));  // its colour there
     }
     s.kind = c[i].kind;
     s.fluxFactor = factor;

@@ -113,5 +113,64 @@ TEST(BsdfMaterial, EmptyBackAbsorbsPhotonsOnlyWithoutBackVisibility) {
     }
 }
 
+// Coloured data (CIE-X and CIE-Z beside Y) in a spectral pass: each band takes the data's
+// RGB primary its centre falls in, as RADIANCE 6 turns a BSDF colour into a spectrum
+// (setscolor). A pass of bands in red, red and blue gets the RGB result's (r, r, b) for
+// direct light, the ambient coefficients and sampled rays, and for photons' mean flux.
+TEST(BsdfMaterial, ColouredDataInASpectralPassTakeTheirBandsPrimaries) {
+    TempDir dir;
+    auto block = [](const char* wl, double scale) {
+        std::string vals;
+        for (int k = 0; k < 41 * 41; ++k)
+            vals += std::to_string(scale * (0.05 + 0.001 * ((k * 37) % 101))) + " ";
+        return std::string("<WavelengthData><Wavelength>") + wl +
+               "</Wavelength><WavelengthDataBlock>"
+               "<WavelengthDataDirection>Reflection Back</WavelengthDataDirection>"
+               "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>"
+               "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>" +
+               vals + "</ScatteringData></WavelengthDataBlock></WavelengthData>";
+    };
+    const std::string p = dir.file("c.xml");
+    std::ofstream(p) << "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType>"
+                        "<Optical><Layer><DataDefinition><IncidentDataStructure>Columns"
+                        "</IncidentDataStructure></DataDefinition>" +
+                            block("Visible", 1) + block("CIE-X", 1.2) + block("CIE-Z", .5) +
+                            "</Layer></Optical></WindowElement>\n";
+    const auto sd = bsdf::loadBsdfFile(p);  // "Reflection Back" in WINDOW's terms: our front
+    ASSERT_TRUE(sd->coloured());
+    BsdfParams rgb, pass;
+    pass.dataBands = {0, 0, 2};
+    auto pick = [](const Color& c) { return Color{c.r, c.r, c.b}; };
+    auto expectSame = [](const Color& a, const Color& b, const char* what) {
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], 1e-12 * (1 + std::abs(b[i]))) << what;
+    };
+    for (double th : {10.0, 40.0, 65.0}) {
+        const SurfacePoint sp = hitAt(*sd, test::incident(th));
+        const Vec3 light = normalize(Vec3{0.3, -0.2, 0.9});
+        const Color d = evaluate(MaterialParams{rgb}, sp, light, 1e-3);
+        EXPECT_GT(d.r, 0);
+        expectSame(evaluate(MaterialParams{pass}, sp, light, 1e-3), pick(d), "direct");
+        Rng r1(3, RngDomain::Test, 0), r2(3, RngDomain::Test, 0);
+        const BackwardResult a = shadeBackward(MaterialParams{rgb}, sp, {}, r1);
+        const BackwardResult b = shadeBackward(MaterialParams{pass}, sp, {}, r2);
+        expectSame(b.ambientReflect, pick(a.ambientReflect), "ambient");
+        ASSERT_EQ(a.numRays, b.numRays);
+        for (size_t k = 0; k < size_t(a.numRays); ++k)
+            expectSame(b.rays[k].weight, pick(a.rays[k].weight), "sampled ray");
+    }
+    // Photons: the roulette weighs the pass's own bands, so their paths differ from the
+    // RGB pass's; the mean flux agrees within the two runs' noise.
+    const auto rgbStats = photonStats(MaterialParams{rgb}, 40000, 9,
+                                      [&](Rng&) { return hitAt(*sd, test::incident(30)); });
+    const auto passStats = photonStats(MaterialParams{pass}, 40000, 9,
+                                       [&](Rng&) { return hitAt(*sd, test::incident(30)); });
+    for (int i : {0, 2}) {
+        const int j = pass.dataBands[size_t(i)];
+        const double tol = 4 * std::hypot(passStats.stderr_[i], rgbStats.stderr_[j]);
+        EXPECT_NEAR(passStats.mean[i], rgbStats.mean[j], tol) << "photon flux, band " << i;
+    }
+    EXPECT_GT(rgbStats.mean.r, 1.5 * rgbStats.mean.b);  // the data's colour shows
+}
+
 }  // namespace
 }  // namespace rp::material

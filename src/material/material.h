@@ -204,6 +204,10 @@ struct BsdfParams {
     bool absdf = false;  // aBSDF: no thickness; a strong "through" peak passes rays
     Color frontDiffuse, backDiffuse, diffuseTransmittance;
     bool hasBackDiffuse = false;  // six or nine real arguments
+    // The data's colours are RGB (CIE XYZ converted); in a spectral pass each band takes
+    // the primary its centre falls in (spectrum.h Pass::primary), as RADIANCE 6 turns a
+    // BSDF's colour into a spectrum (m_bsdf.c cvt_sdcolor through ccy2rgb and setscolor).
+    std::array<int, 3> dataBands{0, 1, 2};
 };
 
 // mist (m_mist.c): the boundary of a participating medium. A ray crossing it inward

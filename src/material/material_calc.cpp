@@ -118,10 +118,6 @@ template <class Record>
 void addBsdf(const Primitive& p, Loader& loader, Record& r, const spectral::Pass& pass) {
     const bool thick = p.type == PrimType::BSDF;
     r.bsdf = loader.bsdf(p, p.sargs[thick ? 1 : 0]);
-    // Grey data are the same in every band; coloured data hold RGB (bsdf/colour.h),
-    // whose bands are not worked out yet.
-    if (!pass.sampling.isRgb() && r.bsdf->coloured())
-        throw notSupportedYet(p.loc, "coloured BSDF data in spectral rendering (-cs above 3)");
     // Expressions: the up vector's three, then the thickness (aBSDF: the constant 0).
     const int at[4] = {thick ? 2 : 1, thick ? 3 : 2, thick ? 4 : 3, thick ? 0 : -1};
     for (int k = 0; k < 4; ++k) {

@@ -265,6 +265,7 @@ MaterialParams makeMaterial(const Primitive& p, const spectral::Pass& pass) {
             if (p.rargs.size() >= 6) m.backDiffuse = rgb(p, 3, pass);
             if (p.rargs.size() >= 9) m.diffuseTransmittance = rgb(p, 6, pass);
             m.hasBackDiffuse = p.rargs.size() >= 6;
+            m.dataBands = pass.primary;
             return m;
         }
         case PrimType::WGMDfunc:
