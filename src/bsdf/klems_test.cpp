@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "bsdf/bsdf.h"
+#include "bsdf/coloured_klems_for_tests.h"
 #include "bsdf/multi_sample.h"
 #include "util/error.h"
 #include "util/rng.h"
@@ -196,24 +197,8 @@ void writeFile(const std::string& path, const std::string& text) { std::ofstream
 // brightness), and the Lambertian part takes the coloured minimum.
 TEST(Klems, CieXAndZColourTheData) {
     TempDir dir;
-    auto block = [](const char* wl, double scale) {
-        std::string vals;
-        for (int k = 0; k < 41 * 41; ++k)
-            vals += std::to_string(scale * (0.05 + 0.001 * ((k * 37) % 101))) + " ";
-        return std::string("<WavelengthData><Wavelength>") + wl +
-               "</Wavelength><WavelengthDataBlock>"
-               "<WavelengthDataDirection>Reflection Back</WavelengthDataDirection>"
-               "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>"
-               "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>" +
-               vals + "</ScatteringData></WavelengthDataBlock></WavelengthData>";
-    };
     const std::string p = dir.file("c.xml");
-    writeFile(
-        p,
-        "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType><Optical><Layer>"
-        "<DataDefinition><IncidentDataStructure>Columns</IncidentDataStructure></DataDefinition>" +
-            block("Visible", 1) + block("CIE-X", 1.2) + block("CIE-Z", .5) +
-            "</Layer></Optical></WindowElement>\n");
+    writeFile(p, colouredKlemsXml());
     const auto sd = loadBsdfFile(p);
     // RADIANCE RGB of XYZ (1.2, 1, 0.5), from its primaries (0.640 0.330, 0.290 0.600,
     // 0.150 0.060) and equal-energy white: the XYZ -> RGB matrix applied by hand.

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "bsdf/bsdf.h"
+#include "bsdf/coloured_klems_for_tests.h"
 #include "material/test_util.h"
 #include "util/shared_for_tests.h"
 #include "util/temp_dir_for_tests.h"
@@ -119,24 +120,9 @@ TEST(BsdfMaterial, EmptyBackAbsorbsPhotonsOnlyWithoutBackVisibility) {
 // direct light, the ambient coefficients and sampled rays, and for photons' mean flux.
 TEST(BsdfMaterial, ColouredDataInASpectralPassTakeTheirBandsPrimaries) {
     TempDir dir;
-    auto block = [](const char* wl, double scale) {
-        std::string vals;
-        for (int k = 0; k < 41 * 41; ++k)
-            vals += std::to_string(scale * (0.05 + 0.001 * ((k * 37) % 101))) + " ";
-        return std::string("<WavelengthData><Wavelength>") + wl +
-               "</Wavelength><WavelengthDataBlock>"
-               "<WavelengthDataDirection>Reflection Back</WavelengthDataDirection>"
-               "<ColumnAngleBasis>LBNL/Klems Quarter</ColumnAngleBasis>"
-               "<RowAngleBasis>LBNL/Klems Quarter</RowAngleBasis><ScatteringData>" +
-               vals + "</ScatteringData></WavelengthDataBlock></WavelengthData>";
-    };
     const std::string p = dir.file("c.xml");
-    std::ofstream(p) << "<?xml version=\"1.0\"?>\n<WindowElement><FileType>BSDF</FileType>"
-                        "<Optical><Layer><DataDefinition><IncidentDataStructure>Columns"
-                        "</IncidentDataStructure></DataDefinition>" +
-                            block("Visible", 1) + block("CIE-X", 1.2) + block("CIE-Z", .5) +
-                            "</Layer></Optical></WindowElement>\n";
-    const auto sd = bsdf::loadBsdfFile(p);  // "Reflection Back" in WINDOW's terms: our front
+    std::ofstream(p) << bsdf::colouredKlemsXml();
+    const auto sd = bsdf::loadBsdfFile(p);
     ASSERT_TRUE(sd->coloured());
     BsdfParams rgb, pass;
     pass.dataBands = {0, 0, 2};
