@@ -354,8 +354,7 @@ RowsPass bittySourcePass(std::span<const Renderer* const> passes,
                           : renderers[p]->traceToSource(*contexts[p], size_t(s), ray.origin,
                                                         ray.direction, index, &ignored);
             }
-            for (int j = 0; j < 3 && bands[p].first + j < sampling.n; ++j)
-                samples[bands[p].first + j] = c[j];
+            bands[p].placeBands(c, std::span<double>(samples, size_t(sampling.n)));
         }
         return spectral::toRgb(std::span<const double>(samples, size_t(sampling.n)), sampling);
     };

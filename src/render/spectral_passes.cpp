@@ -17,13 +17,10 @@ RayResult mergePasses(std::span<const RayResult> perPass, std::span<const spectr
         v->assign(size_t(s.n), 0.0);
     for (size_t p = 0; p < passes.size(); ++p) {
         const RayResult& r = perPass[p];
-        for (int j = 0; j < 3 && passes[p].first + j < s.n; ++j) {
-            const size_t band = size_t(passes[p].first + j);
-            samples->value[band] = r.value[j];
-            samples->coefficient[band] = r.coefficient[j];
-            samples->mirrored[band] = r.mirrored[j];
-            samples->unmirrored[band] = r.unmirrored[j];
-        }
+        passes[p].placeBands(r.value, samples->value);
+        passes[p].placeBands(r.coefficient, samples->coefficient);
+        passes[p].placeBands(r.mirrored, samples->mirrored);
+        passes[p].placeBands(r.unmirrored, samples->unmirrored);
     }
     RayResult merged = perPass[0];
     // The RGB fields hold the samples' RGB, for whoever reads them.
@@ -61,8 +58,7 @@ PixelTracerFactory pixelTracersOverPasses(std::vector<PixelTracerFactory> passes
             for (size_t p = 0; p < tracers.size(); ++p) {
                 const Color c =
                     tracers[p](org, dir, index, maxDistance, p == 0 ? distance : &ignored);
-                for (int j = 0; j < 3 && bands[p].first + j < s.n; ++j)
-                    samples[bands[p].first + j] = c[j];
+                bands[p].placeBands(c, std::span<double>(samples, size_t(s.n)));
             }
             return spectral::toRgb(std::span<const double>(samples, size_t(s.n)), s);
         });

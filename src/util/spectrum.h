@@ -59,6 +59,11 @@ struct Pass {
     Color ofSamples(std::span<const double> s) const {
         return {s[band(0)], s[band(1)], s[band(2)]};
     }
+    // The reverse: a colour this pass rendered into its bands of all n samples (a last
+    // pass's repeated band is not written twice).
+    void placeBands(const Color& c, std::span<double> samples) const {
+        for (int j = 0; j < 3 && first + j < sampling.n; ++j) samples[size_t(first + j)] = c[j];
+    }
     bool operator==(const Pass&) const = default;
 };
 // The passes that render a sampling: ceil(n / 3).
