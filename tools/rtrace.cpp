@@ -65,8 +65,6 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
     // exponent (a hyperspectral picture), never one channel.
     if (o.outputFormat == 'c' && colours.components() < 3)
         throw rp::InputError("color format incompatible with -pY, -pS, -pM");
-    if (!sampling.isRgb() && spec.wantsTree())
-        throw rp::InputError("ray tree output with -cs above 3 is not supported yet");
     rp::Scene scene = rp::loadScene({o.sceneFile}, rp::gen::builtinLoadOptions());
     rp::SceneGeometry geometry(scene);
     const PassRenderers renderers = passRenderers(scene, geometry, o.render, sampling,

@@ -88,5 +88,38 @@ TEST(SpectralPasses, MergeGathersEachPassesBands) {
     EXPECT_EQ(r.samples->coefficient, std::vector<double>(7, 1.0));
 }
 
+// Ray trees of the passes merged node by node: the same shape gives each node the samples
+// of all passes; a ray one pass did not trace (its weight there under -lw) shows, black in
+// that pass's bands, in its place in the depth-first order.
+TEST(SpectralPasses, RayTreesMergeNodeByNode) {
+    const spectral::Sampling s = spectral::makeSampling(6, 380, 780)->sampling;
+    const auto passes = spectral::passesOf(s);
+    auto node = [](int depth, double v) {
+        TracedRay t;
+        t.depth = depth;
+        t.result.value = Color::grey(v);
+        t.result.coefficient = Color::grey(1);
+        return t;
+    };
+    // Pass 0: root, child a with grandchild, child b. Pass 1: root, child a, child b
+    // with a grandchild pass 0 did not trace.
+    const std::vector<std::vector<TracedRay>> trees = {
+        {node(0, 1), node(1, 2), node(2, 3), node(1, 4)},
+        {node(0, 10), node(1, 20), node(1, 40), node(2, 50)}};
+    const std::vector<TracedRay> merged = mergeTrees(trees, passes);
+    ASSERT_EQ(merged.size(), 5u);
+    const int depths[5] = {0, 1, 2, 1, 2};
+    const std::vector<double> want[5] = {{1, 1, 1, 10, 10, 10},
+                                         {2, 2, 2, 20, 20, 20},
+                                         {3, 3, 3, 0, 0, 0},
+                                         {4, 4, 4, 40, 40, 40},
+                                         {0, 0, 0, 50, 50, 50}};
+    for (int k = 0; k < 5; ++k) {
+        EXPECT_EQ(merged[size_t(k)].depth, depths[k]) << k;
+        ASSERT_TRUE(merged[size_t(k)].result.samples) << k;
+        EXPECT_EQ(merged[size_t(k)].result.samples->value, want[k]) << k;
+    }
+}
+
 }  // namespace
 }  // namespace rp::render

@@ -56,6 +56,7 @@ constexpr int kMaxTransits = 256;
 // emission of surfaces the direct calculation already counts.
 struct RayState {
     int depth = 0;               // reflections so far (RADIANCE rlvl)
+    int generation = 0;          // rays it descends from (RADIANCE's ray-tree indentation)
     double weight = 1;           // estimated contribution to the result (rweight)
     int ambientLevel = 0;        // ambient bounces so far
     bool indirect = false;       // descended from an ambient or sampled specular ray

@@ -165,7 +165,7 @@ Color Renderer::Context::radiance(const Ray& ray, const RayState& state, RayResu
         // RADIANCE compat (raytrace.c, rtrace.c ourtrace): a ray is reported once its
         // value is known, so the rays it spawned come before it.
         TracedRay t;
-        t.depth = state.depth;
+        t.depth = state.generation;
         t.result = *record;
         t.result.origin = ray.origin;
         t.result.direction = ray.dir;
@@ -307,6 +307,7 @@ void Renderer::Context::addSpecularRays(const Hit& hit, const RayState& state,
         // gather through double glazing stopped at the second pane.
         const bool passesOn = sr.kind == material::ScatterKind::SpecularTransmission && !sr.sampled;
         child.depth = state.depth + (passesOn ? 0 : 1);
+        child.generation = state.generation + 1;
         child.transits = passesOn ? state.transits + 1 : 0;
         if (child.transits > kMaxTransits) continue;
         child.weight = state.weight * material::spawnedWeight(rc);
@@ -538,6 +539,7 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, const 
     st.ambientLevel = state.ambientLevel;
     st.weight = state.weight;
     st.depth = state.depth;
+    st.generation = state.generation;
     st.clip = state.clip;
     st.media = state.media;
     st.contrib = state.contrib;

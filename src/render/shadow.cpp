@@ -182,6 +182,7 @@ HemisphereTracer::Sample Renderer::Context::traceSample(const RayState& parent, 
     // The parent's clip set, medium and mists, with a sample's own depth and weight.
     RayState st = parent;
     st.depth = parent.depth + 1;
+    st.generation = parent.generation + 1;
     st.transits = 0;
     // RADIANCE compat (raytrace.c rayorigin): a sample lighter than -lw is traced with
     // probability weight / -lw and then counts as -lw (Russian roulette, -lr <= 0), or

@@ -1,6 +1,7 @@
 // Gathering the passes of a spectral rendering (see spectral_passes.h).
 #include "render/spectral_passes.h"
 
+#include <map>
 #include <memory>
 
 #include "render/rpict_tracer.h"
@@ -32,14 +33,69 @@ RayResult mergePasses(std::span<const RayResult> perPass, std::span<const spectr
     return merged;
 }
 
+namespace {
+
+// A ray tree node's place: the child numbers from the input ray down to it. Trees are
+// written depth first, so the places of one tree sort in its order.
+using TreePlace = std::vector<int>;
+
+std::vector<TreePlace> treePlaces(const std::vector<TracedRay>& tree) {
+    std::vector<TreePlace> places;
+    places.reserve(tree.size());
+    std::vector<int> count;
+    for (const TracedRay& node : tree) {
+        count.resize(size_t(node.depth) + 1, 0);
+        ++count[size_t(node.depth)];
+        places.push_back(count);
+    }
+    return places;
+}
+
+RayResult unlit(RayResult r) {
+    r.value = r.coefficient = r.mirrored = r.unmirrored = Color{};
+    r.samples.reset();
+    return r;
+}
+
+}  // namespace
+
+std::vector<TracedRay> mergeTrees(std::span<const std::vector<TracedRay>> perPass,
+                                  std::span<const spectral::Pass> passes) {
+    RP_CHECK(perPass.size() == passes.size());
+    std::map<TreePlace, std::vector<const TracedRay*>> nodes;
+    for (size_t p = 0; p < perPass.size(); ++p) {
+        const std::vector<TreePlace> places = treePlaces(perPass[p]);
+        for (size_t k = 0; k < places.size(); ++k) {
+            auto& slot = nodes[places[k]];
+            slot.resize(perPass.size(), nullptr);
+            slot[p] = &perPass[p][k];
+        }
+    }
+    std::vector<TracedRay> merged;
+    merged.reserve(nodes.size());
+    for (const auto& [place, inPasses] : nodes) {
+        const TracedRay* traced = nullptr;
+        for (const TracedRay* t : inPasses)
+            if (t && !traced) traced = t;
+        std::vector<RayResult> results;
+        for (const TracedRay* t : inPasses)
+            results.push_back(t ? t->result : unlit(traced->result));
+        merged.push_back({int(place.size()) - 1, mergePasses(results, passes)});
+    }
+    return merged;
+}
+
 RayTraceFn tracePasses(std::vector<RayTraceFn> passes, const spectral::Sampling& s) {
     return [passes = std::move(passes), bands = spectral::passesOf(s)](
-               const Vec3& origin, const Vec3& dir, uint64_t index, std::vector<TracedRay>*,
+               const Vec3& origin, const Vec3& dir, uint64_t index, std::vector<TracedRay>* tree,
                double maxDistance) {
         std::vector<RayResult> results;
+        std::vector<std::vector<TracedRay>> trees(tree ? passes.size() : 0);
         results.reserve(passes.size());
-        for (const RayTraceFn& trace : passes)
-            results.push_back(trace(origin, dir, index, nullptr, maxDistance));
+        for (size_t p = 0; p < passes.size(); ++p)
+            results.push_back(
+                passes[p](origin, dir, index, tree ? &trees[p] : nullptr, maxDistance));
+        if (tree) *tree = mergeTrees(trees, bands);
         return mergePasses(results, bands);
     };
 }

@@ -21,8 +21,14 @@ namespace rp::render {
 // pass's is kept.
 RayResult mergePasses(std::span<const RayResult> perPass, std::span<const spectral::Pass> passes);
 
-// A RayTraceFn that traces each ray in every pass and merges the results. Ray trees
-// (rtrace -o...t) are not gathered: callers ask for none.
+// One ray's ray trees from every pass, merged node by node (rtrace -o...t): each ray that
+// any pass traced, in depth-first order, with its samples from the passes that traced it
+// and black in the bands of a pass that did not (its weight there fell under -lw).
+std::vector<TracedRay> mergeTrees(std::span<const std::vector<TracedRay>> perPass,
+                                  std::span<const spectral::Pass> passes);
+
+// A RayTraceFn that traces each ray in every pass and merges the results, and the ray
+// trees where asked for.
 RayTraceFn tracePasses(std::vector<RayTraceFn> passes, const spectral::Sampling& s);
 
 // One renderer per pass of `sampling` (passOptions), over one scene and its geometry: the

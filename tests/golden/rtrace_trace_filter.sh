@@ -77,4 +77,25 @@ awk -F'\t' 'NR == FNR { want[FNR] = $0; n = FNR; next }
     }
     END { if (FNR < n) { print "missing lines after " FNR; bad = 1 } exit bad }' \
     "$RP_SOURCE_DIR/tests/golden/rtrace_trace_filter.expected" got
+
+# A ray up through a glass pane (index 1.52, transmissivity .95) that meets a lamp above
+# it: the transmitted ray is one tab in, a generation below the ray that made it, though
+# it keeps its -lr level. RADIANCE 5.4a's rtrace -h -ab 0 -otv writes (the records at
+# three and two tabs are the floor's shadow ray passed on through the pane, which we do
+# not report: rtrace.1):
+#   \t4.000000e+01 ...  \t\t\t4.000000e+01 ...  \t\t3.488990e+01 ...  \t4.770224e-01 ...
+#   3.492705e+01 ...
+cat > pane.rad <<'RAD'
+void light lamp_mat 0 0 3 40 40 40
+lamp_mat polygon lamp 0 0 12 1.6 1.6 2.99  1.6 2.4 2.99  2.4 2.4 2.99  2.4 1.6 2.99
+void glass pane_glass 0 0 3 .95 .95 .95
+pane_glass polygon pane 0 0 12 1.2 1.2 2.2  2.8 1.2 2.2  2.8 2.8 2.2  1.2 2.8 2.2
+void plastic grey 0 0 5 .6 .6 .6 0 0
+grey polygon floor 0 0 12 0 0 0  4 0 0  4 4 0  0 4 0
+RAD
+"$RP_BIN/oconv" pane.rad > pane.oct
+echo "2 2 1 0 0 1" | "$RP_BIN/rtrace" -h -ab 0 -otv pane.oct |
+    awk -F '\t' '{ printf "%d %.4g\n", NF - 4, $(NF - 3) }' > pane.got
+printf '%s\n' "1 40" "1 0.477" "0 34.93" | cmp -s - pane.got ||
+    { echo "pane tree: $(tr '\n' ' ' < pane.got)"; exit 1; }
 echo "rtrace trace filter golden: ok"
