@@ -1,5 +1,5 @@
 # Floor irradiance per channel in a room lit by a ceiling lamp through a coloured pane,
-# Cycles path tracing. Room 4x4x3 Lambertian 0.6 (inward), lamp 0.8 m square at z 2.99
+# Cycles path tracing (tests/data/coloured_glass/README.md). Room 4x4x3 Lambertian 0.6 (inward), lamp 0.8 m square at z 2.99
 # emitting downward only, pane 1.6 m square at z 2.2 as a 1 cm slab: transparent surfaces
 # (no refraction, no reflection: RADIANCE glass with index ~1) and homogeneous absorption
 # giving transmissivity (tr, tg, tb) straight through, d^(1/cos) obliquely.
@@ -13,6 +13,8 @@ ap.add_argument('--px', type=int, default=6)
 ap.add_argument('--points', required=True)
 ap.add_argument('--out', required=True)
 ap.add_argument('--seed', type=int, default=0)
+ap.add_argument('--filter', action='store_true',
+                help='the pane as a thin filter of angle-independent transmission')
 args = ap.parse_args(argv)
 tr = [float(x) for x in args.trans.split(',')]
 bpy.ops.wm.read_factory_settings(use_empty=True)
@@ -51,20 +53,30 @@ nt.links.new(geo.outputs['Backfacing'], mix.inputs['Fac'])
 nt.links.new(em.outputs['Emission'], mix.inputs[1]); nt.links.new(tp.outputs['BSDF'], mix.inputs[2])
 nt.links.new(mix.outputs['Shader'], out.inputs['Surface'])
 add_mesh('lamp', [(1.6,1.6,2.99),(2.4,1.6,2.99),(2.4,2.4,2.99),(1.6,2.4,2.99)], [[0,3,2,1]], m)
-# pane slab
-t = 0.01
-m, nt, out = material('pane')
-tb = nt.nodes.new('ShaderNodeBsdfTransparent'); tb.inputs['Color'].default_value = (1, 1, 1, 1)
-nt.links.new(tb.outputs['BSDF'], out.inputs['Surface'])
-sig = [-math.log(x) / t for x in tr]; D = max(sig)
-va = nt.nodes.new('ShaderNodeVolumeAbsorption')
-va.inputs['Color'].default_value = (1 - sig[0] / D, 1 - sig[1] / D, 1 - sig[2] / D, 1)
-va.inputs['Density'].default_value = D
-nt.links.new(va.outputs['Volume'], out.inputs['Volume'])
-z0, z1 = 2.2 - t / 2, 2.2 + t / 2
-PV = [(1.2,1.2,z0),(2.8,1.2,z0),(2.8,2.8,z0),(1.2,2.8,z0),(1.2,1.2,z1),(2.8,1.2,z1),(2.8,2.8,z1),(1.2,2.8,z1)]
-PF = [[0,3,2,1],[4,5,6,7],[0,1,5,4],[1,2,6,5],[2,3,7,6],[3,0,4,7]]  # outward
-add_mesh('pane', PV, PF, m)
+if args.filter:
+    # A thin filter: RADIANCE glass of index ~1 whose colour comes from a pattern passes
+    # light by that colour at every angle.
+    m, nt, out = material('pane')
+    tb = nt.nodes.new('ShaderNodeBsdfTransparent')
+    tb.inputs['Color'].default_value = (tr[0], tr[1], tr[2], 1)
+    nt.links.new(tb.outputs['BSDF'], out.inputs['Surface'])
+    add_mesh('pane', [(1.2,1.2,2.2),(2.8,1.2,2.2),(2.8,2.8,2.2),(1.2,2.8,2.2)], [[0,1,2,3]], m)
+else:
+    # pane slab
+    t = 0.01
+    m, nt, out = material('pane')
+    tb = nt.nodes.new('ShaderNodeBsdfTransparent'); tb.inputs['Color'].default_value = (1, 1, 1, 1)
+    nt.links.new(tb.outputs['BSDF'], out.inputs['Surface'])
+    sig = [-math.log(x) / t for x in tr]; D = max(sig)
+    va = nt.nodes.new('ShaderNodeVolumeAbsorption')
+    va.inputs['Color'].default_value = (1 - sig[0] / D, 1 - sig[1] / D, 1 - sig[2] / D, 1)
+    va.inputs['Density'].default_value = D
+    nt.links.new(va.outputs['Volume'], out.inputs['Volume'])
+    z0, z1 = 2.2 - t / 2, 2.2 + t / 2
+    PV = [(1.2,1.2,z0),(2.8,1.2,z0),(2.8,2.8,z0),(1.2,2.8,z0),(1.2,1.2,z1),(2.8,1.2,z1),(2.8,2.8,z1),(1.2,2.8,z1)]
+    PF = [[0,3,2,1],[4,5,6,7],[0,1,5,4],[1,2,6,5],[2,3,7,6],[3,0,4,7]]  # outward
+    add_mesh('pane', PV, PF, m)
+
 sensors = [[float(x) for x in l.split()] for l in open(args.points) if l.strip()]
 white = diffuse('receiver', (1, 1, 1)); hs = 0.0005
 for i, s in enumerate(sensors):
