@@ -76,8 +76,6 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
         tracers.push_back(std::make_unique<RendererTracer>(*r, o.immediateIrradiance));
         traceFns.push_back(tracers.back()->trace());
     }
-    const RayTraceFn trace =
-        traceFns.size() == 1 ? traceFns[0] : tracePasses(std::move(traceFns), sampling);
 
     std::ostream& out = std::cout;
     if (o.header && cluster.isRoot())
@@ -99,7 +97,7 @@ int run(const rp::render::RtraceOptions& o, std::ostream*& diag, std::ofstream& 
         for (const auto& r : renderers) r->flushAmbientFile();  // each pass its own file
     };
     try {
-        runRtrace(settings, std::cin, out, writer, trace);
+        runRtrace(settings, std::cin, out, writer, traceFns, rp::spectral::passesOf(sampling));
     } catch (...) {
         keepAmbient();  // keep the records computed so far, as RADIANCE
         throw;

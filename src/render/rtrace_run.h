@@ -8,11 +8,13 @@
 #include <functional>
 #include <istream>
 #include <ostream>
+#include <span>
 #include <vector>
 
 #include "render/renderer.h"
 #include "render/rtrace_io.h"
 #include "util/cluster.h"
+#include "util/spectrum.h"
 
 namespace rp::render {
 
@@ -50,5 +52,10 @@ struct RtraceRunStats {
 // that ends before x*y rays ("unexpected EOF on input").
 RtraceRunStats runRtrace(const RtraceRunSettings& settings, std::istream& in, std::ostream& out,
                          const RayWriter& writer, const RayTraceFn& trace);
+// The same for the passes of a spectral rendering (one per pass, `bands`: passesOf the
+// sampling): each batch of rays is traced pass after pass and gathered band by band.
+RtraceRunStats runRtrace(const RtraceRunSettings& settings, std::istream& in, std::ostream& out,
+                         const RayWriter& writer, std::span<const RayTraceFn> passes,
+                         std::span<const spectral::Pass> bands);
 
 }  // namespace rp::render

@@ -85,21 +85,6 @@ std::vector<TracedRay> mergeTrees(std::span<const std::vector<TracedRay>> perPas
     return merged;
 }
 
-RayTraceFn tracePasses(std::vector<RayTraceFn> passes, const spectral::Sampling& s) {
-    return [passes = std::move(passes), bands = spectral::passesOf(s)](
-               const Vec3& origin, const Vec3& dir, uint64_t index, std::vector<TracedRay>* tree,
-               double maxDistance) {
-        std::vector<RayResult> results;
-        std::vector<std::vector<TracedRay>> trees(tree ? passes.size() : 0);
-        results.reserve(passes.size());
-        for (size_t p = 0; p < passes.size(); ++p)
-            results.push_back(
-                passes[p](origin, dir, index, tree ? &trees[p] : nullptr, maxDistance));
-        if (tree) *tree = mergeTrees(trees, bands);
-        return mergePasses(results, bands);
-    };
-}
-
 PixelTracerFactory pixelTracersOverPasses(std::vector<PixelTracerFactory> passes,
                                           const spectral::Sampling& s) {
     return [passes = std::move(passes), s] {

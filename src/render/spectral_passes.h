@@ -27,10 +27,6 @@ RayResult mergePasses(std::span<const RayResult> perPass, std::span<const spectr
 std::vector<TracedRay> mergeTrees(std::span<const std::vector<TracedRay>> perPass,
                                   std::span<const spectral::Pass> passes);
 
-// A RayTraceFn that traces each ray in every pass and merges the results, and the ray
-// trees where asked for.
-RayTraceFn tracePasses(std::vector<RayTraceFn> passes, const spectral::Sampling& s);
-
 // One renderer per pass of `sampling` (passOptions), over one scene and its geometry: the
 // tools' single way of setting up a rendering, RGB included (one pass).
 using PassRenderers = std::vector<std::unique_ptr<Renderer>>;
