@@ -44,7 +44,11 @@ double overcastBrightness(double dz, double zenith) {
     return (a * zenith * (1 + 2 * dz) / 3 + b * ground) / (a + b);
 }
 
-spectral::Sampling sampling20() { return spectral::makeSampling(kBands, 380, 780)->sampling; }
+// genssky's 20 bands as RADIANCE 6 samples them (made once: every pixel's luminance needs it).
+const spectral::Sampling& sampling20() {
+    static const spectral::Sampling s = spectral::makeSampling(kBands, 380, 780)->sampling;
+    return s;
+}
 
 // Luminance factor of a spectrum given shortest band first (as the atmosphere's).
 double photopic(const Spectrum& s) {
