@@ -8,6 +8,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <iosfwd>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -65,6 +67,17 @@ public:
     static InCoreStore copyOf(std::span<const Photon> photons, Attributes attrs,
                               bool parallel = true);
 
+    // The store as a file that a later run reads instead of building it again
+    // (incore_store_index.cpp; PhotonMap::open keeps one beside each map): the arrays as
+    // they are in memory, after `key`, the caller's identity of what the store was built
+    // from. For this machine only (native byte order). readIndex gives nullopt unless the
+    // bytes are complete and undamaged (CRC-32), for this key, these attributes and this
+    // photon count, and make a tree the search can walk.
+    using IndexKey = std::array<uint64_t, 3>;
+    void writeIndex(std::ostream& out, const IndexKey& key) const;
+    static std::optional<InCoreStore> readIndex(std::istream& in, const IndexKey& key,
+                                                Attributes attrs, uint64_t photons);
+
     std::unique_ptr<Cursor> makeCursor() const override;
     size_t findNearest(Cursor& cursor, const PhotonQuery& q,
                        std::vector<FoundPhoton>& out) const override;
@@ -95,7 +108,9 @@ public:
     struct Search;  // per-query state (incore_store_search.cpp)
 
 private:
-    struct Build;  // incore_store_build.cpp
+    InCoreStore() = default;  // readIndex
+    struct Build;             // incore_store_build.cpp
+    struct Index;             // incore_store_index.cpp
     template <bool kFilter>
     void searchNode(uint32_t node, float off[3], Search& s) const;
     // The k nearest as (dist2, slot) in scratch[0..n), the furthest at [0].

@@ -1,20 +1,28 @@
 // PhotonMap::open: a map file opened for searching, and the choice of its store (in core
 // or out of core, photon_store.h StoreOptions). The choice is made here only.
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <ext/stdio_filebuf.h>
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "pmap/incore_store.h"
 #include "pmap/ooc_store.h"
 #include "pmap/photon_map.h"
+#include "pmap/photon_records.h"
 #include "util/error.h"
+#include "util/file_write.h"
 #include "util/warnings.h"
 
 namespace rp::pmap {
@@ -60,15 +68,72 @@ Placement placeStore(const std::string& path, uint64_t n, const StoreOptions& o)
     return p;
 }
 
-// The photons of `primaries` whose source is marked in `tracked`.
+// The photons of `primaries` whose source is marked in `tracked`; none (every photon)
+// when every primary's source is (the records' primary indices are checked on reading).
 std::function<bool(const Photon&)> trackedFilter(const std::vector<PhotonPrimary>& primaries,
                                                  const std::vector<bool>& tracked) {
     auto keep = std::make_shared<std::vector<bool>>(primaries.size());
+    bool all = !primaries.empty();
     for (size_t i = 0; i < primaries.size(); ++i) {
         const int s = primaries[i].srcIdx;
         (*keep)[i] = s >= 0 && size_t(s) < tracked.size() && tracked[size_t(s)];
+        all = all && (*keep)[i];
     }
+    if (all) return {};
     return [keep](const Photon& p) { return p.primary < keep->size() && (*keep)[p.primary]; };
+}
+
+// A map's in-core store is kept beside it, in "<map>.rpindex" (InCoreStore::writeIndex),
+// by the first run that builds it, and read back by later runs instead of building it
+// again: the build sorts and lays out every photon, reading the index back is a copy
+// (bench/README_speed.md). Only radphoton's own maps get one: the key is the map file's
+// size and modification time with the CRC-32s of its prologue (header, statistics,
+// primaries) and of the record checksums after the records, so a map changed in any way
+// is never searched through an index of another. A folder that cannot be written gets no
+// index, and a damaged one is built again: the index only ever saves time.
+std::string indexPath(const std::string& mapPath) { return mapPath + ".rpindex"; }
+
+// `fd`: the map file the store is built from (not its path, which another mkpmap may
+// point at a new file meanwhile).
+std::optional<InCoreStore::IndexKey> indexKey(int fd, uint64_t recordsStart,
+                                              uint64_t trailerStart) {
+    struct stat st;
+    if (::fstat(fd, &st) != 0 || uint64_t(st.st_size) < trailerStart) return std::nullopt;
+    auto crcOfRange = [&](uint64_t from, uint64_t to) -> std::optional<uint32_t> {
+        std::vector<unsigned char> bytes(to - from);
+        if (!preadFully(fd, from, bytes.data(), bytes.size())) return std::nullopt;
+        return static_cast<uint32_t>(
+            crc32(crc32(0, nullptr, 0), bytes.data(), static_cast<uInt>(bytes.size())));
+    };
+    const std::optional<uint32_t> prologue = crcOfRange(0, recordsStart);
+    const std::optional<uint32_t> trailer = crcOfRange(trailerStart, uint64_t(st.st_size));
+    if (!prologue || !trailer) return std::nullopt;
+    const uint64_t mtime = uint64_t(st.st_mtim.tv_sec) * 1000000000u + uint64_t(st.st_mtim.tv_nsec);
+    return InCoreStore::IndexKey{uint64_t(st.st_size), mtime, uint64_t{*prologue} << 32 | *trailer};
+}
+
+std::shared_ptr<const InCoreStore> readStoreIndex(const std::string& mapPath,
+                                                  const InCoreStore::IndexKey& key,
+                                                  InCoreStore::Attributes attrs, uint64_t n) {
+    std::ifstream in(indexPath(mapPath), std::ios::binary);
+    if (!in) return nullptr;
+    std::optional<InCoreStore> s = InCoreStore::readIndex(in, key, attrs, n);
+    return s ? std::make_shared<const InCoreStore>(std::move(*s)) : nullptr;
+}
+
+void writeStoreIndex(const std::string& mapPath, const InCoreStore::IndexKey& key,
+                     const InCoreStore& store) {
+    try {
+        AtomicFile file(indexPath(mapPath));
+        AtomicFileBuf buf(file);
+        std::ostream out(&buf);
+        store.writeIndex(out, key);
+        out.flush();
+        buf.flush();
+        if (out) file.commit(/*replace=*/true, /*sync=*/false);
+    } catch (const InputError&) {
+        // Not writable (a read-only folder, a full disk): the next run builds the store.
+    }
 }
 
 }  // namespace
@@ -76,9 +141,12 @@ std::function<bool(const Photon&)> trackedFilter(const std::vector<PhotonPrimary
 PhotonMap PhotonMap::open(const std::string& path, const StoreOptions& options,
                           const std::vector<bool>* trackedSources) {
     const SourceLoc loc{path, 0};
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
         throw InputError(loc, fmt::format("can't open photon map file: {}", std::strerror(errno)));
+    // The stream owns fd; the store's index is keyed through the same descriptor.
+    __gnu_cxx::stdio_filebuf<char> file(fd, std::ios::in | std::ios::binary);
+    std::istream in(&file);
     PhotonMap map = readPrologue(in, path);
     const uint64_t n = map.stats_.numPhotons;
     std::function<bool(const Photon&)> keep;
@@ -101,6 +169,19 @@ PhotonMap PhotonMap::open(const std::string& path, const StoreOptions& options,
     // The store searches by its own tree, not the file's, but a file whose order is broken
     // is damaged, and what else is wrong in it cannot be known: refused, as out of core
     // (and by pmapdump). Every record is checked too.
+    const InCoreStore::Attributes attrs = InCoreStore::attributesFor(map.type_);
+    std::optional<InCoreStore::IndexKey> key;
+    if (!keep && map.checksumBlock_ && n > 0) {
+        const std::streampos records = in.tellg();
+        if (records >= 0) {
+            key = indexKey(fd, uint64_t(records), uint64_t(records) + n * kPhotonRecordSize);
+            if (key)
+                if (auto store = readStoreIndex(path, *key, attrs, n)) {
+                    map.store_ = std::move(store);
+                    return map;
+                }
+        }
+    }
     map.readPhotons(in, path, TreeOrder::Checked);
     BulkVector<Photon> records = std::move(map.photons_);
     map.photons_ = {};
@@ -110,8 +191,9 @@ PhotonMap PhotonMap::open(const std::string& path, const StoreOptions& options,
             if (keep(p)) records[kept++] = p;
         records.resize(kept);
     }
-    map.store_ = std::make_shared<InCoreStore>(records, InCoreStore::attributesFor(map.type_), true,
-                                               /*consume=*/true);
+    auto store = std::make_shared<InCoreStore>(records, attrs, true, /*consume=*/true);
+    if (key) writeStoreIndex(path, *key, *store);
+    map.store_ = std::move(store);
     return map;
 }
 

@@ -2,6 +2,7 @@
 #include "pmap/photon_map.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstring>
@@ -268,6 +269,64 @@ TEST(PhotonMap, RefusesToOverwrite) {
     EXPECT_NE(errorOf([&] { PhotonMap().save(dir.file("e.pm"), "", false); }).find("empty"),
               std::string::npos);
     EXPECT_NE(errorOf([&] { m.save(dir.file("no/such/dir/x.pm"), "", false); }), "(no InputError)");
+}
+
+// What `store` finds at fixed queries: every photon's distance and flux, in order.
+std::vector<std::pair<float, uint32_t>> searchResults(const PhotonStore& store) {
+    std::vector<std::pair<float, uint32_t>> r;
+    auto cursor = store.makeCursor();
+    std::vector<FoundPhoton> out;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 100; ++i) {
+        const PhotonQuery q{Vec3(u(rng), u(rng), u(rng)), nullptr, false, 1.f, 20};
+        const size_t n = store.findNearest(*cursor, q, out);
+        for (size_t j = 0; j < n; ++j) {
+            uint32_t flux;
+            std::memcpy(&flux, out[j].flux.data(), 4);
+            r.emplace_back(out[j].dist2, flux);
+        }
+    }
+    return r;
+}
+
+ino_t inodeOf(const std::string& path) {
+    struct stat st;
+    return ::stat(path.c_str(), &st) == 0 ? st.st_ino : 0;
+}
+
+// The in-core store is kept beside the map ("<map>.rpindex") by the first open and read
+// back by the next; a map saved again under the same name, a damaged index and a map
+// without record checksums (as RADIANCE writes them) are searched as their own photons.
+TEST(PhotonMap, OpenKeepsItsStoreBesideTheMap) {
+    TempDir dir;
+    const std::string f = dir.file("g.pm"), index = f + ".rpindex";
+    auto expected = [&] {
+        PhotonMap m = PhotonMap::load(f);
+        m.makeSearchable(false);
+        return searchResults(m.store());
+    };
+    randomMap(PhotonMapType::Global, 5000, 7).save(f, "", false);
+    EXPECT_EQ(searchResults(PhotonMap::open(f, StoreOptions{}).store()), expected());
+    const ino_t written = inodeOf(index);
+    ASSERT_NE(written, 0u) << "no index beside the map";
+    EXPECT_EQ(searchResults(PhotonMap::open(f, StoreOptions{}).store()), expected());
+    EXPECT_EQ(inodeOf(index), written) << "the index was built again, not read";
+
+    randomMap(PhotonMapType::Global, 5000, 8).save(f, "", true);  // same size, new photons
+    EXPECT_EQ(searchResults(PhotonMap::open(f, StoreOptions{}).store()), expected());
+    EXPECT_NE(inodeOf(index), written) << "a stale index was not replaced";
+
+    std::string bytes = slurp(index);
+    bytes[bytes.size() / 2] ^= 1;
+    spit(index, bytes);
+    EXPECT_EQ(searchResults(PhotonMap::open(f, StoreOptions{}).store()), expected());
+    EXPECT_NE(slurp(index), bytes) << "a damaged index was not replaced";
+
+    const std::string plain = dir.file("radiance.pm");
+    spit(plain, test::withoutChecksums(slurp(f), 5000));
+    EXPECT_EQ(searchResults(PhotonMap::open(plain, StoreOptions{}).store()), expected());
+    EXPECT_FALSE(fs::exists(plain + ".rpindex"));
 }
 
 class BadFile : public ::testing::Test {

@@ -10,8 +10,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
+#include <sstream>
 
 #include "pmap/incore_store.h"
 #include "pmap/photon_map.h"
@@ -139,13 +141,14 @@ struct Stores {
         const std::string f = dir.file("m.pm");
         map.save(f, "", true);
         inCore = PhotonMap::open(f, StoreOptions{});
-        StoreOptions tiny;  // 15 resident photons, 64 cached, pages of 8
+        indexed = PhotonMap::open(f, StoreOptions{});  // read from the index inCore left
+        StoreOptions tiny;                             // 15 resident photons, 64 cached, pages of 8
         tiny.cachePhotons = std::min<uint64_t>(64, photons.size() > 1 ? photons.size() - 1 : 1);
         tiny.pageSize = 4;
         tiny.bandwidth = 2;
         outOfCore = PhotonMap::open(f, tiny);
     }
-    PhotonMap inCore, outOfCore;
+    PhotonMap inCore, indexed, outOfCore;
 };
 
 TEST(PhotonStore, EveryStoreEqualsBruteForce) {
@@ -160,7 +163,7 @@ TEST(PhotonStore, EveryStoreEqualsBruteForce) {
             }
             std::mt19937 rng(5);
             std::uniform_real_distribution<double> u(-1.1, 1.1);
-            for (const PhotonMap* m : {&stores.inCore, &stores.outOfCore}) {
+            for (const PhotonMap* m : {&stores.inCore, &stores.indexed, &stores.outOfCore}) {
                 const PhotonStore& store = m->store();
                 ASSERT_EQ(store.size(), n);
                 auto cursor = store.makeCursor();
@@ -323,6 +326,55 @@ TEST(PhotonStore, InCoreBuildDoesNotDependOnThreads) {
         }
     }
     EXPECT_EQ(serial.memoryBytes(), parallel.memoryBytes());
+}
+
+// The index (a store written out and read back) searches as the store it was written
+// from, and is refused for any other key, attributes or count, and when cut short,
+// lengthened or damaged anywhere (its CRC-32).
+TEST(PhotonStore, InCoreIndexReadsBackOnlyWhatWasWritten) {
+    const auto photons = makePhotons(Layout::Planes, 3000, 8);
+    const InCoreStore::Attributes attrs{true, true};
+    const InCoreStore store = InCoreStore::copyOf(photons, attrs, false);
+    const InCoreStore::IndexKey key{1, 2, 3};
+    std::ostringstream out;
+    store.writeIndex(out, key);
+    const std::string bytes = out.str();
+    auto read = [&](const std::string& b, const InCoreStore::IndexKey& k, InCoreStore::Attributes a,
+                    uint64_t n) {
+        std::istringstream in(b);
+        return InCoreStore::readIndex(in, k, a, n);
+    };
+    const std::optional<InCoreStore> back = read(bytes, key, attrs, photons.size());
+    ASSERT_TRUE(back);
+    EXPECT_EQ(back->memoryBytes(), store.memoryBytes());
+    auto c1 = store.makeCursor();
+    auto c2 = back->makeCursor();
+    std::vector<FoundPhoton> a, b;
+    std::mt19937 rng(2);
+    for (int i = 0; i < 200; ++i) {
+        const Vec3 up(0, 0, 1);
+        const PhotonQuery q{photons[rng() % photons.size()].position(), i % 2 ? &up : nullptr,
+                            false, 0.1f, 40};
+        const size_t na = store.findNearest(*c1, q, a), nb = back->findNearest(*c2, q, b);
+        ASSERT_EQ(na, nb);
+        for (size_t j = 0; j < na; ++j) {
+            ASSERT_EQ(a[j].dist2, b[j].dist2);
+            ASSERT_EQ(a[j].primary, b[j].primary);
+            ASSERT_EQ(a[j].flux, b[j].flux);
+            ASSERT_EQ(std::memcmp(a[j].norm, b[j].norm, 3), 0);
+        }
+    }
+    EXPECT_FALSE(read(bytes, {1, 2, 4}, attrs, photons.size()));
+    EXPECT_FALSE(read(bytes, key, {false, true}, photons.size()));
+    EXPECT_FALSE(read(bytes, key, attrs, photons.size() - 1));
+    EXPECT_FALSE(read(bytes + "x", key, attrs, photons.size()));
+    for (size_t cut : {size_t{0}, size_t{10}, size_t{100}, bytes.size() / 2, bytes.size() - 1})
+        EXPECT_FALSE(read(bytes.substr(0, cut), key, attrs, photons.size())) << cut;
+    for (size_t at = 0; at < bytes.size(); at += 997) {
+        std::string damaged = bytes;
+        damaged[at] = static_cast<char>(damaged[at] ^ 0x10);
+        EXPECT_FALSE(read(damaged, key, attrs, photons.size())) << at;
+    }
 }
 
 TEST(PhotonStore, InCoreMemoryPerPhoton) {

@@ -97,10 +97,10 @@ bool preadFully(int fd, uint64_t offset, void* data, size_t size) {
     return true;
 }
 
-void AtomicFile::commit(bool replace) {
+void AtomicFile::commit(bool replace, bool sync) {
     // On the disk before the name points at it: a crash after the rename must not leave
     // a complete-looking name over a file whose data never arrived.
-    if (::fsync(fd_) != 0) fail(path_, "cannot write", errno);
+    if (sync && ::fsync(fd_) != 0) fail(path_, "cannot write", errno);
     if (tmpName_.empty()) {
         // An unnamed file gets a name through /proc (linkat without privileges), a
         // hidden one for the instant before the rename.
@@ -128,6 +128,7 @@ void AtomicFile::commit(bool replace) {
         throw InputError(SourceLoc{path_, 0}, "file exists (not replaced)");
     if (std::rename(tmpName_.c_str(), path_.c_str()) != 0) fail(path_, "cannot write", errno);
     committed_ = true;
+    if (!sync) return;
     // And the rename itself (the folder's entry); failure here loses nothing written.
     int dfd = ::open(folderOf(path_).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (dfd >= 0) {

@@ -36,7 +36,9 @@ public:
     void readAt(uint64_t offset, void* data, size_t size) const;
     // Syncs the data, gives it the target's name (replacing an existing file unless
     // `replace` is false, when an existing target is an InputError) and syncs the folder.
-    void commit(bool replace = true);
+    // `sync` false skips both syncs: for caches whose own checksum finds the torn file a
+    // crash may leave, where waiting for the disk would cost more than the cache saves.
+    void commit(bool replace = true, bool sync = true);
 
 private:
     std::string path_;
