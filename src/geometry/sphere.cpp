@@ -40,6 +40,11 @@ bool intersectSphere(const SphereShape& s, const Vec3& o, const Vec3& d, double 
     Vec3 oc = o - s.center;
     double a = dot(d, d);
     double bHalf = dot(oc, d);
+    double c = dot(oc, oc) - s.radius * s.radius;
+    // Starting outside and moving away: both roots are negative (their product c/a > 0,
+    // their sum -2 bHalf/a < 0), and so are the computed ones below (q < 0, t1 = c/q).
+    // Why first: every photon a spherical lamp emits starts on it, moving out.
+    if (c > 0 && bHalf > 0 && tmin >= 0) return false;
     Vec3 l = oc - d * (bHalf / a);
     // Clear misses without the square root (the accelerator calls this for every ray
     // through the sphere's bounding box): |l|^2 above r^2 by more than rounding means
@@ -49,7 +54,6 @@ bool intersectSphere(const SphereShape& s, const Vec3& o, const Vec3& d, double 
     double ll = std::sqrt(ll2);
     double disc = a * (s.radius - ll) * (s.radius + ll);
     if (!(disc > 0)) return false;
-    double c = dot(oc, oc) - s.radius * s.radius;
     double q = -(bHalf + std::copysign(std::sqrt(disc), bHalf));
     double t0 = q / a, t1 = c / q;
     if (t0 > t1) std::swap(t0, t1);
