@@ -64,9 +64,13 @@ struct DirectLighting::Impl {
 
     // Radiance reaching the shaded point along candidate `c`'s shadow path, zero if
     // blocked. `crossings` are the points where the path meets the relays (virtual).
-    // `end` (may be null) receives how it ended when it reached the source.
+    // `end` (may be null) receives how it ended when it reached the source. With `tree`
+    // the path is shown in the ray tree as the oracle asks (ShadowTree).
     Color trace(const DirectPoint& at, const Candidate& c, const Vec3* crossings,
-                ShadowOracle& oracle, ShadowEnd* end = nullptr) const;
+                ShadowOracle& oracle, ShadowEnd* end = nullptr, bool tree = false) const;
+    // trace's path, its pieces appended to `pieces` if not null.
+    Color traceLegs(const DirectPoint& at, const Candidate& c, const Vec3* crossings,
+                    ShadowOracle& oracle, ShadowEnd* end, std::vector<ShadowPiece>* pieces) const;
 
     // compute's phases: every source's samples as candidates (with their coefficient and,
     // unless every sample is tested, their unoccluded estimate), then RADIANCE's sorted
@@ -125,7 +129,34 @@ bool passesIllum(const DirectSource& src, const Hit& hit) {
 }  // namespace
 
 Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c, const Vec3* crossings,
-                                  ShadowOracle& oracle, ShadowEnd* end) const {
+                                  ShadowOracle& oracle, ShadowEnd* end, bool tree) const {
+    const ShadowTree shown = tree && list.sources[size_t(c.source)].relays.empty()
+                                 ? oracle.shadowTree()
+                                 : ShadowTree::None;
+    if (shown == ShadowTree::None) return traceLegs(at, c, crossings, oracle, end, nullptr);
+    std::vector<ShadowPiece> pieces;  // only for the ray tree, a debugging output
+    ShadowEnd ended;
+    const Color value = traceLegs(at, c, crossings, oracle, &ended, &pieces);
+    if (end) *end = ended;
+    const bool reached = ended.modifier >= 0;
+    // RADIANCE compat (source.c direct): a shadow ray that met another surface first is
+    // followed and reported; one that met its source only under -oT.
+    if (pieces.size() > 1 || (shown == ShadowTree::All && reached && !pieces.empty())) {
+        // Each piece brings what the next one brings, times what its end surface passed.
+        Color arriving = reached ? ended.radiance : Color{};
+        for (size_t i = pieces.size(); i-- > 0;) {
+            pieces[i].value = arriving;
+            arriving *= pieces[i].coefficient;
+        }
+        pieces.front().coefficient = c.coef;
+        oracle.reportShadowRay(at, pieces);
+    }
+    return value;
+}
+
+Color DirectLighting::Impl::traceLegs(const DirectPoint& at, const Candidate& c,
+                                      const Vec3* crossings, ShadowOracle& oracle, ShadowEnd* end,
+                                      std::vector<ShadowPiece>* pieces) const {
     const DirectSource& src = list.sources[size_t(c.source)];
     const size_t legs = src.relays.size() + 1;
     Vec3 dir = c.toLight;
@@ -134,6 +165,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c, con
     // How far spawn offsets may have moved the ray off the straight line to the goal.
     double shift = at.hit ? at.hit->offset : 0;
     Color through{1, 1, 1};
+    Color passed{1, 1, 1};  // by the last surface passed (the tree's pieces)
     // After a prism the ray goes where the prism's functions send it (m_direct.c), not
     // necessarily through the sample: it must meet the source itself (a distant one
     // within its disk, RADIANCE sourcehit), wherever that is.
@@ -168,12 +200,16 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c, con
                            ? HUGE_VAL
                            : remaining * (1 + 1e-6) + 2 * shift + 1e-9 * maxAbs(goal);
             std::optional<Hit> hit = oracle.closestHit(ray);
+            // The tree's piece: its coefficient is for now what the surface before it
+            // passed (trace puts them in their places).
+            if (pieces) pieces->push_back({ray.origin, dir, hit, -1, {}, passed});
             if (!hit) {
                 if (!last) return {};  // grazed past the relay's edge
                 if (escape) {
                     absorb(HUGE_VAL);
                     const DistantSource& d = geometry.sources()[size_t(src.light.shapeIndex)];
                     if (redirected && 2 * kPi * (1 - dot(d.dir, dir)) > d.solidAngle) return {};
+                    if (pieces) pieces->back().distant = src.light.shapeIndex;
                     return reached(oracle.distantRadiance(src.light.shapeIndex, dir), d.modifier,
                                    ray.origin + dir * 1e10);
                 }
@@ -183,6 +219,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c, con
                 absorb(remaining);
                 const Hit h =
                     sourceSurfaceHit(src, geometry.shapes(), list.regions, goal, dir, remaining);
+                if (pieces) pieces->back().hit = h;
                 ShadowEvent ev = oracle.event(h, dir, path);
                 return ev.kind == ShadowEvent::Kind::Emit ? reached(ev.colour, h.modifier, h.point)
                                                           : Color{};
@@ -218,6 +255,7 @@ Color DirectLighting::Impl::trace(const DirectPoint& at, const Candidate& c, con
             // source, a relay not on this path) blocks it.
             if (ev.kind != ShadowEvent::Kind::Transmit) return {};
             through *= ev.colour;
+            passed = ev.colour;
             if (through.isBlack()) return {};
             medium = material::changeMedium(medium, ev.medium, globalMedium, ev.mist);
             if (lengthSquared(ev.bent) > 0) {
@@ -419,7 +457,7 @@ Color DirectLighting::Impl::test(const DirectPoint& at, ShadowOracle& oracle,
         const Candidate& c = cands[sn];
         ShadowEnd end;
         Color value = c.coef * trace(at, c, b.crossings.data() + c.crossings, oracle,
-                                     at.contrib ? &end : nullptr);
+                                     at.contrib ? &end : nullptr, /*tree=*/true);
         // RADIANCE compat (source.c direct, rcontrib.c trace_contrib): the shadow ray that
         // reached its source tells rcontrib its coefficient and the source's radiance.
         if (at.contrib && end.modifier >= 0 && at.contrib->tracks(end.modifier))

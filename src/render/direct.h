@@ -11,6 +11,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "geometry/scene_geometry.h"
@@ -39,10 +40,35 @@ struct ShadowPath {
     bool transparentBlocks = false;
 };
 
+struct DirectPoint;
+
+// One straight piece of a tested shadow ray, for the ray tree (rtrace -o...t/T): from
+// `origin` along unit `dir` to the surface `hit` (none: it left the scene, through
+// distant source `distant` if that is >= 0), with the radiance arriving along it and,
+// for a surface it passed on from, the colour passed (the next piece's coefficient).
+struct ShadowPiece {
+    Vec3 origin, dir;
+    std::optional<Hit> hit;
+    int32_t distant = -1;  // index into SceneGeometry::sources()
+    Color value;
+    Color coefficient{1, 1, 1};  // the first piece: the sample's coefficient
+};
+
+// Which shadow rays the ray tree shows (RADIANCE rtrace: under -ot the shadow rays its
+// materials pass on, glass and antimatter, which its direct() follows; under -oT every
+// one, SFOLLOW). A shadow ray stopped by the first surface it meets is never shown
+// (RADIANCE's shadow cache usually answers those without tracing), nor one toward a
+// virtual source.
+enum class ShadowTree { None, Followed, All };
+
 // Per-thread access to materials for shadow rays. Implemented by the renderer core.
 class ShadowOracle {
 public:
     virtual ~ShadowOracle() = default;
+    // The shadow rays the ray tree shows, and where they go: the pieces of one shadow
+    // ray from `at`, first piece first (values known), after it was traced.
+    virtual ShadowTree shadowTree() const { return ShadowTree::None; }
+    virtual void reportShadowRay(const DirectPoint& at, std::span<const ShadowPiece> pieces) {}
     // The first surface along `ray` (t < ray.tmax).
     virtual std::optional<Hit> closestHit(const Ray& ray) = 0;
     // What a shadow ray travelling in `dir` along `path` does at `hit` (antimatter passes
@@ -85,6 +111,9 @@ struct DirectPoint {
     ContributionSink* contrib = nullptr;
     Color contribCoef{1, 1, 1};
     ShadowPath shadow;  // what each shadow ray from here starts with
+    // For the ray tree: the generation of the ray that reached the point (its shadow
+    // rays are one deeper).
+    int generation = 0;
 };
 
 // RADIANCE's coefficient function for one source sample: the material's BRDF*cos for

@@ -102,6 +102,9 @@ struct RenderOptions {
     // -u: uncorrelated (random) sampling. RADIANCE compat: rpict's default is off; rtrace
     // (rtmain.c) turns it on before parsing, and so does our rtrace (rtrace_options.cpp).
     bool uncorrelated = false;
+    // rtrace -o...T: the ray tree shows every shadow ray tested, not only those passed on
+    // by a surface (RADIANCE's SFOLLOW; direct.h ShadowTree).
+    bool treeShadowRays = false;
     int threads = 1;        // -n
     std::string errorFile;  // -e: diagnostics go here instead of stderr
     bool warnings = true;   // -w

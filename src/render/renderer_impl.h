@@ -128,6 +128,8 @@ public:
     Color distantRadiance(int32_t source, const Vec3& dir) override;
     material::Redirection redirect(const Hit& hit, const Vec3& dir, int projection,
                                    const Vec3& toSource) override;
+    ShadowTree shadowTree() const override;
+    void reportShadowRay(const DirectPoint& at, std::span<const ShadowPiece> pieces) override;
 
     // An ambient hemisphere sample of the ray in `parent` (HemisphereTracer::trace): it
     // starts with the parent's depth, clip set and medium.

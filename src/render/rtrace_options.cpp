@@ -138,7 +138,11 @@ OptionTable rtraceTable(RtraceOptions& o) {
     t.add(customOption(prefix("-f"), "-f[io]",
                        [&o](OptionReader& r) { parseFormat(r.option(), o); }));
     t.add(customOption(prefix("-o"), "-o",
-                       [&o](OptionReader& r) { o.outputSpec = r.option().substr(2); }),
+                       [&o](OptionReader& r) {
+                           o.outputSpec = r.option().substr(2);
+                           // 'T' (only a trace letter): shadow rays in the tree too.
+                           o.render.treeShadowRays = o.outputSpec.find('T') != std::string::npos;
+                       }),
           [&o] {
               std::string line = formatLine("-o%-9s\t\t\t# output", o.outputSpec.c_str());
               for (char c : o.outputSpec) line += specName(c);

@@ -402,6 +402,7 @@ Color Renderer::Context::directAt(const Hit& hit, const material::MaterialParams
     at.medium = &mediumOf(state);
     at.scatterLoss = impl.photonMode.mediumScatterInPhotons();
     at.shadow = shadowStart(state);
+    at.generation = state.generation;
     at.point = hit.point;
     at.normal = sp.normal;
     at.geomNormal = sp.geomNormal;
@@ -521,6 +522,7 @@ Color Renderer::Context::irradianceAt(const Hit& hit, const Vec3& normal, const 
     at.medium = &mediumOf(state);
     at.scatterLoss = impl.photonMode.mediumScatterInPhotons();
     at.shadow = shadowStart(state);
+    at.generation = state.generation;
     // Direct photons replace the direct calculation here too (manual 5.4; RADIANCE's
     // direct() multiplies the receiver's coefficient at its normal, pi for this white
     // Lambertian one, by the direct photons' irradiance / pi).

@@ -115,6 +115,59 @@ material::Redirection Renderer::Context::redirect(const Hit& hit, const Vec3& di
                         projection, toSource);
 }
 
+ShadowTree Renderer::Context::shadowTree() const {
+    if (!tree) return ShadowTree::None;
+    return impl.options.treeShadowRays ? ShadowTree::All : ShadowTree::Followed;
+}
+
+void Renderer::Context::reportShadowRay(const DirectPoint& at,
+                                        std::span<const ShadowPiece> pieces) {
+    // RADIANCE compat (source.c direct, raytrace.c): each piece is reported once its value
+    // is known, the last first; the first has the weight of the ray that reached the
+    // point, each further one that weight times what the surfaces before it passed.
+    std::vector<double> weights(pieces.size());
+    double w = at.weight;
+    for (size_t i = 0; i < pieces.size(); ++i) {
+        if (i > 0) w *= pieces[i].coefficient.brightness();
+        weights[i] = w;
+    }
+    for (size_t i = pieces.size(); i-- > 0;) {
+        const ShadowPiece& p = pieces[i];
+        TracedRay t;
+        t.depth = at.generation + 1 + int(i);
+        RayResult& r = t.result;
+        r.origin = p.origin;
+        r.direction = p.dir;
+        r.value = p.value;
+        r.coefficient = p.coefficient;
+        r.weight = weights[i];
+        if (p.hit) {
+            r.hit = true;
+            r.distance = r.effectiveLength = p.hit->t;
+            r.point = p.hit->point;
+            // Turned toward the ray, as materials that pass light turn it (glass).
+            r.normal = p.hit->front ? p.hit->normal : -p.hit->normal;
+            r.unperturbedNormal = p.hit->normal;
+            r.u = p.hit->u;
+            r.v = p.hit->v;
+            r.prim = p.hit->prim;
+            r.modifier = p.hit->modifier;
+            r.material = chainMaterial(impl.scene, p.hit->modifier);
+        } else if (p.distant >= 0) {
+            // As escaped() reports a ray leaving through a distant source.
+            const DistantSource& src = impl.geometry.sources()[size_t(p.distant)];
+            r.distantSource = true;
+            r.prim = src.prim;
+            r.modifier = src.modifier;
+            r.material = chainMaterial(impl.scene, src.modifier);
+            r.unperturbedNormal = -p.dir;
+            r.normal = Vec3{} + r.unperturbedNormal;
+            r.point = p.origin;
+        }
+        tree->push_back(t);
+    }
+}
+
 Color Renderer::Context::distantRadiance(int32_t source, const Vec3& dir) {
     const DistantSource& src = impl.geometry.sources()[size_t(source)];
     Hit at;

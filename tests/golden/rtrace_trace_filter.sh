@@ -80,11 +80,10 @@ awk -F'\t' 'NR == FNR { want[FNR] = $0; n = FNR; next }
 
 # A ray up through a glass pane (index 1.52, transmissivity .95) that meets a lamp above
 # it: the transmitted ray is one tab in, a generation below the ray that made it, though
-# it keeps its -lr level. RADIANCE 5.4a's rtrace -h -ab 0 -otv writes (the records at
-# three and two tabs are the floor's shadow ray passed on through the pane, which we do
-# not report: rtrace.1):
-#   \t4.000000e+01 ...  \t\t\t4.000000e+01 ...  \t\t3.488990e+01 ...  \t4.770224e-01 ...
-#   3.492705e+01 ...
+# it keeps its -lr level; the ray the pane reflects down lights the floor, whose shadow
+# ray the pane passes on (three tabs: what it goes on as; two: the shadow ray). RADIANCE
+# 5.4a's rtrace -h -ab 0 -otv, and the same with -oTv, writes (tabs, then the value):
+#   1 40, 3 40, 2 34.88990, 1 0.4770224, 0 34.92705
 cat > pane.rad <<'RAD'
 void light lamp_mat 0 0 3 40 40 40
 lamp_mat polygon lamp 0 0 12 1.6 1.6 2.99  1.6 2.4 2.99  2.4 2.4 2.99  2.4 1.6 2.99
@@ -94,8 +93,37 @@ void plastic grey 0 0 5 .6 .6 .6 0 0
 grey polygon floor 0 0 12 0 0 0  4 0 0  4 4 0  0 4 0
 RAD
 "$RP_BIN/oconv" pane.rad > pane.oct
-echo "2 2 1 0 0 1" | "$RP_BIN/rtrace" -h -ab 0 -otv pane.oct |
-    awk -F '\t' '{ printf "%d %.4g\n", NF - 4, $(NF - 3) }' > pane.got
-printf '%s\n' "1 40" "1 0.477" "0 34.93" | cmp -s - pane.got ||
-    { echo "pane tree: $(tr '\n' ' ' < pane.got)"; exit 1; }
+tree() {  # SPEC SCENE RAY: "tabs value" per record
+    echo "$3" | "$RP_BIN/rtrace" -h -ab 0 "$1" "$2" |
+        awk -F '\t' '{ printf "%d %.4g\n", NF - 4, $(NF - 3) }'
+}
+for spec in -otv -oTv; do
+    got=$(tree $spec pane.oct "2 2 1 0 0 1" | tr '\n' ' ')
+    [ "$got" = "1 40 3 40 2 34.89 1 0.477 0 34.93 " ] || { echo "pane tree $spec: $got"; exit 1; }
+done
+# Under the pane, the four cells of the lamp (-ds 0.2 at weight 1): each shadow ray and its
+# way on through the glass, as RADIANCE 5.4a's -oTv (values 34.82071, 34.76527 twice,
+# 34.70191 under 40 each, then 0.3153386).
+got=$(tree -otv pane.oct "1 1 1 0 0 -1" | tr '\n' ' ')
+[ "$got" = "2 40 1 34.82 2 40 1 34.77 2 40 1 34.77 2 40 1 34.7 0 0.3153 " ] ||
+    { echo "under the pane: $got"; exit 1; }
+
+# -oT: every shadow ray tested, also one that meets its source directly (a sphere lamp)
+# and one that leaves through a distant source (the sun), the brighter first; -ot shows
+# neither. RADIANCE 5.4a's -oTvm: \t1e4 sunl, \t10 lamp, 0.1001321 grey.
+cat > lamp.rad <<'RAD'
+void light lamp 0 0 3 10 10 10
+lamp sphere bulb 0 0 4 0 0 2 0.1
+void light sunl 0 0 3 1e4 1e4 1e4
+sunl source sun 0 0 4 0.3 0.3 1 0.5
+void plastic grey 0 0 5 .5 .5 .5 0 0
+grey polygon floor 0 0 12 -2 -2 0  2 -2 0  2 2 0  -2 2 0
+RAD
+"$RP_BIN/oconv" lamp.rad > lamp.oct
+got=$(echo "0 0 0.5 0 0 -1" | "$RP_BIN/rtrace" -h -ab 0 -oTvm lamp.oct | awk -F '\t' '{ print NF - 5, $(NF - 1) }' |
+    tr '\n' ' ')
+[ "$got" = "1 sunl 1 lamp 0 grey " ] ||
+    { echo "-oT shadow rays: $got"; exit 1; }
+[ "$(echo "0 0 0.5 0 0 -1" | "$RP_BIN/rtrace" -h -ab 0 -otv lamp.oct | wc -l)" = 1 ] ||
+    { echo "-ot reports shadow rays that met their source"; exit 1; }
 echo "rtrace trace filter golden: ok"
