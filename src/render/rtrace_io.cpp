@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -138,10 +139,14 @@ bool RayWriter::traced(const RayResult& r) const {
 
 void RayWriter::real(std::string& out, double v) const {
     if (format_ == 'a') {
-        // RADIANCE compat (rtrace.c puta): "%e" then a tab after every value.
+        // RADIANCE compat (rtrace.c puta): "%e" then a tab after every value. std::to_chars
+        // writes the same characters (both round exactly; "inf", "nan" likewise) at a
+        // fraction of printf's cost, which was a tenth of a run of bare photon lookups.
         char buf[40];
-        std::snprintf(buf, sizeof buf, "%e\t", v);
-        out += buf;
+        const std::to_chars_result r =
+            std::to_chars(buf, buf + sizeof buf - 1, v, std::chars_format::scientific, 6);
+        *r.ptr = '\t';
+        out.append(buf, size_t(r.ptr + 1 - buf));
     } else if (format_ == 'f') {
         float f = float(v);
         out.append(reinterpret_cast<const char*>(&f), sizeof f);

@@ -3,8 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <random>
 #include <sstream>
+#include <vector>
 
 #include "util/error.h"
 
@@ -87,6 +90,32 @@ TEST(RtraceIo, MissAndVoid) {
     r.modifier = kVoid;
     r.material = kVoid;
     EXPECT_EQ(ascii("mM", r), "void\tvoid\t\n");
+}
+
+// Text numbers are written as RADIANCE's printf("%e") writes them, for any double:
+// wide and tiny exponents, subnormals, signed zeros, halfway cases, inf and nan.
+TEST(RtraceIo, TextNumbersAsPrintf) {
+    RayWriter w(parseOutputSpec("L", 'a'), 'a', nullptr);
+    std::vector<double> values = {0.0,       -0.0,   1.0,      -1.0,      0.5,
+                                  1e10,      1e-300, 5e-324,   1.2345675, 9.9999995,
+                                  9999999.5, 1e308,  HUGE_VAL, -HUGE_VAL, std::nan("")};
+    std::mt19937_64 rng(3);
+    for (int i = 0; i < 20000; ++i) {
+        uint64_t bits = rng();
+        double d;
+        std::memcpy(&d, &bits, sizeof d);
+        if (std::isfinite(d)) values.push_back(d);
+        values.push_back(std::ldexp(double(rng() % 10000000) + 0.5, -int(rng() % 40)));
+    }
+    for (double v : values) {
+        RayResult r;
+        r.distance = v;
+        std::string out;
+        w.write(out, r, nullptr);
+        char want[64];
+        std::snprintf(want, sizeof want, "%e\t\n", v);
+        ASSERT_EQ(out, want) << v;
+    }
 }
 
 TEST(RtraceIo, BinaryFormats) {
