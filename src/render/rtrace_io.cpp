@@ -55,16 +55,24 @@ OutputSpec parseOutputSpec(const std::string& spec, char outputFormat) {
 // ---- input ----
 
 bool RayReader::word(std::string& w) {
+    // From the stream's buffer: the stream's own get() and peek() build a sentry per
+    // character, a twentieth of a run of bare photon lookups.
+    using Traits = std::char_traits<char>;
+    std::streambuf* const buf = in_.rdbuf();
     w.clear();
-    int c;
-    while ((c = in_.get()) != EOF) {
+    Traits::int_type c = Traits::eof();
+    while (buf && !Traits::eq_int_type(c = buf->sbumpc(), Traits::eof())) {
         if (c == '\n') ++line_;
         if (!std::isspace(c)) break;
     }
-    if (c == EOF) return false;
+    if (!buf || Traits::eq_int_type(c, Traits::eof())) {
+        in_.setstate(std::ios::eofbit);
+        return false;
+    }
     wordLine_ = line_;
-    w += char(c);
-    while ((c = in_.peek()) != EOF && !std::isspace(c)) w += char(in_.get());
+    w += Traits::to_char_type(c);
+    while (!Traits::eq_int_type(c = buf->sgetc(), Traits::eof()) && !std::isspace(c))
+        w += Traits::to_char_type(buf->sbumpc());
     return true;
 }
 
