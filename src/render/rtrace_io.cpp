@@ -87,9 +87,18 @@ RayReader::Status RayReader::next(InputRay& ray) {
                          ": incomplete ray at end of input";
                 return Status::Bad;
             }
-            char* end = nullptr;
-            v[k] = std::strtod(w.c_str(), &end);
-            if (*end != '\0') {
+            // std::from_chars first (the same correctly rounded value, without strtod's
+            // locale and setup); strtod for what it alone reads ("+1", hex, "infinity").
+            const char* first = w.data();
+            const char* last = first + w.size();
+            const std::from_chars_result fast = std::from_chars(first, last, v[k]);
+            const char* end = fast.ptr;
+            if (fast.ec != std::errc() || end != last) {
+                char* e = nullptr;
+                v[k] = std::strtod(w.c_str(), &e);
+                end = e;
+            }
+            if (end != last) {
                 error_ = "bad ray at input line " + std::to_string(wordLine_) + ": '" + w +
                          "' is not a number";
                 return Status::Bad;

@@ -234,6 +234,41 @@ TEST(RtraceIo, ReadAscii) {
     EXPECT_EQ(r.next(ray), RayReader::Status::End);
 }
 
+// Every word reads as strtod reads it: signs, hex, out-of-range and long mantissas, and
+// random doubles written with 17 digits.
+TEST(RtraceIo, ReadAsciiNumbersAsStrtod) {
+    std::vector<std::string> words = {
+        "+1",     "-0",  "0x1p3", "1e400",    "-1e400",
+        "1e-400", "inf", "-inf",  "infinity", "3.14159265358979323846264",
+        ".5",     "5.",  "1E5",   "4.9e-324"};
+    std::mt19937_64 rng(5);
+    for (int i = 0; i < 6000; ++i) {
+        uint64_t bits = rng();
+        double d;
+        std::memcpy(&d, &bits, sizeof d);
+        if (!std::isfinite(d)) continue;
+        char buf[40];
+        std::snprintf(buf, sizeof buf, i % 2 ? "%.17g" : "%.6e", d);
+        words.push_back(buf);
+    }
+    while (words.size() % 6) words.push_back("1");
+    std::string text;
+    for (const std::string& w : words) text += w + (text.size() % 3 ? " " : "\n");
+    std::istringstream in(text);
+    RayReader r(in, 'a');
+    InputRay ray;
+    for (size_t i = 0; i < words.size(); i += 6) {
+        ASSERT_EQ(r.next(ray), RayReader::Status::Ok) << i;
+        const double got[6] = {ray.origin.x,    ray.origin.y,    ray.origin.z,
+                               ray.direction.x, ray.direction.y, ray.direction.z};
+        for (int k = 0; k < 6; ++k) {
+            const double want = std::strtod(words[i + size_t(k)].c_str(), nullptr);
+            ASSERT_EQ(std::memcmp(&got[k], &want, sizeof want), 0) << words[i + size_t(k)];
+        }
+    }
+    EXPECT_EQ(r.next(ray), RayReader::Status::End);
+}
+
 TEST(RtraceIo, ReadAsciiErrors) {
     std::istringstream in("0 0 0 0 0 1\n\n1 2 3 x 5 6\n");
     RayReader r(in, 'a');
