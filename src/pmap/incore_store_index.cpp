@@ -2,14 +2,16 @@
 // that a map opened again skips the build: reading the arrays back costs a copy, where
 // the build sorts and lays out every photon (bench/README_speed.md, map loading).
 //
-// Layout: a fixed head (magic, format version, byte-order mark, the caller's key, photon
-// count, attributes, leaf size, bounds, array lengths, the CRC-32 of the body), then the
-// body: nodes, leaf blocks, flux, and the flags, primaries and normals the attributes
-// ask for, each as in memory. A cache for this machine, not an exchange format: the
+// Layout: a fixed head (magic, its own size as a 4-byte word at byte 8, format version,
+// byte-order mark, the caller's key, photon count, attributes, leaf size, bounds, array
+// lengths, and in its last four bytes the CRC-32 of the body), then the body: nodes, leaf
+// blocks, flux, and the flags, primaries and normals the attributes ask for, each as in
+// memory. A cache for this machine, not an exchange format: the
 // byte-order mark and the sizes of the records refuse a file from another layout.
 #include <zlib.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <istream>
 #include <ostream>
 #include <vector>
@@ -21,14 +23,16 @@ namespace rp::pmap {
 namespace {
 
 constexpr char kMagic[8] = {'R', 'P', 'S', 'T', 'O', 'R', 'E', '\n'};
-constexpr uint32_t kIndexVersion = 1;
+constexpr uint32_t kIndexVersion = 2;
 constexpr uint32_t kByteOrder = 0x01020304;
 constexpr uint32_t kLeafTag = 3;
 
 struct Head {
     char magic[8];
+    uint32_t headBytes;  // sizeof(Head): where the body starts
     uint32_t version;
     uint32_t byteOrder;
+    uint32_t reserved;  // 0; no implicit padding: every byte of the head is written
     uint64_t key[3];
     uint64_t photons;
     uint32_t attributes;  // bit 0: normals, bit 1: contrib
@@ -37,8 +41,9 @@ struct Head {
     uint64_t nodes;
     uint64_t slots;
     uint32_t nodeBytes;  // sizeof(Node): a layout check
-    uint32_t bodyCrc;
+    uint32_t bodyCrc;    // the head's last four bytes
 };
+static_assert(sizeof(Head) == 112 && offsetof(Head, bodyCrc) + 4 == sizeof(Head));
 
 uint32_t attributeBits(InCoreStore::Attributes a) {
     return (a.normals ? 1u : 0u) | (a.contrib ? 2u : 0u);
@@ -110,6 +115,7 @@ struct InCoreStore::Index {
 void InCoreStore::writeIndex(std::ostream& out, const IndexKey& key) const {
     Head h{};
     std::copy(std::begin(kMagic), std::end(kMagic), h.magic);
+    h.headBytes = sizeof(Head);
     h.version = kIndexVersion;
     h.byteOrder = kByteOrder;
     for (int i = 0; i < 3; ++i) h.key[i] = key[size_t(i)];
@@ -137,9 +143,9 @@ std::optional<InCoreStore> InCoreStore::readIndex(std::istream& in, const IndexK
     Head h{};
     if (!in.read(reinterpret_cast<char*>(&h), sizeof h)) return std::nullopt;
     const bool headOk = std::equal(std::begin(kMagic), std::end(kMagic), h.magic) &&
-                        h.version == kIndexVersion && h.byteOrder == kByteOrder &&
-                        h.key[0] == key[0] && h.key[1] == key[1] && h.key[2] == key[2] &&
-                        h.photons == photons && photons > 0 &&
+                        h.headBytes == sizeof(Head) && h.version == kIndexVersion &&
+                        h.byteOrder == kByteOrder && h.key[0] == key[0] && h.key[1] == key[1] &&
+                        h.key[2] == key[2] && h.photons == photons && photons > 0 &&
                         h.attributes == attributeBits(attrs) && h.leafSize == kLeafSize &&
                         h.nodeBytes == sizeof(Node) && h.nodes > 0 && h.nodes <= 2 * photons + 1 &&
                         h.slots >= photons && h.slots <= photons + 4 * h.nodes;

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -375,6 +376,46 @@ TEST(PhotonStore, InCoreIndexReadsBackOnlyWhatWasWritten) {
         damaged[at] = static_cast<char>(damaged[at] ^ 0x10);
         EXPECT_FALSE(read(damaged, key, attrs, photons.size())) << at;
     }
+}
+
+// A damaged index whose CRC-32 was made to match again is still refused when its tree
+// could not be walked safely: a child shared by two parents (its photons would be found
+// twice), a child before its parent, a leaf past the arrays.
+TEST(PhotonStore, InCoreIndexRefusesMalformedTrees) {
+    const auto photons = makePhotons(Layout::Uniform, 5000, 9);
+    const InCoreStore store = InCoreStore::copyOf(photons, {false, false}, false);
+    const InCoreStore::IndexKey key{4, 5, 6};
+    std::ostringstream out;
+    store.writeIndex(out, key);
+    const std::string bytes = out.str();
+    uint32_t headBytes;  // incore_store_index.cpp: the head's size at byte 8, the body's
+    std::memcpy(&headBytes, bytes.data() + 8, 4);  // CRC-32 in its last four bytes
+    ASSERT_LT(headBytes, bytes.size());
+    // The nodes come first in the body, 16 bytes each: leftMax, rightMin, axisInfo, link.
+    auto withNode = [&](uint32_t node, uint32_t field, uint32_t value) {
+        std::string b = bytes;
+        std::memcpy(b.data() + headBytes + 16 * node + 4 * field, &value, 4);
+        const uint32_t crc = static_cast<uint32_t>(
+            crc32(crc32(0, nullptr, 0), reinterpret_cast<const Bytef*>(b.data() + headBytes),
+                  static_cast<uInt>(b.size() - headBytes)));
+        std::memcpy(b.data() + headBytes - 4, &crc, 4);
+        std::istringstream in(b);
+        return InCoreStore::readIndex(in, key, {false, false}, photons.size()).has_value();
+    };
+    uint32_t rootLink;
+    std::memcpy(&rootLink, bytes.data() + headBytes + 12, 4);
+    ASSERT_GT(rootLink, 1u);
+    EXPECT_TRUE(withNode(0, 3, rootLink)) << "the unchanged tree with its CRC made again";
+    EXPECT_FALSE(withNode(0, 3, 1)) << "right child = left child";
+    EXPECT_FALSE(withNode(0, 3, 0)) << "a child before its parent";
+    EXPECT_FALSE(withNode(0, 2, 7)) << "no such axis";
+    uint32_t leaf = 1;  // the first leaf: the left spine's end
+    for (uint32_t axisInfo;; ++leaf) {
+        std::memcpy(&axisInfo, bytes.data() + headBytes + 16 * leaf + 8, 4);
+        if ((axisInfo & 3) == 3) break;
+    }
+    EXPECT_FALSE(withNode(leaf, 3, 1u << 30)) << "a leaf's slots past the arrays";
+    EXPECT_FALSE(withNode(leaf, 2, 3u | (65u << 2))) << "more photons than a leaf holds";
 }
 
 TEST(PhotonStore, InCoreMemoryPerPhoton) {
