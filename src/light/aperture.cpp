@@ -132,6 +132,13 @@ void DirectionTable::init(const Cone& cone, double samplesPerSr) {
     nTheta_ = std::min(nTheta_, 65535u);
     nPhi_ = std::min(nPhi_, 65535u);
     cellSolidAngle_ = 2 * kPi * (1 - cosHalf_) / (double(nTheta_) * nPhi_);
+    if (size_t(nTheta_) * nPhi_ <= kMaxKeptCentres) {
+        auto centres = std::make_shared<std::vector<Vec3>>();
+        centres->reserve(size_t(nTheta_) * nPhi_);
+        for (uint32_t t = 0; t < nTheta_; ++t)
+            for (uint32_t p = 0; p < nPhi_; ++p) centres->push_back(cellDirection(t, p, 0.5, 0.5));
+        centres_ = std::move(centres);
+    }
 }
 
 void DirectionTable::add(uint32_t t, uint32_t p, const Color& value) {

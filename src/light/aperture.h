@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "util/color.h"
@@ -63,7 +64,7 @@ public:
     DirectionTable(const Cone& cone, double samplesPerSr, F f) {
         init(cone, samplesPerSr);
         for (uint32_t t = 0; t < nTheta_; ++t)
-            for (uint32_t p = 0; p < nPhi_; ++p) add(t, p, f(cellDirection(t, p, 0.5, 0.5)));
+            for (uint32_t p = 0; p < nPhi_; ++p) add(t, p, f(centre(t, p)));
     }
 
     // The same grid with each cell's value the mean of f(w, k) over k = 0..n-1, the w
@@ -109,7 +110,7 @@ public:
             w = cellDirection(c.theta, c.phi, rng.uniform(), rng.uniform());
             if (accept(w)) return {w, c.value()};
         }
-        return {cellDirection(c.theta, c.phi, 0.5, 0.5), c.value()};
+        return {centre(c.theta, c.phi), c.value()};
     }
 
     // The same table without the cells whose centre direction fails `keep` (occlusion
@@ -120,7 +121,7 @@ public:
         out.cells_.clear();
         out.integral_ = {};
         for (const Cell& c : cells_)
-            if (keep(cellDirection(c.theta, c.phi, 0.5, 0.5))) out.add(c.theta, c.phi, c.value());
+            if (keep(centre(c.theta, c.phi))) out.add(c.theta, c.phi, c.value());
         changed = out.cells_.size() != cells_.size();
         return out;
     }
@@ -136,7 +137,17 @@ private:
     void init(const Cone& cone, double samplesPerSr);
     void add(uint32_t t, uint32_t p, const Color& value);
     Vec3 cellDirection(uint32_t t, uint32_t p, double ju, double jv) const;
+    // cellDirection(t, p, 0.5, 0.5), computed once per grid (init) and shared by the
+    // tables filtered from this one: a port's partitions each filter the port's table,
+    // and recomputing the centres (sin, cos, a square root each) was a quarter of mkpmap
+    // through the daylit office's window. Grids beyond kMaxKeptCentres cells (a -dp far
+    // above practice) compute them when asked, as before.
+    static constexpr size_t kMaxKeptCentres = size_t{1} << 20;
+    Vec3 centre(uint32_t t, uint32_t p) const {
+        return centres_ ? (*centres_)[size_t(t) * nPhi_ + p] : cellDirection(t, p, 0.5, 0.5);
+    }
     const Cell& pick(double u) const;
+    std::shared_ptr<const std::vector<Vec3>> centres_;
 
     Vec3 axis_, u_, v_;
     double cosHalf_ = 0;
