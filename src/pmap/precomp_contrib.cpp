@@ -171,7 +171,9 @@ PrecompContribResult precomputeContrib(std::vector<Photon> photons,
                                        const ContribBins& bins, const PrecompContribSettings& s) {
     RP_CHECK(rays.size() == primaries.size());
     const std::vector<int> modOf = modifierOfSource(sources, bins);
-    const auto [sel, nall] = selectPhotons(photons, s);
+    const auto [sel, selectedAll] = selectPhotons(photons, s);
+    // A plain copy for the lambda below: clang 14 cannot capture a structured binding.
+    const auto nall = selectedAll;
     PrecompContribResult res;
     res.photons.resize(sel.size());
     for (size_t i = 0; i < sel.size(); ++i) res.photons[i] = photons[sel[i]];
