@@ -108,7 +108,11 @@ std::function<std::string()> realLine(const double& v, const char* name, const c
 
 // rpict's -x -y -p? -t, in the order of its -defaults lines (rpmain.c printdefaults).
 void addPictureOptions(OptionTable& t, RpictOptions& o) {
-    for (auto [name, v] : {std::pair{"-x", &o.xres}, std::pair{"-y", &o.yres}}) {
+    for (const auto& option : {std::pair{"-x", &o.xres}, std::pair{"-y", &o.yres}}) {
+        // Plain copies: clang 14 (the fuzz build's compiler) cannot capture a structured
+        // binding.
+        const char* name = option.first;
+        int* v = option.second;
         t.add(own(customOption(name,
                                [v](OptionReader& r) {
                                    const long n = r.integer(-1000000000L, 1000000000L);
