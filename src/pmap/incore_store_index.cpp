@@ -6,10 +6,8 @@
 // byte-order mark, the caller's key, photon count, attributes, leaf size, bounds, array
 // lengths, and in its last four bytes the CRC-32 of the body), then the body: nodes, leaf
 // blocks, flux, and the flags, primaries and normals the attributes ask for, each as in
-// memory. A cache for this machine, not an exchange format: the
-// byte-order mark and the sizes of the records refuse a file from another layout.
-#include <zlib.h>
-
+// memory. A cache for this machine, not an exchange format: the byte-order mark and the
+// sizes of the records refuse a file from another layout.
 #include <algorithm>
 #include <cstddef>
 #include <istream>
@@ -17,6 +15,7 @@
 #include <vector>
 
 #include "pmap/incore_store.h"
+#include "pmap/record_checksums.h"
 
 namespace rp::pmap {
 
@@ -47,18 +46,6 @@ static_assert(sizeof(Head) == 112 && offsetof(Head, bodyCrc) + 4 == sizeof(Head)
 
 uint32_t attributeBits(InCoreStore::Attributes a) {
     return (a.normals ? 1u : 0u) | (a.contrib ? 2u : 0u);
-}
-
-// CRC-32 continued over `size` bytes (zlib takes at most 4 GB a call).
-uint32_t crcOf(uint32_t crc, const void* data, size_t size) {
-    const auto* p = static_cast<const Bytef*>(data);
-    while (size > 0) {
-        const uInt n = static_cast<uInt>(std::min<size_t>(size, size_t{1} << 30));
-        crc = static_cast<uint32_t>(crc32(crc, p, n));
-        p += n;
-        size -= n;
-    }
-    return crc;
 }
 
 }  // namespace
@@ -129,8 +116,10 @@ void InCoreStore::writeIndex(std::ostream& out, const IndexKey& key) const {
     h.nodes = nodes_.size();
     h.slots = flux_.size();
     h.nodeBytes = sizeof(Node);
-    uint32_t crc = crcOf(0, nullptr, 0);
-    Index::eachArray(*this, [&](const void* p, size_t bytes) { crc = crcOf(crc, p, bytes); });
+    uint32_t crc = 0u;
+    Index::eachArray(*this, [&](const void* p, size_t bytes) {
+        crc = extendChecksum(crc, static_cast<const unsigned char*>(p), bytes);
+    });
     h.bodyCrc = crc;
     out.write(reinterpret_cast<const char*>(&h), sizeof h);
     Index::eachArray(*this, [&](const void* p, size_t bytes) {
@@ -166,10 +155,10 @@ std::optional<InCoreStore> InCoreStore::readIndex(std::istream& in, const IndexK
     }
     if (attrs.normals) s.norm_.resize(h.slots);
     bool ok = true;
-    uint32_t crc = crcOf(0, nullptr, 0);
+    uint32_t crc = 0u;
     Index::eachArray(s, [&](void* p, size_t bytes) {
         ok = ok && in.read(static_cast<char*>(p), std::streamsize(bytes));
-        if (ok) crc = crcOf(crc, p, bytes);
+        if (ok) crc = extendChecksum(crc, static_cast<const unsigned char*>(p), bytes);
     });
     // Nothing may follow: a longer file is not the one this head describes.
     if (!ok || crc != h.bodyCrc || in.peek() != std::char_traits<char>::eof()) return std::nullopt;

@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include <zlib.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -21,6 +20,7 @@
 #include "pmap/ooc_store.h"
 #include "pmap/photon_map.h"
 #include "pmap/photon_records.h"
+#include "pmap/record_checksums.h"
 #include "util/error.h"
 #include "util/file_write.h"
 #include "util/warnings.h"
@@ -102,8 +102,7 @@ std::optional<InCoreStore::IndexKey> indexKey(int fd, uint64_t recordsStart,
     auto crcOfRange = [&](uint64_t from, uint64_t to) -> std::optional<uint32_t> {
         std::vector<unsigned char> bytes(to - from);
         if (!preadFully(fd, from, bytes.data(), bytes.size())) return std::nullopt;
-        return static_cast<uint32_t>(
-            crc32(crc32(0, nullptr, 0), bytes.data(), static_cast<uInt>(bytes.size())));
+        return recordsChecksum(bytes.data(), bytes.size());
     };
     const std::optional<uint32_t> prologue = crcOfRange(0, recordsStart);
     const std::optional<uint32_t> trailer = crcOfRange(trailerStart, uint64_t(st.st_size));
@@ -166,10 +165,9 @@ PhotonMap PhotonMap::open(const std::string& path, const StoreOptions& options,
         map.store_ = std::make_shared<OutOfCoreStore>(path, uint64_t(records), n, std::move(o));
         return map;
     }
-    // The store searches by its own tree, not the file's, but a file whose order is broken
-    // is damaged, and what else is wrong in it cannot be known: refused, as out of core
-    // (and by pmapdump). Every record is checked too.
     const InCoreStore::Attributes attrs = InCoreStore::attributesFor(map.type_);
+    // The store kept beside the map (indexPath), when it is this map's; else it is built
+    // below and kept for the next run.
     std::optional<InCoreStore::IndexKey> key;
     if (!keep && map.checksumBlock_ && n > 0) {
         const std::streampos records = in.tellg();
@@ -182,6 +180,9 @@ PhotonMap PhotonMap::open(const std::string& path, const StoreOptions& options,
                 }
         }
     }
+    // The store searches by its own tree, not the file's, but a file whose order is broken
+    // is damaged, and what else is wrong in it cannot be known: refused, as out of core
+    // (and by pmapdump). Every record is checked too.
     map.readPhotons(in, path, TreeOrder::Checked);
     BulkVector<Photon> records = std::move(map.photons_);
     map.photons_ = {};

@@ -11,12 +11,16 @@
 namespace rp::pmap {
 
 uint32_t recordsChecksum(const unsigned char* bytes, size_t size) {
-    uLong crc = crc32(0L, Z_NULL, 0);
+    return extendChecksum(static_cast<uint32_t>(crc32(0L, Z_NULL, 0)), bytes, size);
+}
+
+uint32_t extendChecksum(uint32_t crc, const unsigned char* bytes, size_t size) {
+    uLong c = crc;
     // zlib takes uInt lengths: at most 4 GiB at a time.
     constexpr size_t kStep = size_t(1) << 30;
     for (size_t at = 0; at < size; at += kStep)
-        crc = crc32(crc, bytes + at, static_cast<uInt>(std::min(kStep, size - at)));
-    return static_cast<uint32_t>(crc);
+        c = crc32(c, bytes + at, static_cast<uInt>(std::min(kStep, size - at)));
+    return static_cast<uint32_t>(c);
 }
 
 std::string RecordChecksums::encode() const {

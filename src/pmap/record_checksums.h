@@ -25,6 +25,9 @@ inline uint64_t checksumBlocks(uint64_t n, uint32_t block) {
 
 // The CRC-32 of `bytes` raw record bytes.
 uint32_t recordsChecksum(const unsigned char* bytes, size_t size);
+// The CRC-32 of the bytes that gave `crc` followed by these (`crc` 0: none before), for
+// data checked in several pieces (the in-core store's index).
+uint32_t extendChecksum(uint32_t crc, const unsigned char* bytes, size_t size);
 
 // The checksums of a map, as read from its file.
 struct RecordChecksums {
