@@ -9,7 +9,22 @@ namespace rp::render {
 
 namespace {
 constexpr double kNoHit = 1e10;
+
+// What rtrace reports of a ray from `origin` along `dir` that left the scene through
+// distant source `src`. RADIANCE compat (source.c sourcehit, rtrace.c oputn/oputp): ro
+// is the source, ron = -rdir, rop stays the origin; -0 becomes +0 in n as RADIANCE adds
+// pert.
+void recordDistantSource(RayResult& r, const Scene& scene, const DistantSource& src,
+                         const Vec3& origin, const Vec3& dir) {
+    r.distantSource = true;
+    r.prim = src.prim;
+    r.modifier = src.modifier;
+    r.material = chainMaterial(scene, src.modifier);
+    r.unperturbedNormal = -dir;
+    r.normal = Vec3{} + r.unperturbedNormal;
+    r.point = origin;
 }
+}  // namespace
 
 std::optional<Hit> Renderer::Context::closestHit(const Ray& ray) {
     return impl.geometry.closestHit(ray);
@@ -154,15 +169,8 @@ void Renderer::Context::reportShadowRay(const DirectPoint& at,
             r.modifier = p.hit->modifier;
             r.material = chainMaterial(impl.scene, p.hit->modifier);
         } else if (p.distant >= 0) {
-            // As escaped() reports a ray leaving through a distant source.
-            const DistantSource& src = impl.geometry.sources()[size_t(p.distant)];
-            r.distantSource = true;
-            r.prim = src.prim;
-            r.modifier = src.modifier;
-            r.material = chainMaterial(impl.scene, src.modifier);
-            r.unperturbedNormal = -p.dir;
-            r.normal = Vec3{} + r.unperturbedNormal;
-            r.point = p.origin;
+            recordDistantSource(r, impl.scene, impl.geometry.sources()[size_t(p.distant)], p.origin,
+                                p.dir);
         }
         tree->push_back(t);
     }
@@ -208,17 +216,8 @@ Color Renderer::Context::escaped(const Ray& ray, const RayState& state, RayResul
     }
     if (chosen < 0) return {};
     const DistantSource& chosenSource = impl.geometry.sources()[size_t(chosen)];
-    if (record && !record->hit && !record->distantSource) {
-        // RADIANCE compat (source.c sourcehit, rtrace.c oputn/oputp): ro is the source,
-        // ron = -rdir, rop stays the origin; -0 becomes +0 in n as RADIANCE adds pert.
-        record->distantSource = true;
-        record->prim = chosenSource.prim;
-        record->modifier = chosenSource.modifier;
-        record->material = chainMaterial(impl.scene, chosenSource.modifier);
-        record->unperturbedNormal = -ray.dir;
-        record->normal = Vec3{} + record->unperturbedNormal;
-        record->point = ray.origin;
-    }
+    if (record && !record->hit && !record->distantSource)
+        recordDistantSource(*record, impl.scene, chosenSource, ray.origin, ray.dir);
     bool directSource = impl.direct.isDistantSource(chosen);
     if (directSource && state.indirect) return {};  // counted by the direct calculation
     if (directSource && !impl.options.direct.visibility) return {};
