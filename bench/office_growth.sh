@@ -7,8 +7,11 @@
 # printing wall time, user+sys CPU and peak memory (/usr/bin/time), ours with the maps'
 # search index beside them. With RADIANCE=<RADIANCE 5.4's bin> RADIANCE's rtrace runs the
 # same maps and points up to RADIANCE_MAX sensors (default 10000; a million would take it
-# hours).
-# Usage: [RADIANCE=/path/bin] [MAPS="1m 20m"] [SENSORS="..."] bench/office_growth.sh [build]
+# hours). MKPMAP_OPTS are added to mkpmap's options and RTRACE_OPTS to our rtrace's (e.g.
+# "-aC 100m" and "-aC 14m" for maps searched out of core; RADIANCE 5.4 has no -aC and
+# holds every map in memory).
+# Usage: [RADIANCE=/path/bin] [MAPS="1m 20m"] [SENSORS="..."] [MKPMAP_OPTS=] [RTRACE_OPTS=]
+#        bench/office_growth.sh [build]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=$(cd "${1:-$root/build}" && pwd)/tools
@@ -16,6 +19,8 @@ maps=${MAPS:-"1m 20m"}
 sensors=${SENSORS:-"100 1000 10000 100000"}
 rad=${RADIANCE:-}
 radiance_max=${RADIANCE_MAX:-10000}
+mkpmap_opts=${MKPMAP_OPTS:-}
+rtrace_opts=${RTRACE_OPTS:-}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 cd "$tmp"
 cp "$root/examples/daylit_office/scene.rad" .
@@ -38,9 +43,9 @@ echo "| map photons | sensors | ours wall | ours cpu | ours peak | RADIANCE wall
 echo "|---|---|---|---|---|---|---|---|---|"
 for m in $maps; do
     PATH="$bin:$PATH" RAYPATH=".:$root/lib" "$bin/mkpmap" -fo -apg g.pm "$m" -apc c.pm "$m" \
-        -apo window_glass -aps sensor_plane -n 2 office.oct 2> /dev/null
-    PATH="$bin:$PATH" RAYPATH=".:$root/lib" "$bin/rtrace" -h -ap g.pm 100 -ap c.pm 100 \
-        office.oct < /dev/null  # the index beside each map
+        -apo window_glass -aps sensor_plane -n 2 $mkpmap_opts office.oct 2> /dev/null
+    PATH="$bin:$PATH" RAYPATH=".:$root/lib" "$bin/rtrace" -h $rtrace_opts -ap g.pm 100 \
+        -ap c.pm 100 office.oct < /dev/null  # the index beside each map (in core)
     for n in $sensors; do
         awk -v n="$n" 'BEGIN { srand(11); k = int(sqrt(1.5 * n)); if (k < 1) k = 1
             rows = int((n + k - 1) / k)
@@ -48,7 +53,7 @@ for m in $maps; do
                 printf "%.4f %.4f 0.8 0 0 1\n", 0.05 + 5.9 * (i % k + rand()) / k,
                        0.05 + 3.9 * (int(i / k) + rand()) / rows }' > pts.txt
         cmd="rtrace -h -I -ab 1 -ad 1024 -aa 0.1 -ap g.pm 100 -ap c.pm 100"
-        read -r w c p <<< "$(timed ours "$cmd office.oct < pts.txt")"
+        read -r w c p <<< "$(timed ours "$cmd $rtrace_opts office.oct < pts.txt")"
         if [ -n "$rad" ] && [ "$n" -le "$radiance_max" ]; then
             read -r rw rc rp <<< "$(timed radiance "$cmd r.oct < pts.txt")"
             printf "| %s | %s | %.2f s | %.2f s | %d MB | %.2f s | %.2f s | %d MB | %.1fx |\n" \
