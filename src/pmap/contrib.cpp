@@ -114,9 +114,10 @@ PathBatch traceRange(const PhotonTracer& tracer, tbb::task_arena& arena, const C
             PhotonBins bins;
             auto& g = bins.maps[size_t(PhotonMapType::Global)];
             PathBatch b;
+            PhotonTracer::Workspace ws(tracer);
             for (uint64_t i = i0; i < i1; ++i) {
                 const size_t before = g.size();
-                tracer.trace(seed, i, all, bins);
+                tracer.trace(ws, seed, i, all, bins);
                 if (g.size() == before) continue;
                 b.pathSizes.push_back(uint32_t(g.size() - before));
                 if (rays) b.rays.push_back(primaryRay(*rays, seed, i));

@@ -160,7 +160,8 @@ double traceStreamed(const PhotonTracer& tracer, tbb::task_arena& arena,
             const uint64_t i1 = std::min(end, i0 + kPhotonsPerChunk);
             t.photons = i1 - i0;
             reserveFor(t.bins, perPhoton, t.photons);
-            for (uint64_t i = i0; i < i1; ++i) tracer.trace(s.pass.seed, i, prob, t.bins);
+            PhotonTracer::Workspace ws(tracer);
+            for (uint64_t i = i0; i < i1; ++i) tracer.trace(ws, s.pass.seed, i, prob, t.bins);
             if (scale)
                 for (size_t m = 0; m < t.final.size(); ++m) {
                     auto& raw = t.bins.maps[m];

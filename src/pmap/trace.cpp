@@ -203,14 +203,14 @@ void PhotonTracer::deposit(const Hit& hit, bool front, const Color& flux, bool i
 
 // One photon's way through the scene: the state trace()'s phases read and change.
 struct PhotonTracer::PhotonPath {
-    PhotonPath(const PhotonTracer& t, uint64_t seed, uint64_t index, const StoreProbabilities& p,
-               PhotonBins& o)
+    PhotonPath(const PhotonTracer& t, Workspace& ws, uint64_t seed, uint64_t index,
+               const StoreProbabilities& p, PhotonBins& o)
         : e(t.plan_.emitPhoton(seed, index)),
           rng(seed, RngDomain::Scattering, index),
           storeRng(seed, RngDomain::Sampling, index),
           ray(e.ray),
           flux(e.weight),
-          evals(t.materialCalc_, t.chains_),
+          evals(ws.evals_),
           prob(p),
           out(o) {
         // Path length limit: -ld and a local glow's radius (pmapsrc.c: the photon's rmax).
@@ -286,8 +286,8 @@ struct PhotonTracer::PhotonPath {
     // One per path, set at each hit (setSurfaceHit, pattern, normal, and prepareHit for
     // what a material's functions give); its other fields keep their defaults.
     material::SurfacePoint sp;
-    material::HitScratch scratch;  // what prepareHit gives, for the hit at hand
-    material::HitEvaluators evals;
+    material::HitScratch scratch;    // what prepareHit gives, for the hit at hand
+    material::HitEvaluators& evals;  // the thread's (Workspace)
     const StoreProbabilities& prob;
     PhotonBins& out;
 };
@@ -369,9 +369,9 @@ PhotonTracer::MediumStep PhotonTracer::crossMist(PhotonPath& path, const materia
     return MediumStep::Reached;
 }
 
-void PhotonTracer::trace(uint64_t seed, uint64_t index, const StoreProbabilities& prob,
-                         PhotonBins& out) const {
-    PhotonPath path(*this, seed, index, prob, out);
+void PhotonTracer::trace(Workspace& workspace, uint64_t seed, uint64_t index,
+                         const StoreProbabilities& prob, PhotonBins& out) const {
+    PhotonPath path(*this, workspace, seed, index, prob, out);
     while (advance(path)) {
     }
 }

@@ -32,7 +32,8 @@ PhotonBins traceKeepingAll(const testing::Run& run, uint64_t n) {
     std::array<double, kNumPhotonMapTypes> keepAll;
     keepAll.fill(1.0);
     PhotonBins bins;
-    for (uint64_t i = 0; i < n; ++i) run.tracer->trace(1, i, keepAll, bins);
+    PhotonTracer::Workspace ws(*run.tracer);
+    for (uint64_t i = 0; i < n; ++i) run.tracer->trace(ws, 1, i, keepAll, bins);
     return bins;
 }
 
@@ -395,6 +396,43 @@ TEST(TraceChains, TextureTiltsTheScatteringNormal) {
     double plain = share(false), tilted = share(true);
     EXPECT_NEAR(plain, 1.0, 0.1);
     EXPECT_GT(tilted, 2.0) << "plain " << plain;
+}
+
+// A workspace carries the function evaluators from photon to photon (trace.h): every
+// photon traced after others through one workspace deposits exactly what it deposits
+// traced alone with a fresh one, through a colorfunc, a texfunc, a mixfunc and a
+// BRTDfunc whose colour is an expression (1000 photons, the deposits byte for byte).
+TEST(TraceChains, ReusedWorkspaceTracesAsAFreshOne) {
+    const std::string text =
+        "void colorfunc paint 4 if(sin(20*Px),1.6,0.4) 0.5 1.2 . 0 0\n"
+        "void texfunc bumps 4 .1*noise3(7*Px,7*Py,7*Pz) 0 0 . 0 0\n"
+        "paint plastic floormat 0 0 5 0.5 0.5 0.5 0 0\n"
+        "bumps plastic bumpy 0 0 5 0.6 0.6 0.6 0 0\n"
+        "void mixfunc wallmat 4 floormat bumpy if(Py-2,1,0) . 0 0\n"
+        "void BRTDfunc shelf 10 if(Dz,.3,.1) .2 .2 0 0 0 0 0 0 . 0 9 .3 .3 .3 .3 .3 .3 0 0 0\n"
+        "shelf polygon board 0 0 12  1 1 1  3 1 1  3 3 1  1 3 1\n"
+        "void light lamp 0 0 3 10 10 10\n" +
+        boxRoomSurfaces();
+    auto run = makeRun(sceneFromText(text), mapsFor(true, true, false), {}, true);
+    PhotonTracer::StoreProbabilities all{};
+    all.fill(1.0);
+    PhotonTracer::Workspace shared(*run->tracer);
+    size_t deposits = 0;
+    for (uint64_t i = 0; i < 1000; ++i) {
+        PhotonBins after, alone;
+        run->tracer->trace(shared, 7, i, all, after);
+        PhotonTracer::Workspace fresh(*run->tracer);
+        run->tracer->trace(fresh, 7, i, all, alone);
+        for (size_t m = 0; m < after.maps.size(); ++m) {
+            ASSERT_EQ(after.maps[m].size(), alone.maps[m].size()) << "photon " << i;
+            ASSERT_EQ(std::memcmp(after.maps[m].data(), alone.maps[m].data(),
+                                  after.maps[m].size() * sizeof(RawPhoton)),
+                      0)
+                << "photon " << i;
+            deposits += after.maps[m].size();
+        }
+    }
+    EXPECT_GT(deposits, 500u);  // every surface of the room is patterned or mixed
 }
 
 // Caustics need L S+ D paths: a purely diffuse room cannot hold any (manual 4.2).
