@@ -57,10 +57,9 @@ Gather* makeGather() {
         v[3 * i + 1] = float(shapes.vertices[i].y);
         v[3 * i + 2] = float(shapes.vertices[i].z);
     }
-    auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(tri, RTC_BUFFER_TYPE_INDEX, 0,
-                                                               RTC_FORMAT_UINT3,
-                                                               3 * sizeof(uint32_t),
-                                                               shapes.triangles.size()));
+    auto* idx = static_cast<uint32_t*>(
+        rtcSetNewGeometryBuffer(tri, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(uint32_t), shapes.triangles.size()));
     for (size_t i = 0; i < shapes.triangles.size(); ++i)
         for (int k = 0; k < 3; ++k) idx[3 * i + k] = shapes.triangles[i][k];
     rtcCommitGeometry(tri);
