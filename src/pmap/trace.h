@@ -72,8 +72,7 @@ public:
 
     // What trace() reuses from photon to photon on one thread: the evaluators of the
     // scene's functions (patterns, textures, function-driven materials), whose calc
-    // machines cost more to set up than a photon's whole path (a room with one brightfunc
-    // took 2.8 times as long when every photon made its own). One per thread; the
+    // machines cost more to set up than most photons' whole paths. One per thread; the
     // results do not depend on which photons a workspace traced before.
     class Workspace {
     public:
