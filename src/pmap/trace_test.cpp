@@ -424,12 +424,13 @@ TEST(TraceChains, ReusedWorkspaceTracesAsAFreshOne) {
         PhotonTracer::Workspace fresh(*run->tracer);
         run->tracer->trace(fresh, 7, i, all, alone);
         for (size_t m = 0; m < after.maps.size(); ++m) {
-            ASSERT_EQ(after.maps[m].size(), alone.maps[m].size()) << "photon " << i;
-            ASSERT_EQ(std::memcmp(after.maps[m].data(), alone.maps[m].data(),
-                                  after.maps[m].size() * sizeof(RawPhoton)),
-                      0)
+            const std::vector<RawPhoton>& a = after.maps[m];
+            const std::vector<RawPhoton>& b = alone.maps[m];
+            ASSERT_EQ(a.size(), b.size()) << "photon " << i;
+            if (a.empty()) continue;  // memcmp may not be given an empty vector's null data
+            ASSERT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(RawPhoton)), 0)
                 << "photon " << i;
-            deposits += after.maps[m].size();
+            deposits += a.size();
         }
     }
     EXPECT_GT(deposits, 500u);  // every surface of the room is patterned or mixed
