@@ -1,8 +1,8 @@
 // The final gather's ceiling (issue 49): Embree's own ray rate on the rays of a final
 // gather, against our tracing of the same rays. The rays: the hemisphere that
 // `rtrace -I -ab 1 -ad 1024 -as 0 -aa 0` sends from each of the 400 work-plane sensors of
-// bench/speed_vs_radiance.sh (18 x 57 stratified cosine-weighted divisions, one jittered
-// ray each, fixed seed), in the scene of the octree named by RP_GATHER_OCTREE
+// bench/speed_vs_radiance.sh (render::sampleHemisphere's own divisions and directions,
+// recorded instead of traced; fixed seed), in the scene of the octree named by RP_GATHER_OCTREE
 // (bench/gather_ceiling.sh makes examples/daylit_office's; skipped without it).
 //   EmbreeOwn/1   rtcIntersect1 over the scene's triangles in float, default context:
 //                 what Embree alone does with these rays (the ceiling).
@@ -14,15 +14,16 @@
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
-#include <random>
 #include <vector>
 
 #include "geometry/scene_geometry.h"
 #include "render/ambient_hemisphere.h"
 #include "scene/scene_load.h"
+#include "util/rng.h"
 
 namespace {
 
@@ -30,13 +31,24 @@ using namespace rp;
 
 struct Gather {
     std::unique_ptr<SceneGeometry> geometry;
-    std::vector<Ray> rays;  // 16-ray runs share an origin (kRaysPerSensor is a multiple)
+    std::vector<Ray> rays;
+    std::vector<size_t> sensorStart;  // each sensor's first ray, then rays.size()
     RTCDevice device = nullptr;
     RTCScene own = nullptr;  // the triangles alone, as Embree takes them by default
 };
 
-constexpr int kTheta = 18, kPhi = 57;  // hemisphereDivisions(1024, 0, 1, 1)
-constexpr int kRaysPerSensor = 1040;   // 1026 rounded up to 16: a few rays twice
+// The hemisphere's rays as sampleHemisphere shoots them, not traced.
+class RecordingTracer final : public render::HemisphereTracer {
+public:
+    explicit RecordingTracer(std::vector<Ray>& rays) : rays_(rays) {}
+    Sample trace(const Vec3& origin, const Vec3& dir, int, double, double) override {
+        rays_.push_back({origin, dir});
+        return {};
+    }
+
+private:
+    std::vector<Ray>& rays_;
+};
 
 Gather* makeGather() {
     const char* path = std::getenv("RP_GATHER_OCTREE");
@@ -67,24 +79,19 @@ Gather* makeGather() {
     rtcReleaseGeometry(tri);
     rtcCommitScene(g->own);
 
-    // The sensors of speed_vs_radiance.sh, just above the work plane (z = 0.8).
-    std::mt19937_64 rng(49);
-    std::uniform_real_distribution<double> u(0, 1);
-    const Vec3 n(0, 0, 1);
-    Vec3 ux, uy;
-    render::tangentFrame(n, ux, uy);
+    // The sensors of speed_vs_radiance.sh, just above the work plane (z = 0.8); rtrace
+    // -I's hemisphere of -ad 1024 (render/ambient.cpp: no cache, weight 1, no -as).
+    render::HemisphereParams params = render::hemisphereDivisions(1024, 0, 1, 1);
+    params.gradients = false;
+    RecordingTracer record(g->rays);
     for (int i = 0; i < 20; ++i)
         for (int j = 0; j < 20; ++j) {
-            const Vec3 o(0.15 + i * 0.2975, 0.1 + j * 0.19, 0.8001);
-            for (int r = 0; r < kRaysPerSensor; ++r) {
-                const int div = r % (kTheta * kPhi);
-                const double sin2 = (div / kPhi + u(rng)) / kTheta;
-                const double phi = 2 * kPi * (div % kPhi + u(rng)) / kPhi;
-                const double s = std::sqrt(sin2), c = std::sqrt(std::max(0.0, 1 - sin2));
-                g->rays.push_back(
-                    {o, normalize(ux * (std::cos(phi) * s) + uy * (std::sin(phi) * s) + n * c)});
-            }
+            g->sensorStart.push_back(g->rays.size());
+            Rng rng(49, RngDomain::Test, uint64_t(20 * i + j));
+            render::sampleHemisphere(Vec3(0.15 + i * 0.2975, 0.1 + j * 0.19, 0.8001), Vec3(0, 0, 1),
+                                     params, record, rng);
         }
+    g->sensorStart.push_back(g->rays.size());
     return g;
 }
 
@@ -122,29 +129,34 @@ void BM_EmbreeOwn(benchmark::State& state) {
                 hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
             }
         } else {
+            // One packet per 16 rays of a sensor's hemisphere (a shared origin), the
+            // last one partly filled.
             alignas(64) RTCRayHit16 p;
             alignas(64) int valid[16];
-            for (int l = 0; l < 16; ++l) valid[l] = -1;
-            for (size_t b = 0; b < g->rays.size(); b += 16) {
-                for (int l = 0; l < 16; ++l) {
-                    const Ray& r = g->rays[b + l];
-                    p.ray.org_x[l] = float(r.origin.x);
-                    p.ray.org_y[l] = float(r.origin.y);
-                    p.ray.org_z[l] = float(r.origin.z);
-                    p.ray.dir_x[l] = float(r.dir.x);
-                    p.ray.dir_y[l] = float(r.dir.y);
-                    p.ray.dir_z[l] = float(r.dir.z);
-                    p.ray.tnear[l] = 0;
-                    p.ray.time[l] = 0;
-                    p.ray.tfar[l] = HUGE_VALF;
-                    p.ray.mask[l] = ~0u;
-                    p.ray.id[l] = 0;
-                    p.ray.flags[l] = 0;
-                    p.hit.geomID[l] = RTC_INVALID_GEOMETRY_ID;
+            for (size_t s = 0; s + 1 < g->sensorStart.size(); ++s)
+                for (size_t b = g->sensorStart[s]; b < g->sensorStart[s + 1]; b += 16) {
+                    const size_t n = std::min<size_t>(16, g->sensorStart[s + 1] - b);
+                    for (size_t l = 0; l < 16; ++l) {
+                        const Ray& r = g->rays[b + std::min(l, n - 1)];
+                        valid[l] = l < n ? -1 : 0;
+                        p.ray.org_x[l] = float(r.origin.x);
+                        p.ray.org_y[l] = float(r.origin.y);
+                        p.ray.org_z[l] = float(r.origin.z);
+                        p.ray.dir_x[l] = float(r.dir.x);
+                        p.ray.dir_y[l] = float(r.dir.y);
+                        p.ray.dir_z[l] = float(r.dir.z);
+                        p.ray.tnear[l] = 0;
+                        p.ray.time[l] = 0;
+                        p.ray.tfar[l] = HUGE_VALF;
+                        p.ray.mask[l] = ~0u;
+                        p.ray.id[l] = 0;
+                        p.ray.flags[l] = 0;
+                        p.hit.geomID[l] = RTC_INVALID_GEOMETRY_ID;
+                    }
+                    rtcIntersect16(valid, g->own, &ctx, &p);
+                    for (size_t l = 0; l < n; ++l)
+                        hits += p.hit.geomID[l] != RTC_INVALID_GEOMETRY_ID;
                 }
-                rtcIntersect16(valid, g->own, &ctx, &p);
-                for (int l = 0; l < 16; ++l) hits += p.hit.geomID[l] != RTC_INVALID_GEOMETRY_ID;
-            }
         }
         rays += g->rays.size();
     }
