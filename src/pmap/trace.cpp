@@ -210,6 +210,8 @@ struct PhotonTracer::PhotonPath {
           storeRng(seed, RngDomain::Sampling, index),
           ray(e.ray),
           flux(e.weight),
+          sp(ws.sp_),
+          scratch(ws.scratch_),
           evals(ws.evals_),
           prob(p),
           out(o) {
@@ -272,8 +274,10 @@ struct PhotonTracer::PhotonPath {
     light::EmittedPhoton e;
     Rng rng, storeRng;
     double pathLimit = HUGE_VAL;
-    Ray ray;
-    Color flux;
+    // The photon's ray and flux, where emission put them (copies stalled on reading back
+    // what emitPhoton had just written).
+    Ray& ray;
+    Color& flux;
     material::Medium medium;
     material::MistSet mists;
     bool firstHitIndirect = false;
@@ -283,11 +287,12 @@ struct PhotonTracer::PhotonPath {
     bool firstSegment = true;
     double travelled = 0;
     material::ClipSet clip;
-    // One per path, set at each hit (setSurfaceHit, pattern, normal, and prepareHit for
-    // what a material's functions give); its other fields keep their defaults.
-    material::SurfacePoint sp;
-    material::HitScratch scratch;    // what prepareHit gives, for the hit at hand
-    material::HitEvaluators& evals;  // the thread's (Workspace)
+    // The thread's (Workspace), set at each hit (setSurfaceHit, pattern, normal, and
+    // prepareHit for what a material's functions give, cleared again after the scatter);
+    // its other fields keep their defaults.
+    material::SurfacePoint& sp;
+    material::HitScratch& scratch;
+    material::HitEvaluators& evals;
     const StoreProbabilities& prob;
     PhotonBins& out;
 };

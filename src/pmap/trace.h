@@ -72,8 +72,11 @@ public:
 
     // What trace() reuses from photon to photon on one thread: the evaluators of the
     // scene's functions (patterns, textures, function-driven materials), whose calc
-    // machines cost more to set up than most photons' whole paths. One per thread; the
-    // results do not depend on which photons a workspace traced before.
+    // machines cost more to set up than most photons' whole paths, and the record of the
+    // hit at hand, which a path sets afresh at each hit (setSurfaceHit, then
+    // resetPreparedInputs) and which cost as much to construct per photon as an open
+    // scene's photons take to trace. One per thread; the results do not depend on which
+    // photons a workspace traced before.
     class Workspace {
     public:
         explicit Workspace(const PhotonTracer& tracer)
@@ -82,6 +85,8 @@ public:
     private:
         friend class PhotonTracer;
         material::HitEvaluators evals_;
+        material::SurfacePoint sp_;
+        material::HitScratch scratch_;  // what prepareHit gives, for the hit at hand
     };
 
     // Emits photon `index` of the run keyed by `seed` and traces it. A deposit for map
