@@ -116,19 +116,24 @@ void CoeffCodec::encode(std::span<const Rgb> values, uint8_t* out, Scratch& s) c
     }
     // The coarsest approximation coefficients are always kept: the wavelets sum to zero,
     // so they alone carry each record's total, which dropping one would bias.
-    auto magnitude = [&](uint32_t i) {
-        if (i < uint32_t(approx_)) return HUGE_VAL;
-        return std::fabs(s.channels[0][i]) + std::fabs(s.channels[1][i]) +
-               std::fabs(s.channels[2][i]);
-    };
+    s.magnitude.resize(n);
+    for (size_t i = 0; i < n; ++i)
+        s.magnitude[i] = i < size_t(approx_)
+                             ? HUGE_VAL
+                             : std::fabs(s.channels[0][i]) + std::fabs(s.channels[1][i]) +
+                                   std::fabs(s.channels[2][i]);
     s.order.resize(n);
     std::iota(s.order.begin(), s.order.end(), 0u);
-    // The kept largest, ties to the lower index (the same record for the same bins).
-    std::partial_sort(s.order.begin(), s.order.begin() + kept_, s.order.end(),
-                      [&](uint32_t a, uint32_t b) {
-                          const double ma = magnitude(a), mb = magnitude(b);
-                          return ma > mb || (ma == mb && a < b);
-                      });
+    // The kept largest, ties to the lower index (the same record for the same bins), in
+    // that order: a strict total order, so selecting and then sorting the kept gives what
+    // a partial sort gives.
+    auto before = [&](uint32_t a, uint32_t b) {
+        const double ma = s.magnitude[a], mb = s.magnitude[b];
+        return ma > mb || (ma == mb && a < b);
+    };
+    const auto keptEnd = s.order.begin() + kept_;
+    std::nth_element(s.order.begin(), keptEnd, s.order.end(), before);
+    std::sort(s.order.begin(), keptEnd, before);
     for (int k = 0; k < kept_; ++k) {
         const uint32_t i = s.order[size_t(k)];
         uint8_t* at = out + size_t(k) * coefficientBytes();

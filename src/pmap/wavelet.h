@@ -51,6 +51,7 @@ public:
         std::array<std::vector<double>, 3> channels;
         std::vector<double> tmp;
         std::vector<uint32_t> order;
+        std::vector<double> magnitude;  // by coefficient, for choosing the kept ones
     };
     // Writes recordBytes() bytes for `bins` values.
     void encode(std::span<const Rgb> values, uint8_t* out, Scratch& s) const;
