@@ -1,14 +1,20 @@
 // rcontrib's binning, shared with mkpmap's precomputed contributions (contrib_bins.h).
 #include "pmap/contrib_bins.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
 #include <optional>
+#include <unordered_map>
 
 #include "calc/search_path.h"
 #include "util/command_args.h"
+#include "util/dir_code.h"
 #include "util/error.h"
 #include "util/paths.h"
 
@@ -174,6 +180,15 @@ ContribBins::Binner::Binner(const ContribBins& bins) : owner_(bins) {
 ContribBins::Binner::~Binner() = default;
 
 int ContribBins::Binner::bin(size_t m, const Vec3& point, const Vec3& dir) {
+    const int b = binOrPastEnd(m, point, dir);
+    if (b == kPastEnd) {
+        owner_.badBins_.add();
+        return -1;
+    }
+    return b;
+}
+
+int ContribBins::Binner::binOrPastEnd(size_t m, const Vec3& point, const Vec3& dir) {
     const Expr& e = owner_.exprs_[m];
     if (e.program < 0) return 0;
     calc::RayContext ray;
@@ -184,11 +199,85 @@ int ContribBins::Binner::bin(size_t m, const Vec3& point, const Vec3& dir) {
     const double v = ev.eval(e.entry);
     if (!(v > -0.5)) return -1;
     const double b = std::floor(v + 0.5);
-    if (b >= owner_.modifiers_[m].bins) {
-        owner_.badBins_.add();
-        return -1;
-    }
+    if (b >= owner_.modifiers_[m].bins) return kPastEnd;
     return int(b);
+}
+
+// ---- photons' bins by primary ----
+
+namespace {
+
+// What PrimaryBins needs to bin one primary.
+struct PrimaryInputs {
+    const ContribBins& bins;
+    std::span<const ContribSource> sources;
+    std::vector<int> modifierOf;  // per source: its tracked modifier, -1 none
+    std::span<const PhotonPrimary> primaries;
+    std::span<const PrimaryRay> rays;
+};
+
+// Primary i's value index, or PrimaryBins' code for where its photons go instead.
+int32_t primarySlot(const PrimaryInputs& in, ContribBins::Binner& binner, size_t i) {
+    const int src = in.primaries[i].srcIdx;
+    if (src < 0 || size_t(src) >= in.sources.size()) return PrimaryBins::kUntracked;
+    const int m = in.modifierOf[size_t(src)];
+    if (m < 0) return PrimaryBins::kUntracked;
+    const size_t offset = in.bins.offset(size_t(m));
+    if (isConstantBin(in.bins.modifiers()[size_t(m)].binExpr)) return int32_t(offset);
+    if (in.rays.empty()) return PrimaryBins::kNoRay;
+    // pmcontrib2.c with primary rays: the direction back toward the source, and the point
+    // where the photon left it (RADIANCE gives a distant source's P as 0, and a local
+    // one's where its ray toward the source meets it, from the position of the photon
+    // emitted before, a slip we do not copy).
+    const PrimaryRay& ray = in.rays[i];
+    const std::array<double, 3> d = decodeDirection(ray.dir);
+    const Vec3 at =
+        in.sources[size_t(src)].distant ? Vec3{} : Vec3{ray.pos[0], ray.pos[1], ray.pos[2]};
+    const int b = binner.binOrPastEnd(size_t(m), at, Vec3{d[0], d[1], d[2]});
+    if (b == ContribBins::Binner::kPastEnd) return PrimaryBins::kPastEnd;
+    return b < 0 ? PrimaryBins::kUntracked : int32_t(offset + size_t(b));
+}
+
+}  // namespace
+
+PrimaryBins::PrimaryBins(const ContribBins& bins, std::span<const ContribSource> sources,
+                         bool contributions, std::span<const PhotonPrimary> primaries,
+                         std::span<const PrimaryRay> rays, int threads) {
+    RP_CHECK(rays.empty() || rays.size() == primaries.size());
+    PrimaryInputs in{bins, sources, {}, primaries, rays};
+    std::unordered_map<std::string, int> byName;
+    for (size_t m = 0; m < bins.modifiers().size(); ++m) byName[bins.modifiers()[m].name] = int(m);
+    for (const ContribSource& s : sources) {
+        auto it = byName.find(s.material);
+        in.modifierOf.push_back(it != byName.end() ? it->second : -1);
+    }
+    // Each primary's slot in parallel (a bin expression each), then the keys in order.
+    std::vector<int32_t> slot(primaries.size());
+    tbb::task_arena arena(std::max(1, threads));
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, primaries.size(), size_t(1) << 14),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              ContribBins::Binner binner(bins);
+                              for (size_t i = r.begin(); i != r.end(); ++i)
+                                  slot[i] = primarySlot(in, binner, i);
+                          });
+    });
+    shares_.resize(1);  // key 0: untracked
+    std::unordered_map<uint64_t, uint32_t> keyOf;
+    keys_.assign(primaries.size(), 0);
+    for (size_t i = 0; i < primaries.size(); ++i) {
+        if (slot[i] == kUntracked) continue;
+        const auto src = uint16_t(primaries[i].srcIdx);
+        const uint64_t id = (uint64_t(uint32_t(slot[i])) << 16) | src;
+        auto [it, added] = keyOf.try_emplace(id, uint32_t(shares_.size()));
+        if (added) {
+            Share sh;
+            sh.slot = slot[i];
+            if (!contributions) sh.divisor = sources[src].radiance;
+            shares_.push_back(sh);
+        }
+        keys_[i] = it->second;
+    }
 }
 
 }  // namespace rp::pmap

@@ -6,13 +6,16 @@
 // so that both agree on every bin.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <unordered_set>
 #include <vector>
 
 #include "calc/program.h"
+#include "pmap/photon.h"
 #include "util/options.h"
 #include "util/vec.h"
 #include "util/warnings.h"
@@ -93,6 +96,9 @@ public:
         // `point` travelling `dir`: the value rounds to the nearest bin, negatives are
         // dropped silently (-1) and bins past -bn with a count in badBins() (-1).
         int bin(size_t m, const Vec3& point, const Vec3& dir);
+        // The same, with kPastEnd for a bin past -bn, not counted.
+        static constexpr int kPastEnd = -2;
+        int binOrPastEnd(size_t m, const Vec3& point, const Vec3& dir);
 
     private:
         const ContribBins& owner_;
@@ -110,6 +116,61 @@ private:
     std::vector<Expr> exprs_;  // per modifier
     std::vector<std::shared_ptr<const calc::Program>> programs_;
     mutable WarningCounter badBins_{"bad bin numbers (ignored)"};
+};
+
+// A source a contribution map's primaries index (light::findLightSources order).
+struct ContribSource {
+    std::string material;                     // its light material's name: what -m names
+    std::array<double, 3> radiance{1, 1, 1};  // -V- divides its photons' flux by this
+    bool distant = false;                     // a `source`: bins see P = 0 (RADIANCE)
+};
+
+// Where the photons of a contribution map go in a record of `bins`, by their primary:
+// rcontrib's binning of photons (RADIANCE pmcontrib2.c) and mkpmap's precomputed
+// contributions share it. A photon's bin depends on its primary ray alone, so it is
+// evaluated once per primary here, not at each of the thousand-odd photons of every
+// estimate: there the bin expression and the random reads of the primaries and their rays
+// took four fifths of rcontrib -ap's time.
+class PrimaryBins {
+public:
+    // Where a primary's photons go: the value index (offset(m) + bin), or one of the
+    // negative codes, and the share's divisor per channel (-V-: the source's radiance,
+    // a share of 0 where it is 0; -V+: 1).
+    static constexpr int32_t kUntracked = -1;  // no tracked modifier, or a negative bin
+    static constexpr int32_t kPastEnd = -2;    // a bin past -bn (counted when met)
+    static constexpr int32_t kNoRay = -3;      // binned by expression, and the map keeps no
+                                               // primary rays (mkpmap -apC without -apCPD)
+    struct Share {
+        int32_t slot = kUntracked;
+        std::array<double, 3> divisor{1, 1, 1};
+        std::array<double, 3> of(const std::array<double, 3>& v) const {
+            std::array<double, 3> out;
+            for (size_t c = 0; c < 3; ++c) out[c] = divisor[c] != 0 ? v[c] / divisor[c] : 0;
+            return out;
+        }
+    };
+
+    // Sources by the names of the modifiers (a source whose material no modifier names is
+    // untracked); `rays` empty or one per primary. Evaluated on `threads` threads; the
+    // result does not depend on their number.
+    PrimaryBins(const ContribBins& bins, std::span<const ContribSource> sources, bool contributions,
+                std::span<const PhotonPrimary> primaries, std::span<const PrimaryRay> rays,
+                int threads);
+    PrimaryBins() = default;
+
+    // The few distinct shares, and each primary's index into them.
+    const std::vector<Share>& shares() const { return shares_; }
+    uint32_t key(uint32_t primary) const {
+        return primary < keys_.size() ? keys_[primary] : 0;  // 0: untracked
+    }
+    const Share& share(uint32_t primary) const { return shares_[key(primary)]; }
+    void prefetch(uint32_t primary) const {
+        if (primary < keys_.size()) __builtin_prefetch(keys_.data() + primary);
+    }
+
+private:
+    std::vector<uint32_t> keys_;
+    std::vector<Share> shares_;
 };
 
 }  // namespace rp::pmap

@@ -173,19 +173,18 @@ std::array<double, 3> PhotonLookup::surfaceDensity(const Vec3& pos, const Vec3& 
 }
 
 std::array<double, 3> PhotonLookup::contribDensity(const Vec3& pos, const Vec3& normal,
-                                                   const PhotonShare& each,
+                                                   const PhotonShares& each,
                                                    const DiscCoverage* coverage) {
     std::array<double, 3> irrad = {0, 0, 0};
     if (map_->empty()) return irrad;
     const Estimate e = estimate(pos, normal, coverage);
     if (!(e.scale > 0)) return irrad;
-    for (size_t i = 1; i < e.hits.size(); ++i) {  // the furthest is left out
-        const FoundPhoton& p = e.hits[i];
+    const std::span<const FoundPhoton> summed = e.hits.subspan(1);  // the furthest is left out
+    for (const FoundPhoton& p : summed) {
         const auto f = p.fluxRgb();
-        const std::array<double, 3> share = {f[0] * e.scale, f[1] * e.scale, f[2] * e.scale};
-        for (int c = 0; c < 3; ++c) irrad[c] += share[c];
-        each(p, share);
+        for (int c = 0; c < 3; ++c) irrad[c] += f[c] * e.scale;
     }
+    each(summed, e.scale);
     return irrad;
 }
 

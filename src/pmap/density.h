@@ -104,12 +104,13 @@ public:
                                          const DiscCoverage* coverage = nullptr);
 
     // RADIANCE's photonContrib (pmcontrib2.c) for contribution maps: surfaceDensity, with
-    // each photon's share of it (its flux / (pi * pi r^2)) handed to `each` with the photon
-    // (whose primary says which source emitted it); with edgeAware, each share corrected
-    // as surfaceDensity corrects the sum.
-    using PhotonShare = std::function<void(const FoundPhoton&, const std::array<double, 3>&)>;
+    // the photons it sums handed to `each` once, with `scale`: each photon's share of the
+    // estimate is its flux times scale (1 / (pi * pi r^2); with edgeAware, corrected as
+    // surfaceDensity corrects the sum). Their primaries say which source emitted them.
+    // All at once, so that the caller can fetch what it looks up per photon together.
+    using PhotonShares = std::function<void(std::span<const FoundPhoton> photons, double scale)>;
     std::array<double, 3> contribDensity(const Vec3& pos, const Vec3& normal,
-                                         const PhotonShare& each,
+                                         const PhotonShares& each,
                                          const DiscCoverage* coverage = nullptr);
 
     // RADIANCE's volumePhotonDensity: for the bandwidth nearest volume photons to `pos`

@@ -34,6 +34,44 @@ std::vector<uint64_t> precompSelection(uint64_t n, double fraction, uint64_t see
     return idx;
 }
 
+namespace {
+// 21 bits of x spread to every third bit.
+uint64_t spreadBits(uint64_t x) {
+    x &= 0x1fffff;
+    x = (x | x << 32) & 0x1f00000000ffffULL;
+    x = (x | x << 16) & 0x1f0000ff0000ffULL;
+    x = (x | x << 8) & 0x100f00f00f00f00fULL;
+    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+    x = (x | x << 2) & 0x1249249249249249ULL;
+    return x;
+}
+}  // namespace
+
+void sortAlongCurve(const std::vector<Photon>& photons, std::vector<uint64_t>::iterator first,
+                    std::vector<uint64_t>::iterator last) {
+    if (first == last) return;
+    float lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) lo[a] = hi[a] = photons[*first].pos[a];
+    for (auto it = first; it != last; ++it)
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], photons[*it].pos[a]);
+            hi[a] = std::max(hi[a], photons[*it].pos[a]);
+        }
+    std::vector<std::pair<uint64_t, uint64_t>> keyed;
+    keyed.reserve(size_t(last - first));
+    for (auto it = first; it != last; ++it) {
+        uint64_t code = 0;
+        for (int a = 0; a < 3; ++a) {
+            const double span = double(hi[a]) - double(lo[a]);
+            const double u = span > 0 ? (double(photons[*it].pos[a]) - lo[a]) / span : 0;
+            code |= spreadBits(uint64_t(std::clamp(u, 0.0, 1.0) * 0x1fffff)) << a;
+        }
+        keyed.emplace_back(code, *it);
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (const auto& [code, i] : keyed) *first++ = i;
+}
+
 void forEachPrecompChunk(uint64_t count, const PassSettings& pass, std::ostream* progress,
                          const std::function<void(uint64_t, uint64_t)>& work) {
     using Clock = std::chrono::steady_clock;
@@ -77,7 +115,8 @@ void forEachPrecompChunk(uint64_t count, const PassSettings& pass, std::ostream*
 }
 
 std::vector<Photon> precomputeGlobal(std::vector<Photon> global, const PrecompSettings& s) {
-    const std::vector<uint64_t> sel = precompSelection(global.size(), s.fraction, s.pass.seed);
+    std::vector<uint64_t> sel = precompSelection(global.size(), s.fraction, s.pass.seed);
+    sortAlongCurve(global, sel.begin(), sel.end());
     std::vector<Photon> out(sel.size());
     for (size_t i = 0; i < sel.size(); ++i) out[i] = global[sel[i]];
     if (out.empty()) return out;

@@ -6,79 +6,27 @@
 #include <algorithm>
 #include <atomic>
 #include <memory>
-#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include "pmap/contrib_coeffs.h"
 #include "pmap/density.h"
 #include "pmap/photon_map.h"
 #include "pmap/precomp.h"
-#include "util/dir_code.h"
 #include "util/error.h"
 
 namespace rp::pmap {
 
 namespace {
 
-// Per source, the tracked modifier its material names (-1: untracked).
-std::vector<int> modifierOfSource(const std::vector<ContribSource>& sources,
-                                  const ContribBins& bins) {
-    std::unordered_map<std::string, int> byName;
-    for (size_t m = 0; m < bins.modifiers().size(); ++m) byName[bins.modifiers()[m].name] = int(m);
-    std::vector<bool> named(bins.modifiers().size(), false);
-    std::vector<int> out;
-    for (const ContribSource& s : sources) {
-        auto it = byName.find(s.material);
-        out.push_back(it != byName.end() ? it->second : -1);
-        if (out.back() >= 0) named[size_t(out.back())] = true;
-    }
-    for (size_t m = 0; m < named.size(); ++m)
-        if (!named[m])
-            throw InputError("modifier '" + bins.modifiers()[m].name +
-                             "' is not the material of a light source");
-    return out;
-}
-
-// Where each primary's photons go: the index of their value (offset(m) + bin over all
-// modifiers; -1: untracked or dropped), and the factor -V- divides by. A primary's bin
-// depends on its ray alone, so it is evaluated once, not at every estimate that finds
-// one of its photons.
-struct PrimaryBins {
-    std::vector<int32_t> slot;
-    std::vector<Rgb> scale;
-};
-
-PrimaryBins binPrimaries(const std::vector<PhotonPrimary>& primaries,
-                         const std::vector<PrimaryRay>& rays,
-                         const std::vector<ContribSource>& sources, const std::vector<int>& modOf,
-                         const ContribBins& bins, const PrecompContribSettings& s) {
-    PrimaryBins pb;
-    pb.slot.assign(primaries.size(), -1);
-    pb.scale.assign(sources.size(), Rgb{1, 1, 1});
-    for (size_t i = 0; i < sources.size(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            const double r = sources[i].radiance[size_t(c)];
-            pb.scale[i][size_t(c)] = s.contributions ? 1 : r != 0 ? 1 / r : 0;
-        }
-    PassSettings quiet = s.pass;
-    quiet.reportSeconds = 0;
-    forEachPrecompChunk(primaries.size(), quiet, nullptr, [&](uint64_t i0, uint64_t i1) {
-        ContribBins::Binner binner(bins);
-        for (uint64_t i = i0; i < i1; ++i) {
-            const int src = primaries[i].srcIdx;
-            if (src < 0 || size_t(src) >= sources.size()) continue;
-            const int m = modOf[size_t(src)];
-            if (m < 0) continue;
-            const PrimaryRay& r = rays[i];
-            const std::array<double, 3> d = decodeDirection(r.dir);
-            // rcontrib's binning of photons (render/rcontrib.cpp ContribTally::addPhotons).
-            const Vec3 at =
-                sources[size_t(src)].distant ? Vec3{} : Vec3{r.pos[0], r.pos[1], r.pos[2]};
-            const int b = binner.bin(size_t(m), at, Vec3{d[0], d[1], d[2]});
-            if (b >= 0) pb.slot[i] = int32_t(bins.offset(size_t(m)) + size_t(b));
-        }
-    });
-    return pb;
+// Every modifier must be some source's light material (mkpmap's check; rcontrib only
+// needs one of them to be).
+void checkModifiersNamed(const std::vector<ContribSource>& sources, const ContribBins& bins) {
+    std::unordered_set<std::string> materials;
+    for (const ContribSource& s : sources) materials.insert(s.material);
+    for (const ContribModifier& m : bins.modifiers())
+        if (!materials.count(m.name))
+            throw InputError("modifier '" + m.name + "' is not the material of a light source");
 }
 
 // One thread's state for a chunk of precomputed photons: estimates over all photons, and
@@ -96,16 +44,27 @@ struct ChunkState {
     }
 };
 
+// The photons' primary indices replaced by their keys into the bins' few distinct shares,
+// which an estimate's photons then find in the cache (through the primary, each photon
+// cost a cache miss).
+void keyPhotons(const PrimaryBins& pb, std::vector<Photon>& photons) {
+    for (Photon& p : photons) p.primary = pb.key(p.primary);
+}
+
 // The binned contributions at photon p into st.acc (zeroed first), from every photon or,
-// for a caustic estimate, from the caustic ones.
-void gather(const PrimaryBins& pb, const std::vector<PhotonPrimary>& primaries, const Photon& p,
-            bool causticEstimate, ChunkState& st) {
+// for a caustic estimate, from the caustic ones; the map's photons carry keyPhotons' keys.
+void gather(const std::vector<PrimaryBins::Share>& shares, const Photon& p, bool causticEstimate,
+            ChunkState& st) {
     std::fill(st.acc.begin(), st.acc.end(), Rgb{0, 0, 0});
-    auto share = [&](const FoundPhoton& f, const std::array<double, 3>& v) {
-        if (f.primary >= pb.slot.size() || pb.slot[f.primary] < 0) return;
-        const Rgb& k = pb.scale[size_t(primaries[f.primary].srcIdx)];
-        Rgb& a = st.acc[size_t(pb.slot[f.primary])];
-        for (int c = 0; c < 3; ++c) a[size_t(c)] += v[size_t(c)] * k[size_t(c)];
+    auto share = [&](std::span<const FoundPhoton> photons, double scale) {
+        for (const FoundPhoton& f : photons) {
+            const PrimaryBins::Share& sh = shares[f.primary];
+            if (sh.slot < 0) continue;
+            const auto flux = f.fluxRgb();
+            const Rgb add = sh.of({flux[0] * scale, flux[1] * scale, flux[2] * scale});
+            Rgb& a = st.acc[size_t(sh.slot)];
+            for (int c = 0; c < 3; ++c) a[size_t(c)] += add[size_t(c)];
+        }
     };
     (causticEstimate ? st.caustic : st.all).contribDensity(p.position(), p.normal(), share);
 }
@@ -127,6 +86,8 @@ std::pair<std::vector<uint64_t>, size_t> selectPhotons(const std::vector<Photon>
     const size_t all = sel.size();
     for (uint64_t k : precompSelection(caustic.size(), s.fraction, s.pass.seed + 1))
         sel.push_back(caustic[k]);
+    sortAlongCurve(photons, sel.begin(), sel.begin() + std::ptrdiff_t(all));
+    sortAlongCurve(photons, sel.begin() + std::ptrdiff_t(all), sel.end());
     return {std::move(sel), all};
 }
 
@@ -170,7 +131,7 @@ PrecompContribResult precomputeContrib(std::vector<Photon> photons,
                                        const std::vector<ContribSource>& sources,
                                        const ContribBins& bins, const PrecompContribSettings& s) {
     RP_CHECK(rays.size() == primaries.size());
-    const std::vector<int> modOf = modifierOfSource(sources, bins);
+    checkModifiersNamed(sources, bins);
     const auto [sel, selectedAll] = selectPhotons(photons, s);
     // A plain copy for the lambda below: clang 14 cannot capture a structured binding.
     const auto nall = selectedAll;
@@ -181,6 +142,8 @@ PrecompContribResult precomputeContrib(std::vector<Photon> photons,
     size_t recordBytes = 0;
     for (const auto& w : writers) recordBytes = std::max(recordBytes, w->codec().recordBytes());
 
+    const PrimaryBins pb(bins, sources, s.contributions, primaries, rays, s.pass.threads);
+    keyPhotons(pb, photons);
     PhotonMap map;
     tbb::task_arena arena(std::max(1, s.pass.threads));
     arena.execute([&] {
@@ -190,14 +153,13 @@ PrecompContribResult precomputeContrib(std::vector<Photon> photons,
     LookupParams lp;
     lp.bandwidth = std::max(1, s.bandwidth);
     lp.gatherTolerance = 1;  // as rcontrib's contribution lookups
-    const PrimaryBins pb = binPrimaries(primaries, rays, sources, modOf, bins, s);
     std::vector<std::atomic<uint64_t>> zeros(writers.size());
     forEachPrecompChunk(sel.size(), s.pass, s.progress, [&](uint64_t i0, uint64_t i1) {
         // A fresh lookup per chunk: its adaptive radius depends on the chunk only.
         ChunkState st(map, lp, bins, recordBytes);
         for (uint64_t i = i0; i < i1; ++i) {
             Photon& p = res.photons[i];
-            gather(pb, primaries, p, i >= nall, st);
+            gather(pb.shares(), p, i >= nall, st);
             const Rgb total = writeRecords(i, st, bins, writers, zeros);
             p.setFlux(total[0], total[1], total[2]);
             p.setCaustic(i >= nall);

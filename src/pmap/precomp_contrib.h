@@ -21,13 +21,6 @@
 
 namespace rp::pmap {
 
-// A source the primaries index (light::findLightSources order).
-struct ContribSource {
-    std::string material;  // its light material's name: what -m names
-    Rgb radiance{1, 1, 1};
-    bool distant = false;  // a `source`: bins see P = 0, as rcontrib's
-};
-
 struct PrecompContribSettings {
     double fraction = 0.25;      // -apP
     int bandwidth = 0;           // photons per estimate

@@ -95,12 +95,15 @@ TEST(PrecompContrib, BinsSumToTheContributionDensity) {
         EXPECT_EQ(p.primary, i);
         PhotonLookup lookup(map, lp);
         std::array<double, 3> want[3] = {};  // sky bin 0, sky bin 1, lamp
-        lookup.contribDensity(p.position(), p.normal(), [&](const FoundPhoton& f, const auto& v) {
-            const int src = sc.primaries[f.primary].srcIdx;
-            const double dx = sc.rays[f.primary].pos[0];
-            const int slot = src == 1 ? 2 : dx > 0 ? 1 : 0;
-            const double rad = src == 1 ? 1 : 2;  // -V-: per unit radiance
-            for (int c = 0; c < 3; ++c) want[slot][c] += v[c] / rad;
+        lookup.contribDensity(p.position(), p.normal(), [&](auto photons, double scale) {
+            for (const FoundPhoton& f : photons) {
+                const int src = sc.primaries[f.primary].srcIdx;
+                const double dx = sc.rays[f.primary].pos[0];
+                const int slot = src == 1 ? 2 : dx > 0 ? 1 : 0;
+                const double rad = src == 1 ? 1 : 2;  // -V-: per unit radiance
+                const auto flux = f.fluxRgb();
+                for (int c = 0; c < 3; ++c) want[slot][c] += flux[size_t(c)] * scale / rad;
+            }
         });
         std::vector<Rgb> got(2), gotLamp(1);
         ASSERT_TRUE(sky.decode(i, got, s));

@@ -51,6 +51,37 @@ TEST(Precomp, StratifiedSelection) {
     EXPECT_EQ(precompSelection(10, 1.0, 9), (std::vector<uint64_t>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9}));
 }
 
+TEST(Precomp, EstimatesRunAlongACurveThroughSpace) {
+    // Consecutive estimates search neighbouring photons: the selected indices are
+    // reordered so that each cell of a regular grid is finished before the next begins,
+    // whatever order the photons were emitted in.
+    // The centres of a 16^3 lattice in a scrambled order: the curve's first split falls
+    // exactly between the octants.
+    std::vector<Photon> photons;
+    for (uint32_t i = 0; i < 4096; ++i) {
+        const uint32_t j = (i * 2654435761u) % 4096;  // odd multiplier: a permutation
+        photons.push_back(
+            makePhoton({(j % 16 + 0.5) / 16, (j / 16 % 16 + 0.5) / 16, (j / 256 + 0.5) / 16},
+                       {0, 0, 1}, {1, 1, 1}));
+    }
+    std::vector<uint64_t> sel = precompSelection(photons.size(), 1.0, 1);
+    const std::vector<uint64_t> before = sel;
+    sortAlongCurve(photons, sel.begin() + 10, sel.end());
+    EXPECT_TRUE(std::equal(before.begin(), before.begin() + 10, sel.begin()));  // not touched
+    EXPECT_TRUE(std::is_permutation(sel.begin(), sel.end(), before.begin()));
+    auto cell = [&](uint64_t i) {
+        int c = 0;
+        for (int a = 0; a < 3; ++a) c = 2 * c + (photons[i].pos[a] >= 0.5f);
+        return c;
+    };
+    int changes = 0;
+    for (size_t i = 11; i < sel.size(); ++i) changes += cell(sel[i]) != cell(sel[i - 1]);
+    EXPECT_EQ(changes, 7);  // each octant once
+    std::vector<uint64_t> again = before;
+    sortAlongCurve(photons, again.begin() + 10, again.end());
+    EXPECT_EQ(again, sel);
+}
+
 TEST(Precomp, StoresTheDensityEstimateOverTheFullMap) {
     const std::vector<Photon> all = uniformPlane(40000, 5);
     PrecompSettings s;

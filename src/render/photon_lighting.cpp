@@ -236,20 +236,8 @@ Color PhotonLighting::contribDensity(Lookups& l, const Vec3& pos, const Vec3& no
     const pmap::PhotonMap& map = maps_[size_t(contrib_)].map;
     if (map.type() == pmap::PhotonMapType::PreCompContrib)
         return precomputedContrib(l, pos, normal, coef, sink, caustic);
-    const auto& primaries = map.primaries();
-    const auto& rays = map.primaryRays();
-    auto share = [&](const pmap::FoundPhoton& p, const std::array<double, 3>& v) {
-        if (!sink || p.primary >= primaries.size()) return;
-        const Color value = coef * Color{v[0], v[1], v[2]};
-        if (rays.empty()) {
-            sink->addPhotons(primaries[p.primary].srcIdx, nullptr, value);
-            return;
-        }
-        const pmap::PrimaryRay& r = rays[p.primary];
-        const std::array<double, 3> d = decodeDirection(r.dir);
-        const ContributionSink::PhotonOrigin o{Vec3{r.pos[0], r.pos[1], r.pos[2]},
-                                               Vec3{d[0], d[1], d[2]}};
-        sink->addPhotons(primaries[p.primary].srcIdx, &o, value);
+    auto share = [&](std::span<const pmap::FoundPhoton> photons, double scale) {
+        if (sink) sink->addPhotons(photons, scale, coef);
     };
     pmap::PhotonLookup& lookup = caustic ? *l.contribCaustic : l.lookups[size_t(contrib_)];
     auto d = lookup.contribDensity(pos, normal, share, coverage);

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "light/light_sources.h"
+#include "pmap/photon_store.h"
 #include "util/error.h"
 
 namespace rp::render {
@@ -25,8 +26,10 @@ std::atomic<bool> warnedPhotonBins{false};
 
 std::vector<PhotonSource> contributionSources(const Scene& scene, const SceneGeometry& geometry) {
     std::vector<PhotonSource> out;
-    for (const light::LightSource& s : light::findLightSources(scene, geometry))
-        out.push_back({scene.prims[size_t(s.material)].name, s.params.radiance, s.distant()});
+    for (const light::LightSource& s : light::findLightSources(scene, geometry)) {
+        const Color& r = s.params.radiance;
+        out.push_back({scene.prims[size_t(s.material)].name, {r.r, r.g, r.b}, s.distant()});
+    }
     return out;
 }
 
@@ -48,8 +51,8 @@ void checkPrecomputedBins(const std::vector<ContribModifier>& modifiers, bool co
 
 ContribTargets::ContribTargets(const Scene& scene, const std::vector<ContribModifier>& modifiers,
                                const std::vector<CalcDefinition>& defs, bool contributions,
-                               const std::vector<PhotonSource>& photonSources)
-    : bins_(modifiers, defs), photonSources_(photonSources), contributions_(contributions) {
+                               const PhotonOrigins& photons)
+    : bins_(modifiers, defs), contributions_(contributions) {
     std::unordered_map<std::string, const Target*> byName;
     for (size_t i = 0; i < modifiers.size(); ++i) {
         auto t = std::make_unique<Target>();
@@ -67,13 +70,12 @@ ContribTargets::ContribTargets(const Scene& scene, const std::vector<ContribModi
         if (it != byName.end()) byModifier_[i] = it->second;
     }
     // pmcontrib2.c: photons by the name of their source's light material.
-    bool any = photonSources.empty();
-    for (const PhotonSource& s : photonSources) {
-        auto it = byName.find(s.material);
-        bySource_.push_back(it != byName.end() ? it->second : nullptr);
-        any = any || bySource_.back();
-    }
+    bool any = photons.sources.empty();
+    for (const PhotonSource& s : photons.sources) any = any || byName.count(s.material);
     if (!any) throw InputError("modifiers not in photon map");
+    if (!photons.sources.empty())
+        photonBins_ = pmap::PrimaryBins(bins_, photons.sources, contributions, photons.primaries,
+                                        photons.rays, photons.threads);
 }
 
 ContribTargets::~ContribTargets() = default;
@@ -101,40 +103,37 @@ void ContribTally::addBins(int32_t modifier, std::span<const Color> values) {
     for (size_t b = 0; b < n; ++b) values_[t->offset + b] += values[b];
 }
 
-void ContribTally::addPhotons(int32_t source, const PhotonOrigin* origin, const Color& value) {
-    const ContribTargets::Target* t = targets_.targetOfSource(source);
-    if (!t) return;
-    const PhotonSource& src = targets_.photonSource(source);
-    int b = 0;
-    if (!t->constant) {
-        if (!origin) {
-            // RADIANCE compat (pmcontrib2.c, default build): a map without primary rays
-            // cannot place a photon in a bin. RADIANCE warns (its advice is to rebuild
-            // RADIANCE; ours is mkpmap -apCPD) and drops the photon: its dummy ray meets
-            // no source, except a full-sky one, whose photons all land in the bin of
-            // D = 0. We drop those too.
-            if (!warnedPhotonBins.exchange(true)) {
-                warn(
-                    "no photon primary hitpoints for bin evaluation; using dummy (0,0,0)!"
-                    " (make the map with mkpmap -apCPD)");
-                warn("no photon primary directions for bin evaluation; using dummy (0,0,0)!");
-            }
-            return;
+void ContribTally::addPhotons(std::span<const pmap::FoundPhoton> photons, double scale,
+                              const Color& coef) {
+    // Where each photon goes is looked up by its primary, all over a large table: ask for
+    // every photon's entry before the first is needed.
+    for (const pmap::FoundPhoton& p : photons) targets_.photonBins().prefetch(p.primary);
+    for (const pmap::FoundPhoton& p : photons) {
+        const auto f = p.fluxRgb();
+        addPhoton(p.primary, coef * Color{f[0] * scale, f[1] * scale, f[2] * scale});
+    }
+}
+
+void ContribTally::addPhoton(uint32_t primary, const Color& value) {
+    const pmap::PrimaryBins::Share& sh = targets_.photonBins().share(primary);
+    if (sh.slot < 0) {
+        if (sh.slot == pmap::PrimaryBins::kPastEnd) targets_.badBins().add();
+        // RADIANCE compat (pmcontrib2.c, default build): a map without primary rays
+        // cannot place a photon in a bin. RADIANCE warns (its advice is to rebuild
+        // RADIANCE; ours is mkpmap -apCPD) and drops the photon: its dummy ray meets no
+        // source, except a full-sky one, whose photons all land in the bin of D = 0. We
+        // drop those too.
+        if (sh.slot == pmap::PrimaryBins::kNoRay && !warnedPhotonBins.exchange(true)) {
+            warn(
+                "no photon primary hitpoints for bin evaluation; using dummy (0,0,0)!"
+                " (make the map with mkpmap -apCPD)");
+            warn("no photon primary directions for bin evaluation; using dummy (0,0,0)!");
         }
-        // pmcontrib2.c with primary rays: the direction back toward the source; the point
-        // where the photon left it (RADIANCE gives a distant source's P as 0, and a local
-        // one's where its ray toward the source meets it, from the position of the photon
-        // emitted before, a slip we do not copy).
-        b = binner_.bin(t->index, src.distant ? Vec3{} : origin->point, origin->toSource);
-        if (b < 0) return;
+        return;
     }
-    Color v = value;
-    if (!targets_.contributions()) {
-        // Coefficients: per unit radiance of the source (0 where it emits nothing).
-        const Color& r = src.radiance;
-        v = Color{r.r != 0 ? v.r / r.r : 0, r.g != 0 ? v.g / r.g : 0, r.b != 0 ? v.b / r.b : 0};
-    }
-    values_[t->offset + size_t(b)] += v;
+    // Coefficients (-V-): per unit radiance of the source (0 where it emits nothing).
+    const std::array<double, 3> v = sh.of({value.r, value.g, value.b});
+    values_[size_t(sh.slot)] += Color{v[0], v[1], v[2]};
 }
 
 }  // namespace rp::render

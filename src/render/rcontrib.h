@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,15 @@ namespace rp::render {
 using pmap::evalBinCount;
 
 // A source a contribution map's primaries name (light::findLightSources order).
-struct PhotonSource {
-    std::string material;  // its light material's name: what -m must name
-    Color radiance;        // -V- divides its photons' flux by this
-    bool distant = false;  // a `source`: bins see P = 0 (RADIANCE)
+using PhotonSource = pmap::ContribSource;
+
+// A contribution map's photons' origins (rcontrib -ap): the sources and primaries that
+// place each photon in its modifier's bin.
+struct PhotonOrigins {
+    std::vector<PhotonSource> sources;
+    std::span<const pmap::PhotonPrimary> primaries;
+    std::span<const pmap::PrimaryRay> rays;  // empty: the map keeps none
+    int threads = 1;                         // to bin the primaries with
 };
 
 // The sources a contribution map's primaries index, in mkpmap's order
@@ -41,12 +47,12 @@ void checkPrecomputedBins(const std::vector<ContribModifier>& modifiers, bool co
 class ContribTargets {
 public:
     // `modifiers` as parsed; `defs` the -e/-f definitions (loaded after rayinit.cal, each
-    // modifier's -p values after them). `photonSources`: empty without -ap. Throws
+    // modifier's -p values after them). `photons`: no sources without -ap. Throws
     // InputError for a bin expression that does not evaluate, and (with photon sources)
     // "modifiers not in photon map" when none of the modifiers is one.
     ContribTargets(const Scene& scene, const std::vector<ContribModifier>& modifiers,
                    const std::vector<CalcDefinition>& defs, bool contributions,
-                   const std::vector<PhotonSource>& photonSources = {});
+                   const PhotonOrigins& photons = {});
     ~ContribTargets();
 
     const std::vector<ContribModifier>& modifiers() const { return bins_.modifiers(); }
@@ -62,21 +68,15 @@ public:
     const Target* targetOfModifier(int32_t prim) const {
         return prim >= 0 && size_t(prim) < byModifier_.size() ? byModifier_[size_t(prim)] : nullptr;
     }
-    const Target* targetOfSource(int32_t source) const {
-        return source >= 0 && size_t(source) < bySource_.size() ? bySource_[size_t(source)]
-                                                                : nullptr;
-    }
-    const PhotonSource& photonSource(int32_t source) const {
-        return photonSources_[size_t(source)];
-    }
+    // Where the photons of each primary go (rcontrib -ap).
+    const pmap::PrimaryBins& photonBins() const { return photonBins_; }
     bool contributions() const { return contributions_; }
 
 private:
     pmap::ContribBins bins_;
     std::vector<std::unique_ptr<Target>> targets_;
     std::vector<const Target*> byModifier_;  // per scene record
-    std::vector<const Target*> bySource_;    // per photon source
-    std::vector<PhotonSource> photonSources_;
+    pmap::PrimaryBins photonBins_;
     bool contributions_ = false;
 };
 
@@ -94,7 +94,10 @@ public:
     }
     void add(int32_t modifier, const Vec3& point, const Vec3& dir, const Color& coef,
              const Color& value) override;
-    void addPhotons(int32_t source, const PhotonOrigin* origin, const Color& value) override;
+    void addPhotons(std::span<const pmap::FoundPhoton> photons, double scale,
+                    const Color& coef) override;
+    // One photon of primary `primary` bringing `value` (addPhotons' step).
+    void addPhoton(uint32_t primary, const Color& value);
     void addBins(int32_t modifier, std::span<const Color> values) override;
 
 private:

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/reader.h"
+#include "util/dir_code.h"
 #include "util/error.h"
 #include "util/warning_capture_for_tests.h"
 
@@ -95,15 +96,19 @@ TEST(ContribTally, PhotonContributionsBySourceMaterial) {
     // pmcontrib2.c: a photon counts for the modifier named like its source's material;
     // coefficients (-V-) are per unit radiance of that source.
     Scene s = parseScene(kScene);
+    const std::vector<pmap::PhotonPrimary> primaries{{0}, {1}};
     for (bool contributions : {false, true}) {
-        ContribTargets t(s, {mod("lamp")}, {}, contributions,
-                         {{"lamp", Color{10, 20, 40}, false}, {"sky", Color{1, 1, 1}, true}});
+        ContribTargets t(
+            s, {mod("lamp")}, {}, contributions,
+            {{{"lamp", {10, 20, 40}, false}, {"sky", {1, 1, 1}, true}}, primaries, {}, 1});
         ContribTally tally(t);
-        tally.addPhotons(0, nullptr, Color{1, 2, 4});
-        tally.addPhotons(1, nullptr, Color{5, 5, 5});  // the sky is not tracked
+        tally.addPhoton(0, Color{1, 2, 4});
+        tally.addPhoton(1, Color{5, 5, 5});  // the sky is not tracked
         EXPECT_EQ(tally.values()[0], contributions ? Color(1, 2, 4) : Color(0.1, 0.1, 0.1));
     }
-    EXPECT_THROW(ContribTargets(s, {mod("wall")}, {}, true, {{"lamp", {}, false}}), InputError);
+    EXPECT_THROW(
+        ContribTargets(s, {mod("wall")}, {}, true, {{{"lamp", {}, false}}, primaries, {}, 1}),
+        InputError);
 }
 
 TEST(ContribTally, PhotonBinsNeedPrimaryRays) {
@@ -111,18 +116,39 @@ TEST(ContribTally, PhotonBinsNeedPrimaryRays) {
     // source; a distant source's point is 0 (RADIANCE). Without them, binned photons are
     // dropped with RADIANCE's warnings.
     Scene s = parseScene(kScene);
-    ContribTargets t(s, {mod("sky", "if(Dz, 1, 0) + if(Px*Px, 2, 0)", 4)}, {}, true,
-                     {{"sky", Color{1, 1, 1}, true}});
+    const std::vector<pmap::PhotonPrimary> primaries{{0}, {0}};
+    std::vector<pmap::PrimaryRay> rays(2);
+    rays[0] = {{5, 5, 5}, encodeDirection({0, 0.6, 0.8})};   // up
+    rays[1] = {{5, 5, 5}, encodeDirection({0, 0.6, -0.8})};  // down
+    const std::vector<PhotonSource> sky{{"sky", {1, 1, 1}, true}};
+    const std::vector<ContribModifier> bins{mod("sky", "if(Dz, 1, 0) + if(Px*Px, 2, 0)", 4)};
+    ContribTargets t(s, bins, {}, true, {sky, primaries, rays, 1});
     ContribTally tally(t);
-    const ContributionSink::PhotonOrigin up{Vec3{5, 5, 5}, Vec3{0, 0.6, 0.8}};
-    const ContributionSink::PhotonOrigin down{Vec3{5, 5, 5}, Vec3{0, 0.6, -0.8}};
-    tally.addPhotons(0, &up, Color{1, 1, 1});
-    tally.addPhotons(0, &down, Color{2, 2, 2});
+    tally.addPhoton(0, Color{1, 1, 1});
+    tally.addPhoton(1, Color{2, 2, 2});
     EXPECT_EQ(tally.values()[1], Color(1, 1, 1));
     EXPECT_EQ(tally.values()[0], Color(2, 2, 2));
+    ContribTargets withoutRays(s, bins, {}, true, {sky, primaries, {}, 1});
+    ContribTally dropped(withoutRays);
     WarningCapture w;
-    tally.addPhotons(0, nullptr, Color{4, 4, 4});
-    EXPECT_EQ(tally.values()[0] + tally.values()[1], Color(3, 3, 3));
+    dropped.addPhoton(0, Color{4, 4, 4});
+    EXPECT_EQ(dropped.values()[0] + dropped.values()[1], Color(0, 0, 0));
+    EXPECT_TRUE(w.any("no photon primary"));
+}
+
+TEST(ContribTally, PhotonBinsPastTheCountAreCountedWhenMet) {
+    // RADIANCE counts a bin number past -bn at each photon binned, not once per primary.
+    Scene s = parseScene(kScene);
+    const std::vector<pmap::PhotonPrimary> primaries{{0}};
+    std::vector<pmap::PrimaryRay> rays(1);
+    rays[0] = {{0, 0, 0}, encodeDirection({0, 0, 1})};
+    ContribTargets e(s, {mod("sky", "Dz * 7", 4)}, {}, true,
+                     {{{"sky", {1, 1, 1}, true}}, primaries, rays, 1});
+    EXPECT_EQ(e.badBins().count(), 0);
+    ContribTally tally(e);
+    for (int i = 0; i < 3; ++i) tally.addPhoton(0, Color{1, 1, 1});
+    EXPECT_EQ(e.badBins().count(), 3);
+    EXPECT_EQ(tally.values()[0] + tally.values()[3], Color(0, 0, 0));
 }
 
 }  // namespace

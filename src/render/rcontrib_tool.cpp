@@ -75,18 +75,20 @@ void runRcontribTool(const RcontribOptions& options, const RcontribScene& sceneI
     if (o.render.mist.any() || material::sceneHasMist(scene))
         warn("ray contribution calculation does not support participating media");
 
-    std::vector<PhotonSource> sources;
+    PhotonOrigins photons;
     const std::vector<pmap::CoeffInfo> precomputed = renderer.photons().precomputedModifiers();
     checkPrecomputedBins(o.modifiers, o.contributions, precomputed);
     if (renderer.photons().hasContrib() && precomputed.empty()) {
-        sources = contributionSources(scene, geometry);
+        const pmap::PhotonMap& map = *renderer.photons().contribMap();
+        photons = {contributionSources(scene, geometry), map.primaries(), map.primaryRays(),
+                   std::max(1, o.render.threads)};
         int bandwidth = o.render.photonMaps.front().bandwidth;
         if (bandwidth <= 0) bandwidth = kDefaultBandwidth;
         // RADIANCE compat (pmcontrib2.c initPmapContrib).
         if (size_t(bandwidth) < o.modifiers.size())
             warn("photon density estimate bandwidth too low, contributions may be underestimated");
     }
-    ContribTargets targets(scene, o.modifiers, o.definitions, o.contributions, sources);
+    ContribTargets targets(scene, o.modifiers, o.definitions, o.contributions, photons);
     // Only the root writes (and with -r reads) the outputs.
     std::optional<ContribOutput> output;
     if (cluster.isRoot()) output.emplace(o, sceneInputs.headerLines, out);

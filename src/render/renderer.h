@@ -19,6 +19,10 @@
 #include "util/color.h"
 #include "util/vec.h"
 
+namespace rp::pmap {
+struct FoundPhoton;  // pmap/photon_store.h
+}
+
 namespace rp::render {
 
 // What rtrace's -o specifiers report about one traced ray (RADIANCE rtrace.c oputs).
@@ -83,16 +87,11 @@ public:
     // (RADIANCE zeroes that ray's coefficient).
     virtual void add(int32_t modifier, const Vec3& point, const Vec3& dir, const Color& coef,
                      const Color& value) = 0;
-    // Where a photon's primary left its source (maps with primary rays, mkpmap -apCPD):
-    // the emission point and the unit direction back toward the source.
-    struct PhotonOrigin {
-        Vec3 point, toSource;
-    };
-    // Photon contribution (rcontrib -ap): flux density `value` (already times the path
-    // coefficient, as irradiance / pi) of a photon emitted by source `source` (index into
-    // the map's source list, light::findLightSources order); `origin` null when the map
-    // does not keep primary rays.
-    virtual void addPhotons(int32_t source, const PhotonOrigin* origin, const Color& value) = 0;
+    // Photon contributions (rcontrib -ap): photons of the contribution map (their
+    // primaries say what source emitted each and, with primary rays, where), each bringing
+    // its flux times `scale` times `coef` (the path coefficient), as irradiance / pi.
+    virtual void addPhotons(std::span<const pmap::FoundPhoton> photons, double scale,
+                            const Color& coef) = 0;
     // Binned contributions of a precomputed contribution map (already times the path
     // coefficient, as irradiance / pi): values[b] for bin b of the tracked modifier
     // `modifier` (a scene record of that name).
