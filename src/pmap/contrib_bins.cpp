@@ -251,28 +251,32 @@ PrimaryBins::PrimaryBins(const ContribBins& bins, std::span<const ContribSource>
         auto it = byName.find(s.material);
         in.modifierOf.push_back(it != byName.end() ? it->second : -1);
     }
-    // Each primary's slot in parallel (a bin expression each), then the keys in order.
-    std::vector<int32_t> slot(primaries.size());
+    // Each primary's slot in parallel (a bin expression each), then, in place and in
+    // order, its key.
+    keys_.resize(primaries.size());
     tbb::task_arena arena(std::max(1, threads));
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<size_t>(0, primaries.size(), size_t(1) << 14),
                           [&](const tbb::blocked_range<size_t>& r) {
                               ContribBins::Binner binner(bins);
                               for (size_t i = r.begin(); i != r.end(); ++i)
-                                  slot[i] = primarySlot(in, binner, i);
+                                  keys_[i] = uint32_t(primarySlot(in, binner, i));
                           });
     });
     shares_.resize(1);  // key 0: untracked
     std::unordered_map<uint64_t, uint32_t> keyOf;
-    keys_.assign(primaries.size(), 0);
     for (size_t i = 0; i < primaries.size(); ++i) {
-        if (slot[i] == kUntracked) continue;
+        const auto slot = int32_t(keys_[i]);
+        if (slot == kUntracked) {
+            keys_[i] = 0;
+            continue;
+        }
         const auto src = uint16_t(primaries[i].srcIdx);
-        const uint64_t id = (uint64_t(uint32_t(slot[i])) << 16) | src;
+        const uint64_t id = (uint64_t(uint32_t(slot)) << 16) | src;
         auto [it, added] = keyOf.try_emplace(id, uint32_t(shares_.size()));
         if (added) {
             Share sh;
-            sh.slot = slot[i];
+            sh.slot = slot;
             if (!contributions) sh.divisor = sources[src].radiance;
             shares_.push_back(sh);
         }
