@@ -88,5 +88,23 @@ TEST(PrimaryBins, EachPrimaryOnceWhateverTheThreads) {
     EXPECT_EQ(noRays.share(uint32_t(primaries.size())).slot, PrimaryBins::kUntracked);
 }
 
+TEST(PrimaryBins, ManyBinsKeepWideKeys) {
+    // More shares than a byte holds: every primary still finds its own bin.
+    ContribModifier lamp;
+    lamp.name = "lampmat";
+    lamp.binExpr = "Px";  // a local source: the point where the primary left it
+    lamp.bins = 600;
+    const ContribBins bins({lamp}, {});
+    const std::vector<ContribSource> sources{{"lampmat", {1, 1, 1}, false}};
+    std::vector<PhotonPrimary> primaries(3000, PhotonPrimary{0});
+    std::vector<PrimaryRay> rays;
+    for (int i = 0; i < 3000; ++i)
+        rays.push_back({{float(i % 700), 0, 0}, encodeDirection({0, 0, 1})});
+    const PrimaryBins pb(bins, sources, true, primaries, rays, 2);
+    EXPECT_EQ(pb.shares().size(), 602u);  // untracked, 600 bins, past the count
+    for (uint32_t i = 0; i < 3000; ++i)
+        ASSERT_EQ(pb.share(i).slot, i % 700 < 600 ? int32_t(i % 700) : PrimaryBins::kPastEnd) << i;
+}
+
 }  // namespace
 }  // namespace rp::pmap
