@@ -212,6 +212,7 @@ struct PrimaryInputs {
     const ContribBins& bins;
     std::span<const ContribSource> sources;
     std::vector<int> modifierOf;  // per source: its tracked modifier, -1 none
+    std::vector<bool> constant;   // per modifier: a constant bin (no expression)
     std::span<const PhotonPrimary> primaries;
     std::span<const PrimaryRay> rays;
 };
@@ -223,7 +224,7 @@ int32_t primarySlot(const PrimaryInputs& in, ContribBins::Binner& binner, size_t
     const int m = in.modifierOf[size_t(src)];
     if (m < 0) return PrimaryBins::kUntracked;
     const size_t offset = in.bins.offset(size_t(m));
-    if (isConstantBin(in.bins.modifiers()[size_t(m)].binExpr)) return int32_t(offset);
+    if (in.constant[size_t(m)]) return int32_t(offset);
     if (in.rays.empty()) return PrimaryBins::kNoRay;
     // pmcontrib2.c with primary rays: the direction back toward the source, and the point
     // where the photon left it (RADIANCE gives a distant source's P as 0, and a local
@@ -244,7 +245,9 @@ PrimaryBins::PrimaryBins(const ContribBins& bins, std::span<const ContribSource>
                          bool contributions, std::span<const PhotonPrimary> primaries,
                          std::span<const PrimaryRay> rays, int threads) {
     RP_CHECK(rays.empty() || rays.size() == primaries.size());
-    PrimaryInputs in{bins, sources, {}, primaries, rays};
+    PrimaryInputs in{bins, sources, {}, {}, primaries, rays};
+    for (const ContribModifier& m : bins.modifiers())
+        in.constant.push_back(isConstantBin(m.binExpr));
     std::unordered_map<std::string, int> byName;
     for (size_t m = 0; m < bins.modifiers().size(); ++m) byName[bins.modifiers()[m].name] = int(m);
     for (const ContribSource& s : sources) {

@@ -42,15 +42,15 @@ std::vector<Photon> precomputeGlobal(std::vector<Photon> global, const PrecompSe
 // Photons per precomputation work item (fixed: deterministic adaptive search radius).
 constexpr uint64_t kPrecompChunk = 512;
 
-// Runs work(i0, i1) over [0, count) in chunks of kPrecompChunk on pass.threads threads,
-// each chunk once (any order), with -t progress lines "N precomputed, P% after T hours"
-// on `progress` and a closing 100% line.
 // Sorts the photon indices [first, last) into a space-filling curve's order over their
 // photons' positions (ties by index): consecutive estimates then search neighbouring
 // parts of the map, which stay in the cache between them.
 void sortAlongCurve(const std::vector<Photon>& photons, std::vector<uint64_t>::iterator first,
                     std::vector<uint64_t>::iterator last);
 
+// Runs work(i0, i1) over [0, count) in chunks of kPrecompChunk on pass.threads threads,
+// each chunk once (any order), with -t progress lines "N precomputed, P% after T hours"
+// on `progress` and a closing 100% line.
 void forEachPrecompChunk(uint64_t count, const PassSettings& pass, std::ostream* progress,
                          const std::function<void(uint64_t i0, uint64_t i1)>& work);
 

@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <string>
 
-#include "util/dir_code.h"
 #include "util/error.h"
 #include "util/henyey_greenstein.h"
 #include "util/warnings.h"
