@@ -13,9 +13,9 @@ cnt 8 12 | rcalc -e '$1=.25+.5*$2;$2=.25+.5*$1;$3=.8;$4=0;$5=0;$6=1' > sensors.t
 oconv room.rad sky.rad > annual.oct
 BINS=(-e MF:1 -f reinhart.cal -b rbin -bn Nrbins -m skyglow)
 
-# Photon map: 8 million photons through the window, 2 % of them precomputed from their
-# 1200 nearest neighbours into the 146 sky patches, wavelet-compressed to an eighth.
-mkpmap -fo -apC annual.pm 8m 1200 0.8 -apP 0.02 -apo window_glass -aps sensor_plane "${BINS[@]}" \
+# Photon map: 8 million photons through the window, 0.5 % of them precomputed from their
+# 1200 nearest neighbours into the 146 sky patches, wavelet-compressed to a sixth.
+mkpmap -fo -apC annual.pm 8m 1200 0.7 -apP 0.005 -apo window_glass -aps sensor_plane "${BINS[@]}" \
     -n 2 annual.oct
 rcontrib -fo -I -ab 1 -ad 1024 -lw 1e-4 -n 2 -ap annual.pm @annual.pm.opt annual.oct \
     < sensors.txt > dc_pmap.mtx
