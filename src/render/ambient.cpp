@@ -140,7 +140,7 @@ std::optional<Color> Ambient::Impl::fresh(const AmbientPoint& at, HemisphereTrac
         double cap = 0.8 * at.coefficient * at.weight / (opt.divisions * minWeight);
         wt = std::min(wt, cap);
     }
-    HemisphereParams p = hemisphereDivisions(opt.divisions, opt.supersamples, wt, 1);
+    HemisphereParams p = hemisphereDivisions(opt.divisions, opt.supersamples, wt, false);
     p.sampleLevel = at.ambientLevel + 1;
     p.sampleWeight =
         at.weight * std::min(1.0, at.coefficient / (double(p.thetaDivisions) * p.phiDivisions));
@@ -236,7 +236,7 @@ std::optional<Color> Ambient::Impl::makeRecord(const AmbientPoint& at, Hemispher
     // unless the ray is much lighter already; it sets the division count and radius.
     double wt = std::pow(kAverageReflectance, at.ambientLevel);
     if (at.weight < 0.1 * wt) wt = 1.25 * at.weight;
-    HemisphereParams p = hemisphereDivisions(opt.divisions, opt.supersamples, wt, 3);
+    HemisphereParams p = hemisphereDivisions(opt.divisions, opt.supersamples, wt, true);
     p.sampleLevel = at.ambientLevel + 1;
     // Cached values are reused by many rays, so samples carry the full AVGREFL share
     // (ambcomp.c: rcoef = AVGREFL with -aa > 0).

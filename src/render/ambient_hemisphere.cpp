@@ -57,14 +57,16 @@ void tangentFrame(const Vec3& n, Vec3& u, Vec3& v) {
     v = Vec3(b, sign + n.y * n.y * a, -n.y);
 }
 
-HemisphereParams hemisphereDivisions(int divisions, int supersamples, double weight, int minTheta) {
-    // RADIANCE compat (ambcomp.c inithemi, RADIANCE 3): theta rows from ad*wt/pi, phi
-    // columns pi times as many, so divisions are roughly square in solid angle.
+HemisphereParams hemisphereDivisions(int divisions, int supersamples, double weight, bool cached) {
     HemisphereParams p;
-    p.thetaDivisions = std::max(minTheta, int(std::sqrt(divisions * weight / kPi) + 0.5));
-    p.phiDivisions = std::max(1, int(kPi * p.thetaDivisions + 0.5));
-    if (minTheta <= 1 && p.thetaDivisions == 1)
-        p.phiDivisions = std::clamp(int(divisions * weight + 0.5), 1, p.phiDivisions);
+    if (cached) {
+        p.thetaDivisions = std::max(3, int(std::sqrt(divisions * weight / kPi) + 0.5));
+        p.phiDivisions = std::max(1, int(kPi * p.thetaDivisions + 0.5));
+    } else {
+        const int n = std::max(1, int(std::sqrt(divisions * weight) + 0.5));
+        p.thetaDivisions = std::max(1, int(n / std::sqrt(kPi) + 0.5));
+        p.phiDivisions = std::max(1, int(double(n) * n / p.thetaDivisions + 0.5));
+    }
     p.superSamples = std::max(0, int(supersamples * weight + 0.5));
     return p;
 }

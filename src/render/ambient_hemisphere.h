@@ -26,12 +26,15 @@ struct HemisphereParams {
     bool gradients = true;    // compute the Ward & Heckbert gradients
 };
 
-// RADIANCE 3 inithemi's division counts for `divisions` (-ad) times `weight`:
-// M = sqrt(ad*wt/pi) + .5 (at least `minTheta`), N = pi*M + .5, and the -as super-sample
-// count as*wt + .5. With minTheta 1 (no cache) a single row has the samples ad*wt asks
-// for, at least one and at most N: RADIANCE 5 (ambcomp.c samp_hemi) goes down to one
-// sample for rays of little weight.
-HemisphereParams hemisphereDivisions(int divisions, int supersamples, double weight, int minTheta);
+// Division counts for `divisions` (-ad) times `weight`, and the -as super-sample count
+// as*wt + .5.
+//  - For the irradiance cache (`cached`): RADIANCE 3 inithemi's M = sqrt(ad*wt/pi) + .5
+//    rows (at least 3), N = pi*M + .5 columns: cells about square, as the gradients want.
+//  - Without it: RADIANCE 5 (ambcomp.c samp_hemi) traces n*n samples, n = sqrt(ad*wt) +
+//    .5 and at least 1, so a ray of little weight gets one sample; the same count here,
+//    laid out in as square cells as M x N allows (M = n/sqrt(pi) + .5, N = n*n/M + .5:
+//    n*n for n = 1, 2, 4, 6, 10 for 9, and within 4 % from n = 5 on).
+HemisphereParams hemisphereDivisions(int divisions, int supersamples, double weight, bool cached);
 
 struct HemisphereEstimate {
     Color value;                    // mean radiance over the cosine-weighted hemisphere (E / pi)

@@ -14,22 +14,42 @@ using testing::ceilingStep;
 using testing::FunctionTracer;
 
 HemisphereParams params(int divisions, int supersamples) {
-    HemisphereParams p = hemisphereDivisions(divisions, supersamples, 1, 3);
+    HemisphereParams p = hemisphereDivisions(divisions, supersamples, 1, true);
     p.sampleLevel = 1;
     p.sampleWeight = 0.5;
     return p;
 }
 
 TEST(AmbientHemisphereTest, DivisionCountsFollowRadiance) {
-    HemisphereParams p = hemisphereDivisions(1024, 512, 1, 3);
+    HemisphereParams p = hemisphereDivisions(1024, 512, 1, true);
     EXPECT_EQ(p.thetaDivisions, 18);  // sqrt(1024 / pi) + .5
     EXPECT_EQ(p.phiDivisions, 57);    // pi * 18 + .5
     EXPECT_EQ(p.superSamples, 512);
-    p = hemisphereDivisions(1024, 512, 0.25, 3);
+    p = hemisphereDivisions(1024, 512, 0.25, true);
     EXPECT_EQ(p.thetaDivisions, 9);
     EXPECT_EQ(p.superSamples, 128);
-    EXPECT_EQ(hemisphereDivisions(4, 0, 1, 3).thetaDivisions, 3);  // the cache's minimum
-    EXPECT_EQ(hemisphereDivisions(4, 0, 1, 1).thetaDivisions, 1);
+    EXPECT_EQ(hemisphereDivisions(4, 0, 1, true).thetaDivisions, 3);  // the cache's minimum
+}
+
+// Without the cache, RADIANCE 5's samp_hemi traces n x n samples, n = sqrt(ad wt) + .5
+// and at least one: 1 below ad wt = 2.25, 4 below 6.25, 9 below 12.25, 361 for rcontrib's
+// default -ad 350 at a sensor (the RADIANCE 3 layout gave 2, 3, 12 and 385).
+TEST(AmbientHemisphereTest, DivisionCountsWithoutTheCacheFollowRadiance5) {
+    auto count = [](int ad, double wt) {
+        const HemisphereParams p = hemisphereDivisions(ad, 0, wt, false);
+        return p.thetaDivisions * p.phiDivisions;
+    };
+    EXPECT_EQ(count(350, 0.001), 1);
+    EXPECT_EQ(count(350, 2.2 / 350), 1);
+    EXPECT_EQ(count(350, 2.3 / 350), 4);
+    EXPECT_EQ(count(350, 6.2 / 350), 4);
+    EXPECT_EQ(count(350, 12 / 350.), 10);  // n = 3: 2 x 5, the nearest to 3 x 3 in rows of pi
+    EXPECT_EQ(count(350, 1), 363);         // 11 x 33 for 19 x 19
+    EXPECT_EQ(count(1024, 1), 1026);       // 18 x 57 for 32 x 32
+    for (int ad : {16, 64, 100, 256, 512, 2048, 4096, 16384}) {
+        const double n = std::floor(std::sqrt(ad) + 0.5);
+        EXPECT_NEAR(count(ad, 1), n * n, 0.04 * n * n) << ad;
+    }
 }
 
 TEST(AmbientHemisphereTest, TangentFrameIsOrthonormal) {

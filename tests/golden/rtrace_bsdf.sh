@@ -4,7 +4,12 @@
 #  - -ab 0 at the sensors: exactly 0 (shadow rays do not pass a thin BSDF);
 #  - -ab 0 view rays through the blinds: the mean within 5 % (RADIANCE samples one ray
 #    per component at random, so single rays differ by tens of per cent between runs);
-#  - classic -ab 2 and photon maps: means within 5 % (-u-: repeatable);
+#  - classic -ab 2: the mean of six samples per sensor (the points given six times: each
+#    ray has its own stream under -u-, so the run is repeatable) within 5 % of RADIANCE's
+#    mean of 24 runs (tests/data/bsdf_classic). One run of either program scatters by 3-5 %
+#    (sunlight arrives through second-bounce samples that meet the sun), so a single run
+#    against a single run cannot be held to 5 %; six against 24 differ by 1.7 % (1 sigma);
+#  - photon maps: means within 5 % (-u-: repeatable);
 #  - the photon map of the BSDF room within 5 % of the explicit-slat room's reference;
 #  - the tensor-tree BSDF: view rays and photon map within 5 % (its classic -ab 2 varies
 #    by +-5 % between runs, RADIANCE's too: sunlight through the tree's finest cells).
@@ -13,6 +18,7 @@ set -u
 require_shared validation/bsdf
 BIN="${RP_BIN:?RP_BIN not set}"
 VAL="${RP_SHARED_DIR:?RP_SHARED_DIR not set}/validation/bsdf"
+DATA="${RP_SOURCE_DIR:?RP_SOURCE_DIR not set}/tests/data/bsdf_classic"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$VAL" || exit 1
@@ -33,9 +39,15 @@ awk '{ s += $1 + $2 + $3 } END { exit s != 0 }' "$tmp/ab0.txt" || bad "sunlight 
 r=$(ratio "$tmp/view.txt" ref_klems_view_ab0.txt); echo "view -ab 0: ours/RADIANCE $r"
 within "$r" .05 || bad "view rays $r"
 
-"$BIN/rtrace" -h -u- -I -ab 2 -ad 2048 -as 512 -aa 0 -lw 1e-4 -n 2 "$tmp/k.oct" < points.txt \
-    > "$tmp/ab2.txt" || bad "rtrace -ab 2"
-r=$(ratio "$tmp/ab2.txt" ref_klems_classic_ab2.txt); echo "classic -ab 2: ours/RADIANCE $r"
+for k in 1 2 3 4 5 6; do cat points.txt; done > "$tmp/points6.txt"
+"$BIN/rtrace" -h -u- -I -ab 2 -ad 2048 -as 512 -aa 0 -lw 1e-4 -n 2 "$tmp/k.oct" < "$tmp/points6.txt" \
+    > "$tmp/ab2x6.txt" || bad "rtrace -ab 2"
+n=$(wc -l < points.txt)
+awk -v n="$n" '{ i = (NR - 1) % n; for (c = 1; c <= 3; c++) s[i, c] += $c / 6 }
+    END { for (i = 0; i < n; i++) printf "%.6e %.6e %.6e\n", s[i, 1], s[i, 2], s[i, 3] }' \
+    "$tmp/ab2x6.txt" > "$tmp/ab2.txt"
+r=$(ratio "$tmp/ab2.txt" "$DATA/radiance_klems_ab2_mean24.txt")
+echo "classic -ab 2: ours (6 samples) / RADIANCE (mean of 24 runs) $r"
 within "$r" .05 || bad "classic -ab 2 $r"
 
 # photon_map NAME: maps of $tmp/NAME.oct, irradiance at the sensors in $tmp/NAME_pm.txt
