@@ -183,9 +183,10 @@ BackwardResult shadeWgmd(const WgmdParams&, const SurfacePoint&, const ShadeOpti
 PhotonScatter scatterWgmd(const WgmdParams&, const SurfacePoint&, Rng&);
 
 BackwardResult shadeLight(const LightParams&, const SurfacePoint&);
-// The radiance a light material sends back along -sp.dir (black from behind, outside a
-// spotlight's cone), without shadeLight's rules for the ray that sees it.
-Color lightEmitted(const LightParams&, const SurfacePoint&);
+// The radiance a light material sends back along -dir to a ray meeting its `front` or
+// back side (black from behind, outside a spotlight's cone) with the chain's `pattern`,
+// without shadeLight's rules for the ray that sees it.
+Color lightEmitted(const LightParams&, bool front, const Vec3& dir, const Color& pattern);
 
 BackwardResult shadePrism(const PrismParams&, const SurfacePoint&);
 

@@ -166,19 +166,19 @@ BackwardResult shadeLight(const LightParams& m, const SurfacePoint& sp) {
             r.transparent = true;
         return r;
     }
-    r.emitted = lightEmitted(m, sp);
+    r.emitted = lightEmitted(m, sp.front, sp.dir, sp.pattern);
     return r;
 }
 
-Color lightEmitted(const LightParams& m, const SurfacePoint& sp) {
+Color lightEmitted(const LightParams& m, bool front, const Vec3& dir, const Color& pattern) {
     // RADIANCE compat (source.c m_light): a light seen from behind is black.
-    if (!sp.front) return {};
+    if (!front) return {};
     // srcsupp.c spotout: outside the cone when 2 pi (1 - cos theta) > solid angle, theta
-    // between the aim and the emitted direction (-sp.dir).
+    // between the aim and the emitted direction (-dir).
     if (m.kind == LightParams::Kind::Spotlight &&
-        m.spotSolidAngle < 2 * kPi * (1 + dot(m.spotAim, sp.dir)))
+        m.spotSolidAngle < 2 * kPi * (1 + dot(m.spotAim, dir)))
         return {};
-    return m.radiance * sp.pattern;
+    return m.radiance * pattern;
 }
 
 }  // namespace detail

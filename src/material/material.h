@@ -544,10 +544,14 @@ struct ShadowPass {
 ShadowPass shadowPass(const MaterialParams& m, const SurfacePoint& sp, bool passIllum,
                       const ShadeOptions& opt, Rng& rng);
 
-// True where shadowPass is Opaque whatever else the hit holds (plastic, metal, the
-// anisotropic and function types, prisms; `front` or -bv): the common case, answered
-// without preparing a SurfacePoint.
-bool blocksShadows(const MaterialParams& m, bool front, bool backVisible);
+// shadowPass where it depends on no more than the side met (`front`), the ray's
+// direction and the chain's pattern, answered without preparing a SurfacePoint: opaque
+// materials (plastic, metal, the anisotropic and function types, prisms; by `front` and
+// -bv) block the ray, light materials emit (every shadow ray that reaches its source
+// ends here). Nullopt where shadowPass needs the surface point.
+std::optional<ShadowPass> shadowPassWithoutSurface(const MaterialParams& m, bool front,
+                                                   const Vec3& dir, const Color& pattern,
+                                                   bool passIllum, bool backVisible);
 
 // ---------------------------------------------------------------------------------------
 // Forward direction: photon scattering (pmapmat.c).

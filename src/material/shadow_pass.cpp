@@ -3,6 +3,7 @@
 // WGMDfunc's ideal transmission come from shadeBackward, so a shadow ray sees exactly
 // the transmitted ray the backward pass would spawn.
 #include <cmath>
+#include <optional>
 
 #include "material/detail.h"
 
@@ -40,7 +41,8 @@ ShadowPass transmittedRay(const MaterialParams& m, const SurfacePoint& sp, const
     return s;
 }
 
-ShadowPass lightPass(const LightParams& m, const SurfacePoint& sp, bool passIllum) {
+ShadowPass lightPass(const LightParams& m, bool front, const Vec3& dir, const Color& pattern,
+                     bool passIllum) {
     ShadowPass s;
     if (m.kind == LightParams::Kind::Illum) {
         if (passIllum) {
@@ -50,11 +52,11 @@ ShadowPass lightPass(const LightParams& m, const SurfacePoint& sp, bool passIllu
         }
         // Aimed at the illum itself: a source for shadow rays, from either side.
         s.kind = ShadowPass::Kind::Emit;
-        s.colour = m.radiance * sp.pattern;
+        s.colour = m.radiance * pattern;
         return s;
     }
     s.kind = ShadowPass::Kind::Emit;
-    s.colour = lightEmitted(m, sp);  // black from behind, outside a spot's cone
+    s.colour = lightEmitted(m, front, dir, pattern);  // black from behind, outside a spot's cone
     return s;
 }
 
@@ -113,7 +115,9 @@ ShadowPass shadowPass(const MaterialParams& m, const SurfacePoint& sp, bool pass
             },
             [&](const GlassParams&) { return transmittedRay(m, sp, opt, rng); },
             [&](const DielectricParams&) { return transmittedRay(m, sp, opt, rng); },
-            [&](const LightParams& p) { return lightPass(p, sp, passIllum); },
+            [&](const LightParams& p) {
+                return lightPass(p, sp.front, sp.dir, sp.pattern, passIllum);
+            },
             [](const AntimatterParams&) { return clear(); },  // clip sets: the tracer's
             [&](const BrtdParams& p) { return brtdPass(p, sp); },
             // m_direct.c: only shadow rays toward its virtual sources pass (as relays).
@@ -132,26 +136,34 @@ ShadowPass shadowPass(const MaterialParams& m, const SurfacePoint& sp, bool pass
         m);
 }
 
-bool blocksShadows(const MaterialParams& m, bool front, bool backVisible) {
+std::optional<ShadowPass> shadowPassWithoutSurface(const MaterialParams& m, bool front,
+                                                   const Vec3& dir, const Color& pattern,
+                                                   bool passIllum, bool backVisible) {
     const bool hiddenBack = !front && !backVisible;
+    const std::optional<ShadowPass> opaque = ShadowPass{};
+    const std::optional<ShadowPass> needsSurface;
     return std::visit(Overloaded{
                           [&](const NormalParams& p) {
                               return !hiddenBack &&
-                                     !(p.kind == NormalParams::Kind::Trans && p.tspec > 0);
+                                             !(p.kind == NormalParams::Kind::Trans && p.tspec > 0)
+                                         ? opaque
+                                         : needsSurface;
                           },
-                          [](const AnisoParams&) { return true; },
-                          [](const AshikParams&) { return true; },
-                          [](const FuncParams&) { return true; },
-                          [](const PrismParams&) { return true; },
-                          [](const MirrorParams&) { return false; },
-                          [](const GlassParams&) { return false; },
-                          [](const DielectricParams&) { return false; },
-                          [](const LightParams&) { return false; },
-                          [](const AntimatterParams&) { return false; },
-                          [](const BrtdParams&) { return false; },
-                          [](const BsdfParams&) { return false; },
-                          [](const WgmdParams&) { return false; },
-                          [](const MistParams&) { return false; },
+                          [&](const AnisoParams&) { return opaque; },
+                          [&](const AshikParams&) { return opaque; },
+                          [&](const FuncParams&) { return opaque; },
+                          [&](const PrismParams&) { return opaque; },
+                          [&](const LightParams& p) -> std::optional<ShadowPass> {
+                              return lightPass(p, front, dir, pattern, passIllum);
+                          },
+                          [&](const MirrorParams&) { return needsSurface; },
+                          [&](const GlassParams&) { return needsSurface; },
+                          [&](const DielectricParams&) { return needsSurface; },
+                          [&](const AntimatterParams&) { return needsSurface; },
+                          [&](const BrtdParams&) { return needsSurface; },
+                          [&](const BsdfParams&) { return needsSurface; },
+                          [&](const WgmdParams&) { return needsSurface; },
+                          [&](const MistParams&) { return needsSurface; },
                       },
                       m);
 }

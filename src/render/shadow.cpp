@@ -39,11 +39,15 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
         return ev;
     }
     const material::MaterialRecord& e = impl.material(layer.material);
-    if (material::blocksShadows(*e.params, hit.front, impl.shadeOptions.backVisible)) return {};
-    material::SurfacePoint sp = surfaceAt(hit, dir, layer);
-    std::optional<material::HitScratch> scratch;
-    prepare(layer.material, *e.params, hit, dir, sp, scratch);
-    ShadowEvent ev = material::shadowPass(*e.params, sp, passIllum, impl.shadeOptions, rng);
+    std::optional<ShadowEvent> quick = material::shadowPassWithoutSurface(
+        *e.params, hit.front, dir, layer.pattern, passIllum, impl.shadeOptions.backVisible);
+    if (!quick) {
+        material::SurfacePoint sp = surfaceAt(hit, dir, layer);
+        std::optional<material::HitScratch> scratch;
+        prepare(layer.material, *e.params, hit, dir, sp, scratch);
+        quick = material::shadowPass(*e.params, sp, passIllum, impl.shadeOptions, rng);
+    }
+    const ShadowEvent& ev = *quick;
     if (ev.kind == ShadowEvent::Kind::Alternate)
         return chainEvent(resolve(e.alternate, hit, dir), hit, dir, false);
     return ev;
