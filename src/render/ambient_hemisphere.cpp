@@ -2,7 +2,10 @@
 #include "render/ambient_hemisphere.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
+#include <vector>
 
 namespace rp::render {
 
@@ -20,7 +23,7 @@ struct Division {
 double meanBrightness(const Division& d) { return d.n > 0 ? d.sumB / d.n : 0; }
 
 // HemisphereEstimate::horizonDistance and overheadInverseDistance from the divisions.
-void occluders(const std::vector<Division>& div, int M, int N, HemisphereEstimate& est) {
+void occluders(std::span<const Division> div, int M, int N, HemisphereEstimate& est) {
     est.horizonDistance.assign(size_t(N), 1e10);
     double overhead = 0;
     int overheadCount = 0;
@@ -78,7 +81,15 @@ HemisphereEstimate sampleHemisphere(const Vec3& origin, const Vec3& normal,
     const int N = std::max(1, params.phiDivisions);
     Vec3 ux, uy;
     tangentFrame(normal, ux, uy);
-    std::vector<Division> div(size_t(M) * N);
+    // Most hemispheres without the cache are a few divisions (deep, light rays): those
+    // live on the stack, as a heap block per hemisphere was a visible part of their cost.
+    constexpr size_t kOnStack = 16;
+    std::array<Division, kOnStack> few;
+    std::vector<Division> many;
+    const size_t count = size_t(M) * N;
+    if (count > kOnStack) many.resize(count);
+    const std::span<Division> div =
+        count > kOnStack ? std::span<Division>(many) : std::span<Division>(few.data(), count);
     HemisphereEstimate est;
     const double share = 1.0 / (double(M) * N);  // of a division's only sample
     int firstPassUntraced = 0;
