@@ -285,7 +285,6 @@ PrimaryBins::PrimaryBins(const ContribBins& bins, std::span<const ContribSource>
         }
         keys_[i] = it->second;
     }
-    count_ = keys_.size();
     if (shares_.size() <= 256) {
         narrow_.assign(keys_.begin(), keys_.end());
         keys_ = {};

@@ -161,20 +161,19 @@ public:
     // The few distinct shares, and each primary's index into them.
     const std::vector<Share>& shares() const { return shares_; }
     uint32_t key(uint32_t primary) const {
-        if (primary >= count_) return 0;  // untracked
-        return narrow_.empty() ? keys_[primary] : narrow_[primary];
+        if (!narrow_.empty()) return primary < narrow_.size() ? narrow_[primary] : 0;
+        return primary < keys_.size() ? keys_[primary] : 0;  // 0: untracked
     }
     const Share& share(uint32_t primary) const { return shares_[key(primary)]; }
     void prefetch(uint32_t primary) const {
-        if (primary >= count_) return;
-        if (narrow_.empty())
+        if (!narrow_.empty()) {
+            if (primary < narrow_.size()) __builtin_prefetch(narrow_.data() + primary);
+        } else if (primary < keys_.size()) {
             __builtin_prefetch(keys_.data() + primary);
-        else
-            __builtin_prefetch(narrow_.data() + primary);
+        }
     }
 
 private:
-    size_t count_ = 0;  // primaries
     // Keys by primary: in a byte each where the shares are few (a sky's 146 patches), so
     // that more of them stay in the cache for rcontrib's random reads; else in keys_.
     std::vector<uint8_t> narrow_;

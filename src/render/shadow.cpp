@@ -39,15 +39,15 @@ ShadowEvent Renderer::Context::layerEvent(const Hit& hit, const Vec3& dir,
         return ev;
     }
     const material::MaterialRecord& e = impl.material(layer.material);
-    std::optional<ShadowEvent> quick = material::shadowPassWithoutSurface(
+    std::optional<ShadowEvent> pass = material::shadowPassWithoutSurface(
         *e.params, hit.front, dir, layer.pattern, passIllum, impl.shadeOptions.backVisible);
-    if (!quick) {
+    if (!pass) {  // the material needs its prepared surface point
         material::SurfacePoint sp = surfaceAt(hit, dir, layer);
         std::optional<material::HitScratch> scratch;
         prepare(layer.material, *e.params, hit, dir, sp, scratch);
-        quick = material::shadowPass(*e.params, sp, passIllum, impl.shadeOptions, rng);
+        pass = material::shadowPass(*e.params, sp, passIllum, impl.shadeOptions, rng);
     }
-    const ShadowEvent& ev = *quick;
+    const ShadowEvent& ev = *pass;
     if (ev.kind == ShadowEvent::Kind::Alternate)
         return chainEvent(resolve(e.alternate, hit, dir), hit, dir, false);
     return ev;
